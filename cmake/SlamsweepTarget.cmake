@@ -1,0 +1,19 @@
+# One place that sets the language level and warnings for every slamsweep target,
+# so that a CI build (SLAMSWEEP_WERROR=ON) and a developer build differ only in -Werror.
+function(slamsweep_target_defaults target)
+  target_compile_features(${target} PUBLIC cxx_std_20)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic)
+  if(SLAMSWEEP_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+endfunction()
+
+# A GoogleTest executable registered with ctest. The shared data folder is passed in
+# so tests can find ../shared without depending on the working directory.
+function(slamsweep_add_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  slamsweep_target_defaults(${name})
+  target_link_libraries(${name} PRIVATE ${ARG_LIBS} slamsweep_test_support GTest::gtest GTest::gmock GTest::gtest_main)
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)
+endfunction()

@@ -1,0 +1,136 @@
+#include "evaluator/core/text_file.h"
+
+#include <zlib.h>
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <memory>
+
+#include "evaluator/core/input_error.h"
+
+namespace slamsweep::evaluator {
+namespace {
+
+std::string QuoteField(std::string_view text) {
+  constexpr std::size_t kMaxShown = 40;
+  std::string shown(text.substr(0, kMaxShown));
+  if (text.size() > kMaxShown) shown += "...";
+  return "'" + shown + "'";
+}
+
+bool HasGzipMagic(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char magic[2] = {0, 0};
+  in.read(reinterpret_cast<char*>(magic), 2);
+  return in.gcount() == 2 && magic[0] == 0x1f && magic[1] == 0x8b;
+}
+
+std::string ReadGzip(const std::filesystem::path& path) {
+  struct GzCloser {
+    void operator()(gzFile_s* file) const { gzclose(file); }
+  };
+  std::unique_ptr<gzFile_s, GzCloser> file(gzopen(path.c_str(), "rb"));
+  if (!file) throw InputError(Located(path, 0, "cannot open gzip file"));
+  std::string content;
+  char buffer[1 << 16];
+  while (true) {
+    const int read = gzread(file.get(), buffer, sizeof(buffer));
+    if (read < 0) {
+      int code = 0;
+      const char* message = gzerror(file.get(), &code);
+      throw InputError(Located(path, 0, std::string("corrupt gzip data: ") + message));
+    }
+    if (read == 0) break;
+    content.append(buffer, static_cast<std::size_t>(read));
+  }
+  int code = 0;
+  const char* message = gzerror(file.get(), &code);
+  // zlib reports a stream that ends before its trailer as Z_BUF_ERROR at end of file.
+  if (code != Z_OK && code != Z_STREAM_END) {
+    throw InputError(Located(path, 0,
+                             std::string("truncated or corrupt gzip file (") + message + ") after " +
+                                 std::to_string(content.size()) + " decompressed bytes"));
+  }
+  return content;
+}
+
+}  // namespace
+
+std::string ReadTextFile(const std::filesystem::path& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    throw InputError(Located(path, 0, "no such file (expected a readable regular file)"));
+  }
+  if (HasGzipMagic(path)) return ReadGzip(path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(Located(path, 0, "cannot open file for reading"));
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+std::vector<std::string_view> SplitFields(std::string_view line, std::string_view separators) {
+  std::vector<std::string_view> fields;
+  const bool whitespace_only = separators.find_first_not_of(" \t\r") == std::string_view::npos;
+  std::size_t start = 0;
+  while (start <= line.size()) {
+    if (whitespace_only) {
+      start = line.find_first_not_of(separators, start);
+      if (start == std::string_view::npos) break;
+    }
+    std::size_t end = line.find_first_of(separators, start);
+    if (end == std::string_view::npos) end = line.size();
+    std::string_view field = line.substr(start, end - start);
+    // Trim blanks around delimited fields ("1, 2" in CSV).
+    const std::size_t a = field.find_first_not_of(" \t\r");
+    field = a == std::string_view::npos ? std::string_view() : field.substr(a, field.find_last_not_of(" \t\r") - a + 1);
+    fields.push_back(field);
+    start = end + 1;
+    if (end == line.size()) break;
+  }
+  return fields;
+}
+
+TextRecord::TextRecord(const std::filesystem::path& file, std::size_t line_number,
+                       std::vector<std::string_view> fields)
+    : file_(file), line_number_(line_number), fields_(std::move(fields)) {}
+
+std::string_view TextRecord::Text(std::size_t index) const {
+  if (index >= fields_.size()) {
+    Fail("expected a field " + std::to_string(index + 1) + " but the line has only " +
+         std::to_string(fields_.size()) + " fields");
+  }
+  return fields_[index];
+}
+
+double TextRecord::Number(std::size_t index, std::string_view name) const {
+  const std::string_view text = Text(index);
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
+    Fail("field " + std::to_string(index + 1) + " (" + std::string(name) + "): expected a finite number, got " +
+         QuoteField(text));
+  }
+  return value;
+}
+
+long long TextRecord::Integer(std::size_t index, std::string_view name) const {
+  const std::string_view text = Text(index);
+  long long value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) {
+    Fail("field " + std::to_string(index + 1) + " (" + std::string(name) + "): expected an integer, got " +
+         QuoteField(text));
+  }
+  return value;
+}
+
+void TextRecord::RequireFields(std::size_t count, std::string_view layout) const {
+  if (fields_.size() < count) {
+    Fail("expected " + std::to_string(count) + " fields (" + std::string(layout) + "), got " +
+         std::to_string(fields_.size()) + " (truncated line?)");
+  }
+}
+
+void TextRecord::Fail(std::string_view message) const { throw InputError(Located(file_, line_number_, message)); }
+
+}  // namespace slamsweep::evaluator

@@ -1,0 +1,55 @@
+#include "evaluator/formats/trajectory/tum_format.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+
+#include "evaluator/core/input_error.h"
+#include "evaluator/core/text_file.h"
+
+namespace slamsweep::evaluator {
+
+Trajectory ParseTum(std::string_view content, const std::filesystem::path& source) {
+  Trajectory trajectory;
+  ForEachRecord(source, content, [&](const TextRecord& record) {
+    record.RequireFields(8, "timestamp tx ty tz qx qy qz qw");
+    if (record.size() > 8) record.Fail("expected 8 fields (timestamp tx ty tz qx qy qz qw), got " +
+                                       std::to_string(record.size()));
+    const double stamp = record.Number(0, "timestamp");
+    Pose pose;
+    pose.position = {record.Number(1, "tx"), record.Number(2, "ty"), record.Number(3, "tz")};
+    const Eigen::Quaterniond q(record.Number(7, "qw"), record.Number(4, "qx"), record.Number(5, "qy"),
+                               record.Number(6, "qz"));
+    if (q.norm() < 1e-9) record.Fail("quaternion (qx qy qz qw) has zero norm; expected a rotation");
+    pose.orientation = q.normalized();
+    try {
+      trajectory.Add(stamp, pose);
+    } catch (const InputError& error) {
+      record.Fail(error.what());
+    }
+  });
+  if (trajectory.empty()) throw InputError(Located(source, 0, "no poses found (expected TUM lines 'timestamp tx ty tz qx qy qz qw')"));
+  return trajectory;
+}
+
+Trajectory ReadTum(const std::filesystem::path& path) { return ParseTum(ReadTextFile(path), path); }
+
+void WriteTum(const Trajectory& trajectory, std::ostream& out) {
+  out << "# timestamp tx ty tz qx qy qz qw\n";
+  for (std::size_t i = 0; i < trajectory.size(); ++i) {
+    const Pose& p = trajectory.poses()[i];
+    const Eigen::Quaterniond& q = p.orientation;
+    // {} prints the shortest representation that reads back to the same double.
+    out << fmt::format("{} {} {} {} {} {} {} {}\n", trajectory.stamps_s()[i], p.position.x(), p.position.y(),
+                       p.position.z(), q.x(), q.y(), q.z(), q.w());
+  }
+}
+
+void WriteTum(const Trajectory& trajectory, const std::filesystem::path& path) {
+  std::ofstream out(path);
+  if (!out) throw InputError(Located(path, 0, "cannot open for writing"));
+  WriteTum(trajectory, out);
+  if (!out) throw InputError(Located(path, 0, "write failed"));
+}
+
+}  // namespace slamsweep::evaluator
