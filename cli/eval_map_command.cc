@@ -1,0 +1,49 @@
+// `slamsweep eval map`: the paper's ground-truth-free map metrics.
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "cli/command.h"
+#include "cli/text_table.h"
+#include "evaluator/formats/map/map_file.h"
+#include "evaluator/map/paper_metrics.h"
+
+namespace slamsweep::cli {
+
+namespace ev = slamsweep::evaluator;
+
+void RegisterEvalMapCommand(CLI::App& eval, const Streams& streams) {
+  struct Options {
+    std::string map_path;
+    std::optional<int> unknown_value;
+    bool json = false;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = eval.add_subcommand("map", "occupied proportion, corners and enclosed areas (paper profile)");
+  command->add_option("MAP", options->map_path, "map: ROS .yaml (+ PGM/PNG), MRPT .png (+ _limits.txt) or bare .pgm/.png")
+      ->required();
+  command->add_option("--unknown-value", options->unknown_value,
+                      "grey value (0-255) that marks unknown cells in a bare PGM/PNG (map_saver: 205)")
+      ->check(CLI::Range(0, 255));
+  command->add_flag("--json", options->json, "print one JSON object instead of a table");
+  command->callback([options, streams] {
+    ev::MapReadOptions read_options;
+    read_options.unknown_value = options->unknown_value;
+    const ev::OccupancyGrid grid = ev::ReadMap(options->map_path, read_options);
+    const nlohmann::json j = ev::ComputePaperMetrics(grid).ToJson();
+    if (options->json) {
+      streams.out << j.dump() << "\n";
+      return;
+    }
+    TextTable table("paper map metrics — " + options->map_path);
+    for (const char* key : {"occupied_to_free_unknown", "occupied_to_all", "unknown_to_all", "corners",
+                            "enclosed_areas"}) {
+      table.Add(key, j.at(key).dump());
+    }
+    table.Add("parameters", j.at("parameters").dump());
+    table.Print(streams.out);
+  });
+}
+
+}  // namespace slamsweep::cli

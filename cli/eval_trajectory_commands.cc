@@ -1,0 +1,166 @@
+// `slamsweep eval ape|rpe|relations`: flags follow evo's names with dashes.
+#include <fmt/format.h>
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <string>
+
+#include "cli/command.h"
+#include "cli/text_table.h"
+#include "evaluator/formats/trajectory/relations_format.h"
+#include "evaluator/formats/trajectory/trajectory_file.h"
+#include "evaluator/trajectory/ape.h"
+#include "evaluator/trajectory/relations_metric.h"
+#include "evaluator/trajectory/rpe.h"
+
+namespace slamsweep::cli {
+namespace {
+
+namespace ev = slamsweep::evaluator;
+
+/// Options shared by ape and rpe: inputs, association and alignment.
+struct PairOptions {
+  std::string reference_path;
+  std::string estimate_path;
+  std::string align = "none";
+  int n_to_align = -1;
+  double t_max_diff_s = 0.01;
+  double t_offset_s = 0.0;
+  std::string pose_relation = "trans";
+  bool json = false;
+};
+
+void AddPairOptions(CLI::App& command, PairOptions& options) {
+  command.add_option("REF", options.reference_path, "reference trajectory (TUM, KITTI, CSV, CARMEN log, MRPT path)")
+      ->required();
+  command.add_option("EST", options.estimate_path, "estimated trajectory")->required();
+  command.add_option("--align", options.align, "alignment: none|origin|se2|se3|sim2|sim3")->capture_default_str();
+  command.add_option("--n-to-align", options.n_to_align, "align on the first N pairs only (-1 = all)")
+      ->capture_default_str();
+  command.add_option("--t-max-diff", options.t_max_diff_s, "max time difference for association (s)")
+      ->capture_default_str();
+  command.add_option("--t-offset", options.t_offset_s, "time offset added to EST stamps (s)")->capture_default_str();
+  command.add_option("--pose-relation", options.pose_relation, "trans (m) or rot-deg (degrees)")
+      ->capture_default_str();
+  command.add_flag("--json", options.json, "print one JSON object instead of a table");
+}
+
+ev::AssociationOptions ToAssociation(const PairOptions& options) {
+  ev::AssociationOptions association;
+  association.t_max_diff_s = options.t_max_diff_s;
+  association.t_offset_s = options.t_offset_s;
+  return association;
+}
+
+ev::AlignmentOptions ToAlignment(const PairOptions& options) {
+  ev::AlignmentOptions alignment;
+  alignment.mode = ev::ParseAlignmentMode(options.align);
+  alignment.n_to_align = options.n_to_align;
+  return alignment;
+}
+
+void PrintMetric(const ev::MetricResult& result, bool json, std::ostream& out) {
+  const nlohmann::json j = result.ToJson();
+  if (json) {
+    out << j.dump() << "\n";
+    return;
+  }
+  TextTable table(fmt::format("{} ({}) — {}", result.metric, result.unit, j.at("specification").dump()));
+  const auto& s = result.statistics;
+  table.Add("rmse", s.rmse);
+  table.Add("mean", s.mean);
+  table.Add("median", s.median);
+  table.Add("std", s.std);
+  table.Add("min", s.min);
+  table.Add("max", s.max);
+  table.Add("sse", s.sse);
+  table.Add("n", std::to_string(s.n));
+  table.Add("pairs", fmt::format("{} (reference unpaired {}, estimate unpaired {})", result.pairs,
+                                  result.reference_unpaired, result.estimate_unpaired));
+  if (result.alignment) table.Add("alignment scale", result.alignment->scale);
+  table.Print(out);
+}
+
+void RegisterApe(CLI::App& eval, const Streams& streams) {
+  auto options = std::make_shared<PairOptions>();
+  CLI::App* command = eval.add_subcommand("ape", "absolute pose error (evo_ape)");
+  AddPairOptions(*command, *options);
+  command->callback([options, streams] {
+    ev::ApeOptions ape_options;
+    ape_options.pose_relation = ev::ParsePoseRelation(options->pose_relation);
+    ape_options.association = ToAssociation(*options);
+    ape_options.alignment = ToAlignment(*options);
+    const ev::Trajectory reference = ev::ReadTrajectory(options->reference_path);
+    const ev::Trajectory estimate = ev::ReadTrajectory(options->estimate_path);
+    PrintMetric(ev::Ape(ape_options).Compute(reference, estimate), options->json, streams.out);
+  });
+}
+
+void RegisterRpe(CLI::App& eval, const Streams& streams) {
+  auto options = std::make_shared<PairOptions>();
+  auto delta = std::make_shared<double>(1.0);
+  auto delta_unit = std::make_shared<std::string>("f");
+  auto all_pairs = std::make_shared<bool>(false);
+  CLI::App* command = eval.add_subcommand("rpe", "relative pose error (evo_rpe)");
+  AddPairOptions(*command, *options);
+  command->add_option("--delta", *delta, "distance between the poses of a pair")->required();
+  command->add_option("--delta-unit", *delta_unit, "f (frames), m (metres), s (seconds), d (degrees)")->required();
+  command->add_flag("--all-pairs", *all_pairs, "use all pairs at distance delta, not only consecutive ones");
+  command->callback([options, delta, delta_unit, all_pairs, streams] {
+    ev::RpeOptions rpe_options;
+    rpe_options.pose_relation = ev::ParsePoseRelation(options->pose_relation);
+    rpe_options.delta = *delta;
+    rpe_options.delta_unit = ev::ParseDeltaUnit(*delta_unit);
+    rpe_options.all_pairs = *all_pairs;
+    rpe_options.association = ToAssociation(*options);
+    rpe_options.alignment = ToAlignment(*options);
+    const ev::Trajectory reference = ev::ReadTrajectory(options->reference_path);
+    const ev::Trajectory estimate = ev::ReadTrajectory(options->estimate_path);
+    PrintMetric(ev::Rpe(rpe_options).Compute(reference, estimate), options->json, streams.out);
+  });
+}
+
+void RegisterRelations(CLI::App& eval, const Streams& streams) {
+  struct Options {
+    std::string trajectory_path;
+    std::string relations_path;
+    double t_offset_s = 0.0;
+    bool json = false;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = eval.add_subcommand("relations", "Kuemmerle et al. relations metric");
+  command->add_option("TRAJ", options->trajectory_path, "estimated trajectory")->required();
+  command->add_option("RELATIONS", options->relations_path, "relations file (t1 t2 x y z roll pitch yaw)")
+      ->required();
+  command->add_option("--t-offset", options->t_offset_s, "time offset added to relation stamps (s)")
+      ->capture_default_str();
+  command->add_flag("--json", options->json, "print one JSON object instead of a table");
+  command->callback([options, streams] {
+    ev::RelationsOptions relations_options;
+    relations_options.t_offset_s = options->t_offset_s;
+    const ev::Trajectory estimate = ev::ReadTrajectory(options->trajectory_path);
+    const ev::Relations relations = ev::ReadRelations(options->relations_path);
+    const ev::RelationsResult result = ev::RelationsMetric(relations_options).Compute(estimate, relations);
+    const nlohmann::json j = result.ToJson();
+    if (options->json) {
+      streams.out << j.dump() << "\n";
+      return;
+    }
+    TextTable table("relations metric — " + j.at("specification").dump());
+    for (const auto& [key, value] : j.items()) {
+      if (key != "specification") table.Add(key, value.dump());
+    }
+    table.Print(streams.out);
+  });
+}
+
+}  // namespace
+
+void RegisterEvalTrajectoryCommands(CLI::App& eval, const Streams& streams) {
+  RegisterApe(eval, streams);
+  RegisterRpe(eval, streams);
+  RegisterRelations(eval, streams);
+}
+
+}  // namespace slamsweep::cli

@@ -1,0 +1,62 @@
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/run_cli.h"
+#include "tests/support/shared_data.h"
+
+namespace slamsweep {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::RunCli;
+
+TEST(EvalMapCommandTest, JsonMatchesIndependentImplementationOnRbpfMap) {
+  SLAMSWEEP_REQUIRE_SHARED(expected_path, "reference/maps/expected_paper_metrics.json");
+  std::ifstream in(expected_path);
+  nlohmann::json expected;
+  for (const auto& entry : nlohmann::json::parse(in).at("maps")) {
+    if (entry.at("map") == "telecom_rbpf.pgm") expected = entry;
+  }
+  ASSERT_FALSE(expected.is_null());
+  const auto run = RunCli({"eval", "map", (expected_path.parent_path() / "telecom_rbpf.pgm").string(),
+                           "--unknown-value", "205", "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json result = nlohmann::json::parse(run.out);
+  for (const char* key : {"occupied_to_free_unknown", "occupied_to_all", "unknown_to_all"}) {
+    EXPECT_NEAR(result.at(key).get<double>(), expected.at(key).get<double>(), 1e-9) << key;
+  }
+  EXPECT_EQ(result.at("corners"), expected.at("corners"));
+  EXPECT_EQ(result.at("enclosed_areas"), expected.at("enclosed_areas"));
+  EXPECT_TRUE(result.contains("parameters"));
+}
+
+TEST(EvalMapCommandTest, YamlPointingAtMissingImageExitsTwoNamingBoth) {
+  testing::TempDir dir;
+  testing::WriteFile(dir / "map.yaml",
+                     "image: missing.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\n"
+                     "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  const auto run = RunCli({"eval", "map", (dir / "map.yaml").string()});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("map.yaml"));
+  EXPECT_THAT(run.err, HasSubstr("missing.pgm"));
+}
+
+TEST(EvalMapCommandTest, MapWithNoKnownCellExitsTwo) {
+  testing::TempDir dir;
+  // A 4x4 binary PGM where every cell has the unknown value.
+  std::string pgm = "P5\n4 4\n255\n" + std::string(16, static_cast<char>(205));
+  testing::WriteFile(dir / "unknown.pgm", pgm);
+  const auto run = RunCli({"eval", "map", (dir / "unknown.pgm").string(), "--unknown-value", "205"});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("known"));
+}
+
+TEST(EvalMapCommandTest, UnknownValueOutOfRangeIsAUsageError) {
+  EXPECT_EQ(RunCli({"eval", "map", "x.pgm", "--unknown-value", "300"}).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace slamsweep
