@@ -2,12 +2,14 @@
 #include <fmt/format.h>
 
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
 
 #include "cli/command.h"
 #include "cli/text_table.h"
+#include "evaluator/core/input_error.h"
 #include "evaluator/formats/trajectory/relations_format.h"
 #include "evaluator/formats/trajectory/trajectory_file.h"
 #include "evaluator/trajectory/ape.h"
@@ -28,8 +30,23 @@ struct PairOptions {
   double t_max_diff_s = 0.01;
   double t_offset_s = 0.0;
   std::string pose_relation = "trans";
+  std::string reference_format = "auto";
+  std::string estimate_format = "auto";
   bool json = false;
 };
+
+/// Reads a trajectory in the given (or detected) format; format notes such as a CARMEN
+/// log's broken clock go to stderr so that --json output stays one object.
+ev::Trajectory ReadForCommand(const std::string& path, const std::string& format, const Streams& streams) {
+  const std::optional<ev::TrajectoryFormat> parsed = ev::ParseTrajectoryFormat(format);
+  if (!parsed) {
+    throw ev::InputError("--ref-format/--est-format '" + format +
+                         "': expected one of auto, tum, kitti, mrpt, carmen, csv");
+  }
+  ev::TrajectoryFile file = ev::ReadTrajectoryFile(path, *parsed);
+  for (const std::string& warning : file.warnings) streams.err << "slamsweep: warning: " << warning << "\n";
+  return std::move(file.trajectory);
+}
 
 void AddPairOptions(CLI::App& command, PairOptions& options) {
   command.add_option("REF", options.reference_path, "reference trajectory (TUM, KITTI, CSV, CARMEN log, MRPT path)")
@@ -42,6 +59,10 @@ void AddPairOptions(CLI::App& command, PairOptions& options) {
       ->capture_default_str();
   command.add_option("--t-offset", options.t_offset_s, "time offset added to EST stamps (s)")->capture_default_str();
   command.add_option("--pose-relation", options.pose_relation, "trans (m) or rot-deg (degrees)")
+      ->capture_default_str();
+  command.add_option("--ref-format", options.reference_format, "auto|tum|kitti|mrpt|carmen|csv")
+      ->capture_default_str();
+  command.add_option("--est-format", options.estimate_format, "auto|tum|kitti|mrpt|carmen|csv")
       ->capture_default_str();
   command.add_flag("--json", options.json, "print one JSON object instead of a table");
 }
@@ -91,8 +112,8 @@ void RegisterApe(CLI::App& eval, const Streams& streams) {
     ape_options.pose_relation = ev::ParsePoseRelation(options->pose_relation);
     ape_options.association = ToAssociation(*options);
     ape_options.alignment = ToAlignment(*options);
-    const ev::Trajectory reference = ev::ReadTrajectory(options->reference_path);
-    const ev::Trajectory estimate = ev::ReadTrajectory(options->estimate_path);
+    const ev::Trajectory reference = ReadForCommand(options->reference_path, options->reference_format, streams);
+    const ev::Trajectory estimate = ReadForCommand(options->estimate_path, options->estimate_format, streams);
     PrintMetric(ev::Ape(ape_options).Compute(reference, estimate), options->json, streams.out);
   });
 }
@@ -115,8 +136,8 @@ void RegisterRpe(CLI::App& eval, const Streams& streams) {
     rpe_options.all_pairs = *all_pairs;
     rpe_options.association = ToAssociation(*options);
     rpe_options.alignment = ToAlignment(*options);
-    const ev::Trajectory reference = ev::ReadTrajectory(options->reference_path);
-    const ev::Trajectory estimate = ev::ReadTrajectory(options->estimate_path);
+    const ev::Trajectory reference = ReadForCommand(options->reference_path, options->reference_format, streams);
+    const ev::Trajectory estimate = ReadForCommand(options->estimate_path, options->estimate_format, streams);
     PrintMetric(ev::Rpe(rpe_options).Compute(reference, estimate), options->json, streams.out);
   });
 }
@@ -139,7 +160,7 @@ void RegisterRelations(CLI::App& eval, const Streams& streams) {
   command->callback([options, streams] {
     ev::RelationsOptions relations_options;
     relations_options.t_offset_s = options->t_offset_s;
-    const ev::Trajectory estimate = ev::ReadTrajectory(options->trajectory_path);
+    const ev::Trajectory estimate = ReadForCommand(options->trajectory_path, "auto", streams);
     const ev::Relations relations = ev::ReadRelations(options->relations_path);
     const ev::RelationsResult result = ev::RelationsMetric(relations_options).Compute(estimate, relations);
     const nlohmann::json j = result.ToJson();

@@ -16,8 +16,9 @@ using testing::RunCli;
 TEST(EvalMapCommandTest, JsonMatchesIndependentImplementationOnRbpfMap) {
   SLAMSWEEP_REQUIRE_SHARED(expected_path, "reference/maps/expected_paper_metrics.json");
   std::ifstream in(expected_path);
+  const nlohmann::json all = nlohmann::json::parse(in);
   nlohmann::json expected;
-  for (const auto& entry : nlohmann::json::parse(in).at("maps")) {
+  for (const auto& entry : all.at("maps")) {
     if (entry.at("map") == "telecom_rbpf.pgm") expected = entry;
   }
   ASSERT_FALSE(expected.is_null());

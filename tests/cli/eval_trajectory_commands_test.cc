@@ -104,7 +104,25 @@ TEST(EvalRelationsCommandTest, ExactTrajectoryGivesZeroError) {
                            "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json result = nlohmann::json::parse(run.out);
-  EXPECT_TRUE(result.dump().find("used") != std::string::npos) << result.dump();
+  EXPECT_EQ(result.at("used"), 1);
+  EXPECT_EQ(result.at("skipped"), 0);
+  EXPECT_NEAR(result.at("translation_abs_mean_m").get<double>(), 0.0, 1e-9);
+  EXPECT_NEAR(result.at("rotation_abs_mean_deg").get<double>(), 0.0, 1e-7);
+}
+
+TEST(EvalRelationsCommandTest, KnownOffsetGivesKnownError) {
+  // Claim the second pose is 1.5 m ahead while the trajectory says 1 m: 0.5 m error.
+  testing::TempDir dir;
+  testing::WriteFile(dir / "traj.tum", "0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n");
+  testing::WriteFile(dir / "rel.relations", "0 1 1.5 0 0 0 0 0\n5 6 1 0 0 0 0 0\n");
+  const auto run = RunCli({"eval", "relations", (dir / "traj.tum").string(), (dir / "rel.relations").string(),
+                           "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json result = nlohmann::json::parse(run.out);
+  EXPECT_EQ(result.at("used"), 1);
+  EXPECT_EQ(result.at("skipped"), 1);  // the relation at t = 5..6 s lies outside the trajectory
+  EXPECT_NEAR(result.at("translation_abs_mean_m").get<double>(), 0.5, 1e-9);
+  EXPECT_NEAR(result.at("translation_sq_mean_m2").get<double>(), 0.25, 1e-9);
 }
 
 }  // namespace

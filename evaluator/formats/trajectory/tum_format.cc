@@ -13,8 +13,8 @@ Trajectory ParseTum(std::string_view content, const std::filesystem::path& sourc
   Trajectory trajectory;
   ForEachRecord(source, content, [&](const TextRecord& record) {
     record.RequireFields(8, "timestamp tx ty tz qx qy qz qw");
-    if (record.size() > 8) record.Fail("expected 8 fields (timestamp tx ty tz qx qy qz qw), got " +
-                                       std::to_string(record.size()));
+    if (record.size() > 8)
+      record.Fail("expected 8 fields (timestamp tx ty tz qx qy qz qw), got " + std::to_string(record.size()));
     const double stamp = record.Number(0, "timestamp");
     Pose pose;
     pose.position = {record.Number(1, "tx"), record.Number(2, "ty"), record.Number(3, "tz")};
@@ -28,7 +28,8 @@ Trajectory ParseTum(std::string_view content, const std::filesystem::path& sourc
       record.Fail(error.what());
     }
   });
-  if (trajectory.empty()) throw InputError(Located(source, 0, "no poses found (expected TUM lines 'timestamp tx ty tz qx qy qz qw')"));
+  if (trajectory.empty())
+    throw InputError(Located(source, 0, "no poses found (expected TUM lines 'timestamp tx ty tz qx qy qz qw')"));
   return trajectory;
 }
 

@@ -1,0 +1,49 @@
+#include "evaluator/trajectory/ape.h"
+
+#include <string>
+#include <utility>
+
+namespace slamsweep::evaluator {
+
+Ape::Ape(ApeOptions options) : options_(std::move(options)) {
+  ValidateAssociationOptions(options_.association);
+  ValidateAlignmentOptions(options_.alignment);
+}
+
+nlohmann::json Ape::Specification() const {
+  nlohmann::json specification = ToJson(options_.association);
+  specification["pose_relation"] = std::string(PoseRelationName(options_.pose_relation));
+  specification["alignment"] = std::string(AlignmentModeName(options_.alignment.mode));
+  specification["n_to_align"] = options_.alignment.n_to_align;
+  return specification;
+}
+
+MetricResult Ape::Compute(const Trajectory& reference, const Trajectory& estimate) const {
+  Association association = Associate(reference, estimate, options_.association);
+  MetricResult result;
+  result.alignment = ComputeAlignment(association.reference, association.estimate, options_.alignment);
+  const Trajectory aligned = result.alignment ? ApplyAlignment(std::move(association.estimate), *result.alignment)
+                                              : std::move(association.estimate);
+
+  const std::vector<Pose>& reference_poses = association.reference.poses();
+  const std::vector<Pose>& estimate_poses = aligned.poses();
+  result.errors.resize(reference_poses.size());
+  for (std::size_t i = 0; i < reference_poses.size(); ++i) {
+    const Pose& expected = reference_poses[i];
+    const Pose& actual = estimate_poses[i];
+    result.errors[i] = options_.pose_relation == PoseRelation::kTranslation
+                           ? (expected.position - actual.position).norm()
+                           : RadToDeg(RotationAngleRad(expected.orientation.conjugate() * actual.orientation));
+  }
+
+  result.metric = "ape";
+  result.unit = std::string(PoseRelationUnit(options_.pose_relation));
+  result.specification = Specification();
+  result.statistics = ComputeStatistics(result.errors);
+  result.pairs = reference_poses.size();
+  result.reference_unpaired = association.reference_unpaired;
+  result.estimate_unpaired = association.estimate_unpaired;
+  return result;
+}
+
+}  // namespace slamsweep::evaluator
