@@ -1,0 +1,266 @@
+#include "evaluator/sequence/carmen_sequence.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <string_view>
+#include <vector>
+
+#include "evaluator/core/input_error.h"
+#include "evaluator/formats/trajectory/relations_format.h"
+#include "evaluator/sequence/flaser_fan.h"
+#include "evaluator/sequence/provenance_file.h"
+
+namespace slamsweep::evaluator {
+namespace {
+
+constexpr std::string_view kFlaser = "FLASER";
+constexpr std::string_view kRobotLaser = "ROBOTLASER1";
+constexpr std::string_view kFrontLaserMaxParam = "robot_front_laser_max";
+/// How many line numbers a warning lists before it says "...".
+constexpr std::size_t kLinesShown = 5;
+
+std::string DefaultName(const std::filesystem::path& source) {
+  std::string name = source.filename().string();
+  for (std::string_view suffix : {".gz", ".log", ".clf"}) {
+    if (name.size() > suffix.size() && name.ends_with(suffix)) name.resize(name.size() - suffix.size());
+  }
+  return name;
+}
+
+std::string LineList(const std::vector<std::size_t>& lines) {
+  std::string text;
+  for (std::size_t i = 0; i < lines.size() && i < kLinesShown; ++i) {
+    if (i > 0) text += ", ";
+    text += std::to_string(lines[i]);
+  }
+  if (lines.size() > kLinesShown) text += ", ...";
+  return text;
+}
+
+/// The FLASER max range: the option, else the log's last robot_front_laser_max PARAM, else the default.
+double FlaserMaxRange(const CarmenLog& log, const std::filesystem::path& source, const CarmenSequenceOptions& options,
+                      std::vector<std::string>& warnings) {
+  if (options.max_range_m) return *options.max_range_m;
+  std::optional<double> from_param;
+  std::size_t from_line = 0;
+  for (const CarmenParam& param : log.params) {
+    if (param.name != kFrontLaserMaxParam) continue;
+    double value = 0.0;
+    const char* begin = param.value.data();
+    const char* end = begin + param.value.size();
+    const auto [stop, error] = std::from_chars(begin, end, value);
+    if (error != std::errc() || stop != end || !std::isfinite(value) || !(value > options.min_range_m)) {
+      throw InputError(Located(source, param.line,
+                               fmt::format("PARAM {}: expected a range in metres above min_range_m ({}), got '{}'",
+                                           kFrontLaserMaxParam, options.min_range_m, param.value)));
+    }
+    if (from_param && *from_param != value) {
+      warnings.push_back(Located(source, param.line,
+                                 fmt::format("PARAM {} = {} replaces {} set on line {}; the last value is used",
+                                             kFrontLaserMaxParam, value, *from_param, from_line)));
+    }
+    from_param = value;
+    from_line = param.line;
+  }
+  return from_param.value_or(options.default_max_range_m);
+}
+
+/// Strictly increasing scan stamps from the records' ipc_timestamp, with a warning when they had to change.
+std::vector<double> ScanStampsOf(const std::vector<const CarmenLaserRecord*>& records,
+                                 const std::filesystem::path& source, const StampOptions& options,
+                                 std::vector<std::string>& warnings) {
+  std::vector<double> recorded;
+  recorded.reserve(records.size());
+  for (const CarmenLaserRecord* record : records) recorded.push_back(record->ipc_stamp_s);
+  ScanStamps stamps = ChooseScanStamps(recorded, options);
+  if (stamps.non_increasing.empty()) return std::move(stamps.stamps_s);
+
+  const std::size_t first = stamps.non_increasing.front();
+  if (options.policy == StampPolicy::kRecorded) {
+    throw InputError(Located(source, records[first]->line,
+                             fmt::format("ipc_timestamp {} does not come after the previous scan's {} (stamp policy "
+                                         "'recorded'; 'auto' repairs a few such stamps or falls back to record order)",
+                                         recorded[first], recorded[first - 1])));
+  }
+  if (stamps.outcome == StampOutcome::kRepaired) {
+    std::vector<std::size_t> lines;
+    for (std::size_t index : stamps.non_increasing) lines.push_back(records[index]->line);
+    warnings.push_back(
+        Located(source, 0,
+                fmt::format("{} of {} scan stamps did not come after the previous one and were lifted to it + {} s "
+                            "(lines {})",
+                            stamps.non_increasing.size(), records.size(), options.repair_step_s, LineList(lines))));
+  } else if (stamps.outcome == StampOutcome::kRecordOrder && options.policy == StampPolicy::kAuto) {
+    const auto [low, high] = std::minmax_element(recorded.begin(), recorded.end());
+    warnings.push_back(Located(
+        source, 0,
+        fmt::format("recorded scan stamps are unusable ({} of {} do not come after the previous one, first on line {}; "
+                    "they span [{}, {}] s); scans are stamped in record order every {} s instead",
+                    stamps.non_increasing.size(), records.size(), records[first]->line, *low, *high,
+                    options.record_order_period_s)));
+  }
+  return std::move(stamps.stamps_s);
+}
+
+LaserScan FlaserScan(const CarmenLaserRecord& record, const std::filesystem::path& source, double max_range_m,
+                     bool& known_layout) {
+  BeamFan fan;
+  try {
+    fan = FlaserBeamFan(record.ranges_m.size());
+  } catch (const InputError& error) {
+    throw InputError(Located(source, record.line, error.what()));
+  }
+  known_layout = fan.known_layout;
+  LaserScan scan;
+  scan.angle_min_rad = fan.angle_min_rad;
+  scan.angle_increment_rad = fan.angle_increment_rad;
+  scan.range_max_m = max_range_m;
+  return scan;
+}
+
+LaserScan RobotLaserScan(const CarmenLaserRecord& record, const std::filesystem::path& source,
+                         const CarmenSequenceOptions& options) {
+  const CarmenBeamGeometry geometry = record.geometry.value_or(CarmenBeamGeometry{});
+  if (record.ranges_m.empty()) throw InputError(Located(source, record.line, "ROBOTLASER1 with no readings"));
+  if (geometry.angular_resolution_rad == 0.0) {
+    throw InputError(Located(source, record.line, "ROBOTLASER1 angular_res: expected a non-zero beam spacing, got 0"));
+  }
+  LaserScan scan;
+  scan.angle_min_rad = geometry.start_angle_rad;
+  scan.angle_increment_rad = geometry.angular_resolution_rad;
+  scan.range_max_m = options.max_range_m.value_or(geometry.max_range_m);
+  if (!(scan.range_max_m > options.min_range_m)) {
+    throw InputError(Located(source, record.line,
+                             fmt::format("ROBOTLASER1 max_range: expected a range above min_range_m ({}), got {}",
+                                         options.min_range_m, scan.range_max_m)));
+  }
+  scan.sensor_pose_on_robot = Relative(record.robot_pose, record.laser_pose);
+  return scan;
+}
+
+void WarnAboutIgnoredLasers(const CarmenLog& log, const std::filesystem::path& source, std::size_t ignored_flasers,
+                            std::vector<std::string>& warnings) {
+  if (ignored_flasers > 0) {
+    warnings.push_back(Located(source, 0,
+                               fmt::format("{} FLASER records ignored: the log also has ROBOTLASER1 records, which "
+                                           "state their beam geometry",
+                                           ignored_flasers)));
+  }
+  for (const auto& [type, count] : log.skipped_messages) {
+    if (type.find("LASER") == std::string::npos) continue;
+    warnings.push_back(
+        Located(source, 0, fmt::format("{} {} records ignored (only the front laser is read)", count, type)));
+  }
+}
+
+Relations ShiftedRelations(Relations relations, double offset_s) {
+  for (Relation& relation : relations) {
+    relation.t1_s += offset_s;
+    relation.t2_s += offset_s;
+  }
+  return relations;
+}
+
+Provenance ProvenanceOf(const std::filesystem::path& source, const CarmenSequenceOptions& options) {
+  if (options.provenance) return *options.provenance;
+  Provenance provenance = ReadProvenanceBeside(source).value_or(Provenance{source.string(), "", ""});
+  if (options.relations_path) {
+    if (const std::optional<Provenance> relations = ReadProvenanceBeside(*options.relations_path);
+        relations && !relations->citation.empty()) {
+      provenance.citation +=
+          (provenance.citation.empty() ? "" : "; ") + std::string("relations: ") + relations->citation;
+    }
+  }
+  return provenance;
+}
+
+}  // namespace
+
+void CheckCarmenSequenceOptions(const CarmenSequenceOptions& options) {
+  CheckStampOptions(options.stamps);
+  if (!(options.min_range_m >= 0.0) || !std::isfinite(options.min_range_m)) {
+    throw InputError(fmt::format("min_range_m: expected a finite range >= 0 m, got {}", options.min_range_m));
+  }
+  if (!(options.default_max_range_m > options.min_range_m) || !std::isfinite(options.default_max_range_m)) {
+    throw InputError(fmt::format("default_max_range_m: expected a finite range above min_range_m ({} m), got {}",
+                                 options.min_range_m, options.default_max_range_m));
+  }
+  if (options.max_range_m && (!(*options.max_range_m > options.min_range_m) || !std::isfinite(*options.max_range_m))) {
+    throw InputError(fmt::format("max_range_m: expected a finite range above min_range_m ({} m), got {}",
+                                 options.min_range_m, *options.max_range_m));
+  }
+  if (!std::isfinite(options.relations_offset_s)) {
+    throw InputError(
+        fmt::format("relations_offset_s: expected a finite offset in seconds, got {}", options.relations_offset_s));
+  }
+}
+
+Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& source,
+                             const CarmenSequenceOptions& options) {
+  CheckCarmenSequenceOptions(options);
+  const bool use_robot_laser = std::any_of(log.lasers.begin(), log.lasers.end(),
+                                           [](const CarmenLaserRecord& record) { return record.type == kRobotLaser; });
+  std::vector<const CarmenLaserRecord*> records;
+  std::size_t ignored_flasers = 0;
+  for (const CarmenLaserRecord& record : log.lasers) {
+    if (record.type == (use_robot_laser ? kRobotLaser : kFlaser)) {
+      records.push_back(&record);
+    } else if (record.type == kFlaser) {
+      ++ignored_flasers;
+    }
+  }
+  if (records.empty()) {
+    throw InputError(Located(source, 0, "no FLASER or ROBOTLASER1 records: a sequence needs laser scans"));
+  }
+
+  Sequence sequence;
+  sequence.name = options.name.empty() ? DefaultName(source) : options.name;
+  WarnAboutIgnoredLasers(log, source, ignored_flasers, sequence.warnings);
+  const double flaser_max_range_m = FlaserMaxRange(log, source, options, sequence.warnings);
+  const std::vector<double> stamps_s = ScanStampsOf(records, source, options.stamps, sequence.warnings);
+
+  std::vector<std::size_t> guessed_fan_lines;
+  sequence.scans.reserve(records.size());
+  sequence.odometry.Reserve(records.size());
+  Trajectory reference;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const CarmenLaserRecord& record = *records[i];
+    LaserScan scan;
+    if (use_robot_laser) {
+      scan = RobotLaserScan(record, source, options);
+    } else {
+      bool known_layout = true;
+      scan = FlaserScan(record, source, flaser_max_range_m, known_layout);
+      if (!known_layout) guessed_fan_lines.push_back(record.line);
+    }
+    scan.stamp_s = stamps_s[i];
+    scan.range_min_m = options.min_range_m;
+    scan.ranges_m.assign(record.ranges_m.begin(), record.ranges_m.end());
+    sequence.scans.push_back(std::move(scan));
+    sequence.odometry.Add(stamps_s[i], record.odom_pose);
+    if (options.logged_pose_is_reference) reference.Add(stamps_s[i], record.robot_pose);
+  }
+  if (!guessed_fan_lines.empty()) {
+    sequence.warnings.push_back(Located(
+        source, 0,
+        fmt::format("{} FLASER records have a beam count that is not a SICK layout (180, 181, 360, 361); their beams "
+                    "were spread over 180 deg as CARMEN does (lines {})",
+                    guessed_fan_lines.size(), LineList(guessed_fan_lines))));
+  }
+  if (options.logged_pose_is_reference) sequence.reference = std::move(reference);
+  if (options.relations_path) {
+    sequence.relations = ShiftedRelations(ReadRelations(*options.relations_path), options.relations_offset_s);
+  }
+  sequence.provenance = ProvenanceOf(source, options);
+  return sequence;
+}
+
+Sequence ReadCarmenSequence(const std::filesystem::path& path, const CarmenSequenceOptions& options) {
+  CheckCarmenSequenceOptions(options);
+  return CarmenLogToSequence(ReadCarmenLog(path), path, options);
+}
+
+}  // namespace slamsweep::evaluator

@@ -1,0 +1,64 @@
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "evaluator/formats/trajectory/carmen_log.h"
+#include "evaluator/sequence/scan_stamps.h"
+#include "evaluator/sequence/sequence.h"
+
+namespace slamsweep::evaluator {
+
+/// How a CARMEN log becomes a Sequence. Every field has a default that reads the Radish /
+/// Freiburg "corrected" logs in shared/datasets.
+struct CarmenSequenceOptions {
+  /// Empty: the log's file name without ".gz", ".log" and ".clf".
+  std::string name;
+  /// Scan stamps come from each laser record's ipc_timestamp (the clock the relations files use),
+  /// chosen under this policy; see ChooseScanStamps.
+  StampOptions stamps;
+  /// FLASER max range when set; otherwise PARAM robot_front_laser_max from the log; otherwise
+  /// default_max_range_m. ROBOTLASER1 records state their own and are not overridden unless this is set.
+  std::optional<double> max_range_m;
+  /// CARMEN's own assumption for FLASER records (readlog.c: maximum_range = 80 m). The logs store
+  /// "no return" as a reading at or beyond the sensor maximum (81.83 / 81.91 m in the SICK logs).
+  double default_max_range_m = 80.0;
+  /// Readings below this are not returns.
+  double min_range_m = 0.0;
+  /// The logged pose (FLASER x y theta, ROBOTLASER1 robot pose) is the SLAM-corrected pose in the
+  /// "corrected" logs: keep it as Sequence::reference. Set false for raw logs, where it is odometry.
+  bool logged_pose_is_reference = true;
+  /// Kuemmerle et al. relations for this log, read into Sequence::relations when set.
+  std::optional<std::filesystem::path> relations_path;
+  /// Added to both stamps of every relation, to bring the relations' clock onto the log's (intel:
+  /// the relations use absolute ipc time, the corrected log relative time).
+  double relations_offset_s = 0.0;
+  /// When set, used as is; otherwise read from PROVENANCE.txt beside the log (ReadProvenanceBeside),
+  /// else just the log's path as source.
+  std::optional<Provenance> provenance;
+};
+
+/// Throws InputError naming the option for values out of range.
+void CheckCarmenSequenceOptions(const CarmenSequenceOptions& options);
+
+/// The scans of a parsed CARMEN log as a Sequence (no file access apart from relations/provenance
+/// named in the options). Scans come from the FLASER records, or from the ROBOTLASER1 records when
+/// the log has any (they state their beam geometry; CARMEN loggers that write both write the same
+/// scan twice). Geometry:
+///   FLASER: FlaserBeamFan(n); sensor at the robot origin (the logged pose is the laser's pose,
+///           which CARMEN's readlog.c calls laser_pose, so scans and reference agree);
+///   ROBOTLASER1: start_angle, angular_res, max_range of the record; sensor pose = laser pose in the
+///           frame of the robot pose.
+/// Odometry: FLASER odom_x/y/theta (ROBOTLASER1: robot pose), one pose per scan at the scan's stamp.
+/// Reference: the logged pose at the same stamps, when options.logged_pose_is_reference.
+/// Warnings (each naming `source`) for repaired or made-up stamps, guessed beam fans, conflicting
+/// PARAM values and ignored laser messages. A log without laser records, or a record that cannot
+/// be a scan, is an InputError "FILE:LINE: ...".
+Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& source,
+                             const CarmenSequenceOptions& options = {});
+
+/// ReadCarmenLog (plain or gzip) + CarmenLogToSequence.
+Sequence ReadCarmenSequence(const std::filesystem::path& path, const CarmenSequenceOptions& options = {});
+
+}  // namespace slamsweep::evaluator

@@ -1,0 +1,47 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "evaluator/core/laser_scan.h"
+#include "evaluator/core/occupancy_grid.h"
+#include "evaluator/core/relation.h"
+#include "evaluator/core/trajectory.h"
+
+namespace slamsweep::evaluator {
+
+/// Where a sequence comes from, carried into every report that uses it: public datasets must be
+/// cited, and their redistribution terms travel with them.
+struct Provenance {
+  /// Where the data was obtained (repository, commit, path; or a file path when nothing else is known).
+  std::string source;
+  /// Whom to cite (the original authors / archive).
+  std::string citation;
+  /// The redistribution terms as far as they are known.
+  std::string licence_note;
+};
+
+/// Timestamped 2D laser scans with the robot's odometry, optionally the ground truth that makes
+/// the run scorable, and its provenance. Invariant (checked by ValidateSequence): scan stamps
+/// strictly increase and `odometry` holds exactly one pose per scan with the scan's stamp.
+struct Sequence {
+  std::string name;
+  std::vector<LaserScan> scans;
+  /// Robot pose by odometry at each scan, same stamps as `scans`.
+  Trajectory odometry;
+  /// Ground-truth robot poses (any stamps; metrics associate them by time).
+  std::optional<Trajectory> reference;
+  std::optional<Relations> relations;
+  std::optional<OccupancyGrid> reference_map;
+  Provenance provenance;
+  /// What the reader had to repair or assume, each naming the input file, for the run record.
+  std::vector<std::string> warnings;
+};
+
+/// Throws InputError (starting with the sequence name) unless the invariant above holds and every
+/// scan is usable: at least one beam, a finite non-zero angle increment, 0 <= range_min_m < range_max_m,
+/// finite stamps and a valid sensor pose.
+void ValidateSequence(const Sequence& sequence);
+
+}  // namespace slamsweep::evaluator
