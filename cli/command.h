@@ -19,6 +19,8 @@ struct Streams {
 void RegisterEvalTrajectoryCommands(CLI::App& eval, const Streams& streams);
 /// `eval map` on the `eval` subcommand.
 void RegisterEvalMapCommand(CLI::App& eval, const Streams& streams);
+/// `data info|convert|map|simulate` on the top-level app.
+void RegisterDataCommands(CLI::App& app, const Streams& streams);
 /// `vectorize` on the top-level app.
 void RegisterVectorizeCommand(CLI::App& app, const Streams& streams);
 

@@ -11,6 +11,7 @@ int RunCommandLine(int argc, const char* const* argv, const Streams& streams) {
   RegisterEvalTrajectoryCommands(*eval, streams);
   RegisterEvalMapCommand(*eval, streams);
   RegisterVectorizeCommand(app, streams);
+  RegisterDataCommands(app, streams);
   try {
     app.parse(argc, argv);
     return 0;

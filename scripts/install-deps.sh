@@ -10,6 +10,9 @@ packages=(
   # libraries (README "Dependencies" says why each is there)
   libeigen3-dev libopencv-dev nlohmann-json3-dev libyaml-cpp-dev libspdlog-dev libfmt-dev
   libcli11-dev zlib1g-dev libsqlite3-dev libboost-dev
+  # MRPT: rawlog reading/writing (libmrpt-obs-dev), the real SLAM programs (mrpt-apps),
+  # their sample dataset and configs (mrpt-common)
+  libmrpt-obs-dev mrpt-apps mrpt-common
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
 )
