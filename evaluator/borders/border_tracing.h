@@ -24,8 +24,8 @@ struct Border {
 
 /// Result of step 2 for a whole grid.
 struct BorderTracing {
-  std::vector<Border> borders;  ///< In the order the scan started them.
-  BinaryGrid marked;            ///< The input with border cells set to 2 and isolated cells to 0.
+  std::vector<Border> borders;        ///< In the order the scan started them.
+  BinaryGrid marked;                  ///< The input with border cells set to 2 and isolated cells to 0.
   std::size_t erased_cell_count = 0;  ///< Isolated cells the scan erased.
 };
 

@@ -6,9 +6,9 @@
 namespace slamsweep::evaluator {
 
 /// The thresholds the handout shows, on its 0..100 occupancy scale.
-inline constexpr double kAnyOccupancyThreshold = 0.0;   ///< > 0: every cell with any evidence.
-inline constexpr double kLowOccupancyThreshold = 1.0;   ///< > 1.
-inline constexpr double kHighOccupancyThreshold = 75.0; ///< > 75: confident obstacles only.
+inline constexpr double kAnyOccupancyThreshold = 0.0;    ///< > 0: every cell with any evidence.
+inline constexpr double kLowOccupancyThreshold = 1.0;    ///< > 1.
+inline constexpr double kHighOccupancyThreshold = 75.0;  ///< > 75: confident obstacles only.
 
 /// Step 1 of the handout: a BinaryGrid (Y up, see binary_grid.h) holding kObstacle where the
 /// cell's value p * 100 exceeds `threshold` (0..100 scale) and kFree elsewhere; unknown
