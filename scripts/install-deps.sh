@@ -13,6 +13,8 @@ packages=(
   # MRPT: rawlog reading/writing (libmrpt-obs-dev), the real SLAM programs (mrpt-apps),
   # their sample dataset and configs (mrpt-common)
   libmrpt-obs-dev mrpt-apps mrpt-common
+  # ROS1 bags (evaluator/formats/rosbag): librosbag and message headers; python3-* write the test bags
+  librosbag-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev libgeometry-msgs-dev python3-rosbag python3-sensor-msgs python3-nav-msgs python3-tf2-msgs
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
 )

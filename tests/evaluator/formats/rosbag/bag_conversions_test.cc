@@ -1,0 +1,78 @@
+#include "evaluator/formats/rosbag/bag_conversions.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "evaluator/core/input_error.h"
+
+namespace slamsweep::evaluator {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(BagConversionsTest, NonFiniteRangesBecomeNoReturn) {
+  BagScan scan;
+  scan.stamp_s = 3.0;
+  scan.range_min_m = 0.5f;
+  scan.range_max_m = 8.0f;
+  scan.angle_min_rad = -1.0f;
+  scan.angle_increment_rad = 0.5f;
+  const float inf = std::numeric_limits<float>::infinity();
+  scan.ranges_m = {1.0f, std::numeric_limits<float>::quiet_NaN(), inf, -inf, 0.25f};
+  const LaserScan out = ToLaserScan(scan);
+  EXPECT_EQ(out.ranges_m, (std::vector<float>{1.0f, 8.0f, 8.0f, 8.0f, 0.25f}));
+  EXPECT_TRUE(out.IsHit(out.ranges_m[0]));
+  EXPECT_FALSE(out.IsHit(out.ranges_m[1]));
+  EXPECT_FALSE(out.IsHit(out.ranges_m[4]));  // below range_min stays as recorded, and is no hit
+  EXPECT_EQ(out.stamp_s, 3.0);
+  EXPECT_EQ(out.angle_min_rad, -1.0);
+  EXPECT_EQ(out.angle_increment_rad, 0.5);
+}
+
+TEST(BagConversionsTest, ZeroStampFallsBackToRecordTime) {
+  EXPECT_EQ(MessageStamp(0.0, 7.5), 7.5);
+  EXPECT_EQ(MessageStamp(2.0, 7.5), 2.0);
+}
+
+TEST(BagConversionsTest, PoseIsNormalisedAndProjected) {
+  // Quaternion (0, 0, 2, 2): 90 degrees about z, twice too long; z and tilt are dropped.
+  const Pose pose = ToPlanarPose(BagPose{1.0, 2.0, 3.0, 0.0, 0.0, 2.0, 2.0}, "here");
+  EXPECT_NEAR(pose.Yaw(), std::acos(0.0), 1e-12);
+  EXPECT_EQ(pose.position.z(), 0.0);
+  EXPECT_EQ(pose.position.x(), 1.0);
+  EXPECT_TRUE(pose.IsValid());
+}
+
+TEST(BagConversionsTest, UnusablePosesNameTheirPlace) {
+  EXPECT_THAT(
+      [] {
+        ToPlanarPose(BagPose{0, 0, 0, 0, 0, 0, 0}, "bag.bag: topic '/odom' message 3");
+      },
+      ::testing::ThrowsMessage<InputError>(AllOf(HasSubstr("topic '/odom' message 3"), HasSubstr("zero norm"))));
+  EXPECT_THAT(
+      [] {
+        ToPlanarPose(BagPose{std::nan(""), 0, 0, 0, 0, 0, 1}, "where");
+      },
+      ::testing::ThrowsMessage<InputError>(HasSubstr("where: pose has a non-finite component")));
+}
+
+TEST(BagConversionsTest, TrajectoryIsSortedAndDropsRepeatedStamps) {
+  std::vector<BagStampedPose> poses(3);
+  poses[0].stamp_s = 2.0;
+  poses[0].pose.x_m = 2.0;
+  poses[1].stamp_s = 1.0;
+  poses[1].pose.x_m = 1.0;
+  poses[2].stamp_s = 2.0;
+  poses[2].pose.x_m = 9.0;
+  std::size_t dropped = 0;
+  const Trajectory trajectory = ToTrajectory(poses, "b.bag", "/odom", dropped);
+  EXPECT_EQ(trajectory.stamps_s(), (std::vector<double>{1.0, 2.0}));
+  EXPECT_EQ(trajectory.poses()[1].position.x(), 2.0);  // the first message with that stamp wins
+  EXPECT_EQ(dropped, 1u);
+}
+
+}  // namespace
+}  // namespace slamsweep::evaluator
