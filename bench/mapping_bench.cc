@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "evaluator/core/input_error.h"
-#include "evaluator/core/text_file.h"
 #include "evaluator/mapping/occupancy_mapper.h"
+#include "evaluator/sequence/carmen_sequence.h"
 #include "evaluator/mapping/scan_beams.h"
 #include "evaluator/simulation/floor_plan.h"
 #include "evaluator/simulation/laser_simulator.h"
@@ -68,29 +68,15 @@ void Finish(Workload& w) {
   w.mean_beam_cells = cells / static_cast<double>(beams);
 }
 
-// Just enough of the CARMEN format for a benchmark: FLASER n r1..rn x y theta ... (180 degrees of
-// beams, counter-clockwise from -90 degrees; the pose is the corrected one).
+// The real fr079 log through the project's own CARMEN reader; the corrected poses place the scans.
 Workload LoadFr079() {
   Workload w;
   const std::filesystem::path path =
       std::filesystem::path(SLAMSWEEP_SHARED_DIR) / "datasets/fr079/freiburg-079-corrected.log.gz";
   try {
-    const std::string content = ReadTextFile(path);
-    ForEachRecord(path, content, [&](const TextRecord& record) {
-      if (record.Text(0) != "FLASER") return;
-      const long long count = record.Integer(1, "beam count");
-      record.RequireFields(static_cast<std::size_t>(count) + 5, "FLASER n ranges x y theta");
-      LaserScan scan;
-      scan.range_min_m = 0.0;
-      scan.range_max_m = 81.9;
-      scan.angle_min_rad = -std::numbers::pi / 2;
-      scan.angle_increment_rad = std::numbers::pi / static_cast<double>(count);
-      for (long long i = 0; i < count; ++i) scan.ranges_m.push_back(static_cast<float>(record.Number(2 + i, "range")));
-      const std::size_t pose_field = 2 + static_cast<std::size_t>(count);
-      w.poses.push_back(Pose::Planar(record.Number(pose_field, "x"), record.Number(pose_field + 1, "y"),
-                                     record.Number(pose_field + 2, "theta")));
-      w.scans.push_back(std::move(scan));
-    });
+    Sequence sequence = ReadCarmenSequence(path);
+    w.scans = std::move(sequence.scans);
+    w.poses = sequence.reference ? sequence.reference->poses() : sequence.odometry.poses();
   } catch (const InputError& error) {
     w.error = error.what();
     return w;

@@ -36,13 +36,7 @@ MetricResult Ape::Compute(const Trajectory& reference, const Trajectory& estimat
                            : RadToDeg(RotationAngleRad(expected.orientation.conjugate() * actual.orientation));
   }
 
-  result.metric = "ape";
-  result.unit = std::string(PoseRelationUnit(options_.pose_relation));
-  result.specification = Specification();
-  result.statistics = ComputeStatistics(result.errors);
-  result.pairs = reference_poses.size();
-  result.reference_unpaired = association.reference_unpaired;
-  result.estimate_unpaired = association.estimate_unpaired;
+  FinishMetricResult("ape", options_.pose_relation, Specification(), association, result);
   return result;
 }
 

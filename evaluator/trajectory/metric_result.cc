@@ -14,4 +14,15 @@ nlohmann::json MetricResult::ToJson() const {
   return out;
 }
 
+void FinishMetricResult(std::string metric, PoseRelation pose_relation, nlohmann::json specification,
+                        const Association& association, MetricResult& result) {
+  result.metric = std::move(metric);
+  result.unit = std::string(PoseRelationUnit(pose_relation));
+  result.specification = std::move(specification);
+  result.statistics = ComputeStatistics(result.errors);
+  result.pairs = association.reference.size();
+  result.reference_unpaired = association.reference_unpaired;
+  result.estimate_unpaired = association.estimate_unpaired;
+}
+
 }  // namespace slamsweep::evaluator

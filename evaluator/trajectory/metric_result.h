@@ -8,6 +8,8 @@
 
 #include "evaluator/core/statistics.h"
 #include "evaluator/trajectory/alignment.h"
+#include "evaluator/trajectory/association.h"
+#include "evaluator/trajectory/pose_relation.h"
 
 namespace slamsweep::evaluator {
 
@@ -36,5 +38,11 @@ struct MetricResult {
   /// pairs, reference_unpaired, estimate_unpaired and (when aligned) alignment. No errors vector.
   nlohmann::json ToJson() const;
 };
+
+/// Completes a result whose `errors` (and `alignment`) are filled: metric name, unit of the pose
+/// relation, specification, statistics of the errors, and the association counts. APE and RPE
+/// share it so both report the same fields the same way.
+void FinishMetricResult(std::string metric, PoseRelation pose_relation, nlohmann::json specification,
+                        const Association& association, MetricResult& result);
 
 }  // namespace slamsweep::evaluator

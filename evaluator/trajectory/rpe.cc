@@ -48,13 +48,7 @@ MetricResult Rpe::Compute(const Trajectory& reference, const Trajectory& estimat
                            : RadToDeg(RotationAngleRad(error.orientation));
   }
 
-  result.metric = "rpe";
-  result.unit = std::string(PoseRelationUnit(options_.pose_relation));
-  result.specification = Specification();
-  result.statistics = ComputeStatistics(result.errors);
-  result.pairs = q.size();
-  result.reference_unpaired = association.reference_unpaired;
-  result.estimate_unpaired = association.estimate_unpaired;
+  FinishMetricResult("rpe", options_.pose_relation, Specification(), association, result);
   return result;
 }
 
