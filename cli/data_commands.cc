@@ -1,12 +1,286 @@
 // `slamsweep data ...`: sequences in, SLAM-ready inputs out.
+#include <charconv>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
 #include "cli/command.h"
+#include "cli/data_sources.h"
+#include "evaluator/core/input_error.h"
+#include "evaluator/formats/map/map_server_format.h"
+#include "evaluator/formats/trajectory/output_file.h"
+#include "evaluator/formats/trajectory/tum_format.h"
+#include "evaluator/mapping/occupancy_mapper.h"
+#include "evaluator/noise/odometry_noise.h"
+#include "evaluator/noise/random.h"
+#include "evaluator/noise/range_noise.h"
+#include "evaluator/sequence/sequence_file.h"
+#include "evaluator/simulation/simulated_sequence.h"
 
 namespace slamsweep::cli {
+
+namespace ev = slamsweep::evaluator;
+
+namespace {
+
+/// "a,b,c" as numbers; `option` and the expected layout name the problem.
+std::vector<double> NumberList(const std::string& text, const std::string& option, std::size_t min_count,
+                               std::size_t max_count, const std::string& layout) {
+  std::vector<double> values;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find(',', start);
+    if (end == std::string::npos) end = text.size();
+    double value = 0.0;
+    const char* first = text.data() + start;
+    const char* last = text.data() + end;
+    const auto [stop, error] = std::from_chars(first, last, value);
+    if (error != std::errc() || stop != last || first == last) {
+      throw ev::InputError(option + ": expected " + layout + ", got '" + text + "'");
+    }
+    values.push_back(value);
+    start = end + 1;
+  }
+  if (values.size() < min_count || values.size() > max_count) {
+    throw ev::InputError(option + ": expected " + layout + ", got " + std::to_string(values.size()) + " values in '" +
+                         text + "'");
+  }
+  return values;
+}
+
+/// The options that say how to read a sequence file, shared by every data command.
+struct SourceOptions {
+  std::string source;
+  std::string catalog;
+  evaluator::SequenceReadOptions read;
+};
+
+void AddSourceOptions(CLI::App& command, SourceOptions& options) {
+  command.add_option("SOURCE", options.source, "sequence file (CARMEN, rawlog, ROS bag) or catalog name")->required();
+  command.add_option("--catalog", options.catalog, "dataset catalog (default: configs/datasets.yaml)");
+  command.add_option("--scan-topic", options.read.scan_topic, "ROS bag: the sensor_msgs/LaserScan topic");
+  command.add_option("--odometry-topic", options.read.odometry_topic, "ROS bag: the nav_msgs/Odometry topic");
+  command.add_option("--reference-topic", options.read.reference_topic,
+                     "ROS bag: a nav_msgs/Odometry topic with ground truth");
+}
+
+ev::Sequence LoadSource(const SourceOptions& options) {
+  return LoadSequenceArgument(options.source, FindCatalog(options.catalog), options.read);
+}
+
+nlohmann::json InfoJson(const ev::Sequence& sequence) {
+  std::set<std::size_t> beam_counts;
+  for (const ev::LaserScan& scan : sequence.scans) beam_counts.insert(scan.BeamCount());
+  nlohmann::json info;
+  info["name"] = sequence.name;
+  info["scans"] = sequence.scans.size();
+  if (beam_counts.size() == 1) {
+    info["beams"] = *beam_counts.begin();
+  } else {
+    info["beams"] = std::vector<std::size_t>(beam_counts.begin(), beam_counts.end());
+  }
+  info["duration_s"] =
+      sequence.scans.empty() ? 0.0 : sequence.scans.back().stamp_s - sequence.scans.front().stamp_s;
+  info["has_reference"] = sequence.reference.has_value();
+  info["relations"] = sequence.relations ? sequence.relations->size() : 0;
+  info["warnings"] = sequence.warnings;
+  info["provenance"] = {{"source", sequence.provenance.source},
+                        {"citation", sequence.provenance.citation},
+                        {"licence_note", sequence.provenance.licence_note}};
+  return info;
+}
+
+void RegisterInfo(CLI::App& data, const Streams& streams) {
+  struct Options {
+    SourceOptions input;
+    bool json = false;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = data.add_subcommand("info", "scans, beams, duration and ground truth of a sequence");
+  AddSourceOptions(*command, options->input);
+  command->add_flag("--json", options->json, "print one JSON object");
+  command->callback([options, streams] {
+    const ev::Sequence sequence = LoadSource(options->input);
+    const nlohmann::json info = InfoJson(sequence);
+    if (options->json) {
+      streams.out << info.dump() << "\n";
+      return;
+    }
+    for (const auto& [key, value] : info.items()) streams.out << key << ": " << value.dump() << "\n";
+  });
+}
+
+void RegisterConvert(CLI::App& data, const Streams& streams) {
+  struct Options {
+    SourceOptions input;
+    std::string to;
+    std::string output;
+    std::string odometry_noise;
+    double drift_rad_per_m = 0.0;
+    std::string range_noise;
+    std::uint64_t seed = 1;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = data.add_subcommand("convert", "write a sequence for SLAM programs, optionally with noise");
+  AddSourceOptions(*command, options->input);
+  command->add_option("--to", options->to, "rawlog | carmen | tum")->required();
+  command->add_option("-o,--output", options->output, "output file")->required();
+  command->add_option("--odometry-noise", options->odometry_noise,
+                      "alpha1,alpha2,alpha3,alpha4 of the odometry motion model (variances per step)");
+  command->add_option("--drift", options->drift_rad_per_m, "systematic heading drift (rad per metre travelled)");
+  command->add_option("--range-noise", options->range_noise,
+                      "sigma_m[,dropout_probability[,short_reading_probability]]");
+  command->add_option("--seed", options->seed, "noise seed (odometry: DeriveSeed(seed, 0), ranges: DeriveSeed(seed, 1))");
+  command->callback([options, streams] {
+    const ev::SequenceWriteFormat format = ev::ParseSequenceWriteFormat(options->to, "--to");
+    ev::Sequence sequence = LoadSource(options->input);
+
+    ev::OdometryNoise odometry_noise;
+    if (!options->odometry_noise.empty()) {
+      const std::vector<double> alphas =
+          NumberList(options->odometry_noise, "--odometry-noise", 4, 4, "alpha1,alpha2,alpha3,alpha4");
+      odometry_noise.alpha1 = alphas[0];
+      odometry_noise.alpha2 = alphas[1];
+      odometry_noise.alpha3 = alphas[2];
+      odometry_noise.alpha4 = alphas[3];
+    }
+    odometry_noise.drift_heading_rad_per_m = options->drift_rad_per_m;
+    ev::ValidateOdometryNoise(odometry_noise);
+    ev::RangeNoise range_noise;
+    if (!options->range_noise.empty()) {
+      const std::vector<double> values = NumberList(options->range_noise, "--range-noise", 1, 3,
+                                                    "sigma_m[,dropout_probability[,short_reading_probability]]");
+      range_noise.sigma_m = values[0];
+      if (values.size() > 1) range_noise.dropout_probability = values[1];
+      if (values.size() > 2) range_noise.short_reading_probability = values[2];
+    }
+    ev::ValidateRangeNoise(range_noise);
+
+    // Noisy odometry is drawn around the ground truth when there is one: the corrected logs'
+    // odometry equals their reference, and a SLAM program given it would have nothing to do.
+    const bool noisy_odometry = odometry_noise != ev::OdometryNoise{};
+    if (noisy_odometry) {
+      const ev::Trajectory& truth = sequence.reference ? *sequence.reference : sequence.odometry;
+      const ev::Trajectory at_scans = truth.stamps_s() == sequence.odometry.stamps_s() ? truth : sequence.odometry;
+      sequence.odometry = ev::ApplyOdometryNoise(at_scans, odometry_noise, ev::DeriveSeed(options->seed, 0));
+    }
+    if (range_noise != ev::RangeNoise{}) {
+      sequence.scans = ev::ApplyRangeNoise(sequence.scans, range_noise, ev::DeriveSeed(options->seed, 1));
+    }
+    ev::WriteSequence(sequence, options->output, format);
+
+    nlohmann::json record;
+    record["source"] = options->input.source;
+    record["format"] = ev::SequenceWriteFormatName(format);
+    record["seed"] = options->seed;
+    record["odometry_noise"] = odometry_noise;
+    record["odometry_noise_seed"] = ev::DeriveSeed(options->seed, 0);
+    record["odometry_noise_around"] = !noisy_odometry          ? "none"
+                                      : sequence.reference ? "reference"
+                                                           : "odometry";
+    record["range_noise"] = range_noise;
+    record["range_noise_seed"] = ev::DeriveSeed(options->seed, 1);
+    const std::filesystem::path noise_path = options->output + ".noise.json";
+    ev::WriteOutputFile(noise_path, [&](std::ostream& out) { out << record.dump(2) << "\n"; });
+    streams.out << "wrote " << options->output << " (" << sequence.scans.size() << " scans) and " << noise_path.string()
+                << "\n";
+  });
+}
+
+void RegisterMap(CLI::App& data, const Streams& streams) {
+  struct Options {
+    SourceOptions input;
+    std::string output;
+    double resolution_m = 0.05;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = data.add_subcommand("map", "reference map of a sequence from its reference poses");
+  AddSourceOptions(*command, options->input);
+  command->add_option("-o,--output", options->output, "map_server YAML (the PGM is written beside it)")->required();
+  command->add_option("--resolution", options->resolution_m, "cell size in metres");
+  command->callback([options, streams] {
+    const ev::Sequence sequence = LoadSource(options->input);
+    if (!sequence.reference) {
+      throw ev::InputError(options->input.source + ": the sequence has no reference trajectory to build a map from");
+    }
+    ev::OccupancyMapperOptions mapper_options;
+    mapper_options.resolution_m = options->resolution_m;
+    const ev::OccupancyMapper mapper(mapper_options);
+    const ev::TrajectoryMap map = mapper.Build(sequence.scans, *sequence.reference);
+    ev::WriteMapServer(map.grid, options->output);
+    streams.out << "wrote " << options->output << " (" << map.grid.width << " x " << map.grid.height << " cells, "
+                << map.scans_used << " scans";
+    if (map.scans_outside_trajectory > 0) streams.out << ", " << map.scans_outside_trajectory << " outside the reference";
+    streams.out << ")\n";
+  });
+}
+
+ev::Trajectory FirstPoses(const ev::Trajectory& trajectory, std::size_t count) {
+  const auto end = static_cast<std::ptrdiff_t>(count);
+  return ev::Trajectory(std::vector<double>(trajectory.stamps_s().begin(), trajectory.stamps_s().begin() + end),
+                        std::vector<ev::Pose>(trajectory.poses().begin(), trajectory.poses().begin() + end));
+}
+
+void RegisterSimulate(CLI::App& data, const Streams& streams) {
+  struct Options {
+    std::string output_dir;
+    std::uint64_t seed = 1;
+    std::uint64_t floor_seed = 1;
+    std::optional<std::size_t> scans;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command =
+      data.add_subcommand("simulate", "generate a floor plan and a sequence with exact ground truth");
+  command->add_option("-o,--output", options->output_dir, "output folder (created)")->required();
+  command->add_option("--seed", options->seed, "noise seed (range and odometry noise)");
+  command->add_option("--floor-seed", options->floor_seed, "floor plan seed (the layout)");
+  command->add_option("--scans", options->scans, "keep only the first N scans")->check(CLI::PositiveNumber);
+  command->callback([options, streams] {
+    ev::SimulationOptions simulation;
+    simulation.noise_seed = options->seed;
+    simulation.floor_plan.seed = options->floor_seed;
+    ev::SimulatedSequence simulated = ev::SimulateSequence(simulation);
+
+    ev::Sequence sequence;
+    sequence.name = "simulated";
+    std::size_t count = simulated.scans.size();
+    if (options->scans && *options->scans < count) count = *options->scans;
+    sequence.scans.assign(simulated.scans.begin(), simulated.scans.begin() + static_cast<std::ptrdiff_t>(count));
+    sequence.odometry = FirstPoses(simulated.odometry, count);
+    sequence.reference = FirstPoses(simulated.ground_truth, count);
+    sequence.provenance = {"slamsweep simulation", "slamsweep's floor-plan simulator", "generated data"};
+
+    const std::filesystem::path dir = options->output_dir;
+    std::error_code error;
+    std::filesystem::create_directories(dir, error);
+    if (error) throw ev::InputError(dir.string() + ": cannot create the output folder (" + error.message() + ")");
+    ev::WriteMapServer(simulated.floor_plan, dir / "floor_plan.yaml");
+    ev::WriteSequence(sequence, dir / "sequence.log", ev::SequenceWriteFormat::kCarmen);
+    if (ev::RawlogSupported()) ev::WriteSequence(sequence, dir / "sequence.rawlog", ev::SequenceWriteFormat::kRawlog);
+    ev::WriteTum(*sequence.reference, dir / "ground_truth.tum");
+    ev::WriteTum(sequence.odometry, dir / "odometry.tum");
+    nlohmann::json specification = simulated.specification;
+    specification["scans_written"] = count;
+    ev::WriteOutputFile(dir / "simulation.json", [&](std::ostream& out) { out << specification.dump(2) << "\n"; });
+    streams.out << "wrote " << count << " scans to " << dir.string()
+                << (ev::RawlogSupported() ? "" : " (no rawlog: MRPT support not built)") << "\n";
+  });
+}
+
+}  // namespace
 
 void RegisterDataCommands(CLI::App& app, const Streams& streams) {
   CLI::App* data = app.add_subcommand("data", "inspect, convert, map and simulate sequences");
   data->require_subcommand(1);
-  (void)streams;
+  RegisterInfo(*data, streams);
+  RegisterConvert(*data, streams);
+  RegisterMap(*data, streams);
+  RegisterSimulate(*data, streams);
 }
 
 }  // namespace slamsweep::cli

@@ -1,0 +1,55 @@
+#include "cli/data_sources.h"
+
+#include <cstdlib>
+#include <system_error>
+
+#include "evaluator/core/input_error.h"
+#include "evaluator/sequence/sequence_file.h"
+
+namespace slamsweep::cli {
+
+namespace ev = slamsweep::evaluator;
+
+namespace {
+
+std::string Environment(const char* name) {
+  const char* value = std::getenv(name);
+  return value != nullptr ? value : "";
+}
+
+}  // namespace
+
+CatalogLocation FindCatalog(const std::string& catalog_option) {
+  CatalogLocation location;
+  const std::string catalog_env = Environment("SLAMSWEEP_CATALOG");
+  location.catalog = !catalog_option.empty() ? catalog_option
+                     : !catalog_env.empty()  ? catalog_env
+                                             : std::string(SLAMSWEEP_DEFAULT_CATALOG);
+  const std::string shared_env = Environment("SLAMSWEEP_SHARED");
+  location.shared_root = !shared_env.empty() ? shared_env : std::string(SLAMSWEEP_DEFAULT_SHARED);
+  return location;
+}
+
+ev::Sequence LoadSequenceArgument(const std::string& argument, const CatalogLocation& location,
+                                  const ev::SequenceReadOptions& read_options) {
+  std::error_code error;
+  if (std::filesystem::is_regular_file(argument, error)) return ev::ReadSequence(argument, read_options);
+  ev::Catalog catalog;
+  try {
+    catalog = ev::ReadCatalog(location.catalog);
+  } catch (const ev::InputError& catalog_error) {
+    throw ev::InputError(argument + ": no such file, and the catalog cannot be read to look the name up (" +
+                         catalog_error.what() + ")");
+  }
+  for (const ev::CatalogEntry& entry : catalog.entries) {
+    if (entry.name == argument) {
+      return ev::LoadCatalogSequence(entry, {{"SHARED", location.shared_root.string()}});
+    }
+  }
+  std::string known;
+  for (const ev::CatalogEntry& entry : catalog.entries) known += (known.empty() ? "" : ", ") + entry.name;
+  throw ev::InputError(argument + ": no such file, and no sequence of that name in the catalog " +
+                       location.catalog.string() + " (known: " + known + ")");
+}
+
+}  // namespace slamsweep::cli

@@ -1,0 +1,215 @@
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "evaluator/core/occupancy_grid.h"
+#include "evaluator/formats/map/map_server_format.h"
+#include "evaluator/formats/trajectory/tum_format.h"
+#include "evaluator/sequence/sequence_file.h"
+#include "tests/cli/run_cli.h"
+#include "tests/support/shared_data.h"
+
+namespace slamsweep {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::RunCli;
+
+std::string Slurp(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+TEST(DataInfoCommandTest, IntelByCatalogNameHasTheCountsOfItsProvenance) {
+  SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
+  const auto run = RunCli({"data", "info", "intel", "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json info = nlohmann::json::parse(run.out);
+  // PROVENANCE.txt: FLASER=910 readings=[180] t=[32.907,2683.770].
+  EXPECT_EQ(info.at("scans"), 910);
+  EXPECT_EQ(info.at("beams"), 180);
+  EXPECT_NEAR(info.at("duration_s").get<double>(), 2683.770 - 32.907, 0.01);
+  EXPECT_EQ(info.at("has_reference"), true);
+  ASSERT_TRUE(info.at("warnings").is_array());
+  EXPECT_EQ(info.at("warnings").size(), 1u);  // the four repaired stamps
+}
+
+TEST(DataInfoCommandTest, Fr079ByPath) {
+  SLAMSWEEP_REQUIRE_SHARED(log, "datasets/fr079/freiburg-079-corrected.log.gz");
+  const auto run = RunCli({"data", "info", log.string(), "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json info = nlohmann::json::parse(run.out);
+  EXPECT_EQ(info.at("scans"), 4791);  // PROVENANCE.txt: FLASER=4791 readings=[360]
+  EXPECT_EQ(info.at("beams"), 360);
+  EXPECT_TRUE(info.at("warnings").empty());
+}
+
+TEST(DataInfoCommandTest, DistinctBeamCountsAreListed) {
+  testing::TempDir dir;
+  std::string text;
+  for (int scan = 0; scan < 3; ++scan) {
+    const int beams = scan == 1 ? 361 : 180;
+    text += "FLASER " + std::to_string(beams);
+    for (int b = 0; b < beams; ++b) text += " 1.5";
+    text += " 0 0 0 0 0 0 " + std::to_string(scan + 1) + " host 0\n";
+  }
+  testing::WriteFile(dir / "mixed.log", text);
+  const auto run = RunCli({"data", "info", (dir / "mixed.log").string(), "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json info = nlohmann::json::parse(run.out);
+  EXPECT_EQ(info.at("scans"), 3);
+  EXPECT_EQ(info.at("beams"), nlohmann::json::array({180, 361}));
+  EXPECT_EQ(info.at("duration_s"), 2.0);
+}
+
+TEST(DataInfoCommandTest, MissingFileAndUnknownNameExitTwoNamingThem) {
+  const auto missing = RunCli({"data", "info", "/nowhere/run.log", "--json"});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_THAT(missing.err, HasSubstr("/nowhere/run.log"));
+  const auto unknown = RunCli({"data", "info", "no-such-dataset"});
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_THAT(unknown.err, HasSubstr("no-such-dataset"));
+  EXPECT_THAT(unknown.err, HasSubstr("intel"));  // lists what the catalog knows
+  const auto absent = RunCli({"data", "info", "mit-killian"});  // only its relations are shipped
+  EXPECT_EQ(absent.exit_code, 2);
+  EXPECT_THAT(absent.err, HasSubstr("mit-killian.clf is missing"));
+  EXPECT_THAT(absent.err, HasSubstr("slamevaluation"));
+}
+
+TEST(DataConvertCommandTest, NoisyCarmenIsReproducibleAndRecordsItsNoise) {
+  SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
+  testing::TempDir dir;
+  const std::vector<std::string> args = {"data", "convert", "intel", "--to", "carmen", "--odometry-noise",
+                                         "0.01,0.001,0.01,0.001", "--drift", "0.002", "--range-noise", "0.02",
+                                         "--seed", "7", "-o"};
+  auto first_args = args;
+  first_args.push_back((dir / "a.log").string());
+  auto second_args = args;
+  second_args.push_back((dir / "b.log").string());
+  const auto first = RunCli(first_args);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  ASSERT_EQ(RunCli(second_args).exit_code, 0);
+  EXPECT_EQ(Slurp(dir / "a.log"), Slurp(dir / "b.log"));
+
+  const nlohmann::json noise = nlohmann::json::parse(Slurp(dir / "a.log.noise.json"));
+  EXPECT_EQ(noise.at("seed"), 7);
+  EXPECT_EQ(noise.at("odometry_noise").at("alpha2"), 0.001);
+  EXPECT_EQ(noise.at("odometry_noise").at("drift_heading_rad_per_m"), 0.002);
+  EXPECT_EQ(noise.at("range_noise").at("sigma_m"), 0.02);
+
+  const evaluator::Sequence converted = evaluator::ReadSequence(dir / "a.log");
+  const evaluator::Sequence original = evaluator::ReadSequence(log);
+  ASSERT_EQ(converted.scans.size(), 910u);
+  // The reference survives; the odometry starts on it and then drifts away.
+  EXPECT_EQ(converted.reference->poses().back().position, original.reference->poses().back().position);
+  EXPECT_EQ(converted.odometry.poses().front().position, original.reference->poses().front().position);
+  EXPECT_GT((converted.odometry.poses().back().position - original.reference->poses().back().position).norm(), 0.1);
+  EXPECT_NE(converted.scans[5].ranges_m, original.scans[5].ranges_m);
+}
+
+TEST(DataConvertCommandTest, TumHoldsTheReference) {
+  SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
+  testing::TempDir dir;
+  const auto run = RunCli({"data", "convert", log.string(), "--to", "tum", "-o", (dir / "intel.tum").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const evaluator::Trajectory tum = evaluator::ReadTum(dir / "intel.tum");
+  ASSERT_EQ(tum.size(), 910u);
+  // The first FLASER of the file: pose 0.600266 -0.0320327 -0.354665 at 32.9068.
+  EXPECT_EQ(tum.stamps_s().front(), 32.9068);
+  EXPECT_DOUBLE_EQ(tum.poses().front().position.x(), 0.600266);
+  EXPECT_NEAR(tum.poses().front().Yaw(), -0.354665, 1e-12);
+}
+
+TEST(DataConvertCommandTest, RawlogOfIntelReadsBackWhenMrptIsBuilt) {
+  SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
+  if (!evaluator::RawlogSupported()) GTEST_SKIP() << "MRPT not built";
+  testing::TempDir dir;
+  const auto run = RunCli({"data", "convert", "intel", "--to", "rawlog", "-o", (dir / "intel.rawlog").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto info = RunCli({"data", "info", (dir / "intel.rawlog").string(), "--json"});
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const nlohmann::json j = nlohmann::json::parse(info.out);
+  EXPECT_EQ(j.at("scans"), 910);
+  EXPECT_EQ(j.at("beams"), 180);
+}
+
+TEST(DataConvertCommandTest, BadOptionsExitTwoNamingTheOption) {
+  testing::TempDir dir;
+  const auto bad_to = RunCli({"data", "convert", "intel", "--to", "png", "-o", (dir / "x").string()});
+  EXPECT_EQ(bad_to.exit_code, 2);
+  EXPECT_THAT(bad_to.err, HasSubstr("--to"));
+  EXPECT_THAT(bad_to.err, HasSubstr("png"));
+  SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
+  const auto short_noise =
+      RunCli({"data", "convert", "intel", "--to", "carmen", "--odometry-noise", "0.1,0.2", "-o", (dir / "x").string()});
+  EXPECT_EQ(short_noise.exit_code, 2);
+  EXPECT_THAT(short_noise.err, HasSubstr("--odometry-noise"));
+  const auto negative =
+      RunCli({"data", "convert", "intel", "--to", "carmen", "--range-noise", "-1", "-o", (dir / "x").string()});
+  EXPECT_EQ(negative.exit_code, 2);
+  EXPECT_THAT(negative.err, HasSubstr("sigma_m"));
+  EXPECT_EQ(RunCli({"data", "convert", "intel", "--to", "carmen"}).exit_code, 2);  // no -o
+}
+
+TEST(DataMapCommandTest, IntelReferenceMapHasWallsAndFreeSpace) {
+  SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
+  testing::TempDir dir;
+  const auto run = RunCli({"data", "map", "intel", "-o", (dir / "intel.yaml").string(), "--resolution", "0.1"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const evaluator::OccupancyGrid grid = evaluator::ReadMapServer(dir / "intel.yaml");
+  EXPECT_DOUBLE_EQ(grid.resolution_m, 0.1);
+  std::size_t occupied = 0, free = 0;
+  for (float p : grid.cells) {
+    if (p == evaluator::OccupancyGrid::kUnknown) continue;
+    (p > 0.5f ? occupied : free) += 1;
+  }
+  EXPECT_GT(occupied, 1000u);
+  EXPECT_GT(free, occupied);
+  // The Intel lab is about 30 m x 30 m: the map must not be much larger.
+  EXPECT_LT(grid.width * grid.resolution_m, 60.0);
+}
+
+TEST(DataMapCommandTest, SequenceWithoutReferenceOrFileExitsTwo) {
+  testing::TempDir dir;
+  const auto missing = RunCli({"data", "map", (dir / "none.log").string(), "-o", (dir / "m.yaml").string()});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_THAT(missing.err, HasSubstr("none.log"));
+  // MRPT's sample rawlog (Debian mrpt-common) has odometry but no ground truth.
+  const std::filesystem::path sample =
+      "/usr/share/mrpt/datasets/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog";
+  if (!evaluator::RawlogSupported() || !std::filesystem::exists(sample)) GTEST_SKIP() << "no MRPT sample";
+  const auto run = RunCli({"data", "map", "mrpt-telecom", "-o", (dir / "m.yaml").string()});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("mrpt-telecom: the sequence has no reference trajectory"));
+}
+
+TEST(DataSimulateCommandTest, WritesFloorPlanSequenceAndTrajectories) {
+  testing::TempDir dir;
+  const auto run = RunCli({"data", "simulate", "-o", (dir / "sim").string(), "--scans", "40", "--seed", "3"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  for (const char* file : {"floor_plan.yaml", "floor_plan.pgm", "sequence.log", "ground_truth.tum", "odometry.tum",
+                           "simulation.json"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / "sim" / file)) << file;
+  }
+  EXPECT_EQ(std::filesystem::exists(dir / "sim" / "sequence.rawlog"), evaluator::RawlogSupported());
+  const evaluator::Trajectory truth = evaluator::ReadTum(dir / "sim" / "ground_truth.tum");
+  const evaluator::Trajectory odometry = evaluator::ReadTum(dir / "sim" / "odometry.tum");
+  EXPECT_EQ(truth.size(), 40u);
+  EXPECT_EQ(odometry.size(), 40u);
+  const auto info = RunCli({"data", "info", (dir / "sim" / "sequence.log").string(), "--json"});
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_EQ(nlohmann::json::parse(info.out).at("scans"), 40);
+  const nlohmann::json spec = nlohmann::json::parse(Slurp(dir / "sim" / "simulation.json"));
+  EXPECT_EQ(spec.at("noise_seed"), 3);
+  // The same seed gives the same files.
+  ASSERT_EQ(RunCli({"data", "simulate", "-o", (dir / "again").string(), "--scans", "40", "--seed", "3"}).exit_code, 0);
+  EXPECT_EQ(Slurp(dir / "sim" / "sequence.log"), Slurp(dir / "again" / "sequence.log"));
+}
+
+}  // namespace
+}  // namespace slamsweep

@@ -1,0 +1,168 @@
+#include "evaluator/sequence/catalog.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <functional>
+#include <regex>
+#include <sstream>
+
+#include "evaluator/core/input_error.h"
+#include "tests/support/shared_data.h"
+
+namespace slamsweep::evaluator {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::string ErrorOf(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "(no InputError)";
+}
+
+std::filesystem::path ShippedCatalog() {
+  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path().parent_path() / "configs" /
+         "datasets.yaml";
+}
+
+CatalogVariables Shared() { return {{"SHARED", testing::SharedRoot().string()}}; }
+
+/// FLASER count and beam count from the "Stats:" line of a dataset's PROVENANCE.txt.
+std::pair<std::size_t, std::size_t> ProvenanceCounts(const std::filesystem::path& provenance) {
+  std::ifstream in(provenance);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  std::smatch match;
+  if (!std::regex_search(text, match, std::regex(R"(Stats: .*FLASER=(\d+) .*readings=\[(\d+)\])"))) return {0, 0};
+  return {std::stoul(match[1]), std::stoul(match[2])};
+}
+
+TEST(CatalogTest, ShippedCatalogValidatesAndNamesEverySharedDataset) {
+  const Catalog catalog = ReadCatalog(ShippedCatalog());
+  for (const char* name : {"mrpt-telecom", "intel", "fr079", "fr101", "mit-csail", "freiburg-campus",
+                           "mit-infinite-corridor", "orebro", "belgioioso", "mit-killian", "simulated-floor"}) {
+    const CatalogEntry& entry = FindCatalogEntry(catalog, name);
+    EXPECT_FALSE(entry.citation.empty()) << name;
+    EXPECT_FALSE(entry.licence_note.empty()) << name;
+    if (entry.format != "simulated") {
+      EXPECT_FALSE(entry.download_hint.empty()) << name;
+    }
+  }
+  EXPECT_EQ(FindCatalogEntry(catalog, "simulated-floor").ground_truth, GroundTruthKind::kExact);
+  EXPECT_EQ(FindCatalogEntry(catalog, "mit-killian").ground_truth, GroundTruthKind::kRelationsOnly);
+  EXPECT_EQ(FindCatalogEntry(catalog, "intel").ground_truth, GroundTruthKind::kCorrectedPoses);
+  // PROVENANCE.txt of intel: relation stamps minus ~976052857.337 are the corrected log's stamps.
+  EXPECT_DOUBLE_EQ(FindCatalogEntry(catalog, "intel").relations_offset_s, -976052857.337);
+}
+
+TEST(CatalogTest, EveryCarmenDatasetInSharedLoadsWithItsProvenanceCounts) {
+  SLAMSWEEP_REQUIRE_SHARED(datasets, "datasets/intel/PROVENANCE.txt");
+  const Catalog catalog = ReadCatalog(ShippedCatalog());
+  std::size_t loaded = 0;
+  for (const CatalogEntry& entry : catalog.entries) {
+    if (entry.format != "carmen" || entry.ground_truth != GroundTruthKind::kCorrectedPoses) continue;
+    const std::filesystem::path path = ResolveCatalogPath(entry.path, Shared());
+    const auto [scans, beams] = ProvenanceCounts(path.parent_path() / "PROVENANCE.txt");
+    ASSERT_GT(scans, 0u) << entry.name;
+    const Sequence sequence = LoadCatalogSequence(entry, Shared());
+    EXPECT_EQ(sequence.name, entry.name);
+    EXPECT_EQ(sequence.scans.size(), scans) << entry.name;
+    EXPECT_EQ(sequence.scans.front().BeamCount(), beams) << entry.name;
+    EXPECT_TRUE(sequence.reference.has_value()) << entry.name;
+    ++loaded;
+  }
+  EXPECT_EQ(loaded, 8u);
+}
+
+TEST(CatalogTest, IntelRelationsLandOnTheLogClock) {
+  SLAMSWEEP_REQUIRE_SHARED(relations, "datasets/intel/intel.relations");
+  const Sequence sequence = LoadCatalogSequence(FindCatalogEntry(ReadCatalog(ShippedCatalog()), "intel"), Shared());
+  ASSERT_TRUE(sequence.relations.has_value());
+  // PROVENANCE.txt: relation stamps 976052896.78..976055541.11, log stamps 32.9..2683.8.
+  double first_s = 1e300;
+  double last_s = -1e300;
+  for (const Relation& relation : *sequence.relations) {
+    first_s = std::min({first_s, relation.t1_s, relation.t2_s});
+    last_s = std::max({last_s, relation.t1_s, relation.t2_s});
+  }
+  EXPECT_NEAR(first_s, 976052896.78 - 976052857.337, 0.01);
+  EXPECT_NEAR(last_s, 976055541.11 - 976052857.337, 0.01);
+  // Both inside the log's span (to the log's 6 printed digits).
+  EXPECT_GT(first_s, sequence.scans.front().stamp_s);
+  EXPECT_LT(last_s, sequence.scans.back().stamp_s + 0.01);
+}
+
+TEST(CatalogTest, OrebroMaxRangeOverrideTurnsItsSickOverflowIntoNoReturn) {
+  SLAMSWEEP_REQUIRE_SHARED(log, "datasets/orebro/orebro-corrected.log.gz");
+  const Sequence sequence = LoadCatalogSequence(FindCatalogEntry(ReadCatalog(ShippedCatalog()), "orebro"), Shared());
+  // Counted with awk over the FLASER readings: 463 at 32.767, 7 at 32.765, 465 at 32.763, 33 at 32.759.
+  std::size_t misses = 0;
+  for (const LaserScan& scan : sequence.scans) {
+    for (float range : scan.ranges_m) misses += scan.IsHit(range) ? 0 : 1;
+  }
+  EXPECT_EQ(misses, 463u + 7u + 465u + 33u);
+}
+
+TEST(CatalogTest, SimulatedEntryGeneratesASequenceWithExactGroundTruth) {
+  const Sequence sequence =
+      LoadCatalogSequence(FindCatalogEntry(ReadCatalog(ShippedCatalog()), "simulated-floor"), Shared());
+  ASSERT_FALSE(sequence.scans.empty());
+  ASSERT_TRUE(sequence.reference.has_value());
+  EXPECT_EQ(sequence.reference->size(), sequence.scans.size());
+  EXPECT_TRUE(sequence.reference_map.has_value());
+  EXPECT_NO_THROW(ValidateSequence(sequence));
+}
+
+constexpr const char* kMinimal =
+    "sequences:\n"
+    "  - name: a\n"
+    "    format: carmen\n"
+    "    path: ${ROOT}/a.log\n"
+    "    ground_truth: none\n"
+    "    download: example.org/a\n";
+
+TEST(CatalogTest, UnknownKeysAndBadValuesNameFileAndLine) {
+  EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    max_rang_m: 30\n", "c.yaml"); }),
+              HasSubstr("c.yaml:7: unknown key 'max_rang_m'"));
+  EXPECT_THAT(ErrorOf([] { ParseCatalog("sequence:\n  - name: a\n", "c.yaml"); }),
+              HasSubstr("c.yaml:1: unknown key 'sequence'"));
+  EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    max_range_m: far\n", "c.yaml"); }),
+              HasSubstr("c.yaml:7: max_range_m: expected a finite number, got 'far'"));
+  EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    stamp_policy: sometimes\n", "c.yaml"); }),
+              HasSubstr("c.yaml:7: stamp_policy"));
+  EXPECT_THAT(ErrorOf([] {
+                ParseCatalog("sequences:\n  - name: a\n    format: vhs\n    path: x\n    ground_truth: none\n", "c.yaml");
+              }),
+              HasSubstr("c.yaml:3: format: expected carmen, rawlog, rosbag or simulated, got 'vhs'"));
+  EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + std::string(kMinimal).substr(11), "c.yaml"); }),
+              HasSubstr("c.yaml:7: sequence 'a' is listed twice"));
+  EXPECT_THAT(ErrorOf([] { ParseCatalog("sequences:\n  - name: a\n    format: carmen\n    path: x\n", "c.yaml"); }),
+              HasSubstr("c.yaml:2: sequence 'a': no ground_truth"));
+  EXPECT_THAT(ErrorOf([] {
+                ParseCatalog("sequences:\n  - name: s\n    format: simulated\n    ground_truth: exact\n"
+                             "    simulation: {noise_sed: 3}\n",
+                             "c.yaml");
+              }),
+              HasSubstr("c.yaml:5: "));
+  EXPECT_THAT(ErrorOf([] { ParseCatalog("sequences: [\n", "c.yaml"); }), HasSubstr("c.yaml:"));
+}
+
+TEST(CatalogTest, MissingFileNamesEntryPathAndWhereToGetIt) {
+  const Catalog catalog = ParseCatalog(kMinimal, "c.yaml");
+  const std::string error = ErrorOf([&] { LoadCatalogSequence(catalog.entries[0], {{"ROOT", "/nowhere"}}); });
+  EXPECT_THAT(error, HasSubstr("catalog sequence 'a'"));
+  EXPECT_THAT(error, HasSubstr("/nowhere/a.log is missing"));
+  EXPECT_THAT(error, HasSubstr("get it from: example.org/a"));
+  EXPECT_THAT(ErrorOf([&] { LoadCatalogSequence(catalog.entries[0], {}); }), HasSubstr("unknown variable ${ROOT}"));
+  EXPECT_THAT(ErrorOf([&] { FindCatalogEntry(catalog, "b"); }), HasSubstr("no sequence named 'b' in the catalog c.yaml (known: a)"));
+}
+
+}  // namespace
+}  // namespace slamsweep::evaluator
