@@ -10,6 +10,10 @@
 #include <sstream>
 #include <string>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "evaluator/core/input_error.h"
 #include "evaluator/map/harris_corners.h"
 #include "evaluator/map/run_components.h"
@@ -52,13 +56,39 @@ cv::Mat RemappedImage(const OccupancyGrid& grid) {
   return image;
 }
 
-// Zeroes the LoG outside the structure mask and returns the mask as runs.
+// Keeps the pixels of one block of n <= 32 with |v| > threshold, zeroes the others (to +0,
+// as `|v| > t ? v : 0` does) and returns the kept ones as a bit mask. With SSE2 four pixels
+// take one compare, and movemask hands over the bits directly: thresholding and finding the
+// runs become one pass over the image instead of two.
+std::uint32_t KeepAboveInBlock(float* pixels, int n, float threshold) {
+  std::uint32_t kept = 0;
+  int k = 0;
+#if defined(__SSE2__)
+  const __m128 magnitude_bits = _mm_castsi128_ps(_mm_set1_epi32(0x7FFFFFFF));
+  const __m128 limit = _mm_set1_ps(threshold);
+  for (; k + 4 <= n; k += 4) {
+    const __m128 v = _mm_loadu_ps(pixels + k);
+    const __m128 keep = _mm_cmpgt_ps(_mm_and_ps(v, magnitude_bits), limit);  // false for NaN, as `>`
+    _mm_storeu_ps(pixels + k, _mm_and_ps(v, keep));
+    kept |= static_cast<std::uint32_t>(_mm_movemask_ps(keep)) << k;
+  }
+#endif
+  for (; k < n; ++k) {
+    const bool keep = std::abs(pixels[k]) > threshold;
+    pixels[k] = keep ? pixels[k] : 0.0f;
+    kept |= static_cast<std::uint32_t>(keep) << k;
+  }
+  return kept;
+}
+
+// Zeroes the LoG outside the structure mask and returns the mask as runs. A kept pixel has
+// |v| > threshold >= 0, so it is non-zero: the runs are also those of the non-zero pixels.
 RowRuns KeepStructureMask(cv::Mat& log, float threshold) {
   RowRuns runs(log.cols, log.rows);
   for (int row = 0; row < log.rows; ++row) {
     float* pixels = log.ptr<float>(row);
-    for (int col = 0; col < log.cols; ++col) pixels[col] = std::abs(pixels[col]) > threshold ? pixels[col] : 0.0f;
-    AppendNonZeroRuns(pixels, log.cols, runs);  // a pixel is in the mask exactly when non-zero now
+    AppendRunsFromMasks(log.cols, runs,
+                        [&](int block, int n) { return KeepAboveInBlock(pixels + block, n, threshold); });
   }
   return runs;
 }

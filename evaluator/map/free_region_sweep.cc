@@ -65,6 +65,55 @@ void ForEachAdjacentPair(const RankRuns& runs, Visit visit) {
   }
 }
 
+struct RunPair {
+  std::int32_t a;
+  std::int32_t b;
+};
+
+// Numbers the patches: 8-connected sets of runs of one rank. A union-find over runs whose
+// roots are the first run of their set (unions in raster order keep the trees shallow); ids
+// follow the raster order of those first runs. The same walk over adjacent runs collects, in
+// `boundaries`, the pairs of different ranks that may both become free (rank 0 never does),
+// so that the image is walked once.
+std::vector<std::int32_t> LabelPatches(const RankRuns& runs, std::vector<RunPair>& boundaries) {
+  const std::size_t n = runs.begin_col.size();
+  std::vector<std::int32_t> parent(n);
+  for (std::size_t i = 0; i < n; ++i) parent[i] = static_cast<std::int32_t>(i);
+  const auto find = [&parent](std::int32_t x) {
+    while (parent[x] != x) {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  };
+  // A run has at most about 5 adjacent pairs, and on noisy real maps fewer than 3 of them
+  // join different ranks; reserving 3 per run means the vector rarely moves (push_back stays
+  // correct when it must). Reserving more did not pay: a larger block pushed the whole
+  // metric's heap past malloc's trim threshold, and every call then faulted its pages in anew.
+  boundaries.clear();
+  boundaries.reserve(3 * n);
+  ForEachAdjacentPair(runs, [&](int a, int b) {
+    const std::uint16_t rank_a = runs.rank[static_cast<std::size_t>(a)];
+    const std::uint16_t rank_b = runs.rank[static_cast<std::size_t>(b)];
+    if (rank_a != rank_b) {
+      if (rank_a != 0 && rank_b != 0) boundaries.push_back({a, b});
+      return;
+    }
+    const std::int32_t root_a = find(a);
+    const std::int32_t root_b = find(b);
+    if (root_a < root_b) parent[root_b] = root_a;
+    if (root_b < root_a) parent[root_a] = root_b;
+  });
+  // Parents only ever point to earlier runs, so one forward pass turns parents into ids
+  // (stored as -id - 1 while the pass runs, to tell them from parents).
+  std::int32_t next_id = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    parent[i] = parent[i] == static_cast<std::int32_t>(i) ? -(next_id++) - 1 : parent[parent[i]];
+  }
+  for (std::int32_t& id : parent) id = -id - 1;
+  return parent;
+}
+
 }  // namespace
 
 FreeRegionSweep::FreeRegionSweep(const LevelRuns& levels, const std::vector<int>& thresholds)
@@ -76,68 +125,129 @@ FreeRegionSweep::FreeRegionSweep(const LevelRuns& levels, const std::vector<int>
         static_cast<std::uint16_t>(std::lower_bound(thresholds.begin(), thresholds.end(), value) - thresholds.begin());
   }
   const RankRuns runs = MergeByRank(levels, rank_of_level);
-  const int m = threshold_count_;
-  const int never_free = m + 1;
-  const auto group_of = [m](std::uint16_t rank) { return rank == kUnknownRank ? 0 : m + 1 - rank; };
+  std::vector<RunPair> boundaries;  // then reused for the patch pairs
+  const std::vector<std::int32_t> patch_of_run = LabelPatches(runs, boundaries);
+  patch_count_ = 0;
+  for (const std::int32_t patch : patch_of_run) patch_count_ = std::max(patch_count_, static_cast<std::size_t>(patch) + 1);
 
-  const std::size_t n = runs.begin_col.size();
-  cells_.resize(n);
-  touches_border_.resize(n);
-  group_runs_.assign(static_cast<std::size_t>(m) + 1, {});
+  const int m = threshold_count_;
+  const std::size_t groups = static_cast<std::size_t>(m) + 1;  // stored groups 0..m
+  const std::size_t never_free = groups;
+  const auto group_of_rank = [m](std::uint16_t rank) -> std::size_t {
+    return rank == kUnknownRank ? 0 : static_cast<std::size_t>(m + 1 - rank);
+  };
+
+  // Patches, gathered from their runs in id order (ids follow raster order of first runs).
+  std::vector<Patch> patches(patch_count_, Patch{0, 0, 0});
+  std::vector<std::uint16_t> patch_rank(patch_count_, 0);
   for (int row = 0; row < runs.height; ++row) {
     for (int run = runs.row_offsets[row]; run < runs.row_offsets[row + 1]; ++run) {
+      Patch& patch = patches[static_cast<std::size_t>(patch_of_run[run])];
       const int end = runs.end_col(run, row);
-      cells_[run] = end - runs.begin_col[run];
-      touches_border_[run] = (row == 0 || row == runs.height - 1 || runs.begin_col[run] == 0 || end == runs.width);
-      const int group = group_of(runs.rank[run]);
-      if (group != never_free) group_runs_[group].push_back(run);
+      patch.id = patch_of_run[run];
+      patch.cells += end - runs.begin_col[run];
+      patch.touches_border |= (row == 0 || row == runs.height - 1 || runs.begin_col[run] == 0 || end == runs.width);
+      patch_rank[static_cast<std::size_t>(patch.id)] = runs.rank[run];
     }
   }
-  group_adjacencies_.assign(static_cast<std::size_t>(m) + 1, {});
-  ForEachAdjacentPair(runs, [&](int a, int b) {
-    const int group = std::max(group_of(runs.rank[a]), group_of(runs.rank[b]));
-    if (group != never_free) group_adjacencies_[group].push_back({a, b});
-  });
+
+  // Both lists are bucketed with a counting sort (count, then place), so that no vector grows
+  // while it is filled.
+  group_patch_offsets_.assign(groups + 1, 0);
+  for (const std::uint16_t rank : patch_rank) {
+    const std::size_t group = group_of_rank(rank);
+    if (group != never_free) ++group_patch_offsets_[group + 1];
+  }
+  for (std::size_t g = 0; g < groups; ++g) group_patch_offsets_[g + 1] += group_patch_offsets_[g];
+  group_patches_.resize(group_patch_offsets_[groups]);
+  {
+    std::vector<std::size_t> next(group_patch_offsets_.begin(), group_patch_offsets_.end() - 1);
+    for (std::size_t p = 0; p < patch_count_; ++p) {
+      const std::size_t group = group_of_rank(patch_rank[p]);
+      if (group != never_free) group_patches_[next[group]++] = patches[p];
+    }
+  }
+
+  // Adjacency buckets: 2 g for those of group g between known patches, 2 g + 1 for those with
+  // an unknown patch.
+  const auto bucket_of = [&](const Adjacency& pair) -> std::size_t {
+    const std::size_t group_a = group_of_rank(patch_rank[static_cast<std::size_t>(pair.a)]);
+    const std::size_t group_b = group_of_rank(patch_rank[static_cast<std::size_t>(pair.b)]);
+    return 2 * std::max(group_a, group_b) + ((group_a == 0 || group_b == 0) ? 1 : 0);
+  };
+  // Along a boundary the same two patches touch on row after row. A patch usually alternates
+  // between a few neighbours (left and right walls), so remembering each patch's latest
+  // partner in both directions drops most repeats; the rest are harmless to the union-find.
+  // The unique pairs are compacted in place and counted per bucket, then placed.
+  std::vector<std::size_t> bucket_offsets(2 * groups + 1, 0);
+  std::vector<std::uint16_t> bucket_of_unique(boundaries.size());  // placing then reads it in order
+  std::size_t unique = 0;
+  {
+    std::vector<std::int32_t> latest_partner(patch_count_, -1);
+    for (const RunPair& runs_pair : boundaries) {
+      const Adjacency pair{patch_of_run[runs_pair.a], patch_of_run[runs_pair.b]};
+      if (latest_partner[pair.a] == pair.b || latest_partner[pair.b] == pair.a) continue;
+      latest_partner[pair.a] = pair.b;
+      latest_partner[pair.b] = pair.a;
+      const std::size_t bucket = bucket_of(pair);
+      bucket_of_unique[unique] = static_cast<std::uint16_t>(bucket);
+      boundaries[unique++] = {pair.a, pair.b};
+      ++bucket_offsets[bucket + 1];
+    }
+  }
+  for (std::size_t k = 0; k + 1 < bucket_offsets.size(); ++k) bucket_offsets[k + 1] += bucket_offsets[k];
+  group_adjacencies_.resize(unique);
+  {
+    std::vector<std::size_t> next(bucket_offsets.begin(), bucket_offsets.end() - 1);
+    for (std::size_t i = 0; i < unique; ++i) {
+      group_adjacencies_[next[bucket_of_unique[i]]++] = {boundaries[i].a, boundaries[i].b};
+    }
+  }
+  group_adjacency_offsets_.resize(groups + 1);
+  known_adjacency_ends_.resize(groups);
+  for (std::size_t g = 0; g <= groups; ++g) group_adjacency_offsets_[g] = bucket_offsets[2 * g];
+  for (std::size_t g = 0; g < groups; ++g) known_adjacency_ends_[g] = bucket_offsets[2 * g + 1];
 }
 
 std::vector<std::int64_t> FreeRegionSweep::Count(bool unknown_free, std::int64_t min_cells, int lowest_needed) const {
-  const std::size_t n = cells_.size();
-  // Entries are written when their run is freed, before they are read: no need to clear them.
-  const auto parent = std::make_unique_for_overwrite<std::int32_t[]>(n);
-  const auto cells = std::make_unique_for_overwrite<std::int64_t[]>(n);
-  const auto touches = std::make_unique_for_overwrite<std::uint8_t[]>(n);
-  // Which runs are free is known from the group alone, but an adjacency to an unknown run
-  // that stays occupied must be skipped: mark freed runs.
-  const auto freed = std::make_unique<std::uint8_t[]>(n);  // zeroed
+  // One record per patch, so that a find or a union touches one cache line per patch instead
+  // of one per array. Entries are written when their patch is freed, before they are read:
+  // no need to clear them.
+  struct Node {
+    std::int32_t parent;
+    std::int32_t touches_border;
+    std::int64_t cells;
+  };
+  const auto nodes = std::make_unique_for_overwrite<Node[]>(patch_count_);
   std::int64_t enclosed = 0;
 
-  const auto find = [&parent](std::int32_t x) {
-    while (parent[x] != x) {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
+  const auto find = [&nodes](std::int32_t x) {
+    while (nodes[x].parent != x) {
+      nodes[x].parent = nodes[nodes[x].parent].parent;
+      x = nodes[x].parent;
     }
     return x;
   };
-  const auto is_enclosed = [&](std::int32_t root) { return touches[root] == 0 && cells[root] >= min_cells ? 1 : 0; };
-  const auto free_group = [&](int group) {
-    for (const std::int32_t run : group_runs_[static_cast<std::size_t>(group)]) {
-      parent[run] = run;
-      cells[run] = cells_[run];
-      touches[run] = touches_border_[run];
-      freed[run] = 1;
-      enclosed += is_enclosed(run);
+  const auto is_enclosed = [&](const Node& root) { return root.touches_border == 0 && root.cells >= min_cells ? 1 : 0; };
+  const auto free_group = [&](std::size_t group) {
+    for (std::size_t i = group_patch_offsets_[group]; i < group_patch_offsets_[group + 1]; ++i) {
+      const Patch& freed = group_patches_[i];
+      Node& node = nodes[freed.id];
+      node = {freed.id, freed.touches_border, freed.cells};
+      enclosed += is_enclosed(node);
     }
-    for (const Adjacency& edge : group_adjacencies_[static_cast<std::size_t>(group)]) {
-      if (freed[edge.a] == 0 || freed[edge.b] == 0) continue;
-      std::int32_t a = find(edge.a);
-      std::int32_t b = find(edge.b);
+    // With unknown cells occupied, adjacencies to unknown patches (stored last) join nothing.
+    const std::size_t end = unknown_free ? group_adjacency_offsets_[group + 1] : known_adjacency_ends_[group];
+    for (std::size_t i = group_adjacency_offsets_[group]; i < end; ++i) {
+      std::int32_t a = find(group_adjacencies_[i].a);
+      std::int32_t b = find(group_adjacencies_[i].b);
       if (a == b) continue;
-      enclosed -= is_enclosed(a) + is_enclosed(b);
-      if (cells[a] < cells[b]) std::swap(a, b);  // the larger region stays the root
-      parent[b] = a;
-      cells[a] += cells[b];
-      touches[a] = static_cast<std::uint8_t>(touches[a] | touches[b]);
-      enclosed += is_enclosed(a);
+      enclosed -= is_enclosed(nodes[a]) + is_enclosed(nodes[b]);
+      if (nodes[a].cells < nodes[b].cells) std::swap(a, b);  // the larger region stays the root
+      nodes[b].parent = a;
+      nodes[a].cells += nodes[b].cells;
+      nodes[a].touches_border |= nodes[b].touches_border;
+      enclosed += is_enclosed(nodes[a]);
     }
   };
 
@@ -145,7 +255,7 @@ std::vector<std::int64_t> FreeRegionSweep::Count(bool unknown_free, std::int64_t
   if (unknown_free) free_group(0);
   for (int k = threshold_count_ - 1; k >= std::max(lowest_needed, 0); --k) {
     // Binarisation k frees rank k + 1 (group m - k) on top of what binarisation k + 1 freed.
-    free_group(threshold_count_ - k);
+    free_group(static_cast<std::size_t>(threshold_count_ - k));
     counts[static_cast<std::size_t>(k)] = enclosed;
   }
   return counts;

@@ -24,32 +24,41 @@ std::vector<CornerCell> FindHarrisCorners(const cv::Mat& image, const HarrisSele
   const HarrisResponseOptions response_options{options.block_size_cells, options.aperture_cells, options.harris_k};
   const cv::Mat response = SparseHarrisResponse(image, response_options, nonzero, computed_areas);
 
-  // One pass over the computed areas collects the positive local maxima of the 3 x 3
-  // neighbourhood (goodFeaturesToTrack's dilation test, which never looks at the outermost rows
-  // and columns) and the largest response. Only positive responses matter: the threshold
-  // quality_level * max is positive when any corner exists, and pixels never computed are 0.
-  // A pixel survives the dilation test on the thresholded image when it is above the
-  // threshold and not below any neighbour (neighbours zeroed by the threshold are below it
-  // anyway), so filtering these maxima by the threshold afterwards gives the same set.
-  std::vector<Candidate> candidates;
-  float max_response = 0.0f;
+  // goodFeaturesToTrack keeps the pixels above quality_level * max response (a positive
+  // threshold whenever a corner exists; pixels never computed are 0) that are not below any
+  // of their 8 neighbours, away from the outermost rows and columns. Neighbours zeroed by its
+  // threshold are below such a pixel anyway, so testing against the raw neighbours gives the
+  // same set. Two passes: the largest response first, then only the few blocks holding a
+  // pixel above the threshold are searched for local maxima (most of the map has none).
   constexpr int kBlock = 16;
+  float max_response = 0.0f;
   for (const cv::Rect& area : computed_areas) {
     for (int row = area.y; row < area.y + area.height; ++row) {
       const float* here = response.ptr<float>(row);
-      const bool interior_row = row >= 1 && row + 1 < image.rows;
-      const float* above = interior_row ? response.ptr<float>(row - 1) : here;
-      const float* below = interior_row ? response.ptr<float>(row + 1) : here;
-      for (int block = area.x; block < area.x + area.width; block += kBlock) {
-        const int block_end = std::min(area.x + area.width, block + kBlock);
-        int any_positive = 0;  // a branch-free test that vectorises: most blocks have none
-        for (int col = block; col < block_end; ++col) any_positive |= static_cast<int>(here[col] > 0.0f);
-        if (any_positive == 0) continue;
+      float row_max = 0.0f;  // a branch-free reduction that vectorises
+      for (int col = area.x; col < area.x + area.width; ++col) row_max = here[col] > row_max ? here[col] : row_max;
+      max_response = std::max(max_response, row_max);
+    }
+  }
+  if (!(max_response > 0.0f)) return corners;
+  // cv::threshold with THRESH_TOZERO compares a float image with a float threshold.
+  const float threshold = static_cast<float>(static_cast<double>(max_response) * options.quality_level);
+
+  std::vector<Candidate> candidates;
+  for (const cv::Rect& area : computed_areas) {
+    for (int row = std::max(area.y, 1); row < std::min(area.y + area.height, image.rows - 1); ++row) {
+      const float* here = response.ptr<float>(row);
+      const float* above = response.ptr<float>(row - 1);
+      const float* below = response.ptr<float>(row + 1);
+      const int col_end = std::min(area.x + area.width, image.cols - 1);
+      for (int block = std::max(area.x, 1); block < col_end; block += kBlock) {
+        const int block_end = std::min(col_end, block + kBlock);
+        int any_above = 0;  // branch-free, vectorises
+        for (int col = block; col < block_end; ++col) any_above |= static_cast<int>(here[col] > threshold);
+        if (any_above == 0) continue;
         for (int col = block; col < block_end; ++col) {
           const float v = here[col];
-          if (!(v > 0.0f)) continue;
-          max_response = std::max(max_response, v);
-          if (!interior_row || col < 1 || col + 1 >= image.cols) continue;
+          if (!(v > threshold)) continue;
           if (v < above[col - 1] || v < above[col] || v < above[col + 1] || v < here[col - 1] || v < here[col + 1] ||
               v < below[col - 1] || v < below[col] || v < below[col + 1]) {
             continue;
@@ -59,12 +68,6 @@ std::vector<CornerCell> FindHarrisCorners(const cv::Mat& image, const HarrisSele
       }
     }
   }
-  if (!(max_response > 0.0f)) return corners;
-  // cv::threshold with THRESH_TOZERO compares a float image with a float threshold.
-  const float threshold = static_cast<float>(static_cast<double>(max_response) * options.quality_level);
-  candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
-                                  [threshold](const Candidate& c) { return !(c.response > threshold); }),
-                   candidates.end());
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     return a.response != b.response ? a.response > b.response : a.index > b.index;
   });

@@ -37,18 +37,15 @@ inline float MaxAbs(const float* values, std::size_t count) {
   return std::bit_cast<float>(largest);
 }
 
-/// Appends the runs of non-zero pixels of one row (+0 and -0 are zero) and closes the row.
-/// Blocks of 32 pixels become a bit mask, and runs are read off its transitions.
-inline void AppendNonZeroRuns(const float* pixels, int width, RowRuns& runs) {
+/// Appends the runs of one row of `width` pixels and closes the row, given its blocks of 32
+/// pixels as bit masks: block_mask(block, n) returns bit k set when pixel block + k belongs to
+/// a run (n = 32 but for the last block). Runs are read off the transitions of the masks.
+template <typename BlockMask>
+void AppendRunsFromMasks(int width, RowRuns& runs, BlockMask block_mask) {
   int open_begin = -1;
   for (int block = 0; block < width; block += 32) {
     const int n = width - block < 32 ? width - block : 32;
-    std::uint32_t set = 0;
-    for (int k = 0; k < n; ++k) {
-      std::uint32_t bits;
-      std::memcpy(&bits, &pixels[block + k], sizeof bits);
-      set |= static_cast<std::uint32_t>((bits & 0x7FFFFFFFu) != 0) << k;
-    }
+    const std::uint32_t set = block_mask(block, n);
     const std::uint32_t valid = n == 32 ? 0xFFFFFFFFu : (1u << n) - 1u;
     const std::uint32_t clear = ~set & valid;
     int k = 0;
@@ -66,6 +63,19 @@ inline void AppendNonZeroRuns(const float* pixels, int width, RowRuns& runs) {
   }
   if (open_begin >= 0) runs.Add(open_begin, width);
   runs.EndRow();
+}
+
+/// Appends the runs of non-zero pixels of one row (+0 and -0 are zero) and closes the row.
+inline void AppendNonZeroRuns(const float* pixels, int width, RowRuns& runs) {
+  AppendRunsFromMasks(width, runs, [pixels](int block, int n) {
+    std::uint32_t set = 0;
+    for (int k = 0; k < n; ++k) {
+      std::uint32_t bits;
+      std::memcpy(&bits, &pixels[block + k], sizeof bits);
+      set |= static_cast<std::uint32_t>((bits & 0x7FFFFFFFu) != 0) << k;
+    }
+    return set;
+  });
 }
 
 }  // namespace slamsweep::evaluator
