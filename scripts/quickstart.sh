@@ -32,5 +32,11 @@ echo "== GMapping on the Intel Research Lab log against the corrected poses =="
 "$slamsweep" eval ape "$trajectories/intel_corrected.tum" "$trajectories/intel_gmapping.tum" --align se3 --json > "$out/intel_gmapping.ape.json"
 "$slamsweep" eval rpe "$trajectories/intel_corrected.tum" "$trajectories/intel_gmapping.tum" --delta 1 --delta-unit m --json > "$out/intel_gmapping.rpe_1m.json"
 
+echo "== simulated floor plan: exact ground truth, noisy odometry, maps from both =="
+"$slamsweep" data simulate -o "$out/simulated" --seed 1
+"$slamsweep" data info "$out/simulated/sequence.log"
+"$slamsweep" eval ape "$out/simulated/ground_truth.tum" "$out/simulated/odometry.tum" --align se2
+"$slamsweep" eval map "$out/simulated/floor_plan.yaml" --json > "$out/simulated/floor_plan.map_metrics.json"
+
 echo
 echo "quickstart: results are in $out"

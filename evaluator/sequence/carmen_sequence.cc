@@ -17,8 +17,13 @@ namespace slamsweep::evaluator {
 namespace {
 
 constexpr std::string_view kFlaser = "FLASER";
+constexpr std::string_view kRearLaser = "RLASER";
 constexpr std::string_view kRobotLaser = "ROBOTLASER1";
 constexpr std::string_view kFrontLaserMaxParam = "robot_front_laser_max";
+constexpr std::string_view kRearLaserMaxParam = "robot_rear_laser_max";
+/// The rear laser of CARMEN's old-style logs is mounted facing backwards: its fan is the front
+/// laser's turned by half a turn.
+constexpr double kRearLaserYawRad = 3.14159265358979323846;
 /// How many line numbers a warning lists before it says "...".
 constexpr std::size_t kLinesShown = 5;
 
@@ -40,14 +45,15 @@ std::string LineList(const std::vector<std::size_t>& lines) {
   return text;
 }
 
-/// The FLASER max range: the option, else the log's last robot_front_laser_max PARAM, else the default.
+/// The FLASER/RLASER max range: the option, else the log's last `param_name` PARAM
+/// (robot_front_laser_max / robot_rear_laser_max), else the default.
 double FlaserMaxRange(const CarmenLog& log, const std::filesystem::path& source, const CarmenSequenceOptions& options,
-                      std::vector<std::string>& warnings) {
+                      std::string_view param_name, std::vector<std::string>& warnings) {
   if (options.max_range_m) return *options.max_range_m;
   std::optional<double> from_param;
   std::size_t from_line = 0;
   for (const CarmenParam& param : log.params) {
-    if (param.name != kFrontLaserMaxParam) continue;
+    if (param.name != param_name) continue;
     double value = 0.0;
     const char* begin = param.value.data();
     const char* end = begin + param.value.size();
@@ -55,12 +61,12 @@ double FlaserMaxRange(const CarmenLog& log, const std::filesystem::path& source,
     if (error != std::errc() || stop != end || !std::isfinite(value) || !(value > options.min_range_m)) {
       throw InputError(Located(source, param.line,
                                fmt::format("PARAM {}: expected a range in metres above min_range_m ({}), got '{}'",
-                                           kFrontLaserMaxParam, options.min_range_m, param.value)));
+                                           param_name, options.min_range_m, param.value)));
     }
     if (from_param && *from_param != value) {
       warnings.push_back(Located(source, param.line,
                                  fmt::format("PARAM {} = {} replaces {} set on line {}; the last value is used",
-                                             kFrontLaserMaxParam, value, *from_param, from_line)));
+                                             param_name, value, *from_param, from_line)));
     }
     from_param = value;
     from_line = param.line;
@@ -141,18 +147,39 @@ LaserScan RobotLaserScan(const CarmenLaserRecord& record, const std::filesystem:
   return scan;
 }
 
-void WarnAboutIgnoredLasers(const CarmenLog& log, const std::filesystem::path& source, std::size_t ignored_flasers,
-                            std::vector<std::string>& warnings) {
-  if (ignored_flasers > 0) {
+/// Laser records of each type that are not in the sequence.
+struct IgnoredLasers {
+  std::size_t flaser = 0;
+  std::size_t rlaser = 0;
+  std::size_t robot_laser = 0;
+};
+
+void WarnAboutIgnoredLasers(const CarmenLog& log, const std::filesystem::path& source, std::string_view used_type,
+                            const IgnoredLasers& ignored, std::vector<std::string>& warnings) {
+  if (ignored.flaser > 0) {
+    warnings.push_back(Located(
+        source, 0,
+        used_type == kRobotLaser
+            ? fmt::format("{} FLASER records ignored: the log also has ROBOTLASER1 records, which state their beam "
+                          "geometry",
+                          ignored.flaser)
+            : fmt::format("{} FLASER records ignored (the sequence is built from the {} records)", ignored.flaser,
+                          used_type)));
+  }
+  if (ignored.robot_laser > 0) {
     warnings.push_back(Located(source, 0,
-                               fmt::format("{} FLASER records ignored: the log also has ROBOTLASER1 records, which "
-                                           "state their beam geometry",
-                                           ignored_flasers)));
+                               fmt::format("{} ROBOTLASER1 records ignored (the sequence is built from the {} records)",
+                                           ignored.robot_laser, used_type)));
+  }
+  if (ignored.rlaser > 0) {
+    warnings.push_back(Located(source, 0,
+                               fmt::format("{} RLASER records ignored (the rear laser; set use_rear_laser to read it)",
+                                           ignored.rlaser)));
   }
   for (const auto& [type, count] : log.skipped_messages) {
     if (type.find("LASER") == std::string::npos) continue;
     warnings.push_back(
-        Located(source, 0, fmt::format("{} {} records ignored (only the front laser is read)", count, type)));
+        Located(source, 0, fmt::format("{} {} records ignored (only the front or rear laser is read)", count, type)));
   }
 }
 
@@ -201,25 +228,36 @@ void CheckCarmenSequenceOptions(const CarmenSequenceOptions& options) {
 Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& source,
                              const CarmenSequenceOptions& options) {
   CheckCarmenSequenceOptions(options);
-  const bool use_robot_laser = std::any_of(log.lasers.begin(), log.lasers.end(),
-                                           [](const CarmenLaserRecord& record) { return record.type == kRobotLaser; });
+  const bool use_robot_laser =
+      !options.use_rear_laser && std::any_of(log.lasers.begin(), log.lasers.end(), [](const CarmenLaserRecord& record) {
+        return record.type == kRobotLaser;
+      });
+  const std::string_view used_type = options.use_rear_laser ? kRearLaser : use_robot_laser ? kRobotLaser : kFlaser;
   std::vector<const CarmenLaserRecord*> records;
-  std::size_t ignored_flasers = 0;
+  IgnoredLasers ignored;
   for (const CarmenLaserRecord& record : log.lasers) {
-    if (record.type == (use_robot_laser ? kRobotLaser : kFlaser)) {
+    if (record.type == used_type) {
       records.push_back(&record);
     } else if (record.type == kFlaser) {
-      ++ignored_flasers;
+      ++ignored.flaser;
+    } else if (record.type == kRearLaser) {
+      ++ignored.rlaser;
+    } else {
+      ++ignored.robot_laser;
     }
   }
   if (records.empty()) {
-    throw InputError(Located(source, 0, "no FLASER or ROBOTLASER1 records: a sequence needs laser scans"));
+    throw InputError(Located(source, 0,
+                             options.use_rear_laser
+                                 ? "no RLASER records (option use_rear_laser): a sequence needs laser scans"
+                                 : "no FLASER or ROBOTLASER1 records: a sequence needs laser scans"));
   }
 
   Sequence sequence;
   sequence.name = options.name.empty() ? DefaultName(source) : options.name;
-  WarnAboutIgnoredLasers(log, source, ignored_flasers, sequence.warnings);
-  const double flaser_max_range_m = FlaserMaxRange(log, source, options, sequence.warnings);
+  WarnAboutIgnoredLasers(log, source, used_type, ignored, sequence.warnings);
+  const double flaser_max_range_m = FlaserMaxRange(
+      log, source, options, options.use_rear_laser ? kRearLaserMaxParam : kFrontLaserMaxParam, sequence.warnings);
   const std::vector<double> stamps_s = ScanStampsOf(records, source, options.stamps, sequence.warnings);
 
   std::vector<std::size_t> guessed_fan_lines;
@@ -234,6 +272,7 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
     } else {
       bool known_layout = true;
       scan = FlaserScan(record, source, flaser_max_range_m, known_layout);
+      if (options.use_rear_laser) scan.sensor_pose_on_robot = Pose::Planar(0.0, 0.0, kRearLaserYawRad);
       if (!known_layout) guessed_fan_lines.push_back(record.line);
     }
     scan.stamp_s = stamps_s[i];
@@ -246,9 +285,9 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
   if (!guessed_fan_lines.empty()) {
     sequence.warnings.push_back(Located(
         source, 0,
-        fmt::format("{} FLASER records have a beam count that is not a SICK layout (180, 181, 360, 361); their beams "
+        fmt::format("{} {} records have a beam count that is not a SICK layout (180, 181, 360, 361); their beams "
                     "were spread over 180 deg as CARMEN does (lines {})",
-                    guessed_fan_lines.size(), LineList(guessed_fan_lines))));
+                    guessed_fan_lines.size(), used_type, LineList(guessed_fan_lines))));
   }
   if (options.logged_pose_is_reference) sequence.reference = std::move(reference);
   if (options.relations_path) {

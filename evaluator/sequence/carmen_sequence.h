@@ -29,6 +29,10 @@ struct CarmenSequenceOptions {
   /// The logged pose (FLASER x y theta, ROBOTLASER1 robot pose) is the SLAM-corrected pose in the
   /// "corrected" logs: keep it as Sequence::reference. Set false for raw logs, where it is odometry.
   bool logged_pose_is_reference = true;
+  /// Build the scans from the RLASER records (the rear laser of old-style logs) instead of FLASER or
+  /// ROBOTLASER1. Their fan is FLASER's, turned backwards: sensor pose on the robot (0, 0, yaw pi).
+  /// Max range: max_range_m, else PARAM robot_rear_laser_max, else default_max_range_m.
+  bool use_rear_laser = false;
   /// Kuemmerle et al. relations for this log, read into Sequence::relations when set.
   std::optional<std::filesystem::path> relations_path;
   /// Added to both stamps of every relation, to bring the relations' clock onto the log's (intel:
@@ -45,9 +49,10 @@ void CheckCarmenSequenceOptions(const CarmenSequenceOptions& options);
 /// The scans of a parsed CARMEN log as a Sequence (no file access apart from relations/provenance
 /// named in the options). Scans come from the FLASER records, or from the ROBOTLASER1 records when
 /// the log has any (they state their beam geometry; CARMEN loggers that write both write the same
-/// scan twice). Geometry:
+/// scan twice), or from the RLASER records when options.use_rear_laser. Geometry:
 ///   FLASER: FlaserBeamFan(n); sensor at the robot origin (the logged pose is the laser's pose,
 ///           which CARMEN's readlog.c calls laser_pose, so scans and reference agree);
+///   RLASER: FlaserBeamFan(n) seen from a sensor at the robot origin facing backwards (yaw pi);
 ///   ROBOTLASER1: start_angle, angular_res, max_range of the record; sensor pose = laser pose in the
 ///           frame of the robot pose.
 /// Odometry: FLASER odom_x/y/theta (ROBOTLASER1: robot pose), one pose per scan at the scan's stamp.

@@ -95,7 +95,9 @@ CarmenPoses CarmenPosesFromLog(const CarmenLog& log, const std::filesystem::path
   std::vector<const CarmenLaserRecord*> flaser;
   std::vector<const CarmenLaserRecord*> robot_laser;
   for (const CarmenLaserRecord& record : log.lasers) {
-    (record.type == "FLASER" ? flaser : robot_laser).push_back(&record);
+    // RLASER (the rear laser) logs the same robot pose as its FLASER twin; it never adds poses.
+    if (record.type == "FLASER") flaser.push_back(&record);
+    if (record.type == "ROBOTLASER1") robot_laser.push_back(&record);
   }
   // A log may carry one scan as both messages; mixing them would double the poses.
   const std::vector<const CarmenLaserRecord*>& records = flaser.empty() ? robot_laser : flaser;

@@ -60,12 +60,15 @@ Pose ReadPlanarPose(const TextRecord& record, std::size_t first, std::string_vie
                       record.Number(first + 2, p + "theta"));
 }
 
+/// FLASER and RLASER share one layout; `type` is the message name (record.Text(0)).
 CarmenLaserRecord ParseFlaser(const TextRecord& record) {
-  record.RequireFields(2, kFlaserLayout);
+  const std::string type(record.Text(0));
+  const std::string layout = type + std::string(kFlaserLayout.substr(kFlaserLayout.find(' ')));
+  record.RequireFields(2, layout);
   const std::size_t beams = ReadCount(record, 1, "num_readings");
-  RequireExactFields(record, beams + 11, "FLASER with num_readings = " + std::to_string(beams), kFlaserLayout);
+  RequireExactFields(record, beams + 11, type + " with num_readings = " + std::to_string(beams), layout);
   CarmenLaserRecord laser;
-  laser.type = "FLASER";
+  laser.type = type;
   laser.ranges_m = ReadNumbers(record, 2, beams, "range");
   const std::size_t base = 2 + beams;
   laser.robot_pose = ReadPlanarPose(record, base, "");
@@ -243,10 +246,10 @@ bool ReadStampTail(LineCursor& cursor, double& ipc_stamp_s, std::string& host, d
   return cursor.AtEnd();
 }
 
-bool FastFlaser(LineCursor& cursor, std::size_t line, CarmenLaserRecord& laser) {
+bool FastFlaser(LineCursor& cursor, std::size_t line, std::string_view type, CarmenLaserRecord& laser) {
   std::size_t beams = 0;
   if (!cursor.Count(beams)) return false;
-  laser.type = "FLASER";
+  laser.type.assign(type);
   laser.ranges_m.resize(beams);
   for (double& range : laser.ranges_m) {
     if (!cursor.Number(range)) return false;
@@ -293,8 +296,8 @@ class CarmenLogParser {
     LineCursor cursor(line.data(), line.data() + line.size());
     std::string_view type;
     if (!cursor.Token(type) || type.front() == '#') return;
-    if (type == "FLASER") {
-      if (FastFlaser(cursor, line_number_, laser_)) {
+    if (type == "FLASER" || type == "RLASER") {
+      if (FastFlaser(cursor, line_number_, type, laser_)) {
         log_.lasers.push_back(std::move(laser_));
         laser_ = CarmenLaserRecord{};
         laser_.ranges_m.reserve(log_.lasers.back().ranges_m.size());
@@ -315,7 +318,7 @@ class CarmenLogParser {
   /// The checked path, for what the fast path gave up on: it reports the precise error.
   void ParseSlowly(const TextRecord& record) {
     const std::string_view type = record.Text(0);
-    if (type == "FLASER") {
+    if (type == "FLASER" || type == "RLASER") {
       log_.lasers.push_back(ParseFlaser(record));
     } else if (type == "ROBOTLASER1") {
       log_.lasers.push_back(ParseRobotLaser(record));
@@ -443,7 +446,7 @@ std::string FormatCarmenRecord(const CarmenLaserRecord& record) {
     AppendPose(out, record.robot_pose);
     out += " 0 0 0 0 0";  // tv rv forward_safety side_safety turn_axis: not kept by the parser
   } else {
-    out = "FLASER " + std::to_string(record.ranges_m.size());
+    out = (record.type == "RLASER" ? "RLASER " : "FLASER ") + std::to_string(record.ranges_m.size());
     AppendNumbers(out, record.ranges_m);
     AppendPose(out, record.robot_pose);
     AppendPose(out, record.odom_pose);

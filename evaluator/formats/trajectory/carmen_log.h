@@ -26,20 +26,21 @@ struct CarmenBeamGeometry {
 
 /// One laser scan with the poses logged beside it.
 ///   FLASER n r1..rn x y theta odom_x odom_y odom_theta ipc_timestamp ipc_hostname logger_timestamp
+///   RLASER: the same layout, for the rear laser
 ///   ROBOTLASER1 laser_type start_angle fov angular_res max_range accuracy remission_mode
 ///       num_readings [ranges] num_remissions [remissions] laser_pose_x laser_pose_y laser_pose_theta
 ///       robot_pose_x robot_pose_y robot_pose_theta tv rv forward_safety side_safety turn_axis
 ///       ipc_timestamp ipc_hostname logger_timestamp
 struct CarmenLaserRecord {
-  /// "FLASER" or "ROBOTLASER1".
+  /// "FLASER", "RLASER" or "ROBOTLASER1".
   std::string type;
   std::vector<double> ranges_m;
-  /// Planar. FLASER: x y theta (in the Radish "corrected" logs, the SLAM-corrected pose);
+  /// Planar. FLASER/RLASER: x y theta (in the Radish "corrected" logs, the SLAM-corrected pose);
   /// ROBOTLASER1: robot_pose_x/y/theta.
   Pose robot_pose;
-  /// Planar. FLASER: odom_x/y/theta; ROBOTLASER1: the robot pose again (the record holds no other).
+  /// Planar. FLASER/RLASER: odom_x/y/theta; ROBOTLASER1: the robot pose again (the record holds no other).
   Pose odom_pose;
-  /// Planar world pose of the laser. FLASER: x y theta (CARMEN logs the laser's pose there);
+  /// Planar world pose of the laser. FLASER/RLASER: x y theta (CARMEN logs the laser's pose there);
   /// ROBOTLASER1: laser_pose_x/y/theta.
   Pose laser_pose;
   /// ROBOTLASER1 only.
@@ -73,16 +74,16 @@ struct CarmenParam {
 
 /// The messages of a CARMEN log that slamsweep uses, each list in file order.
 struct CarmenLog {
-  /// FLASER and ROBOTLASER1 records, interleaved as in the file.
+  /// FLASER, RLASER and ROBOTLASER1 records, interleaved as in the file.
   std::vector<CarmenLaserRecord> lasers;
   std::vector<CarmenOdomRecord> odometry;
   std::vector<CarmenParam> params;
-  /// How many records of every other message (NEFF, RLASER, RAWLASER1, TRUEPOS, ...) were skipped.
+  /// How many records of every other message (NEFF, RAWLASER1, TRUEPOS, ...) were skipped.
   std::map<std::string, std::size_t> skipped_messages;
 };
 
 /// Parses the text of a CARMEN log (see ReadTextFile for gzip). `#` lines are comments;
-/// unknown messages are counted and skipped. A FLASER/ROBOTLASER1/ODOM/PARAM record with a
+/// unknown messages are counted and skipped. A FLASER/RLASER/ROBOTLASER1/ODOM/PARAM record with a
 /// wrong field count (for lasers: the count implied by its beam and remission counts), a
 /// non-numeric or non-finite number is an InputError "FILE:LINE: ..." saying what was expected.
 CarmenLog ParseCarmenLog(std::string_view content, const std::filesystem::path& source);

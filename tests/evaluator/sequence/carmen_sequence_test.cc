@@ -162,6 +162,79 @@ TEST(CarmenSequenceTest, RobotLaserRecordsWinAndStateTheirGeometry) {
   EXPECT_TRUE(AnyWarningContains(sequence, "1 RLASER records ignored"));
 }
 
+/// An RLASER line: like Flaser, for the rear laser.
+std::string Rlaser(std::size_t beams, double first_range_m, double range_m, const std::string& pose,
+                   const std::string& odom, double stamp_s) {
+  std::string line = Flaser(beams, first_range_m, range_m, pose, odom, stamp_s);
+  return "RLASER" + line.substr(std::string("FLASER").size());
+}
+
+TEST(CarmenSequenceTest, FrontLaserIsTheDefaultAndRearLaserIsAnOption) {
+  const std::string text = Flaser(181, 1, 1, "0 0 0", "0 0 0", 1.0) + Rlaser(181, 2, 2, "0 0 0", "0 0 0", 1.05) +
+                           Flaser(181, 1, 1, "0.1 0 0", "0.1 0 0", 1.1) + Rlaser(181, 2, 2, "0.1 0 0", "0.1 0 0", 1.15) +
+                           Rlaser(181, 2, 2, "0.2 0 0", "0.2 0 0", 1.25);
+  const Sequence front = FromText(text);
+  ASSERT_EQ(front.scans.size(), 2u);
+  EXPECT_EQ(front.scans[1].stamp_s, 1.1);
+  EXPECT_EQ(front.scans[0].ranges_m[0], 1.0f);
+  EXPECT_NEAR(front.scans[0].sensor_pose_on_robot.Yaw(), 0.0, 1e-12);
+  EXPECT_TRUE(AnyWarningContains(front, "3 RLASER records ignored")) << ::testing::PrintToString(front.warnings);
+
+  CarmenSequenceOptions rear_options;
+  rear_options.use_rear_laser = true;
+  const Sequence rear = FromText(text, rear_options);
+  ASSERT_EQ(rear.scans.size(), 3u);
+  EXPECT_EQ(rear.scans[2].stamp_s, 1.25);
+  EXPECT_EQ(rear.scans[0].ranges_m[0], 2.0f);
+  EXPECT_EQ(rear.odometry.size(), 3u);
+  ASSERT_TRUE(rear.reference.has_value());
+  EXPECT_NEAR(rear.reference->poses()[2].position.x(), 0.2, 1e-12);
+  EXPECT_TRUE(AnyWarningContains(rear, "2 FLASER records ignored")) << ::testing::PrintToString(rear.warnings);
+
+  EXPECT_NE(ErrorOf([&] { FromText(Flaser(181, 1, 1, "0 0 0", "0 0 0", 1.0), rear_options); }).find("no RLASER records"),
+            std::string::npos);
+}
+
+TEST(CarmenSequenceTest, RearLaserBeamsPointBackwards) {
+  // 181 beams from -90 to +90 deg about the sensor axis; the sensor faces backwards (yaw pi), so on
+  // the robot the first beam points to -90 + 180 = +90 deg (left), the middle one straight back, the
+  // last one to +270 = -90 deg (right). The robot at (1, 2) heading 90 deg: "back" is world -y.
+  CarmenSequenceOptions options;
+  options.use_rear_laser = true;
+  const Sequence sequence = FromText(Rlaser(181, 2, 2, "1 2 1.5707963267948966", "1 2 1.5707963267948966", 1.0), options);
+  ASSERT_EQ(sequence.scans.size(), 1u);
+  const LaserScan& scan = sequence.scans[0];
+  EXPECT_NEAR(std::abs(scan.sensor_pose_on_robot.Yaw()), kPi, 1e-12);
+  EXPECT_NEAR(scan.sensor_pose_on_robot.position.norm(), 0.0, 1e-12);
+  const Pose sensor_in_world = sequence.reference->poses()[0] * scan.sensor_pose_on_robot;
+  const auto end_point = [&](std::size_t beam) {
+    const double angle = scan.angle_min_rad + static_cast<double>(beam) * scan.angle_increment_rad;
+    const Eigen::Vector3d in_sensor(2.0 * std::cos(angle), 2.0 * std::sin(angle), 0.0);
+    return Eigen::Vector3d(sensor_in_world.position + sensor_in_world.orientation * in_sensor);
+  };
+  // Middle beam: straight behind the robot, world (1, 0).
+  EXPECT_NEAR(end_point(90).x(), 1.0, 1e-9);
+  EXPECT_NEAR(end_point(90).y(), 0.0, 1e-9);
+  // First beam: to the robot's left; the robot faces +y, so its left is -x: world (-1, 2).
+  EXPECT_NEAR(end_point(0).x(), -1.0, 1e-9);
+  EXPECT_NEAR(end_point(0).y(), 2.0, 1e-9);
+  // Last beam: to the robot's right, world (3, 2).
+  EXPECT_NEAR(end_point(180).x(), 3.0, 1e-9);
+  EXPECT_NEAR(end_point(180).y(), 2.0, 1e-9);
+}
+
+TEST(CarmenSequenceTest, RearLaserMaxRangeComesFromItsOwnParam) {
+  CarmenSequenceOptions options;
+  options.use_rear_laser = true;
+  const std::string text = "PARAM robot_front_laser_max 50 nohost 0\nPARAM robot_rear_laser_max 20 nohost 0\n" +
+                           Rlaser(181, 2, 2, "0 0 0", "0 0 0", 1.0);
+  EXPECT_EQ(FromText(text, options).scans[0].range_max_m, 20.0);
+  EXPECT_EQ(FromText("PARAM robot_front_laser_max 50 nohost 0\n" + Rlaser(181, 2, 2, "0 0 0", "0 0 0", 1.0), options)
+                .scans[0]
+                .range_max_m,
+            80.0);
+}
+
 TEST(CarmenSequenceTest, UnknownBeamCountIsSpreadAsCarmenDoesWithAWarning) {
   const Sequence sequence = FromText(Flaser(91, 1, 1, "0 0 0", "0 0 0", 1.0));
   EXPECT_DOUBLE_EQ(sequence.scans[0].angle_increment_rad, kPi / 90);

@@ -18,7 +18,7 @@ constexpr const char* kLog =
     "ODOM 0.5 0.25 0.1 0.3 0.02 0 12.5 pippo 12.6\n"
     "FLASER 3 1.5 2.5 81.91 1 2 0.5 1.1 2.1 0.6 13.25 pippo 13.3\n"
     "NEFF 31.5\n"
-    "RLASER 1 4.0 0 0 0 0 0 0 1 h 1\n"
+    "RLASER 2 4.0 5.5 3 4 -2.5 3.1 4.1 -2.4 1 h 1.5\n"
     "ROBOTLASER1 0 -1.5708 3.14159 0.0174533 81.9 0.01 0 2 3.5 4.5 1 200 0.1 0.2 0.3 1 2 0.25 0.4 0.05 1 0.5 0 "
     "14.75 b21 14.8\n";
 
@@ -37,7 +37,7 @@ TEST(CarmenLogTest, ParsesEachMessageItsOwnWay) {
   EXPECT_EQ(log.odometry[0].ipc_host, "pippo");
   EXPECT_EQ(log.odometry[0].logger_stamp_s, 12.6);
 
-  ASSERT_EQ(log.lasers.size(), 2u);
+  ASSERT_EQ(log.lasers.size(), 3u);
   const CarmenLaserRecord& flaser = log.lasers[0];
   EXPECT_EQ(flaser.type, "FLASER");
   EXPECT_EQ(flaser.ranges_m, (std::vector<double>{1.5, 2.5, 81.91}));
@@ -47,7 +47,20 @@ TEST(CarmenLogTest, ParsesEachMessageItsOwnWay) {
   EXPECT_EQ(flaser.ipc_stamp_s, 13.25);
   EXPECT_EQ(flaser.line, 4u);
 
-  const CarmenLaserRecord& robot = log.lasers[1];
+  // The rear laser has FLASER's layout.
+  const CarmenLaserRecord& rlaser = log.lasers[1];
+  EXPECT_EQ(rlaser.type, "RLASER");
+  EXPECT_EQ(rlaser.ranges_m, (std::vector<double>{4.0, 5.5}));
+  EXPECT_TRUE(SamePose(Pose::Planar(3, 4, -2.5), rlaser.robot_pose, 1e-15));
+  EXPECT_TRUE(SamePose(Pose::Planar(3, 4, -2.5), rlaser.laser_pose, 1e-15));
+  EXPECT_TRUE(SamePose(Pose::Planar(3.1, 4.1, -2.4), rlaser.odom_pose, 1e-15));
+  EXPECT_FALSE(rlaser.geometry.has_value());
+  EXPECT_EQ(rlaser.ipc_stamp_s, 1.0);
+  EXPECT_EQ(rlaser.ipc_host, "h");
+  EXPECT_EQ(rlaser.logger_stamp_s, 1.5);
+  EXPECT_EQ(rlaser.line, 6u);
+
+  const CarmenLaserRecord& robot = log.lasers[2];
   EXPECT_EQ(robot.type, "ROBOTLASER1");
   EXPECT_EQ(robot.ranges_m, (std::vector<double>{3.5, 4.5}));
   EXPECT_EQ(robot.remissions, (std::vector<double>{200}));
@@ -62,7 +75,7 @@ TEST(CarmenLogTest, ParsesEachMessageItsOwnWay) {
   EXPECT_EQ(robot.line, 7u);
 
   EXPECT_EQ(log.skipped_messages.at("NEFF"), 1u);
-  EXPECT_EQ(log.skipped_messages.at("RLASER"), 1u);
+  EXPECT_EQ(log.skipped_messages.count("RLASER"), 0u);
 }
 
 TEST(CarmenLogTest, FormattedRecordsReadBack) {
@@ -72,8 +85,8 @@ TEST(CarmenLogTest, FormattedRecordsReadBack) {
   for (const CarmenOdomRecord& odom : log.odometry) text += FormatCarmenRecord(odom) + "\n";
   for (const CarmenLaserRecord& laser : log.lasers) text += FormatCarmenRecord(laser) + "\n";
   const CarmenLog again = ParseCarmenLog(text, "again.log");
-  ASSERT_EQ(again.lasers.size(), 2u);
-  for (std::size_t i = 0; i < 2; ++i) {
+  ASSERT_EQ(again.lasers.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
     const CarmenLaserRecord& a = log.lasers[i];
     const CarmenLaserRecord& b = again.lasers[i];
     EXPECT_EQ(a.type, b.type);
@@ -86,7 +99,7 @@ TEST(CarmenLogTest, FormattedRecordsReadBack) {
     EXPECT_EQ(a.ipc_host, b.ipc_host);
     EXPECT_EQ(a.logger_stamp_s, b.logger_stamp_s);
   }
-  EXPECT_EQ(again.lasers[1].geometry->angular_resolution_rad, log.lasers[1].geometry->angular_resolution_rad);
+  EXPECT_EQ(again.lasers[2].geometry->angular_resolution_rad, log.lasers[2].geometry->angular_resolution_rad);
   ASSERT_EQ(again.odometry.size(), 1u);
   EXPECT_EQ(again.odometry[0].tv_mps, 0.3);
   EXPECT_EQ(again.params[0].value, "0.0");
@@ -105,6 +118,13 @@ TEST(CarmenLogTest, WrongBeamCountNamesFileAndLine) {
   ExpectInputError([] { ParseCarmenLog(FlaserWithBeams(-3, 0), "beams.log"); }, {"beams.log:1", ">= 0"});
   ExpectInputError([] { ParseCarmenLog(FlaserWithBeams(999999999, 2), "beams.log"); }, {"beams.log:1", "999999999"});
   ExpectInputError([] { ParseCarmenLog("FLASER x 1 2\n", "beams.log"); }, {"beams.log:1", "num_readings", "integer"});
+}
+
+TEST(CarmenLogTest, BadRearLaserRecordsNameTheMessage) {
+  ExpectInputError([] { ParseCarmenLog("RLASER 3 1 2 1 2 0.5 1 2 0.5 13.25 pippo 13.3\n", "rear.log"); },
+                   {"rear.log:1", "RLASER with num_readings = 3", "RLASER n r1..rn"});
+  ExpectInputError([] { ParseCarmenLog("ODOM 0 0 0 0 0 0 1 h 1\nRLASER 2 1 x 1 2 0.5 1 2 0.5 13.25 pippo 13.3\n", "rear.log"); },
+                   {"rear.log:2", "range"});
 }
 
 TEST(CarmenLogTest, BadFieldsNameFileAndLine) {
