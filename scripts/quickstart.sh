@@ -34,7 +34,7 @@ echo "== GMapping on the Intel Research Lab log against the corrected poses =="
 
 echo "== simulated floor plan: exact ground truth, noisy odometry, maps from both =="
 "$slamsweep" data simulate -o "$out/simulated" --seed 1
-"$slamsweep" data info "$out/simulated/sequence.log"
+"$slamsweep" data info "$out/simulated/sequence.rawlog"
 "$slamsweep" eval ape "$out/simulated/ground_truth.tum" "$out/simulated/odometry.tum" --align se2
 "$slamsweep" eval map "$out/simulated/floor_plan.yaml" --json > "$out/simulated/floor_plan.map_metrics.json"
 
