@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/trajectory/index_search.h"
 
 namespace slamsweep::evaluator {
 namespace {
@@ -82,7 +83,7 @@ class NearestStamp {
         known_true += step;
         step *= 2;
       }
-      return Bisect(known_true + 1, std::min(known_true + step, end), before);
+      return PartitionPointIndex(known_true + 1, std::min(known_true + step, end), before);
     }
     std::size_t known_false_or_end = hint;
     std::size_t step = 1;
@@ -91,21 +92,9 @@ class NearestStamp {
       step *= 2;
     }
     const std::size_t lower = known_false_or_end - begin >= step ? known_false_or_end - step + 1 : begin;
-    return Bisect(lower, known_false_or_end, before);
+    return PartitionPointIndex(lower, known_false_or_end, before);
   }
 
-  template <typename Predicate>
-  static std::size_t Bisect(std::size_t begin, std::size_t end, Predicate before) {
-    while (begin < end) {
-      const std::size_t mid = begin + (end - begin) / 2;
-      if (before(mid)) {
-        begin = mid + 1;
-      } else {
-        end = mid;
-      }
-    }
-    return begin;
-  }
 
   std::size_t MinIndex(std::size_t begin, std::size_t end) const {
     if (order_.empty()) return begin;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/trajectory/index_search.h"
 
 namespace slamsweep::evaluator {
 namespace {
@@ -56,24 +57,13 @@ std::vector<IndexPair> AllPairsByAccumulation(std::size_t count, double delta, d
   for (std::size_t i = 0; i + 1 < count; ++i) {
     const double start = accumulated[i];
     const auto signed_gap = [&](std::size_t j) { return (accumulated[j] - start) - delta; };
-    const auto first_where_not = [](std::size_t begin, std::size_t end, auto before) {
-      while (begin < end) {
-        const std::size_t mid = begin + (end - begin) / 2;
-        if (before(mid)) {
-          begin = mid + 1;
-        } else {
-          end = mid;
-        }
-      }
-      return begin;
-    };
-    const std::size_t split = first_where_not(i + 1, count, [&](std::size_t j) { return signed_gap(j) < 0.0; });
+    const std::size_t split = PartitionPointIndex(i + 1, count, [&](std::size_t j) { return signed_gap(j) < 0.0; });
     double best = std::numeric_limits<double>::infinity();
     std::size_t candidate = split;
     if (split < count) best = signed_gap(split);
     if (split > i + 1 && std::abs(signed_gap(split - 1)) <= best) {
       best = std::abs(signed_gap(split - 1));
-      candidate = first_where_not(i + 1, split, [&](std::size_t j) { return std::abs(signed_gap(j)) > best; });
+      candidate = PartitionPointIndex(i + 1, split, [&](std::size_t j) { return std::abs(signed_gap(j)) > best; });
     }
     if (best > tolerance) continue;
     pairs.push_back({i, candidate});
