@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <iosfwd>
 
 namespace slamsweep::cli {
@@ -24,8 +25,23 @@ void RegisterDataCommands(CLI::App& app, const Streams& streams);
 /// `vectorize` on the top-level app.
 void RegisterVectorizeCommand(CLI::App& app, const Streams& streams);
 
+/// `run CONFIG`: a whole sweep. Sets `exit_code` (0 ok, 1 some run failed, 130 interrupted).
+void RegisterRunCommand(CLI::App& app, const Streams& streams, int& exit_code);
+/// `plan CONFIG`: the expanded matrix, nothing run.
+void RegisterPlanCommand(CLI::App& app, const Streams& streams);
+/// `merge DIR... -o DIR`.
+void RegisterMergeCommand(CLI::App& app, const Streams& streams);
+/// `worker RUN_DIR` (hidden): one run, as started by `run`'s executors. Sets `exit_code`.
+void RegisterWorkerCommand(CLI::App& app, const Streams& streams, int& exit_code);
+/// `report RESULT_DIR [-o DIR]`.
+void RegisterReportCommand(CLI::App& app, const Streams& streams);
+
+/// Writes RESULT_DIR/report and prints where its index is (run and merge call it at the end).
+void WriteSweepReport(const std::filesystem::path& result_dir, const Streams& streams);
+
 /// Parses argv and runs the chosen command. Returns the process exit code:
-/// 0 success, 2 bad usage or input (message on `err`).
+/// 0 success, 2 bad usage or input (message on `err`);
+/// run and worker set their own codes (1 failed runs, 130 interrupted).
 int RunCommandLine(int argc, const char* const* argv, const Streams& streams);
 
 }  // namespace slamsweep::cli

@@ -12,9 +12,15 @@ int RunCommandLine(int argc, const char* const* argv, const Streams& streams) {
   RegisterEvalMapCommand(*eval, streams);
   RegisterVectorizeCommand(app, streams);
   RegisterDataCommands(app, streams);
+  int exit_code = 0;
+  RegisterPlanCommand(app, streams);
+  RegisterRunCommand(app, streams, exit_code);
+  RegisterMergeCommand(app, streams);
+  RegisterReportCommand(app, streams);
+  RegisterWorkerCommand(app, streams, exit_code);
   try {
     app.parse(argc, argv);
-    return 0;
+    return exit_code;
   } catch (const CLI::ParseError& error) {
     // CLI11 prints help (exit 0) or the usage error; any usage error exits 2, like bad input.
     const int code = app.exit(error, streams.out, streams.err);

@@ -211,6 +211,10 @@ Catalog ParseCatalog(std::string_view yaml_text, const std::filesystem::path& so
 
 Catalog ReadCatalog(const std::filesystem::path& path) { return ParseCatalog(ReadTextFile(path), path); }
 
+CatalogEntry ParseCatalogEntry(const std::filesystem::path& source, const YAML::Node& node) {
+  return ParseEntry(source, node);
+}
+
 const CatalogEntry& FindCatalogEntry(const Catalog& catalog, std::string_view name) {
   std::string known;
   for (const CatalogEntry& entry : catalog.entries) {

@@ -12,6 +12,10 @@
 
 #include "evaluator/sequence/sequence_file.h"
 
+namespace YAML {
+class Node;
+}  // namespace YAML
+
 namespace slamsweep::evaluator {
 
 /// How a catalog sequence can be scored.
@@ -66,6 +70,11 @@ using CatalogVariables = std::map<std::string, std::string, std::less<>>;
 /// "FILE:LINE: ..." at the offending node.
 Catalog ParseCatalog(std::string_view yaml_text, const std::filesystem::path& source);
 Catalog ReadCatalog(const std::filesystem::path& path);
+
+/// One entry of the `sequences` list, checked exactly as ParseCatalog checks it (errors
+/// "FILE:LINE: ..." with `source` as FILE); for sequences written inline in other YAML files
+/// (sweep configs). Include <yaml-cpp/yaml.h> to call it.
+CatalogEntry ParseCatalogEntry(const std::filesystem::path& source, const YAML::Node& node);
 
 /// The entry named `name`; InputError listing the known names otherwise.
 const CatalogEntry& FindCatalogEntry(const Catalog& catalog, std::string_view name);

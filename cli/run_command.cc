@@ -1,0 +1,92 @@
+// `slamsweep run CONFIG`: expand the sweep, run it with worker processes, record, report.
+#include <unistd.h>
+
+#include <iostream>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "cli/command.h"
+#include "cli/data_sources.h"
+#include "cli/sweep_loading.h"
+#include "orchestrator/matrix/shard.h"
+#include "orchestrator/process/interruption.h"
+#include "orchestrator/sweep/local_executor.h"
+#include "orchestrator/sweep/sweep_runner.h"
+
+namespace slamsweep::cli {
+namespace {
+
+struct RunOptions {
+  std::string config;
+  std::size_t jobs = 0;
+  MatrixSelection selection;
+  std::string rerun;
+  std::string output;
+  bool keep_going = false;
+  bool no_report = false;
+};
+
+/// The invocation as recorded with the sweep, to reproduce it.
+std::string CommandLine(const RunOptions& options) {
+  std::string line = "slamsweep run " + options.config;
+  if (options.jobs > 0) line += fmt::format(" --jobs {}", options.jobs);
+  if (!options.selection.shard.empty()) line += " --shard " + options.selection.shard;
+  if (!options.selection.algorithms.empty()) {
+    line += " --only-algorithms " + fmt::format("{}", fmt::join(options.selection.algorithms, ","));
+  }
+  if (!options.selection.sequences.empty()) {
+    line += " --only-sequences " + fmt::format("{}", fmt::join(options.selection.sequences, ","));
+  }
+  if (options.selection.iterations > 0) line += fmt::format(" --iterations {}", options.selection.iterations);
+  if (!options.rerun.empty()) line += " --rerun " + options.rerun;
+  if (!options.output.empty()) line += " --output " + options.output;
+  if (options.keep_going) line += " --keep-going";
+  return line;
+}
+
+int Run(const RunOptions& options, const Streams& streams, const std::string& command_line) {
+  const LoadedSweep sweep = LoadSweep(options.config, options.selection);
+  orchestrator::SweepSettings settings;
+  settings.name = sweep.config.name;
+  settings.output_dir = options.output.empty() ? sweep.config.output_dir : std::filesystem::path(options.output);
+  settings.jobs = options.jobs > 0 ? options.jobs : DefaultJobs(sweep.config.workers);
+  settings.failure_budget = options.keep_going ? 0 : sweep.config.failure_budget;
+  settings.rerun_failed = options.rerun == "failed";
+  settings.config_path = std::filesystem::absolute(options.config).string();
+  settings.config_sha = sweep.config_hash;
+  settings.command_line = command_line;
+
+  // Signals are caught from here on: Ctrl-C ends the sweep cleanly (exit 130), never half-way.
+  orchestrator::InterruptionGuard interruption;
+  orchestrator::LocalExecutor executor(orchestrator::WorkerProgram());
+  const bool smart = &streams.out == &std::cout && orchestrator::IsSmartTerminal(STDOUT_FILENO);
+  auto status = orchestrator::MakeStatus(streams.out, smart, settings.jobs);
+  streams.out << fmt::format("sweep {}: {} runs ({} jobs) -> {}\n", settings.name, sweep.runs.size(), settings.jobs,
+                             settings.output_dir.string());
+  const orchestrator::SweepOutcome outcome = RunSweep(sweep.runs, settings, executor, *status);
+  streams.out << fmt::format("{} ok, {} failed, {} done earlier, {} not started{}\n", outcome.ok, outcome.failed,
+                             outcome.already_done, outcome.not_started, outcome.interrupted ? " (interrupted)" : "");
+  streams.out << "results: " << (settings.output_dir / "summary.json").string() << "\n";
+  if (!options.no_report && !outcome.interrupted) WriteSweepReport(settings.output_dir, streams);
+  return outcome.ExitCode();
+}
+
+}  // namespace
+
+void RegisterRunCommand(CLI::App& app, const Streams& streams, int& exit_code) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* command = app.add_subcommand("run", "run a sweep: every run in a worker process, results in OUTPUT");
+  command->add_option("CONFIG", options->config, "sweep YAML")->required();
+  command->add_option("-j,--jobs", options->jobs, "runs at once (default: the config's workers, else cores)")
+      ->check(CLI::PositiveNumber);
+  AddMatrixSelectionOptions(*command, options->selection);
+  command->add_option("--rerun", options->rerun, "run again the runs an earlier sweep recorded as failed")
+      ->check(CLI::IsMember({"failed"}));
+  command->add_option("-o,--output", options->output, "output directory (default: the config's output)");
+  command->add_flag("-k,--keep-going", options->keep_going, "ignore the config's failure budget");
+  command->add_flag("--no-report", options->no_report, "do not write the HTML report");
+  command->callback([options, &streams, &exit_code] { exit_code = Run(*options, streams, CommandLine(*options)); });
+}
+
+}  // namespace slamsweep::cli

@@ -1,0 +1,79 @@
+#include "cli/sweep_loading.h"
+
+#include <algorithm>
+#include <thread>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "cli/data_sources.h"
+#include "evaluator/core/input_error.h"
+#include "evaluator/core/text_file.h"
+#include "orchestrator/matrix/expand_matrix.h"
+#include "orchestrator/matrix/run_id.h"
+#include "orchestrator/matrix/shard.h"
+
+namespace slamsweep::cli {
+
+namespace {
+
+/// Throws unless every name in `wanted` is one of `known`.
+void RequireKnown(const std::vector<std::string>& wanted, const std::vector<std::string>& known,
+                  std::string_view option) {
+  for (const std::string& name : wanted) {
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      throw evaluator::InputError(fmt::format("{}: no '{}' in the config (it has: {})", option, name,
+                                              fmt::join(known, ", ")));
+    }
+  }
+}
+
+bool Selected(const std::vector<std::string>& wanted, const std::string& name) {
+  return wanted.empty() || std::find(wanted.begin(), wanted.end(), name) != wanted.end();
+}
+
+}  // namespace
+
+void AddMatrixSelectionOptions(CLI::App& command, MatrixSelection& selection) {
+  command.add_option("--shard", selection.shard, "only share I of N of the matrix (I/N), for several machines");
+  command.add_option("--only-algorithms", selection.algorithms, "only these algorithms (comma-separated names)")
+      ->delimiter(',');
+  command.add_option("--only-sequences", selection.sequences, "only these sequences (comma-separated names)")
+      ->delimiter(',');
+  command.add_option("--iterations", selection.iterations, "iterations per cell instead of the config's")
+      ->check(CLI::PositiveNumber);
+}
+
+LoadedSweep LoadSweep(const std::string& config_file, const MatrixSelection& selection) {
+  const CatalogLocation location = FindCatalog("");
+  orchestrator::SweepConfigContext context;
+  context.default_catalog = location.catalog;
+  context.variables = {{"SHARED", location.shared_root.string()}};
+  LoadedSweep sweep;
+  sweep.config = orchestrator::ReadSweepConfig(config_file, context);
+  sweep.config_hash = fmt::format("{:016x}", orchestrator::Fnv1a64(evaluator::ReadTextFile(config_file)));
+  std::vector<std::string> algorithms, sequences;
+  for (const auto& algorithm : sweep.config.algorithms) algorithms.push_back(algorithm.name);
+  for (const auto& sequence : sweep.config.sequences) sequences.push_back(sequence.entry.name);
+  RequireKnown(selection.algorithms, algorithms, "--only-algorithms");
+  RequireKnown(selection.sequences, sequences, "--only-sequences");
+  if (selection.iterations > 0) sweep.config.iterations = selection.iterations;
+  std::vector<orchestrator::RunSpec> runs = orchestrator::ExpandMatrix(sweep.config);
+  for (orchestrator::RunSpec& run : runs) {
+    if (Selected(selection.algorithms, run.algorithm.name) && Selected(selection.sequences, run.sequence.entry.name)) {
+      sweep.runs.push_back(std::move(run));
+    }
+  }
+  if (!selection.shard.empty()) {
+    sweep.runs = orchestrator::SelectShard(std::move(sweep.runs), orchestrator::ParseShard(selection.shard));
+  }
+  return sweep;
+}
+
+std::size_t DefaultJobs(std::size_t configured) {
+  if (configured > 0) return configured;
+  const unsigned cores = std::thread::hardware_concurrency();
+  return cores > 0 ? cores : 1;
+}
+
+}  // namespace slamsweep::cli

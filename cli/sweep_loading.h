@@ -1,0 +1,46 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "orchestrator/config/sweep_config.h"
+#include "orchestrator/matrix/run_spec.h"
+
+namespace slamsweep::cli {
+
+/// A sweep file read, validated and expanded, as `run` and `plan` both need it.
+struct LoadedSweep {
+  orchestrator::SweepConfig config;
+  /// The matrix, or the share of it that `--shard I/N` selects.
+  std::vector<orchestrator::RunSpec> runs;
+  /// FNV-1a of the file's bytes (hex), recorded with each sweep to tell edited configs apart.
+  std::string config_hash;
+};
+
+/// Which part of a sweep to run: the flags `run` and `plan` share (Jenkins job parameters map onto them).
+struct MatrixSelection {
+  /// --shard I/N; empty = all runs.
+  std::string shard;
+  /// --only-algorithms / --only-sequences: names from the config; empty = all.
+  std::vector<std::string> algorithms;
+  std::vector<std::string> sequences;
+  /// --iterations: overrides the config's count (0 = keep). Iteration k keeps its seed and run id
+  /// whatever the count, so a shorter sweep is a prefix of the longer one and shares its results.
+  int iterations = 0;
+};
+
+/// Adds --shard, --only-algorithms, --only-sequences and --iterations to `command`.
+void AddMatrixSelectionOptions(CLI::App& command, MatrixSelection& selection);
+
+/// Reads `config_file` with the catalog and ${SHARED} of FindCatalog(""), expands it and keeps the
+/// selected runs. Throws InputError (file:line:column) for a bad config, and naming the option and
+/// the config's names for an unknown algorithm or sequence.
+LoadedSweep LoadSweep(const std::string& config_file, const MatrixSelection& selection);
+
+/// Runs at once: `configured` when > 0, else the number of cores.
+std::size_t DefaultJobs(std::size_t configured);
+
+}  // namespace slamsweep::cli

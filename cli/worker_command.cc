@@ -1,0 +1,21 @@
+// `slamsweep worker RUN_DIR`: the hidden subcommand the orchestrator starts for every run.
+#include <memory>
+#include <string>
+
+#include "cli/command.h"
+#include "orchestrator/worker/worker.h"
+
+namespace slamsweep::cli {
+
+void RegisterWorkerCommand(CLI::App& app, const Streams& /*streams*/, int& exit_code) {
+  auto run_dir = std::make_shared<std::string>();
+  CLI::App* command = app.add_subcommand("worker", "run one prepared run folder (started by `slamsweep run`)");
+  // Hidden: users start sweeps; workers are started by the orchestrator (and Slurm array tasks).
+  command->group("");
+  command->add_option("RUN_DIR", *run_dir, "run folder holding run.json")->required();
+  // The worker's exit code is its whole interface to the supervisor (0 result written, 2 bad
+  // run.json, 130 interrupted); RunWorker prints its own message on stderr.
+  command->callback([run_dir, &exit_code] { exit_code = orchestrator::RunWorker(*run_dir); });
+}
+
+}  // namespace slamsweep::cli

@@ -1,0 +1,21 @@
+#include <memory>
+#include <string>
+
+#include "evaluator/core/input_error.h"
+#include "orchestrator/adapters/adapter.h"
+#include "orchestrator/adapters/command_adapter.h"
+#include "orchestrator/adapters/mrpt_adapters.h"
+#include "orchestrator/adapters/odometry_adapter.h"
+
+namespace slamsweep::orchestrator {
+
+std::unique_ptr<Adapter> MakeAdapter(std::string_view name) {
+  if (name == "mrpt-icp-slam") return std::make_unique<IcpSlamAdapter>();
+  if (name == "mrpt-rbpf-slam") return std::make_unique<RbpfSlamAdapter>();
+  if (name == "command") return std::make_unique<CommandAdapter>();
+  if (name == "odometry") return std::make_unique<OdometryAdapter>();
+  throw evaluator::InputError("algorithm.adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command or odometry, got '" +
+                              std::string(name) + "'");
+}
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,241 @@
+#include "orchestrator/adapters/command_adapter.h"
+
+#include <filesystem>
+#include <utility>
+
+#include "evaluator/core/input_error.h"
+#include "evaluator/formats/map/image8.h"
+#include "evaluator/formats/map/image_file.h"
+#include "evaluator/formats/trajectory/trajectory_format.h"
+#include "evaluator/sequence/sequence_file.h"
+#include "orchestrator/adapters/mrpt_ini.h"
+#include "orchestrator/adapters/output_files.h"
+#include "orchestrator/adapters/rendered_map.h"
+#include "orchestrator/adapters/run_failure.h"
+#include "orchestrator/adapters/stage_image.h"
+
+namespace slamsweep::orchestrator {
+
+namespace ev = slamsweep::evaluator;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kAccepted = "{input}, {output_dir}, {run_dir}, {seed}, {iteration}, {param:NAME}, {{, }}";
+
+std::string ParameterNames(const nlohmann::json& parameters) {
+  std::string names;
+  for (const auto& [name, value] : parameters.items()) names += (names.empty() ? "" : ", ") + name;
+  return names.empty() ? "none" : names;
+}
+
+const CommandDeclaration& Declaration(const RunSpec& spec) {
+  if (!spec.algorithm.command) {
+    throw ev::InputError("algorithm.command: the command adapter needs a command declaration (argv, input_format, "
+                         "trajectory and/or map)");
+  }
+  const CommandDeclaration& declaration = *spec.algorithm.command;
+  if (declaration.argv.empty() || declaration.argv.front().empty()) {
+    throw ev::InputError("algorithm.command.argv: expected the program and its arguments, got no program");
+  }
+  if (!declaration.trajectory && !declaration.map) {
+    throw ev::InputError("algorithm.command: declares neither a trajectory nor a map output: nothing to score");
+  }
+  return declaration;
+}
+
+PlaceholderValues Values(const RunSpec& spec, const RunPaths& paths) {
+  PlaceholderValues values;
+  const CommandDeclaration& declaration = Declaration(spec);
+  const ev::SequenceWriteFormat format =
+      ev::ParseSequenceWriteFormat(declaration.input_format, "algorithm.command.input_format");
+  values.input = (paths.InputDir() / (SafeFileStem(spec.sequence.entry.name) +
+                                      InputExtension(ev::SequenceWriteFormatName(format))))
+                     .string();
+  values.output_dir = paths.RawDir().string();
+  values.run_dir = paths.root.string();
+  values.seed = std::to_string(spec.seed);
+  values.iteration = std::to_string(spec.iteration);
+  values.parameters = spec.algorithm.parameters;
+  return values;
+}
+
+/// A declared output file: its path expanded, relative to raw/, and not escaping the run folder.
+fs::path OutputPath(const DeclaredOutput& output, const PlaceholderValues& values, const RunPaths& paths,
+                    const std::string& field) {
+  const fs::path relative = ExpandPlaceholders(output.path, values, field + ".path");
+  const fs::path file = (paths.RawDir() / relative).lexically_normal();
+  const fs::path inside = file.lexically_relative(paths.RawDir().lexically_normal());
+  if (relative.is_absolute() || inside.empty() || inside.begin()->string() == "..") {
+    throw ev::InputError(field + ".path: '" + output.path + "' must stay inside the run's raw/ folder");
+  }
+  return file;
+}
+
+ev::TrajectoryFormat TrajectoryFormatOf(const std::string& name) {
+  const auto format = ev::ParseTrajectoryFormat(name);
+  if (!format || *format == ev::TrajectoryFormat::kAuto) {
+    throw ev::InputError("algorithm.command.trajectory.format: expected tum, kitti, csv, mrpt or carmen, got '" + name +
+                         "'");
+  }
+  return *format;
+}
+
+ev::MapFormat MapFormatOf(const std::string& name) {
+  if (name == "map_server") return ev::MapFormat::kRosMapServer;
+  if (name == "mrpt") return ev::MapFormat::kMrptGridmap;
+  if (name == "pgm" || name == "png") return ev::MapFormat::kBareImage;
+  throw ev::InputError("algorithm.command.map.format: expected map_server, mrpt or pgm, got '" + name + "'");
+}
+
+}  // namespace
+
+std::string ExpandPlaceholders(std::string_view text, const PlaceholderValues& values, const std::string& field) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '}') {
+      if (i + 1 < text.size() && text[i + 1] == '}') {
+        out += '}';
+        ++i;
+        continue;
+      }
+      throw ev::InputError(field + ": a lone '}' in '" + std::string(text) + "' (write '}}' for a brace)");
+    }
+    if (c != '{') {
+      out += c;
+      continue;
+    }
+    if (i + 1 < text.size() && text[i + 1] == '{') {
+      out += '{';
+      ++i;
+      continue;
+    }
+    const std::size_t close = text.find('}', i);
+    if (close == std::string_view::npos) {
+      throw ev::InputError(field + ": unclosed '{' in '" + std::string(text) + "'; accepted: " + kAccepted);
+    }
+    const std::string_view name = text.substr(i + 1, close - i - 1);
+    if (name == "input") {
+      out += values.input;
+    } else if (name == "output_dir") {
+      out += values.output_dir;
+    } else if (name == "run_dir") {
+      out += values.run_dir;
+    } else if (name == "seed") {
+      out += values.seed;
+    } else if (name == "iteration") {
+      out += values.iteration;
+    } else if (name.starts_with("param:")) {
+      const std::string parameter(name.substr(6));
+      if (!values.parameters.is_object() || !values.parameters.contains(parameter)) {
+        throw ev::InputError(field + ": {param:" + parameter + "}: the run has no parameter '" + parameter +
+                             "' (parameters: " + ParameterNames(values.parameters) + ")");
+      }
+      // The value is one argument as it is: line breaks are harmless without a shell.
+      const nlohmann::json& value = values.parameters.at(parameter);
+      out += value.is_string() ? value.get<std::string>() : IniValueText(value, field + ": {param:" + parameter + "}");
+    } else {
+      throw ev::InputError(field + ": unknown placeholder {" + std::string(name) + "}; accepted: " + kAccepted);
+    }
+    i = close;
+  }
+  return out;
+}
+
+std::string InputExtension(std::string_view input_format) {
+  if (input_format == "rawlog") return ".rawlog";
+  if (input_format == "carmen") return ".log";
+  if (input_format == "tum") return ".tum";
+  throw ev::InputError("algorithm.command.input_format: expected rawlog, carmen or tum, got '" +
+                       std::string(input_format) + "'");
+}
+
+PreparedRun CommandAdapter::Prepare(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const {
+  const CommandDeclaration& declaration = Declaration(spec);
+  const PlaceholderValues values = Values(spec, paths);
+  // Expanded before anything is written: a bad declaration leaves no half-prepared run.
+  PreparedRun prepared;
+  for (std::size_t i = 0; i < declaration.argv.size(); ++i) {
+    prepared.argv.push_back(
+        ExpandPlaceholders(declaration.argv[i], values, "algorithm.command.argv[" + std::to_string(i) + "]"));
+  }
+  if (declaration.trajectory) {
+    OutputPath(*declaration.trajectory, values, paths, "algorithm.command.trajectory");
+    TrajectoryFormatOf(declaration.trajectory->format);
+  }
+  if (declaration.map) {
+    OutputPath(*declaration.map, values, paths, "algorithm.command.map");
+    MapFormatOf(declaration.map->format);
+  }
+  fs::create_directories(paths.InputDir());
+  fs::create_directories(paths.RawDir());
+  ev::WriteSequence(inputs.sequence, values.input,
+                    ev::ParseSequenceWriteFormat(declaration.input_format, "algorithm.command.input_format"));
+  return prepared;
+}
+
+CollectedOutputs CommandAdapter::Collect(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const {
+  const CommandDeclaration& declaration = Declaration(spec);
+  const PlaceholderValues values = Values(spec, paths);
+  CollectedOutputs outputs;
+
+  if (declaration.trajectory) {
+    const ev::TrajectoryFormat format = TrajectoryFormatOf(declaration.trajectory->format);
+    ev::TrajectoryReadOptions options;
+    if (format == ev::TrajectoryFormat::kMrptPath) options.mrpt_step_stamps_s = ScanStamps(inputs.sequence.scans);
+    outputs.trajectory =
+        ReadTrajectoryOutput(paths, OutputPath(*declaration.trajectory, values, paths, "algorithm.command.trajectory"),
+                             format, options, outputs.warnings);
+  }
+
+  const bool stages_from_glob = !declaration.stage_maps_glob.empty();
+  if (declaration.map) {
+    ev::MapReadOptions options;
+    options.format = MapFormatOf(declaration.map->format);
+    if (options.format == ev::MapFormat::kBareImage) options.unknown_value = declaration.stage_unknown_value;
+    outputs.map =
+        ReadMapOutput(paths, OutputPath(*declaration.map, values, paths, "algorithm.command.map"), "map", options);
+    if (!stages_from_glob && outputs.trajectory && spec.evaluation.stages > 0) {
+      try {
+        outputs.stages = RenderMapFromTrajectory(inputs.sequence.scans, *outputs.trajectory, spec.evaluation).stages;
+      } catch (const ev::InputError& error) {
+        outputs.warnings.push_back(std::string("no stage maps: ") + error.what());
+      }
+    }
+  } else {
+    // Declaration() guarantees a trajectory here. Scans outside its time span cannot be placed.
+    RenderedMap rendered;
+    try {
+      rendered = RenderMapFromTrajectory(inputs.sequence.scans, *outputs.trajectory, spec.evaluation);
+    } catch (const ev::InputError& error) {
+      throw RunFailure(FailureKind::kCorruptOutput, std::string("no map can be rendered from the trajectory: ") +
+                                                        error.what());
+    }
+    outputs.map = std::move(rendered.grid);
+    outputs.map_rendered_from_trajectory = true;
+    if (!stages_from_glob) outputs.stages = std::move(rendered.stages);
+    if (rendered.scans_outside_trajectory > 0) {
+      outputs.warnings.push_back(std::to_string(rendered.scans_outside_trajectory) +
+                                 " scans lie outside the trajectory's time span and are not in the rendered map");
+    }
+  }
+
+  if (stages_from_glob) {
+    for (const fs::path& file : GlobFiles(paths.RawDir(), declaration.stage_maps_glob)) {
+      try {
+        const cv::Mat image = ev::ReadGreyImageFile(file);
+        outputs.stages.push_back(StageImage(
+            ev::FromImage8(image, declaration.stage_unknown_value, outputs.map.resolution_m, outputs.map.origin)));
+      } catch (const ev::InputError& error) {
+        throw RunFailure(FailureKind::kCorruptOutput, std::string("corrupt stage map: ") + error.what());
+      }
+    }
+    if (outputs.stages.empty()) {
+      outputs.warnings.push_back("no stage maps: nothing under raw/ matches '" + declaration.stage_maps_glob + "'");
+    }
+  }
+  return outputs;
+}
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "orchestrator/adapters/adapter.h"
+
+namespace slamsweep::orchestrator {
+
+/// What the placeholders of a command declaration stand for in one run.
+struct PlaceholderValues {
+  std::string input;       ///< {input}: the sequence file written for the program (absolute)
+  std::string output_dir;  ///< {output_dir}: the run's raw/ folder (absolute)
+  std::string run_dir;     ///< {run_dir} (absolute)
+  std::string seed;        ///< {seed}
+  std::string iteration;   ///< {iteration}
+  nlohmann::json parameters = nlohmann::json::object();  ///< {param:NAME}
+};
+
+/// `text` with every {input}, {output_dir}, {run_dir}, {seed}, {iteration} and {param:NAME}
+/// replaced; "{{" and "}}" stand for literal braces. An unknown placeholder, an unclosed brace or
+/// a parameter the run does not have is an InputError naming `field` and what is accepted.
+/// The result is one argument whatever it holds (spaces, ';', quotes): no shell ever sees it.
+std::string ExpandPlaceholders(std::string_view text, const PlaceholderValues& values, const std::string& field);
+
+/// The file extension of a written input format: "rawlog" -> ".rawlog", "carmen" -> ".log", "tum" -> ".tum".
+std::string InputExtension(std::string_view input_format);
+
+/// A SLAM program run through its declared argv (run_spec.h CommandDeclaration). Prepare writes
+/// input/<seq>.<ext> in input_format and expands the argv. Collect reads the declared trajectory
+/// (on the sequence clock; MRPT paths are stamped by step = scan) and map; without a declared map
+/// the map is rendered from the trajectory and the scans. Stage maps come from stage_maps_glob,
+/// else they are rendered from the trajectory when there is one.
+class CommandAdapter : public Adapter {
+ public:
+  PreparedRun Prepare(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const override;
+  CollectedOutputs Collect(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const override;
+};
+
+}  // namespace slamsweep::orchestrator

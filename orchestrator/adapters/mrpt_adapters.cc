@@ -1,0 +1,168 @@
+#include "orchestrator/adapters/mrpt_adapters.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <utility>
+
+#include "evaluator/core/input_error.h"
+#include "evaluator/formats/map/mrpt_gridmap_format.h"
+#include "evaluator/sequence/sequence_file.h"
+#include "orchestrator/adapters/output_files.h"
+#include "orchestrator/adapters/rendered_map.h"
+#include "orchestrator/adapters/run_failure.h"
+#include "orchestrator/adapters/stage_image.h"
+
+namespace slamsweep::orchestrator {
+
+namespace ev = slamsweep::evaluator;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kApp = "MappingApplication";
+constexpr const char* kPathFile = "log_estimated_path.txt";
+
+std::string ReadTemplate(const fs::path& path, const std::string& adapter) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw ev::InputError("algorithm.adapter " + adapter + ": configuration template " + path.string() +
+                         " missing (Debian: apt install mrpt-apps)");
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// defaults, then the run's parameters, then the adapter's controlled keys; a parameter that
+/// names a controlled key would silently lose, so it is refused.
+std::vector<IniSetting> Compose(std::vector<IniSetting> defaults, const nlohmann::json& parameters,
+                                const std::vector<IniSetting>& controlled) {
+  std::vector<IniSetting> settings = std::move(defaults);
+  for (IniSetting& setting : IniSettingsFromParameters(parameters)) {
+    for (const IniSetting& fixed : controlled) {
+      if (fixed.section == setting.section && fixed.key == setting.key) {
+        throw ev::InputError("algorithm.parameters." + setting.section + "." + setting.key +
+                             ": set by the adapter (the run folder's layout needs it), cannot be a parameter");
+      }
+    }
+    settings.push_back(std::move(setting));
+  }
+  settings.insert(settings.end(), controlled.begin(), controlled.end());
+  return settings;
+}
+
+std::string RawlogName(const RunSpec& spec) { return "input/" + SafeFileStem(spec.sequence.entry.name) + ".rawlog"; }
+
+/// Writes input/<seq>.rawlog and input/<ini_name>; returns argv {program, input/<ini_name>}.
+PreparedRun PrepareMrpt(const RunInputs& inputs, const RunPaths& paths, const std::string& rawlog_relative,
+                        const std::string& template_text, const std::vector<IniSetting>& settings,
+                        const std::string& program, const std::string& ini_name) {
+  fs::create_directories(paths.InputDir());
+  fs::create_directories(paths.RawDir());
+  ev::WriteSequence(inputs.sequence, paths.root / rawlog_relative, ev::SequenceWriteFormat::kRawlog);
+  const fs::path ini = paths.InputDir() / ini_name;
+  std::ofstream out(ini, std::ios::binary | std::ios::trunc);
+  out << RenderIni(template_text, settings);
+  out.close();
+  if (!out) throw ev::InputError(ini.string() + ": cannot write the configuration");
+  return PreparedRun{{program, "input/" + ini_name}};
+}
+
+/// The final grid map and the estimated path, common to both applications.
+CollectedOutputs CollectMrpt(const RunInputs& inputs, const RunPaths& paths, const std::string& map_png) {
+  CollectedOutputs outputs;
+  const fs::path image = paths.RawDir() / map_png;
+  RequireOutputFile(paths, image, "map");
+  RequireOutputFile(paths, ev::MrptLimitsPath(image), "map limits");
+  ev::MapReadOptions map_options;
+  map_options.format = ev::MapFormat::kMrptGridmap;
+  outputs.map = ReadMapOutput(paths, image, "map", map_options);
+
+  ev::TrajectoryReadOptions path_options;
+  // Both apps log one line per rawlog step, and step k is scan k: the scans' stamps put the path
+  // on the sequence clock (rbpf-slam's own stamps are MRPT clock values of the same instants).
+  path_options.mrpt_step_stamps_s = ScanStamps(inputs.sequence.scans);
+  outputs.trajectory = ReadTrajectoryOutput(paths, paths.RawDir() / kPathFile, ev::TrajectoryFormat::kMrptPath,
+                                            path_options, outputs.warnings);
+  return outputs;
+}
+
+}  // namespace
+
+std::vector<IniSetting> IcpSlamSettings(const RunSpec& spec, const std::string& rawlog_path) {
+  const std::vector<IniSetting> controlled = {
+      {kApp, "rawlog_file", rawlog_path},
+      {kApp, "logOutput_dir", "raw"},
+      {kApp, "SHOW_PROGRESS_3D_REAL_TIME", "0"},
+      {kApp, "SAVE_3D_SCENE", "0"},
+  };
+  return Compose({}, spec.algorithm.parameters, controlled);
+}
+
+std::vector<IniSetting> RbpfSlamSettings(const RunSpec& spec, const std::string& rawlog_path, std::size_t scan_count) {
+  // A map image every LOG_FREQUENCY steps: about evaluation.stages of them over the run.
+  const std::size_t stages = std::max<std::size_t>(spec.evaluation.stages, 1);
+  const std::size_t frequency = std::max<std::size_t>(1, (scan_count + stages - 1) / stages);
+  const std::vector<IniSetting> defaults = {
+      // 5 particles instead of the template's 20: a quick-start run takes seconds, not minutes.
+      {kApp, "sampleSize", "5"},
+      // DEBUG (the template's) writes megabytes of log per run.
+      {kApp, "verbosity_level", "INFO"},
+  };
+  const std::vector<IniSetting> controlled = {
+      {kApp, "rawlog_file", rawlog_path},
+      {kApp, "logOutput_dir", "raw"},
+      {kApp, "SHOW_PROGRESS_IN_WINDOW", "0"},
+      {kApp, "SAVE_3D_SCENE", "0"},
+      {kApp, "SAVE_MAP_IMAGES", spec.evaluation.stages > 0 ? "1" : "0"},
+      {kApp, "LOG_FREQUENCY", std::to_string(frequency)},
+  };
+  return Compose(defaults, spec.algorithm.parameters, controlled);
+}
+
+IcpSlamAdapter::IcpSlamAdapter(fs::path template_path) : template_path_(std::move(template_path)) {}
+
+PreparedRun IcpSlamAdapter::Prepare(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const {
+  const std::string rawlog = RawlogName(spec);
+  const std::vector<IniSetting> settings = IcpSlamSettings(spec, rawlog);
+  return PrepareMrpt(inputs, paths, rawlog, ReadTemplate(template_path_, "mrpt-icp-slam"), settings, "icp-slam",
+                     "icp-slam.ini");
+}
+
+CollectedOutputs IcpSlamAdapter::Collect(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const {
+  CollectedOutputs outputs = CollectMrpt(inputs, paths, "_finalmaps_.txt_mrpt__maps__COccupancyGridMap2D_00.png");
+  if (spec.evaluation.stages > 0) {
+    try {
+      outputs.stages = RenderMapFromTrajectory(inputs.sequence.scans, *outputs.trajectory, spec.evaluation).stages;
+    } catch (const ev::InputError& error) {
+      outputs.warnings.push_back(std::string("no stage maps: ") + error.what());
+    }
+  }
+  return outputs;
+}
+
+RbpfSlamAdapter::RbpfSlamAdapter(fs::path template_path) : template_path_(std::move(template_path)) {}
+
+PreparedRun RbpfSlamAdapter::Prepare(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const {
+  const std::string rawlog = RawlogName(spec);
+  const std::vector<IniSetting> settings = RbpfSlamSettings(spec, rawlog, inputs.sequence.scans.size());
+  return PrepareMrpt(inputs, paths, rawlog, ReadTemplate(template_path_, "mrpt-rbpf-slam"), settings, "rbpf-slam",
+                     "rbpf-slam.ini");
+}
+
+CollectedOutputs RbpfSlamAdapter::Collect(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const {
+  CollectedOutputs outputs = CollectMrpt(inputs, paths, "finalMap_mrpt__maps__COccupancyGridMap2D_00.png");
+  if (spec.evaluation.stages == 0) return outputs;
+  // The zero-padded step number makes lexicographic order the build order.
+  for (const fs::path& file : GlobFiles(paths.RawDir(), "maps/mapbuilt_*_COccupancyGridMap2D_00.png")) {
+    ev::MapReadOptions options;
+    options.format = ev::MapFormat::kMrptGridmap;
+    outputs.stages.push_back(StageImage(ReadMapOutput(paths, file, "stage map", options)));
+  }
+  if (outputs.stages.empty()) outputs.warnings.push_back("no stage maps: raw/maps/mapbuilt_*.png missing");
+  return outputs;
+}
+
+}  // namespace slamsweep::orchestrator

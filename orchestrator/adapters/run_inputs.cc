@@ -1,0 +1,80 @@
+#include "orchestrator/adapters/run_inputs.h"
+
+#include <algorithm>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+#include "evaluator/core/input_error.h"
+#include "evaluator/noise/odometry_noise.h"
+#include "evaluator/noise/random.h"
+#include "evaluator/noise/range_noise.h"
+#include "evaluator/sequence/catalog.h"
+
+namespace slamsweep::orchestrator {
+
+namespace ev = slamsweep::evaluator;
+
+ev::Sequence CutSequence(ev::Sequence sequence, std::size_t max_scans) {
+  if (max_scans == 0) throw ev::InputError("sequence.max_scans: expected a positive number of scans, got 0");
+  if (sequence.scans.size() <= max_scans) return sequence;
+  sequence.scans.resize(max_scans);
+  std::vector<std::size_t> first(max_scans);
+  std::iota(first.begin(), first.end(), std::size_t{0});
+  sequence.odometry = sequence.odometry.Subset(first);
+  const double last_stamp_s = sequence.scans.back().stamp_s;
+  if (sequence.reference) {
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < sequence.reference->size(); ++i) {
+      if (sequence.reference->stamps_s()[i] <= last_stamp_s) kept.push_back(i);
+    }
+    sequence.reference = sequence.reference->Subset(kept);
+    if (sequence.reference->empty()) sequence.reference.reset();
+  }
+  if (sequence.relations) {
+    std::erase_if(*sequence.relations,
+                  [&](const ev::Relation& relation) { return std::max(relation.t1_s, relation.t2_s) > last_stamp_s; });
+    if (sequence.relations->empty()) sequence.relations.reset();
+  }
+  return sequence;
+}
+
+nlohmann::json ApplyRunNoise(ev::Sequence& sequence, const NoiseSpec& noise, std::uint64_t seed) {
+  nlohmann::json record;
+  record["name"] = noise.name;
+  record["seed"] = seed;
+  record["odometry"] = nullptr;
+  record["range"] = nullptr;
+  if (noise.odometry && *noise.odometry != ev::OdometryNoise{}) {
+    ev::ValidateOdometryNoise(*noise.odometry);
+    // Noise drawn around the odometry of a corrected log would be drawn around its reference
+    // anyway (they are equal); drawing around the truth keeps the run's truth exact.
+    const bool around_reference = sequence.reference && sequence.reference->stamps_s() == sequence.odometry.stamps_s();
+    const ev::Trajectory around = around_reference ? *sequence.reference : sequence.odometry;
+    const std::uint64_t odometry_seed = ev::DeriveSeed(seed, 0);
+    sequence.odometry = ev::ApplyOdometryNoise(around, *noise.odometry, odometry_seed);
+    record["odometry"] = *noise.odometry;
+    record["odometry_seed"] = odometry_seed;
+    record["odometry_around"] = around_reference ? "reference" : "odometry";
+  }
+  if (noise.range && *noise.range != ev::RangeNoise{}) {
+    ev::ValidateRangeNoise(*noise.range);
+    const std::uint64_t range_seed = ev::DeriveSeed(seed, 1);
+    sequence.scans = ev::ApplyRangeNoise(sequence.scans, *noise.range, range_seed);
+    record["range"] = *noise.range;
+    record["range_seed"] = range_seed;
+  }
+  return record;
+}
+
+RunInputs PrepareRunInputs(const RunSpec& spec) {
+  RunInputs inputs;
+  // run.json holds resolved paths: no ${VARIABLE} is left to expand.
+  inputs.sequence = ev::LoadCatalogSequence(spec.sequence.entry, {});
+  if (spec.sequence.max_scans) inputs.sequence = CutSequence(std::move(inputs.sequence), *spec.sequence.max_scans);
+  ev::ValidateSequence(inputs.sequence);
+  inputs.noise_record = ApplyRunNoise(inputs.sequence, spec.noise, spec.seed);
+  return inputs;
+}
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <filesystem>
+
+namespace slamsweep::orchestrator {
+
+/// The fixed layout of one run folder (orchestrator/DESIGN.md, "Output directory"). Adapters and
+/// the worker name files only through it, so the layout is written down once.
+struct RunPaths {
+  std::filesystem::path root;
+
+  std::filesystem::path RunJson() const { return root / "run.json"; }
+  std::filesystem::path CommandTxt() const { return root / "command.txt"; }
+  std::filesystem::path Log() const { return root / "log.txt"; }
+  /// What the program reads (rawlog, ini, CARMEN log...).
+  std::filesystem::path InputDir() const { return root / "input"; }
+  /// The program's own output folder ({output_dir} of a command).
+  std::filesystem::path RawDir() const { return root / "raw"; }
+  std::filesystem::path StagesDir() const { return root / "stages"; }
+  std::filesystem::path MapYaml() const { return root / "map.yaml"; }
+  std::filesystem::path TrajectoryTum() const { return root / "trajectory.tum"; }
+  std::filesystem::path ReferenceTum() const { return root / "reference.tum"; }
+  std::filesystem::path GeoJson() const { return root / "map.geojson"; }
+  std::filesystem::path ResultJson() const { return root / "result.json"; }
+};
+
+}  // namespace slamsweep::orchestrator

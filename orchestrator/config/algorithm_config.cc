@@ -1,0 +1,182 @@
+#include "orchestrator/config/algorithm_config.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string_view>
+
+#include "orchestrator/config/yaml_fields.h"
+
+namespace slamsweep::orchestrator {
+namespace {
+
+constexpr std::string_view kAdapters[] = {"mrpt-icp-slam", "mrpt-rbpf-slam", "command", "odometry"};
+constexpr std::string_view kInputFormats[] = {"rawlog", "carmen", "tum"};
+constexpr std::string_view kTrajectoryFormats[] = {"tum", "kitti", "csv", "mrpt", "carmen"};
+constexpr std::string_view kMapFormats[] = {"map_server", "mrpt", "pgm"};
+constexpr std::string_view kPlaceholders[] = {"input", "output_dir", "run_dir", "seed", "iteration"};
+
+template <std::size_t N>
+bool OneOf(const std::string& value, const std::string_view (&choices)[N]) {
+  return std::find(std::begin(choices), std::end(choices), value) != std::end(choices);
+}
+
+template <std::size_t N>
+std::string Choices(const std::string_view (&choices)[N]) {
+  std::string text;
+  for (std::size_t i = 0; i < N; ++i) text += (i == 0 ? "" : i + 1 == N ? " or " : ", ") + std::string(choices[i]);
+  return text;
+}
+
+nlohmann::json ParameterValue(const std::filesystem::path& file, const YAML::Node& node, const std::string& path) {
+  if (!node.IsScalar()) FailExpected(file, node, path, "a number, text or true/false");
+  return YamlToJson(node);
+}
+
+std::vector<ParameterAxis> ParseParameters(const std::filesystem::path& file, const YAML::Node& node,
+                                           const std::string& path) {
+  std::vector<ParameterAxis> axes;
+  if (!node.IsDefined() || node.IsNull()) return axes;
+  if (!node.IsMap()) FailExpected(file, node, path, "a map of parameter names to values or lists of values");
+  for (const auto& item : node) {
+    ParameterAxis axis;
+    axis.name = item.first.Scalar();
+    const std::string value_path = path + "." + axis.name;
+    if (axis.name.empty()) FailExpected(file, item.first, path, "non-empty parameter names");
+    if (item.second.IsSequence()) {
+      if (item.second.size() == 0) FailExpected(file, item.second, value_path, "at least one value to sweep");
+      for (const auto& value : item.second) axis.values.push_back(ParameterValue(file, value, value_path));
+      for (std::size_t i = 0; i < axis.values.size(); ++i) {
+        for (std::size_t j = 0; j < i; ++j) {
+          if (axis.values[i] == axis.values[j]) {
+            FailAt(file, item.second[i],
+                   fmt::format("{}: value {} is listed twice (it would run the same cell twice)", value_path,
+                               axis.values[i].dump()));
+          }
+        }
+      }
+    } else {
+      axis.values.push_back(ParameterValue(file, item.second, value_path));
+    }
+    axes.push_back(std::move(axis));
+  }
+  return axes;
+}
+
+/// Checks every {...} of `text` against the known placeholders and declared parameters.
+void CheckPlaceholders(const std::filesystem::path& file, const YAML::Node& node, const std::string& path,
+                       const std::string& text, const std::set<std::string, std::less<>>& parameters) {
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t open = text.find('{', start);
+    if (open == std::string::npos) return;
+    const std::size_t close = text.find('}', open);
+    if (close == std::string::npos) {
+      FailAt(file, node, fmt::format("{}: '{{' without a closing '}}' in '{}'", path, text));
+    }
+    const std::string name = text.substr(open + 1, close - open - 1);
+    if (name.starts_with("param:")) {
+      const std::string parameter = name.substr(6);
+      if (!parameters.contains(parameter)) {
+        std::string declared;
+        for (const std::string& known : parameters) declared += (declared.empty() ? "" : ", ") + known;
+        FailAt(file, node,
+               fmt::format("{}: expected {{param:NAME}} to name a declared parameter, got {{param:{}}} (declared: {})",
+                           path, parameter, declared.empty() ? "none" : declared));
+      }
+    } else if (!OneOf(name, kPlaceholders)) {
+      FailAt(file, node,
+             fmt::format("{}: expected a placeholder {{input}}, {{output_dir}}, {{run_dir}}, {{seed}}, {{iteration}} "
+                         "or {{param:NAME}}, got {{{}}}",
+                         path, name));
+    }
+    start = close + 1;
+  }
+}
+
+template <std::size_t N>
+std::optional<DeclaredOutput> ParseDeclaredOutput(const std::filesystem::path& file, const YAML::Node& node,
+                                                  const std::string& path, const std::string_view (&formats)[N],
+                                                  const std::set<std::string, std::less<>>& parameters) {
+  if (!node.IsDefined() || node.IsNull()) return std::nullopt;
+  YamlFields fields(file, node, path);
+  DeclaredOutput output;
+  output.path = fields.RequiredText("path");
+  CheckPlaceholders(file, fields.Get("path"), fields.PathOf("path"), output.path, parameters);
+  output.format = fields.RequiredText("format");
+  if (!OneOf(output.format, formats)) FailExpected(file, fields.Get("format"), fields.PathOf("format"), Choices(formats));
+  fields.Finish();
+  return output;
+}
+
+CommandDeclaration ParseCommand(const std::filesystem::path& file, const YAML::Node& node, const std::string& path,
+                                const std::set<std::string, std::less<>>& parameters) {
+  YamlFields fields(file, node, path);
+  CommandDeclaration command;
+  const YAML::Node argv = fields.Get("argv");
+  if (!argv.IsDefined()) FailAt(file, node, fmt::format("{}: missing (required: the program and its arguments)", fields.PathOf("argv")));
+  if (!argv.IsSequence() || argv.size() == 0) {
+    FailExpected(file, argv, fields.PathOf("argv"), "a non-empty list: the program, then one item per argument");
+  }
+  for (std::size_t i = 0; i < argv.size(); ++i) {
+    const std::string item_path = fmt::format("{}[{}]", fields.PathOf("argv"), i);
+    if (!argv[i].IsScalar()) FailExpected(file, argv[i], item_path, "a text value");
+    command.argv.push_back(argv[i].Scalar());
+    CheckPlaceholders(file, argv[i], item_path, command.argv.back(), parameters);
+  }
+  if (command.argv.front().empty()) FailExpected(file, argv[0], fields.PathOf("argv") + "[0]", "a program name");
+  command.input_format = fields.Text("input_format", command.input_format);
+  if (!OneOf(command.input_format, kInputFormats)) {
+    FailExpected(file, fields.Get("input_format"), fields.PathOf("input_format"), Choices(kInputFormats));
+  }
+  command.trajectory =
+      ParseDeclaredOutput(file, fields.Get("trajectory"), fields.PathOf("trajectory"), kTrajectoryFormats, parameters);
+  command.map = ParseDeclaredOutput(file, fields.Get("map"), fields.PathOf("map"), kMapFormats, parameters);
+  command.stage_maps_glob = fields.Text("stage_maps", "");
+  const std::uint64_t unknown = fields.Unsigned("stage_unknown_value", 205);
+  if (unknown > 255) FailExpected(file, fields.Get("stage_unknown_value"), fields.PathOf("stage_unknown_value"), "a grey level 0..255");
+  command.stage_unknown_value = static_cast<int>(unknown);
+  fields.Finish();
+  if (!command.trajectory && !command.map) {
+    FailAt(file, node, fmt::format("{}: expected a trajectory or a map output to score, got neither", path));
+  }
+  return command;
+}
+
+}  // namespace
+
+AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YAML::Node& node,
+                                     const std::string& path) {
+  YamlFields fields(file, node, path);
+  AlgorithmConfig algorithm;
+  algorithm.name = fields.RequiredText("name");
+  algorithm.adapter = fields.RequiredText("adapter");
+  if (!OneOf(algorithm.adapter, kAdapters)) {
+    FailExpected(file, fields.Get("adapter"), fields.PathOf("adapter"), Choices(kAdapters));
+  }
+  algorithm.timeout_s = fields.Number("timeout_s", algorithm.timeout_s);
+  if (!(algorithm.timeout_s > 0.0)) {
+    FailExpected(file, fields.Get("timeout_s"), fields.PathOf("timeout_s"), "a number of seconds > 0");
+  }
+  algorithm.memory_limit_mb = fields.Unsigned("memory_limit_mb", algorithm.memory_limit_mb);
+  algorithm.parameters = ParseParameters(file, fields.Get("parameters"), fields.PathOf("parameters"));
+  std::set<std::string, std::less<>> declared;
+  for (const ParameterAxis& axis : algorithm.parameters) declared.insert(axis.name);
+  const YAML::Node command = fields.Get("command");
+  if (algorithm.adapter == "command") {
+    if (!command.IsDefined()) {
+      FailAt(file, node, fmt::format("{}: missing (the command adapter needs argv and outputs)", fields.PathOf("command")));
+    }
+    algorithm.command = ParseCommand(file, command, fields.PathOf("command"), declared);
+  } else if (command.IsDefined()) {
+    FailAt(file, command,
+           fmt::format("{}: only the command adapter takes a command (adapter is {})", fields.PathOf("command"),
+                       algorithm.adapter));
+  }
+  fields.Finish();
+  return algorithm;
+}
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,18 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include <yaml-cpp/yaml.h>
+
+#include "orchestrator/config/sweep_config.h"
+
+namespace slamsweep::orchestrator {
+
+/// One entry of `algorithms:` (see sweep_config.h). `path` names it in messages ("algorithms[2]").
+/// Checks the adapter name, parameter values (scalars or non-empty lists of scalars), and for the
+/// command adapter its argv, formats and placeholders ({param:X} must name a declared parameter).
+AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YAML::Node& node,
+                                     const std::string& path);
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,44 @@
+#include "orchestrator/config/option_checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+
+#include "evaluator/core/input_error.h"
+
+namespace slamsweep::orchestrator {
+namespace {
+
+using evaluator::InputError;
+
+std::string Field(const std::string& path, std::string_view key) { return path + "." + std::string(key); }
+
+}  // namespace
+
+void ValidateEvaluationOptions(const EvaluationOptions& evaluation, const std::string& path) {
+  constexpr std::string_view kAlignments[] = {"none", "origin", "se2", "se3", "sim2", "sim3"};
+  if (std::find(std::begin(kAlignments), std::end(kAlignments), evaluation.align) == std::end(kAlignments)) {
+    throw InputError(Field(path, "align") + ": expected none, origin, se2, se3, sim2 or sim3, got \"" +
+                     evaluation.align + "\"");
+  }
+  if (!(evaluation.rpe_delta_m > 0.0) || !std::isfinite(evaluation.rpe_delta_m)) {
+    throw InputError(Field(path, "rpe_delta_m") + ": expected a finite distance > 0 m");
+  }
+  if (!(evaluation.t_max_diff_s >= 0.0) || !std::isfinite(evaluation.t_max_diff_s)) {
+    throw InputError(Field(path, "t_max_diff_s") + ": expected a finite time >= 0 s");
+  }
+  if (!(evaluation.map_resolution_m > 0.0) || !std::isfinite(evaluation.map_resolution_m)) {
+    throw InputError(Field(path, "map_resolution_m") + ": expected a finite cell size > 0 m");
+  }
+}
+
+void ValidateThreshold(const Threshold& threshold, const std::string& path) {
+  if (threshold.metric.empty()) throw InputError(Field(path, "metric") + ": expected a metric name such as ape_trans");
+  if (threshold.statistic.empty()) throw InputError(Field(path, "statistic") + ": expected a statistic such as rmse");
+  if (!threshold.max && !threshold.min) throw InputError(path + ": expected a limit: max, min or both");
+  if ((threshold.max && !std::isfinite(*threshold.max)) || (threshold.min && !std::isfinite(*threshold.min))) {
+    throw InputError(path + ": expected finite limits");
+  }
+}
+
+}  // namespace slamsweep::orchestrator

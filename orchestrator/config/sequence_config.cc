@@ -1,0 +1,98 @@
+#include "orchestrator/config/sequence_config.h"
+
+#include <fmt/format.h>
+
+#include "evaluator/core/input_error.h"
+#include "orchestrator/config/yaml_fields.h"
+
+namespace slamsweep::orchestrator {
+namespace {
+
+const evaluator::CatalogEntry& LookUp(const std::filesystem::path& file, const YAML::Node& node,
+                                      const std::string& path, const evaluator::Catalog& catalog) {
+  const std::string name = node.Scalar();
+  for (const evaluator::CatalogEntry& entry : catalog.entries) {
+    if (entry.name == name) return entry;
+  }
+  std::string known;
+  for (const evaluator::CatalogEntry& entry : catalog.entries) known += (known.empty() ? "" : ", ") + entry.name;
+  if (catalog.entries.empty()) {
+    FailAt(file, node,
+           fmt::format("{}: expected a sequence of the catalog {}, got '{}' (the catalog is missing or empty)", path,
+                       catalog.source.string(), name));
+  }
+  FailAt(file, node,
+         fmt::format("{}: expected a sequence of the catalog {} ({}), got '{}'", path, catalog.source.string(), known,
+                     name));
+}
+
+/// A path of `entry` with variables replaced, made absolute against `base`, and required to exist.
+std::string ResolveExisting(const std::filesystem::path& file, const YAML::Node& node, const std::string& path,
+                            const evaluator::CatalogEntry& entry, std::string_view what, const std::string& text,
+                            const std::filesystem::path& base, const evaluator::CatalogVariables& variables) {
+  std::filesystem::path resolved;
+  try {
+    resolved = evaluator::ResolveCatalogPath(text, variables);
+  } catch (const evaluator::InputError& error) {
+    FailAt(file, node, fmt::format("{}: sequence '{}': {}", path, entry.name, error.what()));
+  }
+  if (resolved.is_relative()) resolved = base / resolved;
+  resolved = resolved.lexically_normal();
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(resolved, error)) {
+    FailAt(file, node,
+           fmt::format("{}: sequence '{}': expected its {} {}, got no such file{}", path, entry.name, what,
+                       resolved.string(), entry.download_hint.empty() ? "" : "; get it from: " + entry.download_hint));
+  }
+  return resolved.string();
+}
+
+std::optional<std::size_t> MaxScans(const std::filesystem::path& file, const YAML::Node& node, const std::string& path) {
+  if (!node.IsDefined() || node.IsNull()) return std::nullopt;
+  const bool ok = node.IsScalar() && node.Tag() != "!" && !node.Scalar().empty() &&
+                  node.Scalar().find_first_not_of("0123456789") == std::string::npos && node.Scalar() != "0" &&
+                  node.Scalar().size() < 19;
+  if (!ok) FailExpected(file, node, path, "a whole number of scans >= 1");
+  return static_cast<std::size_t>(std::stoull(node.Scalar()));
+}
+
+}  // namespace
+
+SequenceSpec ParseSequenceConfig(const std::filesystem::path& file, YAML::Node node, const std::string& path,
+                                 const evaluator::Catalog& catalog, const evaluator::CatalogVariables& variables) {
+  SequenceSpec spec;
+  std::filesystem::path base;
+  const YAML::Node& view = node;  // const lookups never insert keys
+  if (node.IsScalar()) {
+    spec.entry = LookUp(file, node, path, catalog);
+    base = catalog.source.parent_path();
+  } else if (node.IsMap() && view["catalog"].IsDefined()) {
+    YamlFields fields(file, node, path);
+    const YAML::Node name = fields.Get("catalog");
+    if (!name.IsScalar()) FailExpected(file, name, fields.PathOf("catalog"), "a catalog sequence name");
+    spec.entry = LookUp(file, name, fields.PathOf("catalog"), catalog);
+    spec.entry.name = fields.Text("name", spec.entry.name);
+    if (spec.entry.name.empty()) FailExpected(file, fields.Get("name"), fields.PathOf("name"), "a non-empty name");
+    spec.max_scans = MaxScans(file, fields.Get("max_scans"), fields.PathOf("max_scans"));
+    fields.Finish();
+    base = catalog.source.parent_path();
+  } else if (node.IsMap()) {
+    // max_scans is ours, not a catalog key: read it, then hand the rest to the catalog's own reader.
+    spec.max_scans = MaxScans(file, view["max_scans"], path + ".max_scans");
+    node.remove("max_scans");
+    spec.entry = evaluator::ParseCatalogEntry(file, node);
+    base = file.parent_path();
+  } else {
+    FailExpected(file, node, path, "a catalog name, {catalog: NAME, ...} or an inline sequence entry");
+  }
+  if (spec.entry.format != "simulated") {
+    spec.entry.path = ResolveExisting(file, node, path, spec.entry, "file", spec.entry.path, base, variables);
+  }
+  if (!spec.entry.relations_path.empty()) {
+    spec.entry.relations_path =
+        ResolveExisting(file, node, path, spec.entry, "relations file", spec.entry.relations_path, base, variables);
+  }
+  return spec;
+}
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,372 @@
+#include "orchestrator/matrix/run_spec.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+#include <utility>
+
+#include "evaluator/core/input_error.h"
+#include "evaluator/noise/json_fields.h"
+#include "evaluator/sequence/scan_stamps.h"
+#include "evaluator/simulation/simulated_sequence.h"
+#include "orchestrator/config/option_checks.h"
+
+namespace slamsweep::orchestrator {
+namespace {
+
+using evaluator::InputError;
+using evaluator::JsonFields;
+using nlohmann::json;
+
+constexpr std::string_view kFile = "run.json: ";
+
+[[noreturn]] void Fail(const std::string& path, std::string_view expected, const json& value) {
+  throw InputError(std::string(kFile) + path + ": expected " + std::string(expected) + ", got " + value.dump());
+}
+
+/// Every message of this file starts with "run.json: " so the worker's exit-2 message names the file.
+template <typename Function>
+auto Prefixed(Function&& function) -> decltype(function()) {
+  try {
+    return function();
+  } catch (const InputError& error) {
+    const std::string_view message = error.what();
+    if (message.starts_with(kFile)) throw;
+    throw InputError(std::string(kFile) + std::string(message));
+  }
+}
+
+std::string Join(const std::string& path, std::string_view key) { return path + "." + std::string(key); }
+
+/// run.json writes absent optional values as null; JsonFields treats a missing field as "use the
+/// default", so nulls are dropped before reading (null and absent mean the same here).
+json WithoutNulls(const json& object, const std::string& path) {
+  if (!object.is_object()) Fail(path, "an object", object);
+  json copy = json::object();
+  for (const auto& [key, value] : object.items()) {
+    if (!value.is_null()) copy[key] = value;
+  }
+  return copy;
+}
+
+/// Removes `key` from `object` and returns it (null when absent); for the fields JsonFields has no
+/// reader for (arrays, scalar maps), so that Finish() still catches unknown keys.
+json Take(json& object, std::string_view key) {
+  const auto found = object.find(std::string(key));
+  if (found == object.end()) return nullptr;
+  json value = std::move(*found);
+  object.erase(found);
+  return value;
+}
+
+std::vector<std::string> StringList(const json& value, const std::string& path) {
+  if (!value.is_array()) Fail(path, "an array of strings", value);
+  std::vector<std::string> items;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    if (!value[i].is_string()) Fail(path + "[" + std::to_string(i) + "]", "a string", value[i]);
+    items.push_back(value[i].get<std::string>());
+  }
+  return items;
+}
+
+json OptionalNumber(const std::optional<double>& value) { return value ? json(*value) : json(nullptr); }
+
+json ToJson(const DeclaredOutput& output) { return json{{"path", output.path}, {"format", output.format}}; }
+
+std::optional<DeclaredOutput> DeclaredOutputFromJson(const json* value, const std::string& path) {
+  if (value == nullptr) return std::nullopt;
+  JsonFields fields(*value, path);
+  DeclaredOutput output;
+  output.path = fields.Text("path", "");
+  output.format = fields.Text("format", "");
+  fields.Finish();
+  if (output.path.empty()) throw InputError(Join(path, "path") + ": expected a non-empty path");
+  if (output.format.empty()) throw InputError(Join(path, "format") + ": expected a format name");
+  return output;
+}
+
+json ToJson(const CommandDeclaration& command) {
+  return json{{"argv", command.argv},
+              {"input_format", command.input_format},
+              {"trajectory", command.trajectory ? ToJson(*command.trajectory) : json(nullptr)},
+              {"map", command.map ? ToJson(*command.map) : json(nullptr)},
+              {"stage_maps", command.stage_maps_glob},
+              {"stage_unknown_value", command.stage_unknown_value}};
+}
+
+CommandDeclaration CommandFromJson(const json& value, const std::string& path) {
+  json object = WithoutNulls(value, path);
+  const json argv = Take(object, "argv");
+  if (argv.is_null()) throw InputError(Join(path, "argv") + ": missing; expected an array of strings");
+  CommandDeclaration command;
+  command.argv = StringList(argv, Join(path, "argv"));
+  if (command.argv.empty()) throw InputError(Join(path, "argv") + ": expected at least the program name");
+  JsonFields fields(object, path);
+  command.input_format = fields.Text("input_format", command.input_format);
+  command.trajectory = DeclaredOutputFromJson(fields.Object("trajectory"), Join(path, "trajectory"));
+  command.map = DeclaredOutputFromJson(fields.Object("map"), Join(path, "map"));
+  command.stage_maps_glob = fields.Text("stage_maps", "");
+  command.stage_unknown_value = fields.Integer("stage_unknown_value", command.stage_unknown_value);
+  fields.Finish();
+  if (command.stage_unknown_value < 0 || command.stage_unknown_value > 255) {
+    throw InputError(Join(path, "stage_unknown_value") + ": expected a grey level in 0..255, got " +
+                     std::to_string(command.stage_unknown_value));
+  }
+  return command;
+}
+
+json ToJson(const AlgorithmSpec& algorithm) {
+  return json{{"name", algorithm.name},
+              {"adapter", algorithm.adapter},
+              {"parameters", algorithm.parameters},
+              {"timeout_s", algorithm.timeout_s},
+              {"memory_limit_mb", algorithm.memory_limit_mb},
+              {"command", algorithm.command ? ToJson(*algorithm.command) : json(nullptr)}};
+}
+
+AlgorithmSpec AlgorithmFromJson(const json& value, const std::string& path) {
+  json object = WithoutNulls(value, path);
+  const json parameters = Take(object, "parameters");
+  JsonFields fields(object, path);
+  AlgorithmSpec algorithm;
+  algorithm.name = fields.Text("name", "");
+  algorithm.adapter = fields.Text("adapter", "");
+  algorithm.timeout_s = fields.Number("timeout_s", algorithm.timeout_s);
+  algorithm.memory_limit_mb = fields.Unsigned("memory_limit_mb", algorithm.memory_limit_mb);
+  if (const json* command = fields.Object("command")) algorithm.command = CommandFromJson(*command, Join(path, "command"));
+  fields.Finish();
+  if (algorithm.name.empty()) throw InputError(Join(path, "name") + ": expected a non-empty name");
+  if (algorithm.adapter.empty()) throw InputError(Join(path, "adapter") + ": expected an adapter name");
+  if (!(algorithm.timeout_s > 0.0) || !std::isfinite(algorithm.timeout_s)) {
+    throw InputError(Join(path, "timeout_s") + ": expected a finite number of seconds > 0");
+  }
+  if (!parameters.is_null()) {
+    if (!parameters.is_object()) Fail(Join(path, "parameters"), "an object of scalar values", parameters);
+    for (const auto& [key, parameter] : parameters.items()) {
+      if (!parameter.is_primitive() || parameter.is_null()) {
+        Fail(Join(Join(path, "parameters"), key), "a number, string or bool", parameter);
+      }
+    }
+    algorithm.parameters = parameters;
+  }
+  return algorithm;
+}
+
+json ToJson(const NoiseSpec& noise) {
+  return json{{"name", noise.name},
+              {"odometry", noise.odometry ? json(*noise.odometry) : json(nullptr)},
+              {"range", noise.range ? json(*noise.range) : json(nullptr)}};
+}
+
+NoiseSpec NoiseFromJson(const json& value, const std::string& path) {
+  const json object = WithoutNulls(value, path);
+  JsonFields fields(object, path);
+  NoiseSpec noise;
+  noise.name = fields.Text("name", "");
+  if (const json* odometry = fields.Object("odometry")) {
+    noise.odometry = evaluator::OdometryNoiseFromJson(*odometry, Join(path, "odometry"));
+  }
+  if (const json* range = fields.Object("range")) noise.range = evaluator::RangeNoiseFromJson(*range, Join(path, "range"));
+  fields.Finish();
+  if (noise.name.empty()) throw InputError(Join(path, "name") + ": expected a non-empty name");
+  return noise;
+}
+
+json ToJson(const EvaluationOptions& evaluation) {
+  return json{{"align", evaluation.align},
+              {"rpe_delta_m", evaluation.rpe_delta_m},
+              {"t_max_diff_s", evaluation.t_max_diff_s},
+              {"stages", evaluation.stages},
+              {"map_resolution_m", evaluation.map_resolution_m}};
+}
+
+EvaluationOptions EvaluationFromJson(const json& value, const std::string& path) {
+  const json object = WithoutNulls(value, path);
+  JsonFields fields(object, path);
+  EvaluationOptions evaluation;
+  evaluation.align = fields.Text("align", evaluation.align);
+  evaluation.rpe_delta_m = fields.Number("rpe_delta_m", evaluation.rpe_delta_m);
+  evaluation.t_max_diff_s = fields.Number("t_max_diff_s", evaluation.t_max_diff_s);
+  evaluation.stages = fields.Unsigned("stages", evaluation.stages);
+  evaluation.map_resolution_m = fields.Number("map_resolution_m", evaluation.map_resolution_m);
+  fields.Finish();
+  ValidateEvaluationOptions(evaluation, path);
+  return evaluation;
+}
+
+json ToJson(const Threshold& threshold) {
+  return json{{"metric", threshold.metric},
+              {"statistic", threshold.statistic},
+              {"max", OptionalNumber(threshold.max)},
+              {"min", OptionalNumber(threshold.min)}};
+}
+
+Threshold ThresholdFromJson(const json& value, const std::string& path) {
+  const json object = WithoutNulls(value, path);
+  JsonFields fields(object, path);
+  Threshold threshold;
+  threshold.metric = fields.Text("metric", "");
+  threshold.statistic = fields.Text("statistic", threshold.statistic);
+  if (object.contains("max")) threshold.max = fields.Number("max", 0.0);
+  if (object.contains("min")) threshold.min = fields.Number("min", 0.0);
+  fields.Finish();
+  ValidateThreshold(threshold, path);
+  return threshold;
+}
+
+json ToJson(const SequenceSpec& sequence) {
+  json out = orchestrator::ToJson(sequence.entry);
+  out["max_scans"] = sequence.max_scans ? json(*sequence.max_scans) : json(nullptr);
+  return out;
+}
+
+SequenceSpec SequenceFromJson(const json& value, const std::string& path) {
+  json object = WithoutNulls(value, path);
+  const json max_scans = Take(object, "max_scans");
+  SequenceSpec sequence;
+  sequence.entry = CatalogEntryFromJson(object, path);
+  if (!max_scans.is_null()) {
+    if (!max_scans.is_number_integer() || max_scans.get<std::int64_t>() < 1) {
+      Fail(Join(path, "max_scans"), "an integer >= 1 (or null for all scans)", max_scans);
+    }
+    sequence.max_scans = max_scans.get<std::size_t>();
+  }
+  return sequence;
+}
+
+}  // namespace
+
+json ToJson(const evaluator::CatalogEntry& entry) {
+  return json{{"name", entry.name},
+              {"format", entry.format},
+              {"path", entry.path},
+              {"ground_truth", std::string(evaluator::GroundTruthKindName(entry.ground_truth))},
+              {"relations", entry.relations_path},
+              {"relations_offset_s", entry.relations_offset_s},
+              {"max_range_m", OptionalNumber(entry.max_range_m)},
+              {"stamp_policy", entry.stamp_policy},
+              {"simulation", entry.simulation.is_null() ? json(nullptr) : entry.simulation},
+              {"citation", entry.citation},
+              {"licence", entry.licence_note},
+              {"download", entry.download_hint}};
+}
+
+evaluator::CatalogEntry CatalogEntryFromJson(const json& value, const std::string& path) {
+  const json object = WithoutNulls(value, path);
+  JsonFields fields(object, path);
+  evaluator::CatalogEntry entry;
+  entry.name = fields.Text("name", "");
+  entry.format = fields.Text("format", "");
+  entry.path = fields.Text("path", "");
+  const std::string ground_truth = fields.Text("ground_truth", "none");
+  entry.relations_path = fields.Text("relations", "");
+  entry.relations_offset_s = fields.Number("relations_offset_s", 0.0);
+  if (object.contains("max_range_m")) entry.max_range_m = fields.Number("max_range_m", 0.0);
+  entry.stamp_policy = fields.Text("stamp_policy", entry.stamp_policy);
+  if (const json* simulation = fields.Object("simulation")) entry.simulation = *simulation;
+  entry.citation = fields.Text("citation", "");
+  entry.licence_note = fields.Text("licence", "");
+  entry.download_hint = fields.Text("download", "");
+  fields.Finish();
+
+  if (entry.name.empty()) throw InputError(Join(path, "name") + ": expected a non-empty name");
+  constexpr std::string_view kFormats[] = {"carmen", "rawlog", "rosbag", "simulated"};
+  if (std::find(std::begin(kFormats), std::end(kFormats), entry.format) == std::end(kFormats)) {
+    throw InputError(Join(path, "format") + ": expected carmen, rawlog, rosbag or simulated, got \"" + entry.format +
+                     "\"");
+  }
+  bool known = false;
+  for (evaluator::GroundTruthKind kind :
+       {evaluator::GroundTruthKind::kCorrectedPoses, evaluator::GroundTruthKind::kExact,
+        evaluator::GroundTruthKind::kRelationsOnly, evaluator::GroundTruthKind::kNone}) {
+    if (ground_truth == evaluator::GroundTruthKindName(kind)) {
+      entry.ground_truth = kind;
+      known = true;
+    }
+  }
+  if (!known) {
+    throw InputError(Join(path, "ground_truth") + ": expected corrected_poses, exact, relations_only or none, got \"" +
+                     ground_truth + "\"");
+  }
+  if (entry.max_range_m && !(*entry.max_range_m > 0.0)) {
+    throw InputError(Join(path, "max_range_m") + ": expected a range > 0 m");
+  }
+  evaluator::ParseStampPolicy(entry.stamp_policy, Join(path, "stamp_policy"));
+  if (entry.format == "simulated") {
+    if (entry.simulation.is_null()) throw InputError(Join(path, "simulation") + ": a simulated sequence needs options");
+    evaluator::SimulationOptionsFromJson(entry.simulation, Join(path, "simulation"));
+  } else if (entry.path.empty()) {
+    throw InputError(Join(path, "path") + ": expected the sequence's file");
+  }
+  return entry;
+}
+
+json ToJson(const RunSpec& spec) {
+  json thresholds = json::array();
+  for (const Threshold& threshold : spec.thresholds) thresholds.push_back(ToJson(threshold));
+  return json{{"run_id", spec.run_id},
+              {"sweep", spec.sweep},
+              {"algorithm", ToJson(spec.algorithm)},
+              {"sequence", ToJson(spec.sequence)},
+              {"noise", ToJson(spec.noise)},
+              {"iteration", spec.iteration},
+              {"seed", spec.seed},
+              {"evaluation", ToJson(spec.evaluation)},
+              {"thresholds", thresholds}};
+}
+
+RunSpec RunSpecFromJson(const json& value) {
+  return Prefixed([&] {
+    if (!value.is_object()) Fail("(top level)", "an object", value);
+    json object = value;
+    const json thresholds = Take(object, "thresholds");
+    JsonFields fields(object, "");
+    RunSpec spec;
+    spec.run_id = fields.Text("run_id", "");
+    spec.sweep = fields.Text("sweep", "");
+    const json* algorithm = fields.Object("algorithm");
+    const json* sequence = fields.Object("sequence");
+    const json* noise = fields.Object("noise");
+    const json* evaluation = fields.Object("evaluation");
+    spec.iteration = fields.Integer("iteration", 0);
+    spec.seed = fields.Unsigned("seed", 0);
+    fields.Finish();
+    if (spec.run_id.empty()) throw InputError("run_id: expected a non-empty run id");
+    if (algorithm == nullptr) throw InputError("algorithm: missing");
+    if (sequence == nullptr) throw InputError("sequence: missing");
+    if (noise == nullptr) throw InputError("noise: missing");
+    if (!object.contains("seed")) throw InputError("seed: missing");
+    if (spec.iteration < 0) throw InputError("iteration: expected an integer >= 0");
+    spec.algorithm = AlgorithmFromJson(*algorithm, "algorithm");
+    spec.sequence = SequenceFromJson(*sequence, "sequence");
+    spec.noise = NoiseFromJson(*noise, "noise");
+    if (evaluation != nullptr) spec.evaluation = EvaluationFromJson(*evaluation, "evaluation");
+    if (!thresholds.is_null()) {
+      if (!thresholds.is_array()) Fail("thresholds", "an array", thresholds);
+      for (std::size_t i = 0; i < thresholds.size(); ++i) {
+        spec.thresholds.push_back(ThresholdFromJson(thresholds[i], "thresholds[" + std::to_string(i) + "]"));
+      }
+    }
+    return spec;
+  });
+}
+
+json RunIdentity(const RunSpec& spec) {
+  json sequence = ToJson(spec.sequence);
+  // Descriptive texts do not change what a run computes; editing a citation must not re-run a sweep.
+  sequence.erase("citation");
+  sequence.erase("licence");
+  sequence.erase("download");
+  const json algorithm = ToJson(spec.algorithm);
+  return json{{"algorithm",
+               {{"name", algorithm["name"]},
+                {"adapter", algorithm["adapter"]},
+                {"parameters", algorithm["parameters"]},
+                {"command", algorithm["command"]}}},
+              {"sequence", sequence},
+              {"noise", ToJson(spec.noise)},
+              {"iteration", spec.iteration},
+              {"seed", spec.seed}};
+}
+
+}  // namespace slamsweep::orchestrator

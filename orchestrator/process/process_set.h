@@ -1,0 +1,97 @@
+#pragma once
+
+#include <signal.h>
+#include <sys/types.h>
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "orchestrator/process/capped_log.h"
+#include "orchestrator/process/interruption.h"
+#include "orchestrator/process/process_outcome.h"
+#include "orchestrator/process/process_spec.h"
+
+namespace slamsweep::orchestrator {
+
+/// Several child programs at once under one supervising loop (ninja's SubprocessSet): each child in
+/// its own process group, stdin /dev/null, output captured into its capped log, timeout
+/// (SIGTERM to the group, grace, SIGKILL), memory limit on the group, rusage from wait4().
+/// When a child ends, its whole group gets SIGKILL, so no background grandchild outlives its run.
+///
+/// Not thread-safe; use it from one thread. It blocks SIGCHLD in the constructing thread for its
+/// lifetime (signals are taken only inside ppoll). The destructor SIGKILLs and reaps what is left.
+class ProcessSet {
+ public:
+  using Id = std::uint64_t;
+
+  ProcessSet();
+  ~ProcessSet();
+  ProcessSet(const ProcessSet&) = delete;
+  ProcessSet& operator=(const ProcessSet&) = delete;
+
+  /// Starts a child. Never throws for a program that cannot start (missing, not executable, bad
+  /// working directory, log not writable): that child "ends" at once with kFailedToStart, returned by
+  /// the next WaitForAny().
+  Id Start(const ProcessSpec& spec);
+
+  /// Blocks until >= 1 child ended (or an interruption arrived); returns the ended ones. Wakes up for
+  /// timeouts and memory polls (every ~200 ms while a memory limit is set). Empty set: returns at once.
+  /// After an interruption (InterruptionPending()) it returns at once (possibly with an empty list); the
+  /// caller then calls TerminateAll().
+  std::vector<std::pair<Id, ProcessOutcome>> WaitForAny();
+
+  /// SIGTERM to every group, wait grace_s (each child's own), SIGKILL the rest; returns their
+  /// outcomes (kInterrupted). Children that had already ended by themselves keep their real outcome.
+  std::vector<std::pair<Id, ProcessOutcome>> TerminateAll();
+
+  /// Children started whose outcome has not been returned yet (a failed start counts until then).
+  std::size_t running() const { return children_.size() + pending_.size(); }
+
+ private:
+  enum class StopCause { kNone, kTimeout, kMemory, kInterrupt };
+  using Clock = std::chrono::steady_clock;
+
+  struct Child {
+    explicit Child(const ProcessSpec& spec) : log(spec.log_cap_bytes) {}
+    pid_t pid = -1;
+    int output_fd = -1;
+    CappedLog log;
+    Clock::time_point started;
+    std::optional<Clock::time_point> timeout_at;
+    double timeout_s = 0;
+    double grace_s = 0;
+    std::uint64_t memory_limit_mb = 0;
+    StopCause stop_cause = StopCause::kNone;
+    std::optional<Clock::time_point> kill_at;  // set once SIGTERM went to the group
+    bool sent_kill = false;
+    std::int64_t over_limit_rss_kb = 0;
+    int interrupt_signal = 0;
+  };
+
+  void ReadOutput(Child& child, std::size_t max_bytes);
+  /// Collects every child that has ended (non-blocking).
+  void ReapEnded(std::vector<std::pair<Id, ProcessOutcome>>& ended);
+  ProcessOutcome Reap(Child& child);
+  /// Timeouts, grace expiry and memory limits; returns when it next needs to run.
+  Clock::time_point EnforceLimits(Clock::time_point now);
+  void Terminate(Child& child, StopCause cause, Clock::time_point now);
+  /// Waits for output, a signal, or `until` (capped), and reads what arrived.
+  void Poll(Clock::time_point until);
+
+  std::map<Id, Child> children_;
+  std::vector<std::pair<Id, ProcessOutcome>> pending_;
+  Id next_id_ = 1;
+  Clock::time_point next_memory_poll_;
+  sigset_t previous_mask_;
+};
+
+/// One child to completion (the worker's case). Honours interruption like ProcessSet: when
+/// InterruptionPending(), it terminates the child's group itself and returns kInterrupted.
+ProcessOutcome RunProcess(const ProcessSpec& spec);
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,113 @@
+#include "orchestrator/process/spawn.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <exception>
+#include <system_error>
+
+#include <boost/process.hpp>
+#include <boost/process/extend.hpp>
+
+namespace slamsweep::orchestrator {
+namespace bp = boost::process;
+namespace {
+
+/// What the child does between fork and exec (async-signal-safe calls only).
+struct ChildSetup : bp::extend::handler {
+  pid_t supervisor = 0;
+
+  template <typename Executor>
+  void on_exec_setup(Executor&) const {
+    // Own group: timeouts and interruption signal the program and everything it started, and a
+    // Ctrl-C at the terminal reaches the supervisor only, which then stops the groups in order.
+    ::setpgid(0, 0);
+    // Both survive exec: a blocked or ignored signal in the program would make it unkillable by TERM.
+    sigset_t empty;
+    sigemptyset(&empty);
+    ::sigprocmask(SIG_SETMASK, &empty, nullptr);
+    for (int signal_number = 1; signal_number < NSIG; ++signal_number) {
+      if (signal_number != SIGKILL && signal_number != SIGSTOP) ::signal(signal_number, SIG_DFL);
+    }
+    // Descriptors the supervisor opened without O_CLOEXEC (a database, another run's log) must not
+    // reach the program. Marked close-on-exec rather than closed: Boost's exec-error pipe must stay
+    // open until exec, and the standard streams set up later by dup2 are below 3.
+    ::close_range(3, ~0U, CLOSE_RANGE_CLOEXEC);
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    // The supervisor may have died before prctl took effect; then nobody would send the signal.
+    if (::getppid() != supervisor) ::_exit(127);
+  }
+
+  template <typename Executor>
+  void on_error(Executor& executor, const std::error_code&) const {
+    // Boost.Process does not reap a child whose exec failed; it has exited, so this does not block long.
+    if (executor.pid > 0) ::waitpid(executor.pid, nullptr, 0);
+  }
+};
+
+std::string ResolveProgram(const std::string& program, std::string& error) {
+  if (program.find('/') != std::string::npos) {
+    if (::access(program.c_str(), F_OK) != 0) error = std::strerror(errno);
+    return program;
+  }
+  const boost::filesystem::path found = bp::search_path(program);
+  if (found.empty()) error = "No such file or directory (not found in PATH)";
+  return found.string();
+}
+
+}  // namespace
+
+SpawnResult SpawnChild(const ProcessSpec& spec) {
+  SpawnResult result;
+  if (spec.argv.empty() || spec.argv.front().empty()) {
+    result.error = "empty command";
+    return result;
+  }
+  const std::string program = ResolveProgram(spec.argv.front(), result.error);
+  if (!result.error.empty()) return result;
+  if (!spec.working_dir.empty()) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(spec.working_dir, ec)) {
+      result.error = "working directory '" + spec.working_dir.string() + "' does not exist";
+      return result;
+    }
+  }
+
+  int fds[2];
+  if (::pipe2(fds, O_CLOEXEC) != 0) {
+    result.error = std::string("pipe: ") + std::strerror(errno);
+    return result;
+  }
+  try {
+    // Close-on-exec ends: no other child (started later) inherits this child's pipe, which would
+    // otherwise keep it open after the child ends. dup2 onto 1 and 2 clears the flag for the child.
+    bp::pipe pipe(fds[0], fds[1]);
+    bp::environment environment = boost::this_process::environment();
+    for (const auto& [name, value] : spec.extra_env) environment[name] = value;
+    const std::vector<std::string> args(spec.argv.begin() + 1, spec.argv.end());
+    const std::string working_dir = spec.working_dir.empty() ? std::string(".") : spec.working_dir.string();
+    std::error_code ec;
+    bp::child child(ChildSetup{{}, ::getpid()}, bp::exe = program, bp::args = args, bp::std_in < bp::null,
+                    (bp::std_out & bp::std_err) > pipe, bp::start_dir = working_dir, environment, ec);
+    if (ec || !child.valid()) {
+      result.error = ec ? ec.message() : "unknown error";
+      return result;  // `pipe` closes both ends
+    }
+    // We reap with wait4() ourselves (rusage) and send TERM before KILL; Boost must not touch it.
+    child.detach();
+    result.pid = child.id();
+    result.output_fd = pipe.native_source();
+    pipe.assign_source(-1);
+    ::fcntl(result.output_fd, F_SETFL, ::fcntl(result.output_fd, F_GETFL) | O_NONBLOCK);
+  } catch (const std::exception& error) {
+    result.error = error.what();
+  }
+  return result;
+}
+
+}  // namespace slamsweep::orchestrator

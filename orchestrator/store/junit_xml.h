@@ -1,0 +1,36 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "orchestrator/store/results_store.h"
+
+namespace slamsweep::orchestrator {
+
+/// The thresholds of run.json ("thresholds": [{"metric", "statistic" (default "rmse"), "max", "min"}])
+/// checked against a run's metrics.
+struct ThresholdCheck {
+  /// "ape_trans.rmse = 0.7 > 0.5", one per limit the run is past (a null value is past every limit).
+  std::vector<std::string> exceeded;
+  /// Thresholds that could not be checked: the run lacks the metric, or the threshold is malformed.
+  std::vector<std::string> unchecked;
+};
+
+ThresholdCheck CheckThresholds(const StoredRun& run);
+
+/// Text made safe for XML 1.0 content and attribute values: & < > " ' escaped, tab/newline/CR kept (as
+/// character references, so attributes keep them), other control characters and non-characters dropped,
+/// invalid UTF-8 replaced by U+FFFD.
+std::string XmlEscape(std::string_view text);
+
+/// junit.xml: one <testsuite> per sequence, one <testcase classname="<algorithm>.<sequence>" name="<run_id>"
+/// time="<wall_s>"> per run; a failed run has <failure type="<failure_kind>" message="<reason>">, a run past a
+/// threshold <failure type="threshold">; unchecked thresholds are listed in <system-out>.
+std::string RenderJUnit(const std::vector<StoredRun>& runs);
+
+/// Writes RenderJUnit(runs) to `file` atomically.
+void WriteJUnit(const std::vector<StoredRun>& runs, const std::filesystem::path& file);
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,131 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "orchestrator/store/sqlite_db.h"
+
+namespace slamsweep::orchestrator {
+
+/// The schema version this build writes (PRAGMA user_version). A file with a higher version was
+/// written by a newer slamsweep and is refused rather than misread.
+inline constexpr int kResultsSchemaVersion = 1;
+
+/// What is known about a sweep when it starts.
+struct SweepInfo {
+  std::string name;
+  std::string config_path;
+  /// SHA-256 (or any stable digest) of the config file's bytes, to tell edited configs apart.
+  std::string config_sha;
+  /// ISO 8601 UTC; empty = now.
+  std::string started_at;
+  std::string host;
+  std::string slamsweep_version;
+  std::string command_line;
+};
+
+/// A row of the sweeps table.
+struct StoredSweep {
+  std::int64_t id = 0;
+  SweepInfo info;
+  std::string finished_at;
+  /// "running" until FinishSweep, then what the orchestrator reported ("ok", "failed", "interrupted").
+  std::string status;
+  std::int64_t run_count = 0;
+};
+
+/// One flat metric of a run (a row of the metrics table).
+struct StoredMetric {
+  std::string metric;
+  std::string statistic;
+  /// Empty when the worker wrote null (a statistic that is not a number).
+  std::optional<double> value;
+  std::string unit;
+};
+
+/// Everything the summary, JUnit and report writers need about one run.
+struct StoredRun {
+  std::string run_id;
+  std::int64_t sweep_id = 0;
+  /// The whole run.json and result.json, as recorded.
+  nlohmann::json spec;
+  nlohmann::json result;
+  /// "ok" or "failed".
+  std::string status;
+  /// Relative to the output directory ("runs/<run-id>").
+  std::string run_dir;
+  std::string algorithm;
+  std::string sequence;
+  std::string noise;
+  std::int64_t iteration = 0;
+  std::optional<double> wall_s;
+  std::string finished_at;
+  /// In the order the worker listed them.
+  std::vector<StoredMetric> metrics;
+};
+
+/// results.sqlite: the index of an output directory (result.json in each run folder is the commit point of a run,
+/// the store indexes what the folders hold). Safe for several processes at once: WAL journal,
+/// 10 s busy timeout, every write in one immediate transaction, so a process killed at any moment leaves
+/// either the old or the new state of a run.
+class ResultsStore {
+ public:
+  /// Opens `file`, creating it (and the schema) when missing. Throws InputError naming the file when it is
+  /// not a slamsweep results database, is corrupt, or has a newer schema version.
+  static ResultsStore Open(const std::filesystem::path& file);
+  /// As Open, but a missing file is an InputError (for reading other output directories, e.g. merge inputs).
+  static ResultsStore OpenExisting(const std::filesystem::path& file);
+
+  const std::filesystem::path& file() const { return db_.file(); }
+
+  /// Inserts a sweep with status "running"; returns its id.
+  std::int64_t BeginSweep(const SweepInfo& info);
+  void FinishSweep(std::int64_t sweep_id, const std::string& status, std::int64_t run_count);
+  std::vector<StoredSweep> Sweeps() const;
+  /// The id of a sweep equal to `sweep` (same name, config digest, start time, host), adding it when there is
+  /// none; used by merge so that merging the same shard twice does not duplicate its sweep.
+  std::int64_t ImportSweep(const StoredSweep& sweep);
+
+  /// Records (or replaces) one run: its row, its metrics and metric specifications, in one transaction.
+  /// `run_spec` is run.json, `result` is result.json (DESIGN.md). Throws InputError naming the field when
+  /// either lacks what the store needs (run_id, status "ok"/"failed", well-formed metrics).
+  void RecordRun(std::int64_t sweep_id, const nlohmann::json& run_spec, const nlohmann::json& result,
+                 const std::string& run_dir_relative);
+
+  /// "ok" / "failed", or empty when the run was never recorded.
+  std::optional<std::string> RunStatus(const std::string& run_id) const;
+  std::optional<StoredRun> FindRun(const std::string& run_id) const;
+  /// Every run, ordered by sequence, algorithm, noise, iteration, run id.
+  std::vector<StoredRun> Runs() const;
+
+  /// Median wall_s of the ok runs per "<algorithm>\t<sequence>", to start the longest runs first.
+  std::map<std::string, double> TypicalWallSeconds() const;
+
+  /// Test hook: called inside RecordRun's transaction after the run row is written and before its metrics are,
+  /// so a test can kill the process at the worst moment.
+  void SetMidTransactionHookForTesting(std::function<void()> hook) { mid_transaction_hook_ = std::move(hook); }
+
+ private:
+  explicit ResultsStore(SqliteDb db) : db_(std::move(db)) {}
+  static ResultsStore OpenImpl(const std::filesystem::path& file, bool create);
+  void InitializeSchema();
+  std::vector<StoredRun> QueryRuns(const std::string& where, const std::string& run_id) const;
+
+  SqliteDb db_;
+  std::function<void()> mid_transaction_hook_;
+};
+
+/// "<algorithm>\t<sequence>", the key of TypicalWallSeconds().
+std::string TypicalWallKey(const std::string& algorithm, const std::string& sequence);
+
+/// Now as ISO 8601 UTC with seconds ("2026-11-22T05:00:00Z").
+std::string UtcNowIso8601();
+
+}  // namespace slamsweep::orchestrator

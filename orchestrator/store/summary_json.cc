@@ -1,0 +1,79 @@
+#include "orchestrator/store/summary_json.h"
+
+#include "orchestrator/store/atomic_file.h"
+
+namespace slamsweep::orchestrator {
+namespace {
+
+using nlohmann::json;
+
+const json& FieldOrNull(const json& object, const char* key) {
+  static const json kNull;
+  if (!object.is_object()) return kNull;
+  const auto it = object.find(key);
+  return it == object.end() ? kNull : *it;
+}
+
+const json& Nested(const json& object, const char* outer, const char* inner) {
+  return FieldOrNull(FieldOrNull(object, outer), inner);
+}
+
+}  // namespace
+
+json SummarizeRun(const StoredRun& run) {
+  const json& spec = run.spec;
+  const json& result = run.result;
+  json metrics = json::object();
+  json units = json::object();
+  for (const StoredMetric& m : run.metrics) {
+    // JSON has no NaN: a statistic that is not a number stays null, as the worker wrote it.
+    metrics[m.metric][m.statistic] = m.value.has_value() ? json(*m.value) : json(nullptr);
+    if (!m.unit.empty()) units[m.metric] = m.unit;
+  }
+  const json& parameters = Nested(spec, "algorithm", "parameters");
+  const json& outputs = FieldOrNull(result, "outputs");
+  return json{
+      {"run_id", run.run_id},
+      {"algorithm", run.algorithm},
+      {"adapter", Nested(spec, "algorithm", "adapter")},
+      {"parameters", parameters.is_null() ? json::object() : parameters},
+      {"sequence", run.sequence},
+      {"noise", run.noise},
+      {"iteration", run.iteration},
+      {"seed", FieldOrNull(spec, "seed")},
+      {"status", run.status},
+      {"failure_kind", FieldOrNull(result, "failure_kind")},
+      {"reason", FieldOrNull(result, "reason")},
+      {"exit_code", FieldOrNull(result, "exit_code")},
+      {"signal", FieldOrNull(result, "signal")},
+      {"wall_s", FieldOrNull(result, "wall_s")},
+      {"cpu_s", FieldOrNull(result, "cpu_s")},
+      {"peak_rss_kb", FieldOrNull(result, "peak_rss_kb")},
+      {"run_dir", run.run_dir},
+      {"ground_truth", Nested(spec, "sequence", "ground_truth")},
+      {"metrics", std::move(metrics)},
+      {"units", std::move(units)},
+      {"outputs", outputs.is_null() ? json::object() : outputs},
+  };
+}
+
+json BuildSummaryJson(const std::vector<StoredRun>& runs, const std::string& generated_at) {
+  json listed = json::array();
+  std::size_t ok = 0;
+  for (const StoredRun& run : runs) {
+    listed.push_back(SummarizeRun(run));
+    if (run.status == "ok") ++ok;
+  }
+  return json{{"generated_at", generated_at},
+              {"runs", std::move(listed)},
+              {"counts", {{"total", runs.size()}, {"ok", ok}, {"failed", runs.size() - ok}}}};
+}
+
+void WriteSummaryJson(const std::vector<StoredRun>& runs, const std::filesystem::path& file) {
+  // Replacement of invalid UTF-8 (a reason quoting a program's garbled output) keeps the file writable.
+  const std::string text =
+      BuildSummaryJson(runs, UtcNowIso8601()).dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+  WriteFileAtomically(file, text);
+}
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,23 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "orchestrator/store/results_store.h"
+
+namespace slamsweep::orchestrator {
+
+/// One run as summary.json lists it: spec summary, status, reason, resources, flat metrics
+/// ({"ape_trans": {"rmse": 0.1, ...}, "corners": {"value": 12}}), their units and the output files.
+nlohmann::json SummarizeRun(const StoredRun& run);
+
+/// The whole summary.json document: {"generated_at", "runs": [...], "counts": {"total", "ok", "failed"}}.
+nlohmann::json BuildSummaryJson(const std::vector<StoredRun>& runs, const std::string& generated_at);
+
+/// Writes BuildSummaryJson(runs, now) to `file` atomically (readers never see a half-written file).
+void WriteSummaryJson(const std::vector<StoredRun>& runs, const std::filesystem::path& file);
+
+}  // namespace slamsweep::orchestrator

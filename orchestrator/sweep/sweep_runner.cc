@@ -1,0 +1,209 @@
+#include "orchestrator/sweep/sweep_runner.h"
+
+#include <algorithm>
+#include <deque>
+#include <optional>
+#include <set>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "orchestrator/store/results_store.h"
+#include "orchestrator/store/summary_json.h"
+#include "orchestrator/store/junit_xml.h"
+#include "orchestrator/sweep/output_lock.h"
+#include "orchestrator/sweep/run_folder.h"
+
+namespace slamsweep::orchestrator {
+namespace {
+
+std::string ExpectationKey(const RunSpec& run) { return run.algorithm.name + "\t" + run.sequence.entry.name; }
+
+bool IsDone(const std::optional<std::string>& status, bool rerun_failed) {
+  if (!status) return false;
+  return *status == "ok" || (*status == "failed" && !rerun_failed);
+}
+
+/// The supervising loop's state for one sweep.
+class SweepLoop {
+ public:
+  SweepLoop(const SweepSettings& settings, Executor& executor, Status& status, ResultsStore& store,
+            std::int64_t sweep_id)
+      : settings_(settings), executor_(executor), status_(status), store_(store), sweep_id_(sweep_id) {}
+
+  void Add(const RunSpec* run) {
+    queue_.push_back(run);
+    by_id_[run->run_id] = run;
+  }
+
+  void Run(SweepOutcome& outcome) {
+    while (!queue_.empty() || executor_.Running() > 0) {
+      if (executor_.Interrupted()) break;
+      StartWhileAllowed();
+      if (executor_.Running() == 0) break;  // failure budget exhausted and nothing left running
+      for (const WorkerEnding& ending : executor_.Wait()) Finish(ending, outcome);
+    }
+    if (executor_.Interrupted()) {
+      outcome.interrupted = true;
+      status_.Message("interrupted: stopping running runs; finished results are kept");
+      for (const WorkerEnding& ending : executor_.TerminateAll()) Finish(ending, outcome);
+    }
+    outcome.not_started += queue_.size();
+    if (!queue_.empty() && !outcome.interrupted) {
+      status_.Message(fmt::format("failure budget of {} exhausted: {} runs not started", settings_.failure_budget,
+                                  queue_.size()));
+    }
+  }
+
+ private:
+  bool BudgetExhausted() const { return settings_.failure_budget > 0 && failures_ >= settings_.failure_budget; }
+
+  void StartWhileAllowed() {
+    while (!queue_.empty() && executor_.Running() < settings_.jobs && !BudgetExhausted() &&
+           !executor_.Interrupted()) {
+      const RunSpec& run = *queue_.front();
+      queue_.pop_front();
+      const std::filesystem::path run_dir = RunFolder(settings_.output_dir, run.run_id);
+      RemovePartialRun(run_dir);
+      std::filesystem::create_directories(run_dir);
+      WriteJsonAtomically(run_dir / "run.json", ToJson(run));
+      executor_.Start(run, run_dir);
+      status_.Started(run.run_id);
+    }
+  }
+
+  void Finish(const WorkerEnding& ending, SweepOutcome& outcome) {
+    const auto found = by_id_.find(ending.run_id);
+    if (found == by_id_.end()) return;
+    const RunSpec& run = *found->second;
+    const std::filesystem::path run_dir = RunFolder(settings_.output_dir, run.run_id);
+    StoredResult stored = ReadRunResult(run_dir);
+    if (!stored.result && ending.interrupted) {
+      // Interrupted before its result existed: nothing half-done may look like a result.
+      RemovePartialRun(run_dir);
+      ++outcome.not_started;
+      return;
+    }
+    nlohmann::json result = stored.result ? std::move(*stored.result)
+                                          : MissingResult(run, ending.reason + " (" + stored.problem + ")", false);
+    if (!stored.result) WriteJsonAtomically(run_dir / "result.json", result);
+    store_.RecordRun(sweep_id_, ToJson(run), result, std::filesystem::path("runs") / run.run_id);
+    const bool ok = result.value("status", "failed") == "ok";
+    if (ok) {
+      ++outcome.ok;
+    } else {
+      ++outcome.failed;
+      ++failures_;
+    }
+    FinishedRun finished;
+    finished.run_id = run.run_id;
+    finished.ok = ok;
+    if (!ok) {
+      finished.reason = result.value("failure_kind", std::string("failed")) + ": " + result.value("reason", "");
+    }
+    if (result.contains("wall_s") && result["wall_s"].is_number()) finished.wall_s = result["wall_s"].get<double>();
+    status_.Finished(finished);
+  }
+
+  const SweepSettings& settings_;
+  Executor& executor_;
+  Status& status_;
+  ResultsStore& store_;
+  std::int64_t sweep_id_;
+  std::deque<const RunSpec*> queue_;
+  std::map<std::string, const RunSpec*> by_id_;
+  std::size_t failures_ = 0;
+};
+
+std::string HostName() {
+  char name[256] = {};
+  if (::gethostname(name, sizeof name - 1) != 0) return "unknown";
+  return name;
+}
+
+}  // namespace
+
+int SweepOutcome::ExitCode() const {
+  if (interrupted) return 130;
+  return failed > 0 || not_started > 0 ? 1 : 0;
+}
+
+std::vector<const RunSpec*> LongestExpectedFirst(const std::vector<const RunSpec*>& runs,
+                                                 const std::map<std::string, double>& typical_wall_s) {
+  double longest_known = 0.0;
+  for (const auto& [key, seconds] : typical_wall_s) longest_known = std::max(longest_known, seconds);
+  auto expected = [&](const RunSpec* run) {
+    const auto found = typical_wall_s.find(ExpectationKey(*run));
+    // Unknown runs first: the one that turns out long must not be the last to start.
+    return found == typical_wall_s.end() ? longest_known + 1.0 : found->second;
+  };
+  std::vector<const RunSpec*> ordered = runs;
+  std::stable_sort(ordered.begin(), ordered.end(),
+                   [&](const RunSpec* a, const RunSpec* b) { return expected(a) > expected(b); });
+  return ordered;
+}
+
+SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& settings, Executor& executor,
+                      Status& status) {
+  OutputLock lock(settings.output_dir);
+  ResultsStore store = ResultsStore::Open(settings.output_dir / "results.sqlite");
+
+  SweepOutcome outcome;
+  outcome.total = runs.size();
+  std::vector<const RunSpec*> to_run;
+  std::set<std::string> matrix_ids;
+  SweepInfo info;
+  info.name = settings.name;
+  info.config_path = settings.config_path;
+  info.config_sha = settings.config_sha;
+  info.slamsweep_version = SLAMSWEEP_VERSION;
+  info.host = HostName();
+  info.command_line = settings.command_line;
+  const std::int64_t sweep_id = store.BeginSweep(info);
+
+  for (const RunSpec& run : runs) {
+    matrix_ids.insert(run.run_id);
+    const std::optional<std::string> recorded = store.RunStatus(run.run_id);
+    if (IsDone(recorded, settings.rerun_failed)) {
+      ++outcome.already_done;
+      continue;
+    }
+    // A result.json the store never saw: the orchestrator died between the worker's rename and
+    // the store's commit. Adopting it keeps "kill -9, run again" from repeating finished work.
+    const std::filesystem::path run_dir = RunFolder(settings.output_dir, run.run_id);
+    if (!recorded) {
+      StoredResult stored = ReadRunResult(run_dir);
+      if (stored.result && stored.result->value("run_id", "") == run.run_id) {
+        const std::string adopted_status = stored.result->value("status", "failed");
+        if (IsDone(adopted_status, settings.rerun_failed)) {
+          store.RecordRun(sweep_id, ToJson(run), *stored.result, std::filesystem::path("runs") / run.run_id);
+          ++outcome.already_done;
+          continue;
+        }
+      }
+    }
+    to_run.push_back(&run);
+  }
+  status.Planned(to_run.size(), outcome.already_done);
+
+  SweepLoop loop(settings, executor, status, store, sweep_id);
+  for (const RunSpec* run : LongestExpectedFirst(to_run, store.TypicalWallSeconds())) loop.Add(run);
+  loop.Run(outcome);
+  status.Done();
+
+  // The whole matrix, including runs finished by earlier sweeps, decides the summary and the exit code.
+  std::vector<StoredRun> stored_runs;
+  for (StoredRun& stored : store.Runs()) {
+    if (matrix_ids.count(stored.run_id) > 0) stored_runs.push_back(std::move(stored));
+  }
+  std::size_t failed_in_store = 0;
+  for (const StoredRun& stored : stored_runs) failed_in_store += stored.status == "ok" ? 0 : 1;
+  outcome.failed = std::max(outcome.failed, failed_in_store);
+  store.FinishSweep(sweep_id, outcome.interrupted ? "interrupted" : (outcome.ExitCode() == 0 ? "ok" : "failed"),
+                    static_cast<std::int64_t>(outcome.ok + outcome.failed));
+  WriteSummaryJson(stored_runs, settings.output_dir / "summary.json");
+  WriteJUnit(stored_runs, settings.output_dir / "junit.xml");
+  return outcome;
+}
+
+}  // namespace slamsweep::orchestrator

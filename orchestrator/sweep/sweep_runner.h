@@ -1,0 +1,61 @@
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/sweep/executor.h"
+#include "orchestrator/sweep/status.h"
+
+namespace slamsweep::orchestrator {
+
+/// Everything about a sweep that is not a run.
+struct SweepSettings {
+  std::string name;
+  std::filesystem::path output_dir;
+  /// Runs at once (>= 1).
+  std::size_t jobs = 1;
+  /// Stop starting runs after this many failures in this sweep; 0 = never (keep going).
+  std::size_t failure_budget = 0;
+  /// Start runs that an earlier sweep recorded as failed again (`--rerun failed`).
+  bool rerun_failed = false;
+  /// Recorded with the sweep, to reproduce it.
+  std::string config_path;
+  std::string config_sha;
+  std::string command_line;
+};
+
+struct SweepOutcome {
+  std::size_t total = 0;
+  std::size_t ok = 0;
+  std::size_t failed = 0;
+  /// Finished by an earlier sweep and not run again.
+  std::size_t already_done = 0;
+  /// Never started: the failure budget ran out or the sweep was interrupted.
+  std::size_t not_started = 0;
+  bool interrupted = false;
+
+  /// 0 every run ok, 1 some run failed or was not started, 130 interrupted.
+  int ExitCode() const;
+};
+
+/// Runs `runs` (one sweep's matrix, or a shard of it) into settings.output_dir: takes the
+/// directory's lock, skips runs the results store already holds (and adopts finished result.json
+/// files the store missed, e.g. after the orchestrator was killed), starts the rest
+/// longest-expected-first through `executor` with at most `jobs` at once, records each result
+/// the moment it ends, and writes summary.json and junit.xml at the end, also when interrupted.
+/// A failing run is data, never an exception; exceptions mean the sweep itself cannot go on
+/// (unwritable output directory, locked directory, corrupt store).
+SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& settings, Executor& executor,
+                      Status& status);
+
+/// Order in which runs start: longest expected first (durations recorded by earlier sweeps,
+/// keyed "<algorithm>\t<sequence>"), so that a long run does not start last and stretch the
+/// makespan; runs without history count as the longest known. Stable for equal expectations.
+std::vector<const RunSpec*> LongestExpectedFirst(const std::vector<const RunSpec*>& runs,
+                                                 const std::map<std::string, double>& typical_wall_s);
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,102 @@
+#include "orchestrator/worker/run_metrics.h"
+
+#include <functional>
+
+#include "evaluator/core/input_error.h"
+#include "evaluator/map/paper_metrics.h"
+#include "evaluator/trajectory/ape.h"
+#include "evaluator/trajectory/relations_metric.h"
+#include "evaluator/trajectory/rpe.h"
+
+namespace slamsweep::orchestrator {
+
+namespace ev = slamsweep::evaluator;
+
+namespace {
+
+void AddStatistics(RunMetrics& out, const std::string& name, const ev::MetricResult& result) {
+  const ev::ErrorStatistics& s = result.statistics;
+  for (const auto& [statistic, value] : {std::pair<const char*, double>{"rmse", s.rmse},
+                                         {"mean", s.mean},
+                                         {"median", s.median},
+                                         {"std", s.std},
+                                         {"min", s.min},
+                                         {"max", s.max},
+                                         {"sse", s.sse},
+                                         {"n", static_cast<double>(s.n)}}) {
+    out.metrics.push_back({name, statistic, value, statistic == std::string("n") ? "count" : result.unit});
+  }
+  out.details[name] = result.ToJson();
+}
+
+/// Runs one metric; an InputError (no pairs, degenerate alignment, empty map) becomes a warning
+/// naming the metric, so one metric that cannot be computed does not hide the others.
+void Attempt(RunMetrics& out, const std::string& name, const std::function<void()>& compute) {
+  try {
+    compute();
+  } catch (const ev::InputError& error) {
+    out.warnings.push_back(name + ": " + error.what());
+  }
+}
+
+}  // namespace
+
+nlohmann::json ToJson(const FlatMetric& metric) {
+  return {{"metric", metric.metric}, {"statistic", metric.statistic}, {"value", metric.value}, {"unit", metric.unit}};
+}
+
+RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricInputs& inputs) {
+  ev::AssociationOptions association;
+  association.t_max_diff_s = evaluation.t_max_diff_s;
+  ev::AlignmentOptions alignment;
+  alignment.mode = ev::ParseAlignmentMode(evaluation.align);
+
+  RunMetrics out;
+  if (inputs.estimate && inputs.reference) {
+    for (const auto& [name, relation] : {std::pair<const char*, ev::PoseRelation>{"ape_trans", ev::PoseRelation::kTranslation},
+                                         {"ape_rot", ev::PoseRelation::kRotationDeg}}) {
+      Attempt(out, name, [&, name = std::string(name), relation = relation] {
+        const ev::Ape ape({relation, association, alignment});
+        AddStatistics(out, name, ape.Compute(*inputs.reference, *inputs.estimate));
+      });
+    }
+    for (const auto& [name, relation] : {std::pair<const char*, ev::PoseRelation>{"rpe_trans", ev::PoseRelation::kTranslation},
+                                         {"rpe_rot", ev::PoseRelation::kRotationDeg}}) {
+      Attempt(out, name, [&, name = std::string(name), relation = relation] {
+        ev::RpeOptions options;
+        options.pose_relation = relation;
+        options.delta = evaluation.rpe_delta_m;
+        options.delta_unit = ev::DeltaUnit::kMeters;
+        options.association = association;
+        AddStatistics(out, name, ev::Rpe(options).Compute(*inputs.reference, *inputs.estimate));
+      });
+    }
+  }
+  if (inputs.estimate && inputs.relations) {
+    Attempt(out, "relations", [&] {
+      const ev::RelationsResult result = ev::RelationsMetric({}).Compute(*inputs.estimate, *inputs.relations);
+      const double used = static_cast<double>(result.used);
+      out.metrics.push_back({"relations_trans", "mean", result.translation_abs_mean_m, "m"});
+      out.metrics.push_back({"relations_trans", "std", result.translation_abs_std_m, "m"});
+      out.metrics.push_back({"relations_trans", "n", used, "count"});
+      out.metrics.push_back({"relations_rot", "mean", result.rotation_abs_mean_deg, "deg"});
+      out.metrics.push_back({"relations_rot", "std", result.rotation_abs_std_deg, "deg"});
+      out.metrics.push_back({"relations_rot", "n", used, "count"});
+      out.details["relations"] = result.ToJson();
+    });
+  }
+  if (inputs.map) {
+    Attempt(out, "paper_map", [&] {
+      const ev::PaperMetrics paper = ev::ComputePaperMetrics(*inputs.map);
+      out.metrics.push_back({"occupied_to_free_unknown", "value", paper.occupied.occupied_to_free_unknown, "ratio"});
+      out.metrics.push_back({"occupied_to_all", "value", paper.occupied.occupied_to_all, "ratio"});
+      out.metrics.push_back({"unknown_to_all", "value", paper.occupied.unknown_to_all, "ratio"});
+      out.metrics.push_back({"corners", "value", static_cast<double>(paper.corners.corners), "count"});
+      out.metrics.push_back({"enclosed_areas", "value", static_cast<double>(paper.enclosed.enclosed_areas), "count"});
+      out.details["paper_map"] = paper.ToJson();
+    });
+  }
+  return out;
+}
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "evaluator/core/occupancy_grid.h"
+#include "evaluator/core/relation.h"
+#include "evaluator/core/trajectory.h"
+#include "orchestrator/matrix/run_spec.h"
+
+namespace slamsweep::orchestrator {
+
+/// One number of result.json's flat `metrics` list (orchestrator/DESIGN.md).
+struct FlatMetric {
+  std::string metric;     ///< "ape_trans", "rpe_rot", "relations_trans", "corners", ...
+  std::string statistic;  ///< "rmse", "mean", ..., "n", or "value" for the map metrics
+  double value = 0.0;
+  std::string unit;  ///< "m", "deg", "ratio", "count"
+};
+
+/// Every metric of a run with its full specification.
+struct RunMetrics {
+  std::vector<FlatMetric> metrics;
+  /// metric name -> the evaluator's result JSON (MetricResult / RelationsResult / PaperMetrics).
+  nlohmann::json details = nlohmann::json::object();
+  /// One sentence per metric that could not be computed ("ape_trans: no matching timestamps ...").
+  std::vector<std::string> warnings;
+};
+
+/// What the metrics are computed from: the run's estimate and the truth it is compared with.
+struct MetricInputs {
+  const evaluator::OccupancyGrid* map = nullptr;
+  const evaluator::Trajectory* estimate = nullptr;    ///< null: trajectory metrics are skipped
+  const evaluator::Trajectory* reference = nullptr;   ///< null: APE and RPE are skipped
+  const evaluator::Relations* relations = nullptr;    ///< null: the relations metric is skipped
+};
+
+/// Computes what the inputs allow: ape_trans/ape_rot (evaluation.align, t_max_diff_s),
+/// rpe_trans/rpe_rot (delta evaluation.rpe_delta_m metres, consecutive pairs, no alignment: a
+/// rigid alignment does not change relative errors), relations_trans/rot (Kuemmerle et al.), and
+/// always the paper map metrics. A metric that cannot be computed becomes a warning, never an
+/// exception: the others still count. An invalid evaluation option (unknown alignment) is an
+/// InputError naming it.
+RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricInputs& inputs);
+
+/// {"metric", "statistic", "value", "unit"}.
+nlohmann::json ToJson(const FlatMetric& metric);
+
+}  // namespace slamsweep::orchestrator

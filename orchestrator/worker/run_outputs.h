@@ -1,0 +1,22 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "evaluator/core/trajectory.h"
+#include "orchestrator/adapters/adapter.h"
+#include "orchestrator/adapters/run_paths.h"
+
+namespace slamsweep::orchestrator {
+
+/// Writes a run's converted outputs in the run folder's fixed layout: map.pgm + map.yaml
+/// (map_saver trinary), trajectory.tum, reference.tum (when `reference`), stages/stage_NNNN.png and
+/// map.geojson (handout borders, default VectorizeOptions). Returns result.json's `outputs` object
+/// (paths relative to the run folder; log.txt when it exists). A map or trajectory that cannot be
+/// written is an InputError; a vector map that cannot be made is a warning appended to `warnings`.
+nlohmann::json WriteRunOutputs(const RunPaths& paths, const CollectedOutputs& collected,
+                               const evaluator::Trajectory* reference, std::vector<std::string>& warnings);
+
+}  // namespace slamsweep::orchestrator

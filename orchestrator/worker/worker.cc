@@ -1,0 +1,220 @@
+#include "orchestrator/worker/worker.h"
+
+#include <signal.h>
+#include <sys/prctl.h>
+
+#include <chrono>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <system_error>
+
+#include "evaluator/core/input_error.h"
+#include "orchestrator/adapters/adapter.h"
+#include "orchestrator/adapters/run_failure.h"
+#include "orchestrator/adapters/run_inputs.h"
+#include "orchestrator/adapters/run_paths.h"
+#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/process/interruption.h"
+#include "orchestrator/process/process_set.h"
+#include "orchestrator/worker/run_metrics.h"
+#include "orchestrator/worker/run_outputs.h"
+#include "orchestrator/worker/run_result.h"
+
+namespace slamsweep::orchestrator {
+
+namespace ev = slamsweep::evaluator;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::uint64_t kLogCapBytes = 8ull << 20;
+
+/// The run's specification; InputError naming run.json (and the field) when it cannot be used.
+RunSpec ReadRunSpec(const RunPaths& paths) {
+  std::ifstream in(paths.RunJson(), std::ios::binary);
+  if (!in) throw ev::InputError(paths.RunJson().string() + ": cannot read the run's specification");
+  nlohmann::json json;
+  try {
+    json = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& error) {
+    throw ev::InputError(paths.RunJson().string() + ": not JSON (" + error.what() + ")");
+  }
+  try {
+    return RunSpecFromJson(json);
+  } catch (const ev::InputError& error) {
+    // RunSpecFromJson names the file "run.json"; the full path says which run.
+    std::string message = error.what();
+    if (message.starts_with("run.json: ")) message.erase(0, std::string("run.json: ").size());
+    throw ev::InputError(paths.RunJson().string() + ": " + message);
+  } catch (const nlohmann::json::exception& error) {
+    throw ev::InputError(paths.RunJson().string() + ": " + error.what());
+  }
+}
+
+/// Everything in the run folder but run.json and worker.log: what an earlier attempt left would
+/// otherwise be taken for this attempt's output (a stale map when the program now writes none).
+/// worker.log is this worker's own stdout/stderr, held open by the supervisor that started it.
+void RemoveAllButRunJson(const RunPaths& paths) {
+  std::error_code error;
+  for (fs::directory_iterator it(paths.root, error), end; !error && it != end; it.increment(error)) {
+    const fs::path name = it->path().filename();
+    if (name == paths.RunJson().filename() || name == "worker.log") continue;
+    std::error_code ignored;
+    fs::remove_all(it->path(), ignored);
+  }
+}
+
+/// A termination request that arrived while signals were blocked (InterruptionGuard takes them only
+/// while waiting for the program) counts as well: the worker must not commit a result after it.
+bool InterruptionRequested() {
+  if (InterruptionGuard::Interrupted()) return true;
+  sigset_t pending;
+  sigemptyset(&pending);
+  if (sigpending(&pending) != 0) return false;
+  return sigismember(&pending, SIGINT) == 1 || sigismember(&pending, SIGTERM) == 1 ||
+         sigismember(&pending, SIGHUP) == 1;
+}
+
+void WriteCommandTxt(const RunPaths& paths, const std::vector<std::string>& argv) {
+  std::ofstream out(paths.CommandTxt(), std::ios::binary | std::ios::trunc);
+  for (const std::string& argument : argv) out << argument << "\n";
+  if (!out) throw std::runtime_error(paths.CommandTxt().string() + ": cannot write");
+}
+
+/// Records how the program ended; returns false when the run cannot go on.
+bool RecordProcessOutcome(const ProcessOutcome& outcome, RunResult& result) {
+  result.wall_s = outcome.wall_s;
+  result.cpu_s = outcome.cpu_s;
+  result.peak_rss_kb = outcome.peak_rss_kb;
+  if (outcome.exit_code >= 0) result.exit_code = outcome.exit_code;
+  if (outcome.signal > 0) result.signal = outcome.signal;
+  if (outcome.log_truncated) result.warnings.push_back("log.txt truncated: the middle of the output was left out");
+  switch (outcome.ending) {
+    case ProcessEnding::kExited:
+      if (outcome.exit_code != 0) result.Fail(FailureKind::kExitCode, outcome.reason);
+      break;
+    case ProcessEnding::kSignaled:
+      result.Fail(FailureKind::kSignal, outcome.reason);
+      break;
+    case ProcessEnding::kTimedOut:
+      result.Fail(FailureKind::kTimeout, outcome.reason);
+      break;
+    case ProcessEnding::kMemoryLimit:
+      result.Fail(FailureKind::kMemoryLimit, outcome.reason);
+      break;
+    case ProcessEnding::kInterrupted:
+      result.Fail(FailureKind::kInterrupted, outcome.reason);
+      break;
+    case ProcessEnding::kFailedToStart:
+      // The configuration names a program this machine cannot run.
+      result.Fail(FailureKind::kInputError, outcome.reason);
+      break;
+  }
+  return result.ok();
+}
+
+/// Everything between a readable run.json and result.json. Failures of the run are thrown
+/// (RunFailure, InputError) or recorded in `result`; the caller turns the rest into "internal".
+void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
+  const std::unique_ptr<Adapter> adapter = MakeAdapter(spec.algorithm.adapter);
+  const RunInputs inputs = PrepareRunInputs(spec);
+  result.warnings.insert(result.warnings.end(), inputs.sequence.warnings.begin(), inputs.sequence.warnings.end());
+  const PreparedRun prepared = adapter->Prepare(spec, inputs, paths);
+  result.command = prepared.argv;
+  WriteCommandTxt(paths, prepared.argv);
+
+  if (!prepared.argv.empty()) {
+    ProcessSpec process;
+    process.argv = prepared.argv;
+    process.working_dir = paths.root;
+    process.log_path = paths.Log();
+    process.log_cap_bytes = kLogCapBytes;
+    process.timeout_s = spec.algorithm.timeout_s;
+    process.memory_limit_mb = spec.algorithm.memory_limit_mb;
+    if (!RecordProcessOutcome(RunProcess(process), result)) return;
+  }
+  if (InterruptionRequested()) return;
+
+  const auto collect_start = std::chrono::steady_clock::now();
+  CollectedOutputs collected = adapter->Collect(spec, inputs, paths);
+  if (prepared.argv.empty()) {
+    // No program: the baseline's "run" is rendering its map.
+    result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - collect_start).count();
+  }
+  result.warnings.insert(result.warnings.end(), collected.warnings.begin(), collected.warnings.end());
+  if (collected.map_rendered_from_trajectory) {
+    result.warnings.push_back("map rendered from the trajectory and the scans (the program writes no map)");
+  }
+  const ev::Trajectory* reference = inputs.sequence.reference ? &*inputs.sequence.reference : nullptr;
+  try {
+    result.outputs = WriteRunOutputs(paths, collected, reference, result.warnings);
+  } catch (const ev::InputError& error) {
+    throw RunFailure(FailureKind::kCorruptOutput, std::string("cannot convert the outputs: ") + error.what());
+  }
+
+  MetricInputs metric_inputs;
+  metric_inputs.map = &collected.map;
+  metric_inputs.estimate = collected.trajectory ? &*collected.trajectory : nullptr;
+  metric_inputs.reference = reference;
+  metric_inputs.relations = inputs.sequence.relations ? &*inputs.sequence.relations : nullptr;
+  result.metrics = ComputeRunMetrics(spec.evaluation, metric_inputs);
+}
+
+}  // namespace
+
+int RunWorker(const fs::path& run_dir) {
+  // The supervisor's death must not leave a worker (and its SLAM program) running on.
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+  const InterruptionGuard guard;
+
+  std::error_code error;
+  fs::path root = fs::absolute(run_dir, error).lexically_normal();
+  if (root.filename().empty()) root = root.parent_path();  // "runs/r1/" -> "runs/r1"
+  const RunPaths paths{root};
+  RunSpec spec;
+  try {
+    spec = ReadRunSpec(paths);
+  } catch (const std::exception& failure) {
+    std::cerr << "slamsweep worker: " << failure.what() << "\n";
+    return kWorkerBadRunJson;
+  }
+
+  RemoveAllButRunJson(paths);
+  RunResult result;
+  result.run_id = spec.run_id;
+  result.started_at = NowIso8601Utc();
+  try {
+    ExecuteRun(spec, paths, result);
+  } catch (const RunFailure& failure) {
+    result.Fail(failure.kind(), failure.what());
+  } catch (const ev::InputError& failure) {
+    result.Fail(FailureKind::kInputError, failure.what());
+  } catch (const std::exception& failure) {
+    result.Fail(FailureKind::kInternal, std::string("worker error: ") + failure.what());
+  } catch (...) {
+    result.Fail(FailureKind::kInternal, "worker error: unknown exception");
+  }
+
+  if (InterruptionRequested() || result.failure_kind == FailureKind::kInterrupted) {
+    // No result.json: the run is not done, and the next sweep starts it afresh.
+    RemoveAllButRunJson(paths);
+    return kWorkerInterrupted;
+  }
+  if (!result.ok()) result.metrics.metrics.clear();
+  // A failed run's log is what a person reads first.
+  if (!result.outputs.contains("log") && fs::is_regular_file(paths.Log(), error)) result.outputs["log"] = "log.txt";
+  result.finished_at = NowIso8601Utc();
+  try {
+    WriteJsonFileAtomically(paths.ResultJson(), ToJson(result));
+  } catch (const std::exception& failure) {
+    std::cerr << "slamsweep worker: " << failure.what() << "\n";
+    return kWorkerBadRunJson;
+  }
+  return kWorkerWroteResult;
+}
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,318 @@
+#include <string>
+
+#include "report/html/html.h"
+#include "report/html/number_format.h"
+#include "report/html/site_data.h"
+
+namespace slamsweep::report {
+
+namespace {
+
+constexpr std::string_view kPageTemplate = R"(<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<title>{{title}}</title>
+<link rel="stylesheet" href="{{root}}style.css">
+</head>
+<body>
+<header><nav><a href="{{root}}index.html">Sweep overview</a></nav><h1>{{title}}</h1></header>
+<main>
+{{body}}
+</main>
+<footer>Made by slamsweep report. Metric definitions: spec/metrics.md. Lower is better for every metric shown.</footer>
+</body>
+</html>
+)";
+
+Html T(std::string_view markup) { return Html::Trusted(markup); }
+Html E(std::string_view text) { return Html::Escape(text); }
+
+std::string Page(std::string_view title, std::string_view root, const Html& body) {
+  return RenderTemplate(kPageTemplate, {{"title", E(title)}, {"root", E(root)}, {"body", body}}).str();
+}
+
+Html Image(std::string_view src, std::string_view alt, std::string_view css_class) {
+  return T("<img class=\"" + EscapeHtml(css_class) + "\" src=\"" + EscapeHtml(src) + "\" alt=\"" + EscapeHtml(alt) +
+           "\">");
+}
+
+std::string CountsText(const RunCounts& counts) {
+  std::string text = std::to_string(counts.total) + (counts.total == 1 ? " run: " : " runs: ") + std::to_string(counts.ok) + " ok, " +
+                     std::to_string(counts.failed) + " failed";
+  if (counts.unfinished > 0) text += ", " + std::to_string(counts.unfinished) + " unfinished";
+  return text;
+}
+
+Html ColumnHeader(const MetricColumn& column) {
+  std::string title = column.title;
+  if (!column.unit.empty()) title += " (" + column.unit + ")";
+  Html header = E(title);
+  if (!column.spec.empty()) header += T("<br>") + Element("span", "spec", E(column.spec));
+  return Element("th", "", header);
+}
+
+Html Cell(const MetricCell& cell) {
+  Html content = E(FormatMeanStd(cell.summary));
+  if (cell.summary.n > 0) content += T(" ") + Element("span", "n", E("n=" + std::to_string(cell.summary.n)));
+  if (cell.best) content += T(" ") + Element("span", "marker", E("▼ best"));
+  return Element("td", cell.best ? "best" : "", content);
+}
+
+Html MetricTableHtml(const SiteData& site, const SequenceModel& sequence, const std::vector<MetricColumn>& columns,
+                     std::vector<MetricCell> AlgorithmRow::* cells, std::string_view caption, std::string_view root) {
+  Html header = Element("th", "", E("Algorithm")) + Element("th", "", E("Runs"));
+  for (const MetricColumn& column : columns) header += ColumnHeader(column);
+  Html rows;
+  for (const AlgorithmRow& row : sequence.rows) {
+    Html name = E(row.algorithm);
+    if (row.median_run) name = Link(std::string(root) + site.layout->RunPage(*row.median_run), name);
+    Html line = Element("th", "", name) +
+                Element("td", row.counts.failed + row.counts.unfinished > 0 ? "failures" : "", E(CountsText(row.counts)));
+    for (const MetricCell& cell : row.*cells) line += Cell(cell);
+    rows += Element("tr", "", line) + T("\n");
+  }
+  return T("<table>\n") + Element("caption", "", E(caption)) + T("\n<thead>") + Element("tr", "", header) +
+         T("</thead>\n<tbody>\n") + rows + T("</tbody>\n</table>\n");
+}
+
+Html SequenceTables(const SiteData& site, const SequenceModel& sequence, std::string_view root) {
+  Html out;
+  if (sequence.trajectory_columns.empty()) {
+    out += Element("p", "note",
+                   E("No trajectory metric for this sequence (no reference trajectory, or no run succeeded): "
+                     "Table I is not available."));
+  } else {
+    out += MetricTableHtml(site, sequence, sequence.trajectory_columns, &AlgorithmRow::trajectory_cells,
+                           "Table I: trajectory error over iterations, mean ± sample std (failed runs have no value "
+                           "and are counted in Runs)",
+                           root);
+  }
+  if (sequence.map_columns.empty()) {
+    out += Element("p", "note", E("No map metric for this sequence (no run produced a map)."));
+  } else {
+    out += MetricTableHtml(site, sequence, sequence.map_columns, &AlgorithmRow::map_cells,
+                           "Map metrics without ground truth (paper profile), mean ± sample std", root);
+  }
+  return out;
+}
+
+Html Plots(const SiteData& site, const SequenceModel& sequence, std::string_view root) {
+  const auto it = site.plots.find(sequence.name);
+  if (it == site.plots.end() || it->second.empty()) return {};
+  Html figures;
+  for (const PlotArtifact& plot : it->second) {
+    Html body = plot.made ? Image(std::string(root) + plot.path, plot.title, "plot")
+                          : Element("p", "note", E("Plot not available: " + plot.note));
+    figures += Element("figure", "plot", body + Element("figcaption", "", E(plot.title)));
+  }
+  return Element("div", "plots", figures);
+}
+
+Html Gallery(const SiteData& site, const SequenceModel& sequence, std::string_view root) {
+  Html figures;
+  for (const AlgorithmRow& row : sequence.rows) {
+    Html body;
+    if (!row.median_run) {
+      body = Element("p", "note", E("no successful run"));
+    } else {
+      const std::size_t run = *row.median_run;
+      const std::string page = std::string(root) + site.layout->RunPage(run);
+      if (site.runs[run].thumbnail) {
+        body = Link(page, Image(std::string(root) + site.layout->RunDir(run) + "thumbnail.png",
+                                "map of " + site.model->runs[run].run_id, "thumbnail"));
+      } else {
+        body = Link(page, E("map not available"));
+      }
+      const std::string why = row.median_by.empty() ? "the first successful run" : "median run by " + row.median_by;
+      body += Element("p", "note", E(why + ", iteration " + std::to_string(site.model->runs[run].iteration)));
+    }
+    figures += Element("figure", "map", Element("figcaption", "", E(row.algorithm)) + body);
+  }
+  return Element("div", "gallery", figures);
+}
+
+Html RunList(const SiteData& site, const SequenceModel& sequence, std::string_view root) {
+  Html rows;
+  for (const AlgorithmRow& row : sequence.rows) {
+    for (std::size_t run : row.runs) {
+      const RunRecord& record = site.model->runs[run];
+      const std::string status(RunStatusName(record.status));
+      rows += Element("tr", "",
+                      Element("td", "", Link(std::string(root) + site.layout->RunPage(run), E(record.run_id))) +
+                          Element("td", "", E(record.algorithm)) +
+                          Element("td", "", E(std::to_string(record.iteration))) +
+                          Element("td", "status-" + status, E(status)) + Element("td", "", E(record.reason))) +
+              T("\n");
+    }
+  }
+  Html header;
+  for (const char* name : {"Run", "Algorithm", "Iteration", "Status", "Reason"}) header += Element("th", "", E(name));
+  return T("<table>\n<thead>") + Element("tr", "", header) + T("</thead>\n<tbody>\n") + rows + T("</tbody>\n</table>\n");
+}
+
+Html KeyValueTable(const std::vector<std::pair<std::string, std::string>>& rows) {
+  Html body;
+  for (const auto& [key, value] : rows) body += Element("tr", "", Element("th", "", E(key)) + Element("td", "", E(value)));
+  return T("<table class=\"facts\">\n") + body + T("</table>\n");
+}
+
+}  // namespace
+
+std::string RenderIndexPage(const SiteData& site) {
+  const SweepModel& model = *site.model;
+  Html body = Element("p", model.counts.failed + model.counts.unfinished > 0 ? "summary failures" : "summary",
+                      E(CountsText(model.counts) + " over " + std::to_string(model.sequences.size()) +
+                        " sequences and " + std::to_string(model.algorithms.size()) + " algorithms."));
+  Html downloads = Element("li", "", Link("summary.csv", E("summary.csv")) + E(" (one line per run)"));
+  if (site.has_summary_json) downloads += Element("li", "", Link("summary.json", E("summary.json")));
+  body += Element("ul", "downloads", downloads);
+  for (const SequenceModel& sequence : model.sequences) {
+    Html section = Element("h2", "", Link(site.layout->SequencePage(sequence.name), E("Sequence " + sequence.name)));
+    section += SequenceTables(site, sequence, "");
+    section += Plots(site, sequence, "");
+    section += Element("p", "", Link(site.layout->SequencePage(sequence.name),
+                                     E("Map gallery and every run of " + sequence.name)));
+    Html files;
+    for (const AlgorithmRow& row : sequence.rows) {
+      const std::string dir = site.layout->FilesDir(row.algorithm, sequence.name);
+      Html links = Link(dir + "rmse.txt", E("RMSE")) + T(" · ") + Link(dir + "corners.txt", E("corners")) + T(" · ") +
+                   Link(dir + "occupied_ratio.txt", E("occupied ratio"));
+      if (site.pose_logs.count({row.algorithm, sequence.name}) > 0) {
+        links += T(" · ") + Link(dir + "pose_log.tum", E("pose log"));
+      }
+      files += Element("li", "", E(row.algorithm + ": ") + links);
+    }
+    section += Element("details", "", Element("summary", "", E("Text files per algorithm")) + Element("ul", "", files));
+    body += Element("section", "", section);
+  }
+  return Page(site.title, "", body);
+}
+
+std::string RenderSequencePage(const SiteData& site, const SequenceModel& sequence) {
+  const std::string root = "../";
+  Html body = SequenceTables(site, sequence, root);
+  body += Element("h2", "", E("Metric plots"));
+  body += Plots(site, sequence, root);
+  body += Element("h2", "", E("Map gallery"));
+  if (!sequence.has_reference) {
+    body += Element("p", "note", E("No reference trajectory: each map is the median run by corner count."));
+  }
+  body += Gallery(site, sequence, root);
+  body += Element("h2", "", E("Runs"));
+  body += RunList(site, sequence, root);
+  return Page("Sequence " + sequence.name, root, body);
+}
+
+std::string RenderRunPage(const SiteData& site, std::size_t run) {
+  const RunRecord& record = site.model->runs[run];
+  const RunArtifacts& artifacts = site.runs[run];
+  const std::string root = "../";
+  // The page is runs/<name>.html and its files are in runs/<name>/: link relative to the page.
+  const std::string dir = site.layout->RunDir(run).substr(std::string_view("runs/").size());
+  const std::string status(RunStatusName(record.status));
+  Html body = Element("p", "status-" + status,
+                      E("Status: " + status + (record.failure_kind.empty() ? "" : " (" + record.failure_kind + ")") +
+                        (record.reason.empty() ? "" : ": " + record.reason)));
+  body += KeyValueTable({
+      {"Algorithm", record.algorithm},
+      {"Sequence", record.sequence},
+      {"Noise", record.noise},
+      {"Iteration", std::to_string(record.iteration)},
+      {"Exit code", record.exit_code ? std::to_string(*record.exit_code) : "n/a"},
+      {"Signal", record.signal ? std::to_string(*record.signal) : "none"},
+      {"Wall time", FormatOptional(record.wall_s, "s")},
+      {"CPU time", FormatOptional(record.cpu_s, "s")},
+      {"Peak memory", record.peak_rss_kb ? FormatNumber(*record.peak_rss_kb / 1024.0) + " MiB" : "n/a"},
+      {"Started", record.started_at},
+      {"Finished", record.finished_at},
+  });
+  Html images;
+  if (artifacts.gif) {
+    images += Element("figure", "map", Image(dir + "stages.gif", "the map being built", "animation") +
+                                           Element("figcaption", "", E("Map being built (stage maps)")));
+  }
+  if (artifacts.overlay) {
+    images += Element("figure", "map",
+                      Image(dir + "trajectory.png", "estimated trajectory over the map", "overlay") +
+                          Element("figcaption", "", E("Estimated trajectory over the map, with the aligned reference "
+                                                      "when there is one")));
+  } else if (artifacts.thumbnail) {
+    images += Element("figure", "map", Image(dir + "thumbnail.png", "final map", "thumbnail") +
+                                           Element("figcaption", "", E("Final map")));
+  }
+  if (!images.str().empty()) body += Element("div", "gallery", images);
+  for (const std::string& note : artifacts.notes) body += Element("p", "note", E(note));
+
+  body += Element("h2", "", E("Metrics"));
+  if (record.metrics.empty()) {
+    body += Element("p", "note", E("No metric was computed for this run."));
+  } else {
+    Html rows;
+    for (const FlatMetric& metric : record.metrics) {
+      rows += Element("tr", "", Element("td", "", E(metric.metric)) + Element("td", "", E(metric.statistic)) +
+                                    Element("td", "", E(FormatNumber(metric.value))) +
+                                    Element("td", "", E(metric.unit)) +
+                                    Element("td", "spec", E(MetricSpecLabel(record, metric.metric))));
+    }
+    Html header;
+    for (const char* name : {"Metric", "Statistic", "Value", "Unit", "Specification"}) {
+      header += Element("th", "", E(name));
+    }
+    body += T("<table>\n<thead>") + Element("tr", "", header) + T("</thead>\n<tbody>\n") + rows +
+            T("</tbody>\n</table>\n");
+  }
+  if (!record.metric_details.empty()) {
+    body += Element("details", "", Element("summary", "", E("Full specification and statistics of every metric")) +
+                                       Element("pre", "", E(record.metric_details.dump(2))));
+  }
+  if (!record.warnings.empty()) {
+    Html items;
+    for (const std::string& warning : record.warnings) items += Element("li", "", E(warning));
+    body += Element("h2", "", E("Warnings")) + Element("ul", "", items);
+  }
+  body += Element("h2", "", E("Command line"));
+  std::string command;
+  for (const std::string& arg : record.command) command += (command.empty() ? "" : "\n") + arg;
+  body += Element("pre", "", E(command.empty() ? "(not recorded)" : command));
+  body += Element("h2", "", E("Resolved configuration (run.json)"));
+  body += Element("pre", "", E(record.run_spec.dump(2)));
+  body += Element("h2", "", E("Log tail"));
+  if (artifacts.log_truncated) body += Element("p", "note", E("Only the last lines are shown; the whole log is below."));
+  body += Element("pre", "log", E(artifacts.log_tail.empty() ? "(empty or missing)" : artifacts.log_tail));
+  body += Element("h2", "", E("Files"));
+  Html files;
+  for (const std::string& name : artifacts.downloads) files += Element("li", "", Link(dir + name, E(name)));
+  body += files.str().empty() ? Element("p", "note", E("No file to download.")) : Element("ul", "downloads", files);
+  body += Element("p", "", Link(root + site.layout->SequencePage(record.sequence), E("Sequence " + record.sequence)));
+  return Page("Run " + record.run_id, root, body);
+}
+
+std::string_view StyleSheet() {
+  return R"(body { font-family: sans-serif; margin: 1em 2em; color: #111; background: #fff; }
+header nav { font-size: 0.9em; }
+h1 { font-size: 1.5em; word-break: break-all; }
+h2 { font-size: 1.2em; margin-top: 1.5em; }
+table { border-collapse: collapse; margin: 0.8em 0; }
+caption { text-align: left; font-style: italic; padding: 0.2em 0; }
+th, td { border: 1px solid #bbb; padding: 0.25em 0.6em; text-align: left; vertical-align: top; }
+thead th { background: #eee; }
+td.best { background: #d8f0d8; font-weight: bold; }
+.marker { color: #064; white-space: nowrap; }
+.n, .spec { color: #555; font-size: 0.85em; font-weight: normal; }
+.failures, .status-failed, .status-unreadable, .status-unfinished { color: #a00; }
+.status-ok { color: #060; }
+.note { color: #555; font-style: italic; }
+.plots, .gallery { display: flex; flex-wrap: wrap; gap: 1em; }
+figure { margin: 0; border: 1px solid #ddd; padding: 0.5em; }
+figcaption { font-size: 0.9em; margin: 0.3em 0; word-break: break-all; }
+img.plot { max-width: 640px; }
+img.overlay { max-width: 480px; }
+img.thumbnail, img.animation { width: 400px; height: auto; image-rendering: pixelated; }
+pre { background: #f6f6f6; padding: 0.5em; overflow-x: auto; max-height: 40em; white-space: pre-wrap;
+      overflow-wrap: anywhere; }
+footer { margin-top: 2em; font-size: 0.8em; color: #666; }
+)";
+}
+
+}  // namespace slamsweep::report

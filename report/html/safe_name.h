@@ -1,0 +1,14 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace slamsweep::report {
+
+/// A file name made from untrusted text (run id, algorithm, sequence): only [A-Za-z0-9_.-], no
+/// leading dot, at most 64 characters. When anything had to change, "-" and 8 hex digits of a
+/// hash of the original are appended, so "a/b" and "a_b" stay distinct. Never empty, never
+/// "." or "..", never a path.
+std::string SafeFileName(std::string_view text);
+
+}  // namespace slamsweep::report

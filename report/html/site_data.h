@@ -1,0 +1,52 @@
+#pragma once
+
+#include <map>
+#include <set>
+#include <utility>
+#include <string>
+#include <vector>
+
+#include "report/html/report_layout.h"
+#include "report/model/sweep_model.h"
+
+namespace slamsweep::report {
+
+/// What WriteReport made for one run, for its page: which images exist and why others do not.
+struct RunArtifacts {
+  bool thumbnail = false;  ///< RunDir/thumbnail.png
+  bool overlay = false;    ///< RunDir/trajectory.png
+  bool gif = false;        ///< RunDir/stages.gif
+  std::vector<std::string> notes;      ///< why an image or file is missing
+  std::vector<std::string> downloads;  ///< file names copied into RunDir, in display order
+  std::string log_tail;                ///< last lines of log.txt (raw text)
+  bool log_truncated = false;
+};
+
+/// One metric plot of a sequence.
+struct PlotArtifact {
+  std::string metric;
+  std::string title;
+  std::string path;  ///< relative to the report root
+  bool made = false;
+  std::string note;  ///< why it is missing
+};
+
+/// Everything the page renderers read. Pages are pure functions of it.
+struct SiteData {
+  const SweepModel* model = nullptr;
+  const ReportLayout* layout = nullptr;
+  std::string title;                   ///< "slamsweep report — <result dir name>"
+  std::vector<RunArtifacts> runs;      ///< parallel to model->runs
+  std::map<std::string, std::vector<PlotArtifact>> plots;  ///< by sequence name
+  bool has_summary_json = false;
+  std::set<std::pair<std::string, std::string>> pose_logs;  ///< (algorithm, sequence) with files/.../pose_log.tum
+};
+
+/// The pages. `root` is the relative path back to the report root ("" or "../").
+std::string RenderIndexPage(const SiteData& site);
+std::string RenderSequencePage(const SiteData& site, const SequenceModel& sequence);
+std::string RenderRunPage(const SiteData& site, std::size_t run);
+/// style.css: the only styling of the site (no inline styles: Jenkins' CSP forbids them).
+std::string_view StyleSheet();
+
+}  // namespace slamsweep::report

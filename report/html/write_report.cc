@@ -1,0 +1,400 @@
+#include "report/html/write_report.h"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <fstream>
+#include <functional>
+#include <mutex>
+#include <sstream>
+#include <system_error>
+#include <thread>
+
+#include "evaluator/core/input_error.h"
+#include "report/html/report_layout.h"
+#include "report/html/site_data.h"
+#include "report/html/text_outputs.h"
+#include "report/model/load_runs.h"
+#include "report/model/sweep_model.h"
+
+namespace slamsweep::report {
+
+namespace {
+
+namespace fs = std::filesystem;
+using evaluator::InputError;
+
+// Marks a folder as made by this command, so that a re-run may clear it and a typo in -o
+// (say, the home folder) is refused instead of filled with report files.
+constexpr const char* kMarker = ".slamsweep-report";
+
+// Files of a run folder (orchestrator/DESIGN.md) offered for download, in display order. Fixed
+// names only: paths named inside result.json are not trusted to stay inside the run folder.
+constexpr const char* kDownloads[] = {"map.pgm",   "map.yaml",    "trajectory.tum", "reference.tum", "map.geojson",
+                                      "log.txt",   "command.txt", "run.json",       "result.json"};
+
+void WriteTextFile(const fs::path& path, std::string_view content) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(content.data(), static_cast<std::streamsize>(content.size()));
+  out.close();
+  if (!out) throw InputError(path.string() + ": cannot write");
+}
+
+void MakeDirectories(const fs::path& dir) {
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error) throw InputError(dir.string() + ": cannot create folder (" + error.message() + ")");
+}
+
+void PrepareOutputDir(const fs::path& out_dir) {
+  std::error_code error;
+  if (fs::exists(out_dir, error)) {
+    if (!fs::is_directory(out_dir, error)) throw InputError(out_dir.string() + ": exists and is not a folder");
+    const bool empty = fs::directory_iterator(out_dir, error) == fs::directory_iterator();
+    if (!empty && !fs::exists(out_dir / kMarker, error)) {
+      throw InputError(out_dir.string() + ": not empty and not a slamsweep report; choose another -o folder");
+    }
+    for (const char* part : {"runs", "sequences", "plots", "files"}) fs::remove_all(out_dir / part, error);
+  }
+  for (const char* part : {"", "runs", "sequences", "plots", "files"}) MakeDirectories(out_dir / part);
+  WriteTextFile(out_dir / kMarker, "made by slamsweep report\n");
+}
+
+bool IsRegularFile(const fs::path& path) {
+  std::error_code error;
+  return fs::symlink_status(path, error).type() == fs::file_type::regular;
+}
+
+bool IsSafeRelative(const std::string& text) {
+  const fs::path path(text);
+  if (text.empty() || path.is_absolute()) return false;
+  for (const fs::path& part : path) {
+    if (part == "..") return false;
+  }
+  return true;
+}
+
+std::vector<fs::path> StagePaths(const RunRecord& run) {
+  std::vector<fs::path> stages;
+  for (const std::string& stage : run.outputs.stages) {
+    if (IsSafeRelative(stage) && IsRegularFile(run.dir / stage)) stages.push_back(run.dir / stage);
+  }
+  if (!stages.empty() || !run.outputs.stages.empty()) return stages;
+  std::error_code error;
+  for (fs::directory_iterator it(run.dir / "stages", error), end; !error && it != end; it.increment(error)) {
+    if (it->path().extension() == ".png" && IsRegularFile(it->path())) stages.push_back(it->path());
+  }
+  std::sort(stages.begin(), stages.end());
+  return stages;
+}
+
+struct LogTail {
+  std::string text;
+  bool truncated = false;
+};
+
+LogTail ReadLogTail(const fs::path& log, std::size_t max_lines) {
+  constexpr std::streamoff kMaxBytes = 64 * 1024;
+  LogTail tail;
+  std::ifstream in(log, std::ios::binary | std::ios::ate);
+  if (!in) return tail;
+  const std::streamoff size = in.tellg();
+  const std::streamoff start = std::max<std::streamoff>(0, size - kMaxBytes);
+  in.seekg(start);
+  std::string content(static_cast<std::size_t>(size - start), '\0');
+  in.read(content.data(), static_cast<std::streamsize>(content.size()));
+  tail.truncated = start > 0;
+  std::size_t lines = 0;
+  std::size_t pos = content.size();
+  if (pos > 0 && content[pos - 1] == '\n') --pos;
+  while (pos > 0) {
+    const std::size_t newline = content.rfind('\n', pos - 1);
+    if (++lines > max_lines) {
+      tail.truncated = true;
+      break;
+    }
+    if (newline == std::string::npos) {
+      pos = 0;
+      break;
+    }
+    pos = newline;
+  }
+  tail.text = content.substr(pos == 0 ? 0 : pos + 1);
+  return tail;
+}
+
+// Calls fn(i) for i in [0, n) on `threads` threads; fn must only touch data of its own i.
+void ParallelFor(std::size_t n, int threads, const std::function<void(std::size_t)>& fn) {
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  auto worker = [&] {
+    for (std::size_t i = next++; i < n; i = next++) {
+      try {
+        fn(i);
+      } catch (...) {
+        std::lock_guard lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  };
+  {
+    std::vector<std::jthread> pool;
+    for (int t = 1; t < std::max(threads, 1); ++t) pool.emplace_back(worker);
+    worker();
+  }
+  if (failure) std::rethrow_exception(failure);
+}
+
+// One image to make: `make` runs on a worker thread; `done` runs afterwards on the calling thread.
+struct ImageJob {
+  std::function<void()> make;
+  std::function<void(const std::string& error)> done;  ///< error empty when made
+};
+
+void RunImageJobs(std::vector<ImageJob>& jobs, int threads) {
+  std::vector<std::string> errors(jobs.size());
+  ParallelFor(jobs.size(), threads, [&](std::size_t i) {
+    try {
+      jobs[i].make();
+    } catch (const std::exception& error) {
+      errors[i] = error.what();
+      if (errors[i].empty()) errors[i] = "unknown error";
+    }
+  });
+  for (std::size_t i = 0; i < jobs.size(); ++i) jobs[i].done(errors[i]);
+}
+
+struct PlotSpec {
+  const MetricColumn* column;
+  std::size_t index;
+  bool trajectory;
+};
+
+std::vector<PlotRequest> PlanPlots(const SweepModel& model, const ReportLayout& layout, const fs::path& out_dir,
+                                   SiteData& site) {
+  std::vector<PlotRequest> requests;
+  for (const SequenceModel& sequence : model.sequences) {
+    std::vector<PlotSpec> specs;
+    for (std::size_t c = 0; c < sequence.trajectory_columns.size(); ++c) {
+      if (sequence.trajectory_columns[c].metric == "ape_trans") specs.push_back({&sequence.trajectory_columns[c], c, true});
+    }
+    for (std::size_t c = 0; c < sequence.map_columns.size(); ++c) specs.push_back({&sequence.map_columns[c], c, false});
+    for (const PlotSpec& spec : specs) {
+      const MetricColumn& column = *spec.column;
+      PlotRequest request;
+      request.title = sequence.name + ": " + column.title + (column.spec.empty() ? "" : ", " + column.spec);
+      request.y_label = column.title + (column.unit.empty() ? "" : " (" + column.unit + ")");
+      request.log_scale = true;
+      for (const AlgorithmRow& row : sequence.rows) {
+        const MetricCell& cell = spec.trajectory ? row.trajectory_cells[spec.index] : row.map_cells[spec.index];
+        if (!cell.values.empty()) request.series.push_back({row.algorithm, cell.values});
+      }
+      if (request.series.empty()) continue;
+      PlotArtifact artifact;
+      artifact.metric = column.metric;
+      artifact.title = request.title;
+      artifact.path = layout.Plot(sequence.name, column.metric + (column.spec.empty() ? "" : "-" + column.spec));
+      artifact.note = "no image maker configured";
+      request.png = out_dir / artifact.path;
+      site.plots[sequence.name].push_back(artifact);
+      requests.push_back(std::move(request));
+    }
+  }
+  return requests;
+}
+
+// A hard link where the file system allows (a report of 1,000 runs would otherwise copy every
+// map and log), else a copy. The report is a snapshot to read, so sharing the bytes is safe.
+void LinkOrCopy(const fs::path& from, const fs::path& to, std::error_code& error) {
+  fs::remove(to, error);
+  fs::create_hard_link(from, to, error);
+  if (error) fs::copy_file(from, to, fs::copy_options::overwrite_existing, error);
+}
+
+void CopyDownloads(const RunRecord& run, const fs::path& run_out, RunArtifacts& artifacts) {
+  for (const char* name : kDownloads) {
+    if (!IsRegularFile(run.dir / name)) continue;
+    std::error_code error;
+    LinkOrCopy(run.dir / name, run_out / name, error);
+    if (error) {
+      artifacts.notes.push_back(std::string(name) + " could not be copied: " + error.message());
+    } else {
+      artifacts.downloads.push_back(name);
+    }
+  }
+}
+
+OverlaySettings OverlaySettingsOf(const RunRecord& run) {
+  OverlaySettings settings;
+  const auto evaluation = run.run_spec.find("evaluation");
+  if (evaluation == run.run_spec.end() || !evaluation->is_object()) return settings;
+  if (const auto align = evaluation->find("align"); align != evaluation->end() && align->is_string()) {
+    settings.align = align->get<std::string>();
+  }
+  if (const auto t = evaluation->find("t_max_diff_s"); t != evaluation->end() && t->is_number()) {
+    settings.t_max_diff_s = t->get<double>();
+  }
+  return settings;
+}
+
+void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const fs::path& out_dir,
+                   const ReportOptions& options, SiteData& site, std::vector<ImageJob>& jobs) {
+  Artwork* artwork = options.artwork;
+  // Thumbnails are shown in the galleries (median runs) and on pages that have no overlay; other
+  // runs skip them, which saves a third of the images of a large sweep.
+  std::vector<bool> in_gallery(model.runs.size(), false);
+  for (const SequenceModel& sequence : model.sequences) {
+    for (const AlgorithmRow& row : sequence.rows) {
+      if (row.median_run) in_gallery[*row.median_run] = true;
+    }
+  }
+  for (std::size_t i = 0; i < model.runs.size(); ++i) {
+    const RunRecord& run = model.runs[i];
+    const fs::path run_out = out_dir / layout.RunDir(i);
+    RunArtifacts* artifacts = &site.runs[i];
+    auto note = [artifacts](std::string what) {
+      return [artifacts, what](const std::string& error) {
+        if (!error.empty()) artifacts->notes.push_back(what + " not made: " + error);
+      };
+    };
+    const bool has_map = IsRegularFile(run.dir / "map.pgm");
+    const bool can_overlay = has_map && IsRegularFile(run.dir / "map.yaml") && IsRegularFile(run.dir / "trajectory.tum");
+    if (has_map && (in_gallery[i] || !can_overlay)) {
+      jobs.push_back({[=] { artwork->Thumbnail(run.dir / "map.pgm", run_out / "thumbnail.png", options.thumbnail_px); },
+                      [artifacts, run_out, n = note("Map thumbnail")](const std::string& error) {
+                        artifacts->thumbnail = error.empty() && IsRegularFile(run_out / "thumbnail.png");
+                        n(error);
+                      }});
+    }
+    if (can_overlay) {
+      const fs::path reference = IsRegularFile(run.dir / "reference.tum") ? run.dir / "reference.tum" : fs::path();
+      OverlaySettings overlay = OverlaySettingsOf(run);
+      overlay.max_side_px = options.overlay_px;
+      jobs.push_back({[=] {
+                        artwork->TrajectoryOverlay(run.dir / "map.yaml", run.dir / "trajectory.tum", reference,
+                                                   run_out / "trajectory.png", overlay);
+                      },
+                      [artifacts, run_out, n = note("Trajectory over the map")](const std::string& error) {
+                        artifacts->overlay = error.empty() && IsRegularFile(run_out / "trajectory.png");
+                        n(error);
+                      }});
+    }
+    std::vector<fs::path> stages = StagePaths(run);
+    if (!stages.empty()) {
+      jobs.push_back({[=] { artwork->StagesGif(stages, run_out / "stages.gif", options.gif); },
+                      [artifacts, run_out, n = note("Map-building animation")](const std::string& error) {
+                        artifacts->gif = error.empty() && IsRegularFile(run_out / "stages.gif");
+                        n(error);
+                      }});
+    }
+  }
+}
+
+// The paper service's text files per algorithm x sequence (files/<algorithm>/<sequence>/).
+void WritePaperFiles(const SweepModel& model, const ReportLayout& layout, const fs::path& out_dir, SiteData& site) {
+  std::error_code error;
+  for (const SequenceModel& sequence : model.sequences) {
+    for (const AlgorithmRow& row : sequence.rows) {
+      const fs::path files = out_dir / layout.FilesDir(row.algorithm, sequence.name);
+      MakeDirectories(files);
+      WriteTextFile(files / "rmse.txt", RmseText(sequence, row));
+      WriteTextFile(files / "corners.txt", MapMetricText(sequence, row, "corners"));
+      WriteTextFile(files / "occupied_ratio.txt", MapMetricText(sequence, row, "occupied_to_free_unknown"));
+      if (row.median_run && IsRegularFile(model.runs[*row.median_run].dir / "trajectory.tum")) {
+        LinkOrCopy(model.runs[*row.median_run].dir / "trajectory.tum", files / "pose_log.tum", error);
+        if (!error) site.pose_logs.insert({row.algorithm, sequence.name});
+      }
+    }
+  }
+}
+
+// Marks the plots whose files exist and counts the images made and not made. Without an image
+// maker nothing counts as missing: the user asked for no images.
+ReportSummary CountImages(const fs::path& out_dir, bool drawing, SiteData& site) {
+  ReportSummary summary;
+  for (auto& [sequence, artifacts] : site.plots) {
+    for (PlotArtifact& plot : artifacts) {
+      plot.made = IsRegularFile(out_dir / plot.path);
+      if (plot.made) plot.note.clear();
+      if (plot.made) {
+        ++summary.images;
+      } else if (drawing) {
+        ++summary.images_missing;
+      }
+    }
+  }
+  for (const RunArtifacts& artifacts : site.runs) {
+    summary.images += static_cast<std::size_t>(artifacts.thumbnail) + artifacts.overlay + artifacts.gif;
+    for (const std::string& note : artifacts.notes) summary.images_missing += note.find(" not made: ") != std::string::npos;
+  }
+  return summary;
+}
+
+}  // namespace
+
+ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, const ReportOptions& options) {
+  const SweepModel model = BuildSweepModel(LoadRuns(result_dir));
+  const ReportLayout layout(model);
+  PrepareOutputDir(out_dir);
+
+  SiteData site;
+  site.model = &model;
+  site.layout = &layout;
+  fs::path normal = fs::absolute(result_dir).lexically_normal();
+  if (normal.filename().empty()) normal = normal.parent_path();  // "out/" -> "out"
+  site.title = "slamsweep report — " + normal.filename().string();
+  site.runs.resize(model.runs.size());
+
+  ParallelFor(model.runs.size(), options.jobs, [&](std::size_t i) {
+    const RunRecord& run = model.runs[i];
+    const fs::path run_out = out_dir / layout.RunDir(i);
+    MakeDirectories(run_out);
+    CopyDownloads(run, run_out, site.runs[i]);
+    LogTail tail = ReadLogTail(run.dir / "log.txt", options.log_tail_lines);
+    site.runs[i].log_tail = std::move(tail.text);
+    site.runs[i].log_truncated = tail.truncated;
+  });
+
+  std::vector<PlotRequest> plots = PlanPlots(model, layout, out_dir, site);
+  std::vector<ImageJob> jobs;
+  if (options.artwork != nullptr) {
+    if (!plots.empty()) {
+      Artwork* artwork = options.artwork;
+      jobs.push_back({[artwork, &plots] { artwork->Plots(plots); },
+                      [&site](const std::string& error) {
+                        // Made or not is decided below from the files; this keeps the reason.
+                        for (auto& [sequence, artifacts] : site.plots) {
+                          for (PlotArtifact& plot : artifacts) plot.note = error.empty() ? "the plot file is missing" : error;
+                        }
+                      }});
+    }
+    PlanRunImages(model, layout, out_dir, options, site, jobs);
+  }
+  RunImageJobs(jobs, options.jobs);
+  ReportSummary summary = CountImages(out_dir, options.artwork != nullptr, site);
+
+  std::error_code error;
+  if (IsRegularFile(result_dir / "summary.json")) {
+    fs::copy_file(result_dir / "summary.json", out_dir / "summary.json", fs::copy_options::overwrite_existing, error);
+    site.has_summary_json = !error;
+  } else {
+    fs::remove(out_dir / "summary.json", error);
+  }
+  WriteTextFile(out_dir / "style.css", StyleSheet());
+  WriteTextFile(out_dir / "summary.csv", SummaryCsv(model));
+  WritePaperFiles(model, layout, out_dir, site);
+  WriteTextFile(out_dir / "index.html", RenderIndexPage(site));
+  summary.pages = 1;
+  for (const SequenceModel& sequence : model.sequences) {
+    WriteTextFile(out_dir / layout.SequencePage(sequence.name), RenderSequencePage(site, sequence));
+    ++summary.pages;
+  }
+  ParallelFor(model.runs.size(), options.jobs,
+              [&](std::size_t i) { WriteTextFile(out_dir / layout.RunPage(i), RenderRunPage(site, i)); });
+  summary.pages += model.runs.size();
+  summary.runs = model.runs.size();
+  return summary;
+}
+
+}  // namespace slamsweep::report

@@ -1,0 +1,183 @@
+#include "report/model/load_runs.h"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+#include "evaluator/core/input_error.h"
+
+namespace slamsweep::report {
+
+namespace {
+
+using nlohmann::json;
+using evaluator::InputError;
+
+json ReadJsonFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": cannot open");
+  std::ostringstream content;
+  content << in.rdbuf();
+  try {
+    return json::parse(content.str());
+  } catch (const json::parse_error& error) {
+    throw InputError(path.string() + ": expected JSON (" + error.what() + ")");
+  }
+}
+
+[[noreturn]] void FieldError(const std::filesystem::path& file, std::string_view field, std::string_view expected) {
+  throw InputError(file.string() + ": field '" + std::string(field) + "': expected " + std::string(expected));
+}
+
+// Optional fields: absent or null leave the default; a value of the wrong type is an error,
+// because a silently ignored typo would show a wrong number in the report.
+std::string OptionalString(const json& object, const char* key, const std::filesystem::path& file) {
+  const auto it = object.find(key);
+  if (it == object.end() || it->is_null()) return {};
+  if (!it->is_string()) FieldError(file, key, "a string");
+  return it->get<std::string>();
+}
+
+std::optional<double> OptionalNumber(const json& object, const char* key, const std::filesystem::path& file) {
+  const auto it = object.find(key);
+  if (it == object.end() || it->is_null()) return std::nullopt;
+  if (!it->is_number()) FieldError(file, key, "a number");
+  return it->get<double>();
+}
+
+std::optional<int> OptionalInteger(const json& object, const char* key, const std::filesystem::path& file) {
+  const auto it = object.find(key);
+  if (it == object.end() || it->is_null()) return std::nullopt;
+  if (!it->is_number_integer()) FieldError(file, key, "an integer");
+  return it->get<int>();
+}
+
+std::vector<std::string> OptionalStrings(const json& object, const char* key, const std::filesystem::path& file) {
+  std::vector<std::string> out;
+  const auto it = object.find(key);
+  if (it == object.end() || it->is_null()) return out;
+  if (!it->is_array()) FieldError(file, key, "an array of strings");
+  for (const json& item : *it) {
+    if (!item.is_string()) FieldError(file, key, "an array of strings");
+    out.push_back(item.get<std::string>());
+  }
+  return out;
+}
+
+void ReadRunSpec(const std::filesystem::path& file, RunRecord& run) {
+  run.run_spec = ReadJsonFile(file);
+  if (!run.run_spec.is_object()) throw InputError(file.string() + ": expected a JSON object");
+  const json& spec = run.run_spec;
+  if (const auto it = spec.find("algorithm"); it != spec.end()) {
+    if (!it->is_object()) FieldError(file, "algorithm", "an object");
+    run.algorithm = OptionalString(*it, "name", file);
+  }
+  if (const auto it = spec.find("sequence"); it != spec.end()) {
+    if (!it->is_object()) FieldError(file, "sequence", "an object");
+    run.sequence = OptionalString(*it, "name", file);
+  }
+  if (const auto it = spec.find("noise"); it != spec.end()) {
+    if (!it->is_object()) FieldError(file, "noise", "an object");
+    run.noise = OptionalString(*it, "name", file);
+  }
+  run.iteration = OptionalInteger(spec, "iteration", file).value_or(0);
+}
+
+void ReadResult(const std::filesystem::path& file, RunRecord& run) {
+  const json result = ReadJsonFile(file);
+  if (!result.is_object()) throw InputError(file.string() + ": expected a JSON object");
+  const std::string status = OptionalString(result, "status", file);
+  if (status == "ok") {
+    run.status = RunStatus::kOk;
+  } else if (status == "failed") {
+    run.status = RunStatus::kFailed;
+  } else {
+    FieldError(file, "status", "\"ok\" or \"failed\"");
+  }
+  run.failure_kind = OptionalString(result, "failure_kind", file);
+  run.reason = OptionalString(result, "reason", file);
+  run.exit_code = OptionalInteger(result, "exit_code", file);
+  run.signal = OptionalInteger(result, "signal", file);
+  run.wall_s = OptionalNumber(result, "wall_s", file);
+  run.cpu_s = OptionalNumber(result, "cpu_s", file);
+  run.peak_rss_kb = OptionalNumber(result, "peak_rss_kb", file);
+  run.started_at = OptionalString(result, "started_at", file);
+  run.finished_at = OptionalString(result, "finished_at", file);
+  run.command = OptionalStrings(result, "command", file);
+  run.warnings = OptionalStrings(result, "warnings", file);
+  if (const auto it = result.find("outputs"); it != result.end() && !it->is_null()) {
+    if (!it->is_object()) FieldError(file, "outputs", "an object");
+    run.outputs.map = OptionalString(*it, "map", file);
+    run.outputs.trajectory = OptionalString(*it, "trajectory", file);
+    run.outputs.reference = OptionalString(*it, "reference", file);
+    run.outputs.vector_map = OptionalString(*it, "vector_map", file);
+    run.outputs.log = OptionalString(*it, "log", file);
+    run.outputs.stages = OptionalStrings(*it, "stages", file);
+  }
+  if (const auto it = result.find("metrics"); it != result.end() && !it->is_null()) {
+    if (!it->is_array()) FieldError(file, "metrics", "an array of {metric, statistic, value, unit}");
+    for (std::size_t i = 0; i < it->size(); ++i) {
+      const json& item = (*it)[i];
+      const std::string field = "metrics[" + std::to_string(i) + "]";
+      if (!item.is_object()) FieldError(file, field, "an object {metric, statistic, value, unit}");
+      FlatMetric metric;
+      metric.metric = OptionalString(item, "metric", file);
+      metric.statistic = OptionalString(item, "statistic", file);
+      metric.unit = OptionalString(item, "unit", file);
+      const std::optional<double> value = OptionalNumber(item, "value", file);
+      if (metric.metric.empty() || metric.statistic.empty()) FieldError(file, field, "non-empty metric and statistic");
+      // A metric without a value (null) is a metric that could not be computed: leave it out.
+      if (!value) continue;
+      metric.value = *value;
+      run.metrics.push_back(std::move(metric));
+    }
+  }
+  if (const auto it = result.find("metric_details"); it != result.end() && it->is_object()) run.metric_details = *it;
+}
+
+}  // namespace
+
+RunRecord LoadRun(const std::filesystem::path& run_dir) {
+  RunRecord run;
+  run.dir = run_dir;
+  run.run_id = run_dir.filename().string();
+  try {
+    ReadRunSpec(run_dir / "run.json", run);
+    if (std::filesystem::exists(run_dir / "result.json")) {
+      ReadResult(run_dir / "result.json", run);
+    } else {
+      run.status = RunStatus::kUnfinished;
+      run.reason = "no result.json: the run was interrupted or has not finished";
+    }
+  } catch (const std::exception& error) {
+    run.status = RunStatus::kUnreadable;
+    run.reason = error.what();
+  }
+  if (run.algorithm.empty()) run.algorithm = "?";
+  if (run.sequence.empty()) run.sequence = "?";
+  return run;
+}
+
+std::vector<RunRecord> LoadRuns(const std::filesystem::path& result_dir) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(result_dir, error)) {
+    throw InputError(result_dir.string() + ": expected a sweep output directory (with runs/ and summary.json)");
+  }
+  const std::filesystem::path runs_dir = result_dir / "runs";
+  if (!std::filesystem::is_directory(runs_dir, error)) {
+    throw InputError(runs_dir.string() + ": missing; expected the runs/<run-id>/ folders of a sweep");
+  }
+  std::vector<std::filesystem::path> dirs;
+  for (const auto& entry : std::filesystem::directory_iterator(runs_dir)) {
+    if (entry.is_directory()) dirs.push_back(entry.path());
+  }
+  std::sort(dirs.begin(), dirs.end());
+  std::vector<RunRecord> runs;
+  runs.reserve(dirs.size());
+  for (const auto& dir : dirs) runs.push_back(LoadRun(std::filesystem::absolute(dir)));
+  return runs;
+}
+
+}  // namespace slamsweep::report

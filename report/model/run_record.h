@@ -1,0 +1,72 @@
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace slamsweep::report {
+
+/// What became of a run, as far as its folder tells.
+enum class RunStatus {
+  kOk,          ///< result.json says "ok"
+  kFailed,      ///< result.json says "failed" (the reason is in `reason`)
+  kUnfinished,  ///< run.json but no result.json: interrupted or still running
+  kUnreadable,  ///< run.json or result.json could not be read (the error is in `reason`)
+};
+
+/// "ok", "failed", "unfinished", "unreadable".
+std::string_view RunStatusName(RunStatus status);
+
+/// One flat metric of result.json, e.g. {"ape_trans", "rmse", 0.12, "m"}.
+struct FlatMetric {
+  std::string metric;
+  std::string statistic;
+  double value = 0.0;
+  std::string unit;
+};
+
+/// File names from result.json's `outputs`, relative to the run folder; empty when absent.
+struct RunOutputs {
+  std::string map;
+  std::string trajectory;
+  std::string reference;
+  std::string vector_map;
+  std::string log;
+  std::vector<std::string> stages;
+};
+
+/// One run of a sweep as the report sees it: run.json and result.json of runs/<id>/ (orchestrator/DESIGN.md).
+/// Every string is untrusted input: pages escape it and file names are derived with SafeFileName.
+struct RunRecord {
+  std::string run_id;          ///< the folder name (what exists on disk)
+  std::filesystem::path dir;   ///< absolute run folder
+  std::string algorithm;       ///< "?" when unknown
+  std::string sequence;        ///< "?" when unknown
+  std::string noise;
+  int iteration = 0;
+  RunStatus status = RunStatus::kUnfinished;
+  std::string failure_kind;
+  std::string reason;
+  std::optional<int> exit_code;
+  std::optional<int> signal;
+  std::optional<double> wall_s;
+  std::optional<double> cpu_s;
+  std::optional<double> peak_rss_kb;
+  std::string started_at;
+  std::string finished_at;
+  std::vector<std::string> command;
+  RunOutputs outputs;
+  std::vector<FlatMetric> metrics;
+  nlohmann::json metric_details = nlohmann::json::object();
+  nlohmann::json run_spec = nlohmann::json::object();  ///< run.json as read (the resolved configuration)
+  std::vector<std::string> warnings;
+
+  /// The value of a flat metric, if the run has it.
+  std::optional<double> Metric(std::string_view metric, std::string_view statistic) const;
+  /// The unit of a flat metric ("" if absent).
+  std::string MetricUnit(std::string_view metric, std::string_view statistic) const;
+};
+
+}  // namespace slamsweep::report

@@ -1,0 +1,158 @@
+// `slamsweep plan|run|merge|report` in-process, as the Jenkins scripts call them.
+#include <stdlib.h>
+
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/run_cli.h"
+#include "tests/support/shared_data.h"
+
+namespace slamsweep {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::RunCli;
+
+/// Workers are started as a program: inside this test binary that must be the real slamsweep.
+const bool kWorkerProgramSet = setenv("SLAMSWEEP_WORKER_PROGRAM", SLAMSWEEP_BINARY, 1) == 0;
+
+std::string Repo(const std::string& relative) { return std::string(SLAMSWEEP_SOURCE_DIR) + "/" + relative; }
+
+nlohmann::json ReadJson(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return nlohmann::json::parse(text.str());
+}
+
+std::size_t CountLines(const std::string& text, const std::string& part) {
+  std::size_t count = 0;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) count += line.find(part) != std::string::npos ? 1 : 0;
+  return count;
+}
+
+TEST(PlanCommand, ListsTheQuickstartMatrixAndItsSelections) {
+  const auto all = RunCli({"plan", Repo("configs/quickstart.yaml")});
+  ASSERT_EQ(all.exit_code, 0) << all.err;
+  // 3 algorithms x 2 sequences x 1 noise x 3 iterations, one line each, then the count.
+  EXPECT_THAT(all.out, HasSubstr("18 runs"));
+  const auto some = RunCli({"plan", Repo("configs/quickstart.yaml"), "--only-algorithms", "odometry,icp-slam",
+                            "--only-sequences", "floor", "--iterations", "1", "--json"});
+  ASSERT_EQ(some.exit_code, 0) << some.err;
+  const nlohmann::json runs = nlohmann::json::parse(some.out);
+  ASSERT_EQ(runs.size(), 2u);
+  for (const auto& run : runs) {
+    EXPECT_EQ(run["sequence"]["name"], "floor");
+    EXPECT_EQ(run["iteration"], 0);
+  }
+}
+
+TEST(PlanCommand, ASelectionKeepsRunIdsSoAShortSweepSharesResultsWithTheLongOne) {
+  const auto full = nlohmann::json::parse(RunCli({"plan", Repo("configs/quickstart.yaml"), "--json"}).out);
+  const auto first = nlohmann::json::parse(
+      RunCli({"plan", Repo("configs/quickstart.yaml"), "--json", "--iterations", "1"}).out);
+  std::set<std::string> ids;
+  for (const auto& run : full) ids.insert(run["run_id"].get<std::string>());
+  ASSERT_EQ(first.size(), 6u);
+  for (const auto& run : first) EXPECT_EQ(ids.count(run["run_id"].get<std::string>()), 1u) << run["run_id"];
+}
+
+TEST(PlanCommand, UnknownNamesAndBadConfigsExitTwoNamingTheProblem) {
+  const auto unknown = RunCli({"plan", Repo("configs/quickstart.yaml"), "--only-algorithms", "gmapping"});
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_THAT(unknown.err, HasSubstr("--only-algorithms: no 'gmapping' in the config (it has: icp-slam"));
+  slamsweep::testing::TempDir dir;
+  const auto config = slamsweep::testing::WriteFile(dir / "bad.yaml", "name: bad\niterations: two\n");
+  const auto bad = RunCli({"plan", config.string()});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_THAT(bad.err, HasSubstr("bad.yaml:2:"));
+  EXPECT_THAT(bad.err, HasSubstr("iterations"));
+}
+
+/// A sweep of the odometry baseline and a command that fails, on a short simulated sequence.
+std::filesystem::path SmallSweep(const slamsweep::testing::TempDir& dir, bool with_failing_program) {
+  std::string text =
+      "name: small\noutput: out\niterations: 2\nseed: 7\nworkers: 2\nevaluation: {stages: 4}\n"
+      "algorithms:\n  - name: odometry\n    adapter: odometry\n";
+  if (with_failing_program) {
+    text += "  - name: broken\n    adapter: command\n    timeout_s: 30\n    command:\n"
+            "      argv: [/bin/false]\n      input_format: tum\n      trajectory: {path: traj.tum, format: tum}\n";
+  }
+  text += "noise:\n  - name: noisy\n    odometry: {alpha1: 0.01, alpha3: 0.01}\n"
+          "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 40}\n";
+  return slamsweep::testing::WriteFile(dir / "small.yaml", text);
+}
+
+TEST(RunCommand, WritesResultsJUnitAndReportAndSkipsFinishedRunsTheSecondTime) {
+  ASSERT_TRUE(kWorkerProgramSet);
+  slamsweep::testing::TempDir dir;
+  const auto config = SmallSweep(dir, false);
+  const auto first = RunCli({"run", config.string()});
+  ASSERT_EQ(first.exit_code, 0) << first.out << first.err;
+  EXPECT_THAT(first.out, HasSubstr("2 ok, 0 failed"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "out/results.sqlite"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "out/junit.xml"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "out/report/index.html"));
+  const nlohmann::json summary = ReadJson(dir / "out/summary.json");
+  ASSERT_EQ(summary["runs"].size(), 2u);
+  for (const auto& run : summary["runs"]) {
+    EXPECT_EQ(run["status"], "ok");
+    EXPECT_GT(run["metrics"]["ape_trans"]["rmse"].get<double>(), 0.0) << "noisy odometry has an error";
+    EXPECT_TRUE(run["metrics"].contains("corners"));
+  }
+  const auto again = RunCli({"run", config.string(), "--no-report"});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_THAT(again.out, HasSubstr("0 ok, 0 failed, 2 done earlier"));
+}
+
+TEST(RunCommand, AFailingProgramIsRecordedAndTheSweepExitsOne) {
+  slamsweep::testing::TempDir dir;
+  const auto run = RunCli({"run", SmallSweep(dir, true).string(), "--no-report"});
+  EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
+  EXPECT_THAT(run.out, HasSubstr("2 ok, 2 failed"));
+  const nlohmann::json summary = ReadJson(dir / "out/summary.json");
+  std::size_t failed = 0;
+  for (const auto& entry : summary["runs"]) {
+    if (entry["status"] == "failed") {
+      ++failed;
+      EXPECT_EQ(entry["algorithm"], "broken");
+      EXPECT_EQ(entry["failure_kind"], "exit_code");
+    }
+  }
+  EXPECT_EQ(failed, 2u);
+  std::ifstream junit(dir / "out/junit.xml");
+  std::stringstream xml;
+  xml << junit.rdbuf();
+  EXPECT_EQ(CountLines(xml.str(), "<failure"), 2u) << xml.str();
+}
+
+TEST(MergeCommand, ShardsMergedEqualTheWholeSweep) {
+  slamsweep::testing::TempDir dir;
+  const auto config = SmallSweep(dir, false);
+  ASSERT_EQ(RunCli({"run", config.string(), "--no-report", "-o", (dir / "whole").string()}).exit_code, 0);
+  ASSERT_EQ(RunCli({"run", config.string(), "--no-report", "--shard", "1/2", "-o", (dir / "s1").string()}).exit_code, 0);
+  ASSERT_EQ(RunCli({"run", config.string(), "--no-report", "--shard", "2/2", "-o", (dir / "s2").string()}).exit_code, 0);
+  const auto merged = RunCli({"merge", (dir / "s1").string(), (dir / "s2").string(), "-o", (dir / "merged").string(),
+                              "--no-report"});
+  ASSERT_EQ(merged.exit_code, 0) << merged.err;
+  auto by_id = [](const nlohmann::json& summary) {
+    std::map<std::string, nlohmann::json> runs;
+    for (const auto& run : summary["runs"]) runs[run["run_id"].get<std::string>()] = run["metrics"];
+    return runs;
+  };
+  const auto whole = by_id(ReadJson(dir / "whole/summary.json"));
+  const auto parts = by_id(ReadJson(dir / "merged/summary.json"));
+  ASSERT_EQ(whole.size(), 2u);
+  // The odometry baseline is deterministic: the same runs give the same metrics to the last bit.
+  EXPECT_EQ(whole, parts);
+}
+
+}  // namespace
+}  // namespace slamsweep

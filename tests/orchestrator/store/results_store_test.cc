@@ -1,0 +1,284 @@
+#include "orchestrator/store/results_store.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "evaluator/core/input_error.h"
+#include "orchestrator/store/sqlite_db.h"
+#include "tests/orchestrator/store/store_test_util.h"
+#include "tests/support/shared_data.h"
+
+namespace slamsweep::orchestrator {
+namespace {
+
+using evaluator::InputError;
+using ::testing::HasSubstr;
+using testing::MakeFailedResult;
+using testing::MakeOkResult;
+using testing::MakeSpec;
+
+std::string ErrorOf(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no InputError";
+}
+
+std::int64_t QueryInt(const std::filesystem::path& file, const std::string& sql) {
+  SqliteDb db = SqliteDb::Open(file, false);
+  auto statement = db.Prepare(sql);
+  EXPECT_TRUE(statement.Step()) << sql;
+  return statement.Int64(0);
+}
+
+TEST(ResultsStoreTest, CreatesSchemaAndReopens) {
+  slamsweep::testing::TempDir dir;
+  const auto file = dir / "results.sqlite";
+  {
+    ResultsStore store = ResultsStore::Open(file);
+    SweepInfo info;
+    info.name = "quick";
+    info.config_sha = "abc";
+    info.host = "node1";
+    const std::int64_t sweep = store.BeginSweep(info);
+    store.RecordRun(sweep, MakeSpec("r1"), MakeOkResult("r1"), "runs/r1");
+    store.FinishSweep(sweep, "ok", 1);
+  }
+  EXPECT_EQ(QueryInt(file, "PRAGMA user_version"), kResultsSchemaVersion);
+  EXPECT_EQ(QueryInt(file, "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name IN "
+                           "('sweeps', 'runs', 'metrics', 'metric_specs')"),
+            4);
+  EXPECT_EQ(QueryInt(file, "SELECT count(*) FROM sqlite_master WHERE type = 'index' AND sql LIKE "
+                           "'%(algorithm, sequence)%'"),
+            1);
+  {
+    SqliteDb db = SqliteDb::Open(file, false);
+    auto mode = db.Prepare("PRAGMA journal_mode");
+    ASSERT_TRUE(mode.Step());
+    EXPECT_EQ(mode.Text(0), "wal");
+  }
+  ResultsStore reopened = ResultsStore::Open(file);
+  EXPECT_EQ(reopened.RunStatus("r1"), "ok");
+  EXPECT_EQ(reopened.RunStatus("nope"), std::nullopt);
+  const auto sweeps = reopened.Sweeps();
+  ASSERT_EQ(sweeps.size(), 1u);
+  EXPECT_EQ(sweeps[0].info.name, "quick");
+  EXPECT_EQ(sweeps[0].status, "ok");
+  EXPECT_EQ(sweeps[0].run_count, 1);
+  EXPECT_FALSE(sweeps[0].info.started_at.empty());
+  EXPECT_FALSE(sweeps[0].finished_at.empty());
+}
+
+TEST(ResultsStoreTest, RunsCarryColumnsSpecResultAndMetrics) {
+  slamsweep::testing::TempDir dir;
+  ResultsStore store = ResultsStore::Open(dir / "results.sqlite");
+  const auto spec = MakeSpec("r1", "icp-slam", "intel", 2);
+  const auto result = MakeOkResult("r1", 4.5);
+  store.RecordRun(7, spec, result, "runs/r1");
+  store.RecordRun(7, MakeSpec("r2", "icp-slam", "fr079"), MakeFailedResult("r2"), "runs/r2");
+  const auto runs = store.Runs();
+  ASSERT_EQ(runs.size(), 2u);
+  // Ordered by sequence first: fr079 < intel.
+  EXPECT_EQ(runs[0].run_id, "r2");
+  EXPECT_EQ(runs[0].status, "failed");
+  EXPECT_TRUE(runs[0].metrics.empty());
+  const StoredRun& r1 = runs[1];
+  EXPECT_EQ(r1.sweep_id, 7);
+  EXPECT_EQ(r1.spec, spec);
+  EXPECT_EQ(r1.result, result);
+  EXPECT_EQ(r1.algorithm, "icp-slam");
+  EXPECT_EQ(r1.sequence, "intel");
+  EXPECT_EQ(r1.noise, "clean");
+  EXPECT_EQ(r1.iteration, 2);
+  EXPECT_EQ(r1.run_dir, "runs/r1");
+  EXPECT_EQ(r1.wall_s, 4.5);
+  EXPECT_EQ(r1.finished_at, "2026-11-22T05:00:03Z");
+  ASSERT_EQ(r1.metrics.size(), 3u);
+  EXPECT_EQ(r1.metrics[0].metric, "ape_trans");
+  EXPECT_EQ(r1.metrics[0].statistic, "rmse");
+  EXPECT_EQ(r1.metrics[0].value, 0.12);
+  EXPECT_EQ(r1.metrics[0].unit, "m");
+  EXPECT_EQ(r1.metrics[2].metric, "corners");
+  EXPECT_EQ(r1.metrics[2].value, 17.0);
+  const auto found = store.FindRun("r1");
+  ASSERT_TRUE(found.has_value());
+  EXPECT_EQ(found->metrics.size(), 3u);
+  EXPECT_EQ(QueryInt(dir / "results.sqlite", "SELECT count(*) FROM metric_specs WHERE run_id = 'r1'"), 1);
+  EXPECT_EQ(QueryInt(dir / "results.sqlite", "SELECT seed FROM runs WHERE run_id = 'r1'"), 123456789);
+}
+
+TEST(ResultsStoreTest, RecordRunReplacesTheRunAndAllItsMetrics) {
+  slamsweep::testing::TempDir dir;
+  ResultsStore store = ResultsStore::Open(dir / "results.sqlite");
+  store.RecordRun(1, MakeSpec("r1"), MakeOkResult("r1"), "runs/r1");
+  auto second = MakeOkResult("r1", 9.0, 0.5);
+  second["metrics"] = {{{"metric", "rpe_rot"}, {"statistic", "max"}, {"value", 2.0}, {"unit", "deg"}}};
+  second["metric_details"] = nlohmann::json::object();
+  store.RecordRun(1, MakeSpec("r1"), second, "runs/r1");
+  const auto run = store.FindRun("r1");
+  ASSERT_TRUE(run.has_value());
+  ASSERT_EQ(run->metrics.size(), 1u);
+  EXPECT_EQ(run->metrics[0].metric, "rpe_rot");
+  EXPECT_EQ(run->wall_s, 9.0);
+  EXPECT_EQ(store.Runs().size(), 1u);
+  EXPECT_EQ(QueryInt(dir / "results.sqlite", "SELECT count(*) FROM metrics"), 1);
+  EXPECT_EQ(QueryInt(dir / "results.sqlite", "SELECT count(*) FROM metric_specs"), 0);
+  // A failed re-run leaves no metrics of the earlier ok run behind.
+  store.RecordRun(1, MakeSpec("r1"), MakeFailedResult("r1"), "runs/r1");
+  EXPECT_EQ(store.RunStatus("r1"), "failed");
+  EXPECT_TRUE(store.FindRun("r1")->metrics.empty());
+}
+
+TEST(ResultsStoreTest, NullMetricValuesAndHugeSeedsSurvive) {
+  slamsweep::testing::TempDir dir;
+  ResultsStore store = ResultsStore::Open(dir / "results.sqlite");
+  auto spec = MakeSpec("r1");
+  spec["seed"] = 18446744073709551615ull;
+  auto result = MakeOkResult("r1");
+  result["metrics"] = {{{"metric", "ape_rot"}, {"statistic", "std"}, {"value", nullptr}, {"unit", "deg"}}};
+  store.RecordRun(1, spec, result, "runs/r1");
+  const auto run = store.FindRun("r1");
+  ASSERT_EQ(run->metrics.size(), 1u);
+  EXPECT_FALSE(run->metrics[0].value.has_value());
+  EXPECT_EQ(run->spec.at("seed").get<std::uint64_t>(), 18446744073709551615ull);
+  SqliteDb db = SqliteDb::Open(dir / "results.sqlite", false);
+  auto seed = db.Prepare("SELECT seed FROM runs");
+  ASSERT_TRUE(seed.Step());
+  EXPECT_EQ(seed.Text(0), "18446744073709551615");
+}
+
+TEST(ResultsStoreTest, TypicalWallSecondsIsTheMedianOfOkRuns) {
+  slamsweep::testing::TempDir dir;
+  ResultsStore store = ResultsStore::Open(dir / "results.sqlite");
+  // icp-slam on intel: 1, 10, 3 -> median 3; on fr079: 2, 4 -> mean of the middle two = 3.
+  store.RecordRun(1, MakeSpec("a", "icp-slam", "intel", 0), MakeOkResult("a", 1.0), "runs/a");
+  store.RecordRun(1, MakeSpec("b", "icp-slam", "intel", 1), MakeOkResult("b", 10.0), "runs/b");
+  store.RecordRun(1, MakeSpec("c", "icp-slam", "intel", 2), MakeOkResult("c", 3.0), "runs/c");
+  store.RecordRun(1, MakeSpec("d", "icp-slam", "fr079", 0), MakeOkResult("d", 2.0), "runs/d");
+  store.RecordRun(1, MakeSpec("e", "icp-slam", "fr079", 1), MakeOkResult("e", 4.0), "runs/e");
+  // Failed runs (often timeouts) say nothing about the typical duration.
+  auto failed = MakeFailedResult("f");
+  failed["wall_s"] = 1000.0;
+  store.RecordRun(1, MakeSpec("f", "icp-slam", "fr079", 2), failed, "runs/f");
+  failed["run_id"] = "g";
+  store.RecordRun(1, MakeSpec("g", "rbpf", "fr079", 2), failed, "runs/g");
+  const auto typical = store.TypicalWallSeconds();
+  ASSERT_EQ(typical.size(), 2u);
+  EXPECT_DOUBLE_EQ(typical.at(TypicalWallKey("icp-slam", "intel")), 3.0);
+  EXPECT_DOUBLE_EQ(typical.at("icp-slam\tfr079"), 3.0);
+}
+
+TEST(ResultsStoreTest, BadRunInputNamesTheField) {
+  slamsweep::testing::TempDir dir;
+  ResultsStore store = ResultsStore::Open(dir / "results.sqlite");
+  auto no_id = MakeSpec("r1");
+  no_id.erase("run_id");
+  EXPECT_THAT(ErrorOf([&] { store.RecordRun(1, no_id, MakeOkResult("r1"), "runs/r1"); }),
+              HasSubstr("run.json: run_id: expected a non-empty string"));
+  auto bad_status = MakeOkResult("r1");
+  bad_status["status"] = "great";
+  EXPECT_THAT(ErrorOf([&] { store.RecordRun(1, MakeSpec("r1"), bad_status, "runs/r1"); }),
+              HasSubstr("result.json of run r1: status: expected \"ok\" or \"failed\", found \"great\""));
+  EXPECT_THAT(ErrorOf([&] { store.RecordRun(1, MakeSpec("r1"), MakeOkResult("other"), "runs/r1"); }),
+              HasSubstr("run_id: expected \"r1\""));
+  auto bad_metric = MakeOkResult("r1");
+  bad_metric["metrics"][1]["value"] = "high";
+  EXPECT_THAT(ErrorOf([&] { store.RecordRun(1, MakeSpec("r1"), bad_metric, "runs/r1"); }),
+              HasSubstr("metrics[1].value: expected a number or null"));
+  auto no_statistic = MakeOkResult("r1");
+  no_statistic["metrics"][0].erase("statistic");
+  EXPECT_THAT(ErrorOf([&] { store.RecordRun(1, MakeSpec("r1"), no_statistic, "runs/r1"); }),
+              HasSubstr("metrics[0].statistic: expected a non-empty string"));
+  EXPECT_THAT(ErrorOf([&] { store.RecordRun(1, nlohmann::json::array(), MakeOkResult("r1"), "runs/r1"); }),
+              HasSubstr("run.json: expected a JSON object"));
+  // Nothing half-recorded.
+  EXPECT_TRUE(store.Runs().empty());
+}
+
+TEST(ResultsStoreTest, CorruptFileIsAnErrorNamingTheFileAndWhatToDo) {
+  slamsweep::testing::TempDir dir;
+  const auto file = slamsweep::testing::WriteFile(dir / "results.sqlite", std::string(8192, 'x'));
+  const std::string error = ErrorOf([&] { ResultsStore::Open(file); });
+  EXPECT_THAT(error, HasSubstr(file.string()));
+  EXPECT_THAT(error, HasSubstr("not a database"));
+  EXPECT_THAT(error, HasSubstr("move it away"));
+}
+
+TEST(ResultsStoreTest, DamagedDatabasePagesAreAnError) {
+  slamsweep::testing::TempDir dir;
+  const auto file = dir / "results.sqlite";
+  {
+    ResultsStore store = ResultsStore::Open(file);
+    for (int i = 0; i < 50; ++i) {
+      const std::string id = fmt::format("r{}", i);
+      store.RecordRun(1, MakeSpec(id), MakeOkResult(id), fmt::format("runs/{}", id));
+    }
+  }
+  // Keep the 100-byte header valid, overwrite the rest of every page with garbage.
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  ASSERT_GT(bytes.size(), 4096u);
+  for (std::size_t i = 100; i < bytes.size(); ++i) bytes[i] = static_cast<char>((i * 131) & 0xff);
+  slamsweep::testing::WriteFile(file, bytes);
+  const std::string error = ErrorOf([&] { ResultsStore::Open(file).Runs(); });
+  EXPECT_THAT(error, HasSubstr(file.string()));
+  EXPECT_THAT(error, ::testing::AnyOf(HasSubstr("malformed"), HasSubstr("not a database")));
+}
+
+TEST(ResultsStoreTest, NewerSchemaVersionIsRefused) {
+  slamsweep::testing::TempDir dir;
+  const auto file = dir / "results.sqlite";
+  { ResultsStore::Open(file); }
+  { SqliteDb::Open(file, false).Execute("PRAGMA user_version = 99"); }
+  const std::string error = ErrorOf([&] { ResultsStore::Open(file); });
+  EXPECT_THAT(error, HasSubstr(file.string()));
+  EXPECT_THAT(error, HasSubstr("schema version 99 is newer"));
+}
+
+TEST(ResultsStoreTest, ForeignSqliteDatabaseIsRefused) {
+  slamsweep::testing::TempDir dir;
+  const auto file = dir / "other.sqlite";
+  { SqliteDb::Open(file, true).Execute("CREATE TABLE photos(id INTEGER)"); }
+  EXPECT_THAT(ErrorOf([&] { ResultsStore::Open(file); }), HasSubstr("not a slamsweep results database"));
+}
+
+TEST(ResultsStoreTest, OpenExistingRefusesMissingFile) {
+  slamsweep::testing::TempDir dir;
+  const auto file = dir / "results.sqlite";
+  EXPECT_THAT(ErrorOf([&] { ResultsStore::OpenExisting(file); }), HasSubstr(file.string() + ": no such"));
+  EXPECT_FALSE(std::filesystem::exists(file));
+}
+
+TEST(ResultsStoreTest, ImportSweepReusesAnIdenticalSweep) {
+  slamsweep::testing::TempDir dir;
+  ResultsStore store = ResultsStore::Open(dir / "results.sqlite");
+  StoredSweep sweep;
+  sweep.id = 42;
+  sweep.info.name = "s";
+  sweep.info.config_sha = "x";
+  sweep.info.started_at = "2026-01-01T00:00:00Z";
+  sweep.finished_at = "2026-01-01T01:00:00Z";
+  sweep.status = "ok";
+  sweep.run_count = 3;
+  const std::int64_t first = store.ImportSweep(sweep);
+  EXPECT_EQ(store.ImportSweep(sweep), first);
+  sweep.info.host = "other";
+  EXPECT_NE(store.ImportSweep(sweep), first);
+  EXPECT_EQ(store.Sweeps().size(), 2u);
+  EXPECT_EQ(store.Sweeps()[0].run_count, 3);
+}
+
+}  // namespace
+}  // namespace slamsweep::orchestrator

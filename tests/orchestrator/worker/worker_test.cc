@@ -1,0 +1,292 @@
+// RunWorker end to end with fake SLAM programs: small shell scripts declared through the command
+// adapter, each showing one way a run ends. Expected values come from the inputs the test wrote
+// (a trajectory shifted by a known offset, a hand-made map), never from the worker's output.
+
+#include "orchestrator/worker/worker.h"
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <string>
+#include <thread>
+
+#include "evaluator/formats/map/image_file.h"
+#include "evaluator/formats/map/map_server_format.h"
+#include "evaluator/formats/trajectory/tum_format.h"
+#include "orchestrator/adapters/run_inputs.h"
+#include "tests/orchestrator/worker/run_spec_fixture.h"
+#include "tests/support/shared_data.h"
+
+namespace slamsweep::orchestrator {
+namespace {
+
+namespace ev = slamsweep::evaluator;
+namespace fs = std::filesystem;
+using testing::ReadJson;
+using testing::ReadText;
+using testing::WriteScript;
+
+constexpr double kShiftM = 0.3;
+constexpr int kMapSide = 20;
+
+/// The value of one flat metric of result.json, or NaN when it is not there.
+double Metric(const nlohmann::json& result, const std::string& metric, const std::string& statistic) {
+  for (const nlohmann::json& entry : result["metrics"]) {
+    if (entry["metric"] == metric && entry["statistic"] == statistic) return entry["value"].get<double>();
+  }
+  return std::nan("");
+}
+
+class WorkerTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    spec_ = testing::SimulatedRun("command", 60);
+    spec_.evaluation.align = "none";
+    // 60 simulated scans cover under 2 m, too little for two 1 m RPE steps; 0.2 m steps give several.
+    spec_.evaluation.rpe_delta_m = 0.2;
+    // The "estimate": the exact ground truth moved 0.3 m along x. Unaligned, every pose is off by
+    // exactly 0.3 m (APE) while every relative motion is exact (RPE 0).
+    const RunInputs inputs = PrepareRunInputs(spec_);
+    ASSERT_TRUE(inputs.sequence.reference);
+    ev::Trajectory shifted = *inputs.sequence.reference;
+    for (ev::Pose& pose : shifted.mutable_poses()) pose.position.x() += kShiftM;
+    ev::WriteTum(shifted, dir_ / "estimate.tum");
+    // A 20 x 20 room: free inside, one ring of occupied wall cells (76 of 400).
+    ev::OccupancyGrid room(kMapSide, kMapSide, 0.1, {}, 0.0f);
+    for (int i = 0; i < kMapSide; ++i) {
+      room.at(0, i) = room.at(kMapSide - 1, i) = room.at(i, 0) = room.at(i, kMapSide - 1) = 1.0f;
+    }
+    ev::WriteMapServer(room, dir_ / "room.yaml");
+    run_dir_ = dir_ / "runs" / "r1";
+  }
+
+  /// Declares `script` (body of a /bin/sh script, $1 = the raw/ folder) as the run's program.
+  void UseProgram(const std::string& body) {
+    CommandDeclaration declaration;
+    declaration.argv = {WriteScript(dir_ / "program.sh", "cd '" + dir_.path().string() + "' || exit 9\n" + body).string(),
+                        "{output_dir}"};
+    declaration.trajectory = DeclaredOutput{"trajectory.tum", "tum"};
+    declaration.map = DeclaredOutput{"map.yaml", "map_server"};
+    spec_.algorithm.command = declaration;
+  }
+
+  nlohmann::json Run() {
+    testing::WriteRunJson(run_dir_, spec_);
+    EXPECT_EQ(RunWorker(run_dir_), kWorkerWroteResult);
+    return ReadJson(run_dir_ / "result.json");
+  }
+
+  static constexpr const char* kWriteOutputs =
+      "cp estimate.tum \"$1/trajectory.tum\" && cp room.yaml room.pgm \"$1/\" && mv \"$1/room.yaml\" \"$1/map.yaml\"";
+
+  slamsweep::testing::TempDir dir_;
+  fs::path run_dir_;
+  RunSpec spec_;
+};
+
+TEST_F(WorkerTest, AProgramThatWritesItsOutputsGivesAnOkRunWithMetrics) {
+  UseProgram(kWriteOutputs);
+  const nlohmann::json result = Run();
+  EXPECT_EQ(result["status"], "ok") << result.dump(2);
+  EXPECT_TRUE(result["failure_kind"].is_null());
+  EXPECT_EQ(result["exit_code"], 0);
+  EXPECT_EQ(result["run_id"], "test-run");
+  EXPECT_NEAR(Metric(result, "ape_trans", "rmse"), kShiftM, 1e-9);
+  EXPECT_NEAR(Metric(result, "ape_trans", "max"), kShiftM, 1e-9);
+  EXPECT_NEAR(Metric(result, "ape_rot", "rmse"), 0.0, 1e-6);
+  EXPECT_NEAR(Metric(result, "rpe_trans", "rmse"), 0.0, 1e-9) << result["warnings"];
+  // The room: 76 wall cells of 400, nothing unknown.
+  EXPECT_NEAR(Metric(result, "occupied_to_all", "value"), 76.0 / 400.0, 1e-12);
+  EXPECT_NEAR(Metric(result, "occupied_to_free_unknown", "value"), 76.0 / 324.0, 1e-12);
+  EXPECT_EQ(Metric(result, "unknown_to_all", "value"), 0.0);
+  EXPECT_FALSE(std::isnan(Metric(result, "corners", "value")));
+  EXPECT_FALSE(std::isnan(Metric(result, "enclosed_areas", "value")));
+  EXPECT_EQ(result["metric_details"]["ape_trans"]["specification"]["alignment"], "none");
+  EXPECT_TRUE(result["metric_details"].contains("paper_map"));
+
+  const nlohmann::json& outputs = result["outputs"];
+  EXPECT_EQ(outputs["map"], "map.yaml");
+  EXPECT_EQ(outputs["trajectory"], "trajectory.tum");
+  EXPECT_EQ(outputs["reference"], "reference.tum");
+  EXPECT_EQ(outputs["vector_map"], "map.geojson");
+  EXPECT_EQ(outputs["log"], "log.txt");
+  ASSERT_EQ(outputs["stages"].size(), spec_.evaluation.stages);
+  for (const nlohmann::json& stage : outputs["stages"]) EXPECT_TRUE(fs::exists(run_dir_ / stage.get<std::string>()));
+  for (const char* file : {"map.yaml", "map.pgm", "trajectory.tum", "reference.tum", "map.geojson", "command.txt"}) {
+    EXPECT_TRUE(fs::exists(run_dir_ / file)) << file;
+  }
+  EXPECT_EQ(ReadText(run_dir_ / "command.txt"), (dir_ / "program.sh").string() + "\n" + (run_dir_ / "raw").string() + "\n");
+  EXPECT_EQ(ev::ReadMapServer(run_dir_ / "map.yaml").width, kMapSide);
+  EXPECT_FALSE(fs::exists(run_dir_ / "result.json.tmp"));
+}
+
+TEST_F(WorkerTest, WithoutADeclaredMapTheMapIsRenderedAndStageMapsComeFromTheGlob) {
+  UseProgram("cp estimate.tum \"$1/trajectory.tum\" && mkdir \"$1/stages\" && cp room.pgm \"$1/stages/b.pgm\" && "
+             "cp room.pgm \"$1/stages/a.pgm\" && cp room.pgm \"$1/stages/a.txt\"");
+  spec_.algorithm.command->map.reset();
+  spec_.algorithm.command->stage_maps_glob = "stages/*.pgm";
+  const nlohmann::json result = Run();
+  EXPECT_EQ(result["status"], "ok") << result.dump(2);
+  EXPECT_NE(result["warnings"].dump().find("map rendered from the trajectory"), std::string::npos);
+  // Two files match, in name order; the room's walls (0) stay occupied and its floor (254) free.
+  ASSERT_EQ(result["outputs"]["stages"].size(), 2u);
+  const cv::Mat stage = ev::ReadGreyImageFile(run_dir_ / result["outputs"]["stages"][0].get<std::string>());
+  ASSERT_EQ(stage.rows, kMapSide);
+  EXPECT_EQ(stage.at<std::uint8_t>(0, 0), 0);
+  EXPECT_EQ(stage.at<std::uint8_t>(kMapSide / 2, kMapSide / 2), 254);
+  EXPECT_FALSE(std::isnan(Metric(result, "ape_trans", "rmse")));
+  // The rendered map is at the evaluation's resolution, not the room's 0.1 m.
+  EXPECT_DOUBLE_EQ(ev::ReadMapServer(run_dir_ / "map.yaml").resolution_m, spec_.evaluation.map_resolution_m);
+}
+
+TEST_F(WorkerTest, ASegfaultIsASignalFailure) {
+  UseProgram("kill -SEGV $$");
+  const nlohmann::json result = Run();
+  EXPECT_EQ(result["status"], "failed");
+  EXPECT_EQ(result["failure_kind"], "signal");
+  EXPECT_EQ(result["signal"], SIGSEGV);
+  EXPECT_NE(result["reason"].get<std::string>().find("SIGSEGV"), std::string::npos) << result["reason"];
+  EXPECT_TRUE(result["metrics"].empty());
+}
+
+TEST_F(WorkerTest, AHangingProgramTimesOut) {
+  spec_.algorithm.timeout_s = 1;
+  UseProgram("exec sleep 30");
+  const auto start = std::chrono::steady_clock::now();
+  const nlohmann::json result = Run();
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(15));
+  EXPECT_EQ(result["failure_kind"], "timeout");
+  EXPECT_NE(result["reason"].get<std::string>().find("timed out"), std::string::npos) << result["reason"];
+}
+
+TEST_F(WorkerTest, ANonZeroExitCodeFails) {
+  UseProgram("echo 'bad things' >&2; exit 3");
+  const nlohmann::json result = Run();
+  EXPECT_EQ(result["failure_kind"], "exit_code");
+  EXPECT_EQ(result["exit_code"], 3);
+  EXPECT_EQ(result["reason"], "exit code 3");
+  EXPECT_EQ(ReadText(run_dir_ / "log.txt"), "bad things\n");
+}
+
+TEST_F(WorkerTest, AMissingMapIsMissingOutputNamingTheFile) {
+  UseProgram("cp estimate.tum \"$1/trajectory.tum\"");
+  const nlohmann::json result = Run();
+  EXPECT_EQ(result["failure_kind"], "missing_output");
+  EXPECT_EQ(result["reason"], "no map: raw/map.yaml missing");
+}
+
+TEST_F(WorkerTest, AGarbageMapImageIsCorruptOutputNamingTheFile) {
+  slamsweep::testing::WriteFile(dir_ / "bad.yaml",
+                                "image: map.png\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\n"
+                                "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  UseProgram("cp estimate.tum \"$1/trajectory.tum\" && cp bad.yaml \"$1/map.yaml\" && "
+             "head -c 3000 /dev/urandom > \"$1/map.png\"");
+  const nlohmann::json result = Run();
+  EXPECT_EQ(result["failure_kind"], "corrupt_output") << result.dump(2);
+  const std::string reason = result["reason"];
+  EXPECT_TRUE(reason.starts_with("corrupt map: ")) << reason;
+  EXPECT_NE(reason.find("map.png"), std::string::npos) << reason;
+}
+
+TEST_F(WorkerTest, AFloodOfOutputIsCappedAndTheRunStillCounts) {
+  UseProgram("yes | head -c 100000000\n" + std::string(kWriteOutputs));
+  const nlohmann::json result = Run();
+  EXPECT_EQ(result["status"], "ok") << result.dump(2);
+  EXPECT_LE(fs::file_size(run_dir_ / "log.txt"), (8u << 20) + 1024u);
+  bool noted = false;
+  for (const nlohmann::json& warning : result["warnings"]) {
+    noted = noted || warning.get<std::string>().find("log.txt truncated") != std::string::npos;
+  }
+  EXPECT_TRUE(noted) << result["warnings"];
+}
+
+TEST_F(WorkerTest, AProgramThatCannotStartIsAnInputError) {
+  CommandDeclaration declaration;
+  declaration.argv = {(dir_ / "no-such-program").string()};
+  declaration.trajectory = DeclaredOutput{"t.tum", "tum"};
+  spec_.algorithm.command = declaration;
+  const nlohmann::json result = Run();
+  EXPECT_EQ(result["failure_kind"], "input_error");
+  EXPECT_NE(result["reason"].get<std::string>().find("no-such-program"), std::string::npos) << result["reason"];
+}
+
+TEST_F(WorkerTest, ABadDeclarationIsAnInputErrorInTheResult) {
+  spec_.algorithm.adapter = "gmapping";
+  const nlohmann::json result = Run();
+  EXPECT_EQ(result["failure_kind"], "input_error");
+  EXPECT_NE(result["reason"].get<std::string>().find("algorithm.adapter"), std::string::npos);
+}
+
+TEST_F(WorkerTest, AnUnreadableRunJsonReturnsTwoAndWritesNothing) {
+  fs::create_directories(run_dir_);
+  slamsweep::testing::WriteFile(run_dir_ / "run.json", "{ not json");
+  EXPECT_EQ(RunWorker(run_dir_), kWorkerBadRunJson);
+  EXPECT_FALSE(fs::exists(run_dir_ / "result.json"));
+
+  nlohmann::json json = ToJson(spec_);
+  json["algorithm"]["timeout_s"] = "soon";
+  slamsweep::testing::WriteFile(run_dir_ / "run.json", json.dump());
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(RunWorker(run_dir_), kWorkerBadRunJson);
+  const std::string message = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(message.find("run.json"), std::string::npos) << message;
+  EXPECT_NE(message.find("algorithm.timeout_s"), std::string::npos) << message;
+  EXPECT_FALSE(fs::exists(run_dir_ / "result.json"));
+  EXPECT_EQ(RunWorker(dir_ / "no-such-run"), kWorkerBadRunJson);
+}
+
+TEST_F(WorkerTest, LeftoversOfAnEarlierAttemptAreRemoved) {
+  UseProgram("cp estimate.tum \"$1/trajectory.tum\"");  // writes no map this time
+  fs::create_directories(run_dir_ / "raw");
+  fs::copy_file(dir_ / "room.yaml", run_dir_ / "raw" / "map.yaml");
+  fs::copy_file(dir_ / "room.pgm", run_dir_ / "raw" / "room.pgm");
+  slamsweep::testing::WriteFile(run_dir_ / "result.json.tmp", "half");
+  const nlohmann::json result = Run();
+  // The stale map of the earlier attempt must not be taken for this attempt's.
+  EXPECT_EQ(result["failure_kind"], "missing_output");
+  EXPECT_FALSE(fs::exists(run_dir_ / "raw" / "room.pgm"));
+  EXPECT_FALSE(fs::exists(run_dir_ / "result.json.tmp"));
+}
+
+TEST_F(WorkerTest, TheOdometryBaselineRunsNoProgramAndIsScored) {
+  spec_.algorithm.adapter = "odometry";
+  spec_.evaluation.align = "se2";
+  const nlohmann::json result = Run();
+  EXPECT_EQ(result["status"], "ok") << result.dump(2);
+  EXPECT_TRUE(result["command"].empty());
+  EXPECT_TRUE(result["exit_code"].is_null());
+  // The simulator's odometry drifts a little from the truth: an error, but a small one.
+  const double ape = Metric(result, "ape_trans", "rmse");
+  EXPECT_GT(ape, 0.0);
+  EXPECT_LT(ape, 1.0);
+  EXPECT_EQ(Metric(result, "ape_trans", "n"), 60.0);
+  EXPECT_EQ(result["outputs"]["stages"].size(), spec_.evaluation.stages);
+  EXPECT_FALSE(std::isnan(Metric(result, "corners", "value")));
+}
+
+TEST_F(WorkerTest, InterruptionStopsTheProgramAndLeavesNoResult) {
+  UseProgram("exec sleep 30");
+  testing::WriteRunJson(run_dir_, spec_);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) ::_exit(RunWorker(run_dir_));
+  // Wait until the program runs (its log exists), then interrupt the worker.
+  for (int i = 0; i < 200 && !fs::exists(run_dir_ / "log.txt"); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  ASSERT_EQ(::kill(child, SIGTERM), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << status;
+  EXPECT_EQ(WEXITSTATUS(status), kWorkerInterrupted);
+  EXPECT_FALSE(fs::exists(run_dir_ / "result.json"));
+  EXPECT_FALSE(fs::exists(run_dir_ / "raw"));
+  EXPECT_TRUE(fs::exists(run_dir_ / "run.json"));
+}
+
+}  // namespace
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,197 @@
+#include "tests/report/fixture_sweep.h"
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+
+#include "evaluator/core/occupancy_grid.h"
+#include "evaluator/core/pose.h"
+#include "evaluator/core/trajectory.h"
+#include "evaluator/formats/map/map_server_format.h"
+#include "evaluator/formats/trajectory/tum_format.h"
+
+namespace slamsweep::report::testing {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+namespace ev = slamsweep::evaluator;
+
+std::string Readable(const std::string& text) {
+  std::string out;
+  for (char c : text) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-') ? c : '_';
+  while (!out.empty() && out.front() == '.') out.erase(0, 1);
+  return out.substr(0, 32);
+}
+
+void Write(const fs::path& path, const std::string& content) {
+  std::ofstream out(path, std::ios::binary);
+  out << content;
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+// A 40 x 30 room (walls occupied, inside free, a margin unknown); `shift` moves one wall so
+// iterations differ a little.
+ev::OccupancyGrid RoomGrid(int shift) {
+  ev::OccupancyGrid grid(40, 30, 0.1, {-2.0, -1.5, 0.0});
+  for (int row = 3; row < 27; ++row) {
+    for (int col = 3; col < 37 - shift; ++col) {
+      const bool wall = row == 3 || row == 26 || col == 3 || col == 36 - shift;
+      grid.at(row, col) = wall ? 1.0f : 0.0f;
+    }
+  }
+  return grid;
+}
+
+ev::Trajectory Circle(double radius_m, double noise_m) {
+  ev::Trajectory trajectory;
+  for (int i = 0; i < 20; ++i) {
+    const double angle = 2.0 * M_PI * i / 20.0;
+    const double wobble = noise_m * std::sin(3.0 * angle);
+    trajectory.Add(100.0 + i * 0.5, ev::Pose::Planar((radius_m + wobble) * std::cos(angle),
+                                                     (radius_m + wobble) * std::sin(angle), angle + M_PI / 2));
+  }
+  return trajectory;
+}
+
+json Metric(const char* name, const char* statistic, double value, const char* unit) {
+  return {{"metric", name}, {"statistic", statistic}, {"value", value}, {"unit", unit}};
+}
+
+}  // namespace
+
+FixtureRun MakeRun(std::string algorithm, std::string sequence, int iteration) {
+  FixtureRun run;
+  run.algorithm = std::move(algorithm);
+  run.sequence = std::move(sequence);
+  run.iteration = iteration;
+  return run;
+}
+
+std::string FixtureRunId(const FixtureRun& run) {
+  if (!run.run_id.empty()) return run.run_id;
+  return Readable(run.algorithm) + "-" + Readable(run.sequence) + "-clean-i" + std::to_string(run.iteration) +
+         "-0000abcd";
+}
+
+void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs) {
+  json summary = {{"sweep", "fixture"}, {"runs", json::array()}};
+  for (const FixtureRun& run : runs) {
+    const std::string id = FixtureRunId(run);
+    const fs::path run_dir = dir / "runs" / id;
+    fs::create_directories(run_dir);
+    const json spec = {
+        {"run_id", id},
+        {"sweep", "fixture"},
+        {"algorithm", {{"name", run.algorithm}, {"adapter", "generic"}, {"parameters", json::object()},
+                       {"timeout_s", 300}, {"memory_limit_mb", 4096}, {"command", nullptr}}},
+        {"sequence", {{"name", run.sequence}, {"format", "carmen"}, {"path", "/data/" + run.sequence + ".clf"},
+                      {"ground_truth", run.with_reference ? "reference.tum" : "none"}}},
+        {"noise", {{"name", "clean"}, {"odometry", nullptr}, {"range", nullptr}}},
+        {"iteration", run.iteration},
+        {"seed", 1000 + run.iteration},
+        {"evaluation", {{"align", "se2"}, {"rpe_delta_m", 1.0}, {"t_max_diff_s", 0.01}, {"stages", run.stages}}},
+        {"thresholds", json::array()}};
+    Write(run_dir / "run.json", spec.dump(2));
+    Write(run_dir / "command.txt", "fake-slam\n--input\ninput/log.clf\n");
+    Write(run_dir / "log.txt", run.log);
+
+    json result = {{"run_id", id},
+                   {"status", run.ok ? "ok" : "failed"},
+                   {"failure_kind", run.ok ? json(nullptr) : json(run.failure_kind)},
+                   {"reason", run.ok ? "" : run.reason},
+                   {"exit_code", run.ok ? 0 : 139},
+                   {"signal", nullptr},
+                   {"wall_s", 3.25 + run.iteration},
+                   {"cpu_s", 3.0 + run.iteration},
+                   {"peak_rss_kb", 81234},
+                   {"started_at", "2026-11-22T05:00:00Z"},
+                   {"finished_at", "2026-11-22T05:00:03Z"},
+                   {"command", {"fake-slam", "--input", "input/log.clf"}},
+                   {"warnings", json::array()}};
+    json metrics = json::array();
+    json details = json::object();
+    json outputs = {{"log", "log.txt"}};
+    if (run.ok) {
+      ev::WriteMapServer(RoomGrid(run.iteration % 3), run_dir / "map.yaml");
+      ev::WriteTum(Circle(1.0, 0.02 * (run.iteration + 1)), run_dir / "trajectory.tum");
+      outputs["map"] = "map.yaml";
+      outputs["trajectory"] = "trajectory.tum";
+      Write(run_dir / "map.geojson", R"({"type": "FeatureCollection", "features": []})");
+      outputs["vector_map"] = "map.geojson";
+      if (run.with_reference) {
+        ev::WriteTum(Circle(1.0, 0.0), run_dir / "reference.tum");
+        outputs["reference"] = "reference.tum";
+      }
+      fs::create_directories(run_dir / "stages");
+      json stages = json::array();
+      for (int s = 0; s < run.stages; ++s) {
+        cv::Mat image(30, 40, CV_8UC1, cv::Scalar(205));
+        cv::rectangle(image, cv::Rect(3, 3, 4 + (30 * (s + 1)) / run.stages, 24), cv::Scalar(254), cv::FILLED);
+        cv::rectangle(image, cv::Rect(3, 3, 4 + (30 * (s + 1)) / run.stages, 24), cv::Scalar(0), 1);
+        char name[32];
+        std::snprintf(name, sizeof name, "stages/stage_%04d.png", s);
+        cv::imwrite((run_dir / name).string(), image);
+        stages.push_back(name);
+      }
+      outputs["stages"] = stages;
+      if (run.ape_rmse_m) {
+        metrics.push_back(Metric("ape_trans", "rmse", *run.ape_rmse_m, "m"));
+        metrics.push_back(Metric("ape_trans", "mean", *run.ape_rmse_m * 0.9, "m"));
+        details["ape_trans"] = {{"metric", "ape"}, {"unit", "m"}, {"rmse", *run.ape_rmse_m},
+                                {"specification", {{"pose_relation", "translation_part"}, {"alignment", "se2"}}}};
+      }
+      if (run.occupied_ratio) metrics.push_back(Metric("occupied_to_free_unknown", "value", *run.occupied_ratio, "ratio"));
+      if (run.corners) metrics.push_back(Metric("corners", "value", *run.corners, "count"));
+      if (run.enclosed_areas) metrics.push_back(Metric("enclosed_areas", "value", *run.enclosed_areas, "count"));
+    }
+    result["outputs"] = outputs;
+    result["metrics"] = metrics;
+    result["metric_details"] = details;
+    Write(run_dir / "result.json", result.dump(2));
+    summary["runs"].push_back({{"run_id", id}, {"algorithm", run.algorithm}, {"sequence", run.sequence},
+                               {"status", result["status"]}, {"metrics", metrics}});
+  }
+  Write(dir / "summary.json", summary.dump(2));
+}
+
+std::vector<FixtureRun> StandardFixtureRuns() {
+  std::vector<FixtureRun> runs;
+  const std::string hostile = "<script>alert(1)</script>";
+  for (int i = 0; i < 3; ++i) {
+    FixtureRun a = MakeRun("gmapping", "intel", i);
+    a.ape_rmse_m = 0.10 + 0.01 * i;  // 0.10 0.11 0.12: mean 0.11, std 0.01
+    a.occupied_ratio = 0.05;
+    a.corners = 10.0 + i;
+    a.enclosed_areas = 1.0;
+    runs.push_back(a);
+    FixtureRun b = MakeRun(hostile, "intel", i);
+    b.ape_rmse_m = 0.2 + 0.1 * i;  // 0.2 0.3 0.4: mean 0.3, std 0.1
+    b.occupied_ratio = 0.04;       // best occupied ratio
+    b.corners = 20.0;
+    b.enclosed_areas = 2.0;
+    b.log = "<b>bold</b> & <img src=x onerror=alert(2)>\n";
+    if (i == 2) b.ok = false;  // one failed run: b has 2 values, 0.2 and 0.3
+    runs.push_back(b);
+    FixtureRun c = MakeRun("gmapping", "mit-no-ref", i);
+    c.with_reference = false;
+    c.occupied_ratio = 0.07;
+    c.corners = 30.0 - i;  // 30 29 28: median run = iteration 1
+    c.enclosed_areas = 0.0;
+    runs.push_back(c);
+  }
+  FixtureRun single = MakeRun("single", "intel", 0);
+  single.ape_rmse_m = 0.5;
+  single.occupied_ratio = 0.06;
+  single.corners = 12.0;
+  single.enclosed_areas = 1.0;
+  runs.push_back(single);
+  return runs;
+}
+
+}  // namespace slamsweep::report::testing

@@ -1,0 +1,48 @@
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace slamsweep::report::testing {
+
+/// One run of a synthetic sweep. Metrics left empty are not written (as for a sequence without
+/// reference, where the worker computes no ATE).
+struct FixtureRun {
+  std::string algorithm = "icp-slam";
+  std::string sequence = "intel";
+  int iteration = 0;
+  bool ok = true;
+  std::string failure_kind = "exit_code";  ///< used when !ok
+  std::string reason = "killed by SIGSEGV";  ///< used when !ok
+  bool with_reference = true;  ///< reference.tum written (and the ATE, when ape_rmse_m is set)
+  std::optional<double> ape_rmse_m;
+  std::optional<double> occupied_ratio;
+  std::optional<double> corners;
+  std::optional<double> enclosed_areas;
+  std::string log = "scan 1\nscan 2\n";
+  int stages = 3;
+  /// Folder name; empty -> made from algorithm, sequence and iteration like the orchestrator does.
+  std::string run_id;
+};
+
+/// A successful run of `algorithm` on `sequence` with no metric yet.
+FixtureRun MakeRun(std::string algorithm, std::string sequence, int iteration);
+
+/// The run id the orchestrator would give (readable parts reduced to [A-Za-z0-9_.-]).
+std::string FixtureRunId(const FixtureRun& run);
+
+/// Writes a sweep output directory following orchestrator/DESIGN.md: summary.json and, per run,
+/// runs/<id>/{run.json, result.json, command.txt, log.txt} and for successful runs
+/// map.pgm + map.yaml (the evaluator's map_server writer), trajectory.tum, reference.tum,
+/// map.geojson and stages/stage_NNNN.png (8-bit grey 0/254/205).
+void WriteFixtureSweep(const std::filesystem::path& dir, const std::vector<FixtureRun>& runs);
+
+/// A sweep that exercises every case the report must render: algorithms "gmapping" and a hostile
+/// "<script>alert(1)</script>", 3 iterations each on "intel" (with reference) and "mit-no-ref"
+/// (without: no ATE), one failed run, an algorithm "single" with one iteration, and a log that
+/// contains HTML.
+std::vector<FixtureRun> StandardFixtureRuns();
+
+}  // namespace slamsweep::report::testing

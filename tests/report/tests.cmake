@@ -1,0 +1,32 @@
+# Tests of the report (model, pages, WriteReport, browser). tests/report/plots_images belongs to
+# the plots/images suite.
+if(TARGET report_html)
+  add_library(report_test_fixture STATIC fixture_sweep.cc fake_artwork.cc)
+  slamsweep_target_defaults(report_test_fixture)
+  target_include_directories(report_test_fixture PUBLIC ${PROJECT_SOURCE_DIR})
+  target_link_libraries(report_test_fixture
+    PUBLIC report_html evaluator_core nlohmann_json::nlohmann_json
+    PRIVATE evaluator_map_formats evaluator_trajectory_formats opencv_core opencv_imgproc opencv_imgcodecs)
+
+  slamsweep_add_test(report_model_test SOURCES model_test.cc LIBS report_model report_test_fixture)
+  slamsweep_add_test(report_html_test SOURCES html_test.cc LIBS report_html)
+  slamsweep_add_test(report_write_test SOURCES write_report_test.cc LIBS report_html report_test_fixture)
+endif()
+if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/plots_images/CMakeLists.txt)
+  add_subdirectory(plots_images)
+endif()
+
+# Headless Chromium against a local server sending Jenkins' CSP (skipped without chromium).
+if(TARGET report)
+  slamsweep_add_test(report_browser_test SOURCES browser_test.cc LIBS report report_test_fixture)
+  target_compile_definitions(report_browser_test PRIVATE
+    SLAMSWEEP_CSP_SERVER="${CMAKE_CURRENT_SOURCE_DIR}/csp_server.py"
+    SLAMSWEEP_ARTIFACT_DIR="${CMAKE_CURRENT_BINARY_DIR}")
+endif()
+
+# `slamsweep report` through its registration function (cli/report_command.cc compiled here,
+# since the command is wired into slamsweep_cli by the lead).
+if(TARGET report)
+  slamsweep_add_test(report_command_test SOURCES report_command_test.cc ${PROJECT_SOURCE_DIR}/cli/report_command.cc
+                     LIBS report report_test_fixture CLI11::CLI11)
+endif()

@@ -1,0 +1,236 @@
+#include "report/html/write_report.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include "evaluator/core/input_error.h"
+#include "tests/report/fake_artwork.h"
+#include "tests/report/fixture_sweep.h"
+#include "tests/support/shared_data.h"
+
+namespace slamsweep::report {
+namespace {
+
+namespace fs = std::filesystem;
+using slamsweep::testing::TempDir;
+using testing::ReadAll;
+
+class WriteReportTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    testing::WriteFixtureSweep(dir_ / "sweep", testing::StandardFixtureRuns());
+    options_.artwork = &artwork_;
+  }
+  ReportSummary Write() { return WriteReport(dir_ / "sweep", dir_ / "report", options_); }
+  std::string AllPages() {
+    std::string all;
+    for (const auto& entry : fs::recursive_directory_iterator(dir_ / "report")) {
+      if (entry.path().extension() == ".html") all += ReadAll(entry.path());
+    }
+    return all;
+  }
+  TempDir dir_;
+  testing::FakeArtwork artwork_;
+  ReportOptions options_;
+};
+
+TEST_F(WriteReportTest, WritesTheSite) {
+  const ReportSummary summary = Write();
+  EXPECT_EQ(summary.runs, 10u);
+  EXPECT_EQ(summary.pages, 1u + 2u + 10u);  // index, 2 sequences, 10 runs
+  const fs::path out = dir_ / "report";
+  for (const char* file : {"index.html", "style.css", "summary.csv", "summary.json", "sequences/intel.html",
+                           "sequences/mit-no-ref.html", "files/gmapping/intel/rmse.txt",
+                           "files/gmapping/intel/pose_log.tum", "files/gmapping/mit-no-ref/corners.txt",
+                           "runs/gmapping-intel-clean-i1-0000abcd.html",
+                           "runs/gmapping-intel-clean-i1-0000abcd/map.pgm",
+                           "runs/gmapping-intel-clean-i1-0000abcd/map.yaml",
+                           "runs/gmapping-intel-clean-i1-0000abcd/trajectory.tum",
+                           "runs/gmapping-intel-clean-i1-0000abcd/map.geojson",
+                           "runs/gmapping-intel-clean-i1-0000abcd/stages.gif"}) {
+    EXPECT_TRUE(fs::is_regular_file(out / file)) << file;
+  }
+  // 9 successful runs: an overlay and a GIF each, the reference on the overlay for the 6 on intel
+  // (gmapping 3, hostile 2, single 1); thumbnails only for the 4 gallery (median) runs: 3 algorithms
+  // on intel, 1 on mit-no-ref.
+  EXPECT_EQ(artwork_.thumbnails, 4);
+  EXPECT_EQ(artwork_.overlays, 9);
+  EXPECT_EQ(artwork_.overlays_with_reference, 6);
+  EXPECT_EQ(artwork_.gifs, 9);
+}
+
+TEST_F(WriteReportTest, EveryLinkResolvesInsideTheReport) {
+  Write();
+  std::size_t checked = 0;
+  const std::vector<std::string> broken = testing::BrokenLinks(dir_ / "report", &checked);
+  EXPECT_TRUE(broken.empty()) << ::testing::PrintToString(broken);
+  EXPECT_GT(checked, 100u);
+}
+
+TEST_F(WriteReportTest, NoScriptNoInlineStyleNoDataUri) {
+  Write();
+  const std::string all = AllPages();
+  EXPECT_EQ(all.find("<script"), std::string::npos);
+  EXPECT_EQ(all.find("<style"), std::string::npos);
+  EXPECT_EQ(all.find(" style="), std::string::npos);
+  EXPECT_EQ(all.find("data:"), std::string::npos);
+}
+
+TEST_F(WriteReportTest, HostileNamesAndLogsAreEscaped) {
+  Write();
+  const std::string index = ReadAll(dir_ / "report/index.html");
+  EXPECT_NE(index.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
+  const std::string run_page = ReadAll(dir_ / "report/runs/_script_alert_1___script_-intel-clean-i0-0000abcd.html");
+  EXPECT_NE(run_page.find("&lt;b&gt;bold&lt;/b&gt; &amp; &lt;img src=x onerror=alert(2)&gt;"), std::string::npos);
+  EXPECT_EQ(run_page.find("<b>bold"), std::string::npos);
+}
+
+TEST_F(WriteReportTest, TableMarksBestAndCountsFailures) {
+  Write();
+  const std::string index = ReadAll(dir_ / "report/index.html");
+  // gmapping on intel: ATE 0.10 0.11 0.12 -> 0.1100 ± 0.0100, the best of the column.
+  EXPECT_NE(index.find("<td class=\"best\">0.1100 ± 0.0100 <span class=\"n\">n=3</span> <span class=\"marker\">▼ best"),
+            std::string::npos);
+  // The single iteration has no std.
+  EXPECT_NE(index.find("0.5000 ± n/a"), std::string::npos);
+  EXPECT_NE(index.find("3 runs: 2 ok, 1 failed"), std::string::npos);
+  EXPECT_NE(index.find("alignment se2"), std::string::npos);
+  const std::string failed = ReadAll(dir_ / "report/runs/_script_alert_1___script_-intel-clean-i2-0000abcd.html");
+  EXPECT_NE(failed.find("Status: failed (exit_code): killed by SIGSEGV"), std::string::npos);
+}
+
+TEST_F(WriteReportTest, SequenceWithoutReferenceRendersSensibly) {
+  Write();
+  const std::string page = ReadAll(dir_ / "report/sequences/mit-no-ref.html");
+  EXPECT_NE(page.find("Table I is not available"), std::string::npos);
+  EXPECT_NE(page.find("median run by corner count, iteration 1"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir_ / "report/files/gmapping/mit-no-ref/reference.tum"));
+  const std::string rmse = ReadAll(dir_ / "report/files/gmapping/mit-no-ref/rmse.txt");
+  EXPECT_NE(rmse.find("rmse_mean: n/a"), std::string::npos);
+}
+
+TEST_F(WriteReportTest, TextFilesOfThePaperService) {
+  Write();
+  const std::string rmse = ReadAll(dir_ / "report/files/gmapping/intel/rmse.txt");
+  EXPECT_NE(rmse.find("n: 3\n"), std::string::npos) << rmse;
+  EXPECT_NE(rmse.find("rmse_mean: 0.11"), std::string::npos) << rmse;
+  EXPECT_NE(rmse.find("specification: alignment se2"), std::string::npos) << rmse;
+  const std::string single = ReadAll(dir_ / "report/files/single/intel/rmse.txt");
+  EXPECT_NE(single.find("rmse_std: n/a"), std::string::npos) << single;
+  const std::string corners = ReadAll(dir_ / "report/files/gmapping/mit-no-ref/corners.txt");
+  EXPECT_NE(corners.find("corners_mean: 29\n"), std::string::npos) << corners;
+  EXPECT_NE(corners.find("corners_std: 1\n"), std::string::npos) << corners;
+  // The pose log is the median run's trajectory (iteration 1).
+  EXPECT_EQ(ReadAll(dir_ / "report/files/gmapping/intel/pose_log.tum"),
+            ReadAll(dir_ / "sweep/runs/gmapping-intel-clean-i1-0000abcd/trajectory.tum"));
+}
+
+TEST_F(WriteReportTest, SummaryCsvHasOneLinePerRun) {
+  Write();
+  const std::string csv = ReadAll(dir_ / "report/summary.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 11);
+  EXPECT_EQ(csv.find("run_id,algorithm,sequence,noise,iteration,status,failure_kind,reason,wall_s,cpu_s,peak_rss_kb,"
+                     "ape_trans.mean,ape_trans.rmse,corners.value,enclosed_areas.value,occupied_to_free_unknown.value\n"),
+            0u);
+  EXPECT_NE(csv.find(",failed,exit_code,killed by SIGSEGV,"), std::string::npos);
+}
+
+TEST_F(WriteReportTest, PlotsGetEveryIterationPerAlgorithm) {
+  Write();
+  ASSERT_FALSE(artwork_.plots.empty());
+  bool found = false;
+  for (const PlotRequest& plot : artwork_.plots) {
+    EXPECT_TRUE(plot.log_scale);
+    if (plot.title != "intel: ATE translation RMSE, alignment se2") continue;
+    found = true;
+    ASSERT_EQ(plot.series.size(), 3u);
+    EXPECT_EQ(plot.series[1].algorithm, "gmapping");
+    ASSERT_EQ(plot.series[1].values.size(), 3u);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(plot.series[1].values[i], 0.10 + 0.01 * i, 1e-12);
+  }
+  EXPECT_TRUE(found);
+  // 2 sequences: intel has ATE + 3 map metrics, mit-no-ref the 3 map metrics.
+  EXPECT_EQ(artwork_.plots.size(), 7u);
+}
+
+TEST_F(WriteReportTest, FailedImagesAreNamedNotLinked) {
+  artwork_.fail_thumbnails = true;
+  const ReportSummary summary = Write();
+  EXPECT_EQ(summary.images_missing, 4u);
+  const std::string page = ReadAll(dir_ / "report/runs/gmapping-intel-clean-i1-0000abcd.html");
+  EXPECT_NE(page.find("Map thumbnail not made: thumbnail maker broke on map.pgm"), std::string::npos);
+  EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
+}
+
+TEST_F(WriteReportTest, WithoutArtworkThereAreNoImages) {
+  options_.artwork = nullptr;
+  Write();
+  EXPECT_TRUE(testing::ImageSources(dir_ / "report/index.html").empty());
+  EXPECT_NE(ReadAll(dir_ / "report/index.html").find("Plot not available"), std::string::npos);
+  EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
+}
+
+TEST_F(WriteReportTest, RerunReplacesAndForeignFolderIsRefused) {
+  Write();
+  Write();  // a report folder may be rewritten
+  fs::create_directories(dir_ / "other");
+  slamsweep::testing::WriteFile(dir_ / "other/precious.txt", "keep");
+  EXPECT_THROW(WriteReport(dir_ / "sweep", dir_ / "other", options_), evaluator::InputError);
+  EXPECT_TRUE(fs::exists(dir_ / "other/precious.txt"));
+  EXPECT_THROW(WriteReport(dir_ / "nowhere", dir_ / "r2", options_), evaluator::InputError);
+}
+
+TEST_F(WriteReportTest, HostileRunFolderNamesStayInside) {
+  testing::FixtureRun run = testing::MakeRun("x", "s", 0);
+  run.run_id = "a b&c<d>";
+  run.corners = 3.0;
+  testing::WriteFixtureSweep(dir_ / "sweep", {run});
+  Write();
+  EXPECT_NE(ReadAll(dir_ / "report/sequences/s.html").find("a b&amp;c&lt;d&gt;"), std::string::npos);
+  EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
+}
+
+TEST_F(WriteReportTest, UnreadableRunIsShownWithItsReason) {
+  slamsweep::testing::WriteFile(dir_ / "sweep/runs/gmapping-intel-clean-i0-0000abcd/result.json", "{broken");
+  Write();
+  const std::string page = ReadAll(dir_ / "report/runs/gmapping-intel-clean-i0-0000abcd.html");
+  EXPECT_NE(page.find("Status: unreadable"), std::string::npos);
+  EXPECT_NE(page.find("result.json: expected JSON"), std::string::npos);
+}
+
+TEST_F(WriteReportTest, LogTailShowsTheLastLines) {
+  testing::FixtureRun run = testing::MakeRun("x", "s", 0);
+  run.corners = 3.0;
+  run.log.clear();
+  for (int i = 0; i < 100; ++i) run.log += "line " + std::to_string(i) + "\n";
+  testing::WriteFixtureSweep(dir_ / "sweep", {run});
+  options_.log_tail_lines = 10;
+  Write();
+  const std::string page = ReadAll(dir_ / "report/runs/x-s-clean-i0-0000abcd.html");
+  EXPECT_NE(page.find("line 90\nline 91"), std::string::npos);
+  EXPECT_NE(page.find("line 99\n"), std::string::npos);
+  EXPECT_EQ(page.find("line 89\n"), std::string::npos);
+  EXPECT_NE(page.find("Only the last lines are shown"), std::string::npos);
+  // The whole log is downloadable.
+  EXPECT_EQ(ReadAll(dir_ / "report/runs/x-s-clean-i0-0000abcd/log.txt"), run.log);
+}
+
+TEST_F(WriteReportTest, StagePathsLeavingTheRunFolderAreIgnored) {
+  const fs::path run_dir = dir_ / "sweep/runs/gmapping-intel-clean-i0-0000abcd";
+  std::string result = ReadAll(run_dir / "result.json");
+  const std::string stage = "\"stages/stage_0000.png\"";
+  result.replace(result.find(stage), stage.size(), "\"../gmapping-intel-clean-i1-0000abcd/stages/stage_0000.png\"");
+  slamsweep::testing::WriteFile(run_dir / "result.json", result);
+  Write();
+  // The other two stages are still used; nothing outside the run folder is read.
+  EXPECT_EQ(artwork_.gifs, 9);
+  EXPECT_EQ(artwork_.stages.size(), 9u * 3u - 1u);
+  for (const fs::path& stage : artwork_.stages) EXPECT_EQ(stage.string().find(".."), std::string::npos) << stage;
+  EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
+}
+
+}  // namespace
+}  // namespace slamsweep::report
