@@ -1,0 +1,85 @@
+#include "orchestrator/history/night.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include <fmt/format.h>
+
+#include "evaluator/core/input_error.h"
+#include "orchestrator/store/results_store.h"
+
+namespace slamsweep::orchestrator {
+namespace {
+
+using SeriesKey = std::tuple<std::string, std::string, std::string, std::string, std::string>;
+using CellKey = std::tuple<std::string, std::string, std::string>;
+
+}  // namespace
+
+Night ReadNight(const std::filesystem::path& result_dir, const std::string& label) {
+  const std::filesystem::path absolute = std::filesystem::absolute(result_dir).lexically_normal();
+  const std::filesystem::path database = absolute / "results.sqlite";
+  if (!std::filesystem::exists(database)) {
+    throw evaluator::InputError(fmt::format("{}: no results database; expected the output directory of "
+                                            "`slamsweep run` or `slamsweep merge`",
+                                            database.string()));
+  }
+  const ResultsStore store = ResultsStore::OpenExisting(database);
+  const std::vector<StoredSweep> sweeps = store.Sweeps();
+  if (sweeps.empty()) {
+    throw evaluator::InputError(
+        fmt::format("{}: no sweep recorded; expected at least one `slamsweep run` into it", database.string()));
+  }
+  Night night;
+  night.result_dir = absolute;
+  night.sweep_id = sweeps.back().id;
+  night.sweep_name = sweeps.back().info.name;
+  night.started_at = sweeps.front().info.started_at;
+  for (const StoredSweep& sweep : sweeps) {
+    // A merged directory holds one sweep per shard; the night starts with the first of them.
+    if (!sweep.info.started_at.empty() && (night.started_at.empty() || sweep.info.started_at < night.started_at)) {
+      night.started_at = sweep.info.started_at;
+    }
+  }
+  night.label = label.empty() ? night.started_at : label;
+  if (night.label.empty()) night.label = fmt::format("{}#{}", absolute.string(), night.sweep_id);
+  night.report_index = absolute / "report" / "index.html";
+
+  std::map<SeriesKey, SampleSeries> series;
+  std::map<CellKey, CellCounts> cells;
+  // Runs() is ordered by iteration within a cell, so samples keep the iteration order.
+  for (const StoredRun& run : store.Runs()) {
+    CellCounts& cell = cells[{run.algorithm, run.sequence, run.noise}];
+    cell.algorithm = run.algorithm;
+    cell.sequence = run.sequence;
+    cell.noise = run.noise;
+    if (run.status != "ok") {
+      ++cell.failed_runs;
+      continue;
+    }
+    ++cell.ok_runs;
+    for (const StoredMetric& metric : run.metrics) {
+      SampleSeries& s = series[{run.algorithm, run.sequence, run.noise, metric.metric, metric.statistic}];
+      if (s.metric.empty()) {
+        s = {run.algorithm, run.sequence, run.noise, metric.metric, metric.statistic, metric.unit, {}};
+      }
+      if (metric.value.has_value() && std::isfinite(*metric.value)) s.values.push_back(*metric.value);
+    }
+  }
+  for (auto& [key, s] : series) night.series.push_back(std::move(s));
+  for (auto& [key, c] : cells) night.cells.push_back(std::move(c));
+  return night;
+}
+
+const SampleSeries* FindSeries(const Night& night, const std::string& algorithm, const std::string& sequence,
+                               const std::string& noise, const std::string& metric, const std::string& statistic) {
+  const auto it = std::find_if(night.series.begin(), night.series.end(), [&](const SampleSeries& s) {
+    return s.algorithm == algorithm && s.sequence == sequence && s.noise == noise && s.metric == metric &&
+           s.statistic == statistic;
+  });
+  return it == night.series.end() ? nullptr : &*it;
+}
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace slamsweep::orchestrator {
+
+/// One algorithm x sequence x noise x metric x statistic of a sweep: the values of every ok run (one per
+/// iteration, in iteration order) — the samples a regression test compares.
+struct SampleSeries {
+  std::string algorithm;
+  std::string sequence;
+  std::string noise;
+  std::string metric;
+  std::string statistic;
+  std::string unit;
+  /// Finite values only; a run that reported null for this statistic is left out.
+  std::vector<double> values;
+};
+
+/// The run counts of one algorithm x sequence x noise cell.
+struct CellCounts {
+  std::string algorithm;
+  std::string sequence;
+  std::string noise;
+  std::int64_t ok_runs = 0;
+  std::int64_t failed_runs = 0;
+};
+
+/// One sweep as the history keeps it (a "night").
+struct Night {
+  /// Row id in the history database; 0 when the night was read from a result directory and not recorded.
+  std::int64_t id = 0;
+  std::string label;
+  /// Absolute, normalised path of the sweep's output directory.
+  std::filesystem::path result_dir;
+  /// The last sweep id of the result directory's store: with result_dir, what makes a night unique.
+  std::int64_t sweep_id = 0;
+  std::string sweep_name;
+  /// ISO 8601 UTC of the earliest sweep in the result directory.
+  std::string started_at;
+  /// RESULT_DIR/report/index.html (it may not exist: the sweep may have run with --no-report).
+  std::filesystem::path report_index;
+  /// Ordered by algorithm, sequence, noise, metric, statistic.
+  std::vector<SampleSeries> series;
+  std::vector<CellCounts> cells;
+};
+
+/// Reads a sweep's output directory (RESULT_DIR/results.sqlite, orchestrator/DESIGN.md) into a Night labelled
+/// `label` (empty: the sweep's start date-time). Throws InputError naming the file when the directory has no
+/// readable results database or no sweep in it.
+Night ReadNight(const std::filesystem::path& result_dir, const std::string& label);
+
+/// The series of `night` with these keys, or null.
+const SampleSeries* FindSeries(const Night& night, const std::string& algorithm, const std::string& sequence,
+                               const std::string& noise, const std::string& metric, const std::string& statistic);
+
+}  // namespace slamsweep::orchestrator
