@@ -9,6 +9,7 @@
 #include "cli/data_sources.h"
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
+#include "orchestrator/adapters/mrpt_ini.h"
 #include "orchestrator/matrix/expand_matrix.h"
 #include "orchestrator/matrix/run_id.h"
 #include "orchestrator/matrix/shard.h"
@@ -62,6 +63,19 @@ LoadedSweep LoadSweep(const std::string& config_file, const MatrixSelection& sel
   for (orchestrator::RunSpec& run : runs) {
     if (Selected(selection.algorithms, run.algorithm.name) && Selected(selection.sequences, run.sequence.entry.name)) {
       sweep.runs.push_back(std::move(run));
+    }
+  }
+  // MRPT parameters must be "SECTION.key": a typo found now, not in every run's log an hour later.
+  for (const orchestrator::AlgorithmConfig& algorithm : sweep.config.algorithms) {
+    if (!algorithm.adapter.starts_with("mrpt-")) continue;
+    for (const orchestrator::RunSpec& run : sweep.runs) {
+      if (run.algorithm.name != algorithm.name) continue;
+      try {
+        orchestrator::IniSettingsFromParameters(run.algorithm.parameters);
+      } catch (const evaluator::InputError& error) {
+        throw evaluator::InputError(fmt::format("{}: algorithm '{}': {}", config_file, algorithm.name, error.what()));
+      }
+      break;
     }
   }
   if (!selection.shard.empty()) {

@@ -76,6 +76,18 @@ TEST(PlanCommand, UnknownNamesAndBadConfigsExitTwoNamingTheProblem) {
   EXPECT_THAT(bad.err, HasSubstr("iterations"));
 }
 
+TEST(PlanCommand, MrptParametersWithoutASectionAreRefusedBeforeAnythingRuns) {
+  slamsweep::testing::TempDir dir;
+  const auto config = slamsweep::testing::WriteFile(
+      dir / "typo.yaml",
+      "name: typo\nalgorithms:\n  - name: rbpf\n    adapter: mrpt-rbpf-slam\n    parameters: {sampleSize: 3}\n"
+      "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 40}\n");
+  const auto plan = RunCli({"plan", config.string()});
+  EXPECT_EQ(plan.exit_code, 2);
+  EXPECT_THAT(plan.err, HasSubstr("algorithm 'rbpf'"));
+  EXPECT_THAT(plan.err, HasSubstr("sampleSize"));
+}
+
 /// A sweep of the odometry baseline and a command that fails, on a short simulated sequence.
 std::filesystem::path SmallSweep(const slamsweep::testing::TempDir& dir, bool with_failing_program) {
   std::string text =
