@@ -264,8 +264,23 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
   sequence.scans.reserve(records.size());
   sequence.odometry.Reserve(records.size());
   Trajectory reference;
+  // ROBOTLASER1 carries the (corrected) robot pose but no odometry: that comes from the ODOM
+  // record logged before it. Without ODOM records the robot pose has to serve as both.
+  const bool odometry_from_odom = use_robot_laser && !log.odometry.empty();
+  if (use_robot_laser && log.odometry.empty() && options.logged_pose_is_reference) {
+    sequence.warnings.push_back(Located(source, 0,
+                                        "ROBOTLASER1 log without ODOM records: the odometry is the logged robot pose, "
+                                        "which is also the reference, so odometry and reference are the same"));
+  }
+  std::size_t next_odom = 0;
   for (std::size_t i = 0; i < records.size(); ++i) {
     const CarmenLaserRecord& record = *records[i];
+    Pose odometry_pose = record.odom_pose;
+    if (odometry_from_odom) {
+      while (next_odom < log.odometry.size() && log.odometry[next_odom].line < record.line) ++next_odom;
+      // The latest ODOM before this scan; a scan before the first ODOM takes the first one.
+      odometry_pose = log.odometry[next_odom == 0 ? 0 : next_odom - 1].pose;
+    }
     LaserScan scan;
     if (use_robot_laser) {
       scan = RobotLaserScan(record, source, options);
@@ -279,7 +294,7 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
     scan.range_min_m = options.min_range_m;
     scan.ranges_m.assign(record.ranges_m.begin(), record.ranges_m.end());
     sequence.scans.push_back(std::move(scan));
-    sequence.odometry.Add(stamps_s[i], record.odom_pose);
+    sequence.odometry.Add(stamps_s[i], odometry_pose);
     if (options.logged_pose_is_reference) reference.Add(stamps_s[i], record.robot_pose);
   }
   if (!guessed_fan_lines.empty()) {

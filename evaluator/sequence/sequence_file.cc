@@ -279,8 +279,10 @@ std::string FormatCarmenSequence(const Sequence& sequence) {
       geometry.fov_rad = scan.angle_increment_rad * static_cast<double>(scan.BeamCount() - 1);
       geometry.max_range_m = scan.range_max_m;
       laser.geometry = geometry;
-      laser.robot_pose = odometry;
-      laser.laser_pose = odometry * scan.sensor_pose_on_robot;
+      // As FLASER: the logged robot pose is the reference when there is one; the odometry is in
+      // the ODOM record just written (ROBOTLASER1 has no odometry field).
+      laser.robot_pose = reference ? (*reference)[i] : odometry;
+      laser.laser_pose = laser.robot_pose * scan.sensor_pose_on_robot;
     }
     out += FormatCarmenRecord(laser) + '\n';
   }

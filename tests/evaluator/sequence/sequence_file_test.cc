@@ -113,6 +113,25 @@ TEST(SequenceFileTest, CarmenRobotLaserRoundTripKeepsAnyFanAndTheMount) {
   ExpectSamePoses(read.odometry, written.odometry, 1e-12);
 }
 
+TEST(SequenceFileTest, CarmenRobotLaserRoundTripKeepsReferenceAndOdometryApart) {
+  // ROBOTLASER1 has no odometry field: the odometry must come back from the ODOM records and the
+  // logged robot pose must be the reference, not a copy of the odometry.
+  testing::TempDir dir;
+  Sequence written = CarmenLikeSequence();
+  ASSERT_TRUE(written.reference.has_value());
+  for (LaserScan& scan : written.scans) {
+    scan.ranges_m.resize(360);
+    scan.angle_min_rad = -kPi;
+    scan.angle_increment_rad = 2 * kPi / 360;
+  }
+  WriteSequence(written, dir / "ref.log", SequenceWriteFormat::kCarmen);
+  const Sequence read = ReadSequence(dir / "ref.log");
+  ExpectSamePoses(read.odometry, written.odometry, 1e-12);
+  ASSERT_TRUE(read.reference.has_value());
+  // The hand-made reference is 0.1 m / 0.2 m / 0.05 rad off the odometry at every scan.
+  ExpectSamePoses(*read.reference, *written.reference, 1e-12);
+}
+
 TEST(SequenceFileTest, TumHoldsTheReferenceOrElseTheOdometry) {
   testing::TempDir dir;
   Sequence sequence = CarmenLikeSequence();
