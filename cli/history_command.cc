@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "cli/command.h"
+#include "cli/sweep_loading.h"
 #include "evaluator/core/input_error.h"
 #include "orchestrator/history/history_store.h"
 #include "orchestrator/history/regression.h"
@@ -29,6 +30,10 @@ struct CompareOptions {
   std::string baseline_label;
   bool previous = false;
   history::RegressionOptions regression;
+  /// A sweep config whose `regression:` block gives alpha and min_effect (the options win when given).
+  std::string config;
+  bool alpha_given = false;
+  bool min_effect_given = false;
   bool json = false;
   std::string junit;
 };
@@ -60,15 +65,8 @@ history::Night Baseline(const history::HistoryStore& store, const history::Night
     }
     return store.Load(found->id);
   }
-  const auto recorded = store.FindByKey(current.result_dir, current.sweep_id);
-  const std::vector<history::NightEntry> nights = store.Nights();
-  const history::NightEntry* previous = nullptr;
-  for (const history::NightEntry& night : nights) {
-    if (recorded && night.id >= recorded->id) break;
-    if (night.result_dir == current.result_dir && night.sweep_id == current.sweep_id) continue;
-    previous = &night;
-  }
-  if (previous == nullptr) {
+  const auto previous = history::PreviousNight(store, current);
+  if (!previous) {
     throw evaluator::InputError(fmt::format("--previous: {} holds no night before {}; record a baseline first",
                                             options.history_file, current.result_dir.string()));
   }
@@ -93,11 +91,16 @@ void PrintTable(const history::Comparison& comparison, std::ostream& out) {
                      comparison.Count(history::Verdict::kNotComparable));
 }
 
-int Compare(const CompareOptions& options, const Streams& streams) {
+int Compare(CompareOptions options, const Streams& streams) {
   if (options.previous == !options.baseline_label.empty()) {
     throw evaluator::InputError("history compare: expected exactly one of --baseline-label NAME or --previous");
   }
   history::ValidateRegressionOptions(options.regression, "--");
+  if (!options.config.empty()) {
+    const orchestrator::RegressionConfig configured = LoadSweep(options.config, {}).config.regression;
+    if (!options.alpha_given) options.regression.alpha = configured.alpha;
+    if (!options.min_effect_given) options.regression.min_effect = configured.min_effect;
+  }
   const history::Night current = history::ReadNight(options.result_dir, "");
   const history::HistoryStore store = history::HistoryStore::OpenExisting(options.history_file);
   const history::Night baseline = Baseline(store, current, options);
@@ -136,13 +139,20 @@ void RegisterHistoryCommands(CLI::App& app, const Streams& streams, int& exit_co
   auto* previous =
       compare_command->add_flag("--previous", compare->previous, "compare with the night recorded before this one");
   label->excludes(previous);
-  compare_command->add_option("--alpha", compare->regression.alpha, "significance level of the Mann-Whitney U test")
-      ->capture_default_str();
-  compare_command->add_option("--min-effect", compare->regression.min_effect, "minimum |Cliff's delta|")
-      ->capture_default_str();
+  auto* alpha =
+      compare_command->add_option("--alpha", compare->regression.alpha, "significance level of the Mann-Whitney U test")
+          ->capture_default_str();
+  auto* min_effect = compare_command->add_option("--min-effect", compare->regression.min_effect, "minimum |Cliff's delta|")
+                         ->capture_default_str();
+  compare_command->add_option("--config", compare->config,
+                              "sweep YAML whose regression: {alpha, min_effect} to use (the options above win)");
   compare_command->add_flag("--json", compare->json, "print the comparison as JSON");
   compare_command->add_option("--junit", compare->junit, "write a JUnit file: one failing testcase per regression");
-  compare_command->callback([compare, &streams, &exit_code] { exit_code = Compare(*compare, streams); });
+  compare_command->callback([compare, alpha, min_effect, &streams, &exit_code] {
+    compare->alpha_given = alpha->count() > 0;
+    compare->min_effect_given = min_effect->count() > 0;
+    exit_code = Compare(*compare, streams);
+  });
 }
 
 }  // namespace slamsweep::cli

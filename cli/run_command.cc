@@ -1,7 +1,9 @@
 // `slamsweep run CONFIG`: expand the sweep, run it with worker processes, record, report.
 #include <unistd.h>
 
+#include <algorithm>
 #include <iostream>
+#include <memory>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -11,6 +13,7 @@
 #include "cli/sweep_loading.h"
 #include "orchestrator/matrix/shard.h"
 #include "orchestrator/process/interruption.h"
+#include "orchestrator/slurm/slurm_executor.h"
 #include "orchestrator/sweep/local_executor.h"
 #include "orchestrator/sweep/sweep_runner.h"
 
@@ -24,6 +27,8 @@ struct RunOptions {
   std::string rerun;
   std::string output;
   bool keep_going = false;
+  std::string executor = "local";
+  std::string slurm_partition;
   bool no_report = false;
 };
 
@@ -42,6 +47,8 @@ std::string CommandLine(const RunOptions& options) {
   if (!options.rerun.empty()) line += " --rerun " + options.rerun;
   if (!options.output.empty()) line += " --output " + options.output;
   if (options.keep_going) line += " --keep-going";
+  if (options.executor != "local") line += " --executor " + options.executor;
+  if (!options.slurm_partition.empty()) line += " --slurm-partition " + options.slurm_partition;
   return line;
 }
 
@@ -59,12 +66,23 @@ int Run(const RunOptions& options, const Streams& streams, const std::string& co
 
   // Signals are caught from here on: Ctrl-C ends the sweep cleanly (exit 130), never half-way.
   orchestrator::InterruptionGuard interruption;
-  orchestrator::LocalExecutor executor(orchestrator::WorkerProgram());
+  std::unique_ptr<orchestrator::Executor> executor;
+  const std::size_t display_slots = settings.jobs;
+  if (options.executor == "slurm") {
+    orchestrator::SlurmOptions slurm;
+    slurm.worker_program = orchestrator::WorkerProgram();
+    slurm.partition = options.slurm_partition;
+    executor = orchestrator::MakeSlurmExecutor(slurm);
+    // One job array holds every run; Slurm decides how many run at once.
+    settings.jobs = std::max<std::size_t>(1, sweep.runs.size());
+  } else {
+    executor = std::make_unique<orchestrator::LocalExecutor>(orchestrator::WorkerProgram());
+  }
   const bool smart = &streams.out == &std::cout && orchestrator::IsSmartTerminal(STDOUT_FILENO);
-  auto status = orchestrator::MakeStatus(streams.out, smart, settings.jobs);
+  auto status = orchestrator::MakeStatus(streams.out, smart, display_slots);
   streams.out << fmt::format("sweep {}: {} runs ({} jobs) -> {}\n", settings.name, sweep.runs.size(), settings.jobs,
                              settings.output_dir.string());
-  const orchestrator::SweepOutcome outcome = RunSweep(sweep.runs, settings, executor, *status);
+  const orchestrator::SweepOutcome outcome = RunSweep(sweep.runs, settings, *executor, *status);
   streams.out << fmt::format("{} ok, {} failed, {} done earlier, {} not started{}\n", outcome.ok, outcome.failed,
                              outcome.already_done, outcome.not_started, outcome.interrupted ? " (interrupted)" : "");
   streams.out << "results: " << (settings.output_dir / "summary.json").string() << "\n";
@@ -86,6 +104,9 @@ void RegisterRunCommand(CLI::App& app, const Streams& streams, int& exit_code) {
   command->add_option("-o,--output", options->output, "output directory (default: the config's output)");
   command->add_flag("-k,--keep-going", options->keep_going, "ignore the config's failure budget");
   command->add_flag("--no-report", options->no_report, "do not write the HTML report");
+  command->add_option("--executor", options->executor, "where runs execute: local worker processes or one Slurm job array")
+      ->check(CLI::IsMember({"local", "slurm"}));
+  command->add_option("--slurm-partition", options->slurm_partition, "Slurm partition (default: the cluster's default)");
   command->callback([options, &streams, &exit_code] { exit_code = Run(*options, streams, CommandLine(*options)); });
 }
 

@@ -19,6 +19,8 @@ packages=(
   librosbag-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev libgeometry-msgs-dev python3-rosbag python3-sensor-msgs python3-nav-msgs python3-tf2-msgs
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # the Slurm executor's test: a real one-node cluster on localhost (jobs/slurm/local-cluster.sh)
+  slurm-wlm munge
 )
 
 missing=()
