@@ -33,6 +33,9 @@ void RegisterPlanCommand(CLI::App& app, const Streams& streams);
 void RegisterMergeCommand(CLI::App& app, const Streams& streams);
 /// `worker RUN_DIR` (hidden): one run, as started by `run`'s executors. Sets `exit_code`.
 void RegisterWorkerCommand(CLI::App& app, const Streams& streams, int& exit_code);
+/// `history record|compare`: nightly history and regression detection. Sets `exit_code` (3 when
+/// compare finds a regression).
+void RegisterHistoryCommands(CLI::App& app, const Streams& streams, int& exit_code);
 /// `report RESULT_DIR [-o DIR]`.
 void RegisterReportCommand(CLI::App& app, const Streams& streams);
 

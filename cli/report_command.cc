@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "cli/command.h"
+#include "report/history/history_site.h"
 #include "report/html/standard_artwork.h"
 #include "report/html/write_report.h"
 
@@ -20,6 +21,8 @@ void RegisterReportCommand(CLI::App& app, const Streams& streams) {
     int gif_max_side_px = 480;
     std::size_t log_lines = 60;
     bool no_images = false;
+    std::string history;
+    bool compare_previous = false;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("report", "turn a sweep's output directory into a static HTML report");
@@ -37,6 +40,11 @@ void RegisterReportCommand(CLI::App& app, const Streams& streams) {
   command->add_option("--log-lines", options->log_lines, "lines of each run's log shown on its page")
       ->capture_default_str();
   command->add_flag("--no-images", options->no_images, "pages and files only: no plots, thumbnails or GIFs");
+  command->add_option("--history", options->history,
+                      "nightly history database (slamsweep history record): adds a history page per metric");
+  command->add_flag("--compare-previous", options->compare_previous,
+                    "with --history: list regressions and improvements against the night before")
+      ->needs("--history");
   command->callback([options, streams] {
     const std::filesystem::path result_dir = options->result_dir;
     const std::filesystem::path out_dir =
@@ -49,6 +57,16 @@ void RegisterReportCommand(CLI::App& app, const Streams& streams) {
     report_options.thumbnail_px = options->thumbnail_px;
     report_options.gif.max_side_px = options->gif_max_side_px;
     report_options.log_tail_lines = options->log_lines;
+    std::unique_ptr<report::SiteExtension> history;
+    if (!options->history.empty()) {
+      report::HistorySiteOptions history_options;
+      history_options.history_file = options->history;
+      history_options.result_dir = result_dir;
+      history_options.compare_previous = options->compare_previous;
+      history_options.draw_plots = !options->no_images;
+      history = report::MakeHistorySite(history_options);
+      report_options.history = history.get();
+    }
     const report::ReportSummary summary = report::WriteReport(result_dir, out_dir, report_options);
     streams.out << "report: " << (out_dir / "index.html").string() << " (" << summary.runs << " runs, "
                 << summary.pages << " pages, " << summary.images << " images";

@@ -18,6 +18,7 @@ int RunCommandLine(int argc, const char* const* argv, const Streams& streams) {
   RegisterMergeCommand(app, streams);
   RegisterReportCommand(app, streams);
   RegisterWorkerCommand(app, streams, exit_code);
+  RegisterHistoryCommands(app, streams, exit_code);
   try {
     app.parse(argc, argv);
     return exit_code;

@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Shared bits of the job scripts (sourced, never run): where the repository and the slamsweep binary
 # are, logging, and reading a result directory's summary.json. Nothing here needs Jenkins, so CI runs
 # exactly the steps the pipelines run.
@@ -65,4 +66,23 @@ jobs_require_files() {
   for file in "$@"; do
     [[ -s "$file" ]] || jobs_die "$JOBS_EXIT_MISSING_OUTPUT" "expected output $file is missing or empty"
   done
+}
+
+# Makes DIR an empty output directory. A job must not pick up an earlier build's results from a reused
+# workspace (`slamsweep run` would skip those runs as done), so an old result directory is removed;
+# anything else in the way is an error rather than a deletion. KEEP_OUTPUT=1 keeps it (to resume).
+jobs_fresh_output() {
+  local dir=$1
+  [[ -e "$dir" ]] || return 0
+  if [[ "${KEEP_OUTPUT:-0}" == 1 ]]; then
+    jobs_log "KEEP_OUTPUT=1: keeping $dir (finished runs are skipped)"
+    return 0
+  fi
+  [[ -d "$dir" ]] || jobs_die "$JOBS_EXIT_USAGE" "$dir: exists and is not a directory"
+  if [[ -e "$dir/results.sqlite" || -e "$dir/summary.json" ]]; then
+    jobs_log "removing the earlier results in $dir"
+    rm -rf -- "$dir"
+  elif [[ -n "$(ls -A -- "$dir")" ]]; then
+    jobs_die "$JOBS_EXIT_USAGE" "$dir: not empty and not a result directory; choose another output directory"
+  fi
 }

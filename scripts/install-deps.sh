@@ -18,7 +18,7 @@ packages=(
   # ROS1 bags (evaluator/formats/rosbag): librosbag and message headers; python3-* write the test bags
   librosbag-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev libgeometry-msgs-dev python3-rosbag python3-sensor-msgs python3-nav-msgs python3-tf2-msgs
   # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev shellcheck
   # the Slurm executor's test: a real one-node cluster on localhost (jobs/slurm/local-cluster.sh)
   slurm-wlm munge
 )

@@ -183,6 +183,28 @@ std::string_view SeedPolicyName(SeedPolicy policy) {
   return "per_iteration";
 }
 
+namespace {
+
+// The `regression:` block: strict keys, values range-checked at the value.
+RegressionConfig ParseRegression(const std::filesystem::path& file, const YAML::Node& node) {
+  RegressionConfig regression;
+  if (!node.IsDefined() || node.IsNull()) return regression;
+  YamlFields fields(file, node, "regression");
+  regression.alpha = fields.Number("alpha", regression.alpha);
+  if (!(regression.alpha > 0.0 && regression.alpha < 1.0)) {
+    FailExpected(file, fields.Get("alpha"), "regression.alpha", "a significance level in (0, 1), e.g. 0.05");
+  }
+  regression.min_effect = fields.Number("min_effect", regression.min_effect);
+  if (!(regression.min_effect >= 0.0 && regression.min_effect <= 1.0)) {
+    FailExpected(file, fields.Get("min_effect"), "regression.min_effect",
+                 "a Cliff's delta magnitude in [0, 1], e.g. 0.2");
+  }
+  fields.Finish();
+  return regression;
+}
+
+}  // namespace
+
 SweepConfig ParseSweepConfig(std::string_view yaml_text, const std::filesystem::path& file,
                              const SweepConfigContext& context) {
   YAML::Node root;
@@ -209,6 +231,7 @@ SweepConfig ParseSweepConfig(std::string_view yaml_text, const std::filesystem::
   config.failure_budget = fields.Unsigned("failure_budget", 0);
   config.evaluation = ParseEvaluation(file, fields.Get("evaluation"));
   config.thresholds = ParseThresholds(file, fields.Get("thresholds"));
+  config.regression = ParseRegression(file, fields.Get("regression"));
 
   const YAML::Node algorithms = fields.Get("algorithms");
   if (!algorithms.IsDefined()) FailAt(file, root, "algorithms: missing (required: a list of algorithms)");

@@ -15,6 +15,8 @@
 //   workers: 2                       # default --jobs (0 = number of cores)
 //   failure_budget: 0                # stop starting new runs after this many failures; 0 = never stop
 //   evaluation: {align: se2, rpe_delta_m: 1.0, t_max_diff_s: 0.01, stages: 24, map_resolution_m: 0.05}
+//   regression: {alpha: 0.05, min_effect: 0.2}   # `slamsweep history compare --config`: Mann-Whitney U
+//                                    #   significance level in (0, 1) and minimum |Cliff's delta| in [0, 1]
 //   thresholds:                      # JUnit failures
 //     - {metric: ape_trans, statistic: rmse, max: 1.0}
 //   algorithms:
@@ -100,6 +102,14 @@ struct CellFilter {
   nlohmann::json parameters = nlohmann::json::object();
 };
 
+/// When a change between two nights counts as a regression (orchestrator/history): the sweep's `regression:` block.
+struct RegressionConfig {
+  /// Significance level of the two-sided Mann-Whitney U test, in (0, 1).
+  double alpha = 0.05;
+  /// Minimum |Cliff's delta| of a reported change, in [0, 1].
+  double min_effect = 0.2;
+};
+
 /// A sweep file, validated and resolved: paths absolute, catalog sequences looked up, noise parsed.
 struct SweepConfig {
   /// The file it was read from (for messages).
@@ -116,6 +126,7 @@ struct SweepConfig {
   std::size_t failure_budget = 0;
   EvaluationOptions evaluation;
   std::vector<Threshold> thresholds;
+  RegressionConfig regression;
   std::vector<AlgorithmConfig> algorithms;
   std::vector<SequenceSpec> sequences;
   std::vector<NoiseSpec> noise;

@@ -240,4 +240,27 @@ std::vector<HistoryPoint> HistoryStore::Series(const std::string& algorithm, con
   return points;
 }
 
+std::vector<SeriesKey> HistoryStore::SeriesKeys() const {
+  auto select = db_.Prepare(
+      "SELECT algorithm, sequence, noise, metric, statistic, unit FROM samples WHERE rowid IN (SELECT max(rowid) "
+      "FROM samples GROUP BY algorithm, sequence, noise, metric, statistic) "
+      "ORDER BY algorithm, sequence, noise, metric, statistic");
+  std::vector<SeriesKey> keys;
+  while (select.Step()) {
+    keys.push_back({select.Text(0), select.Text(1), select.Text(2), select.Text(3), select.Text(4),
+                    NullableText(select, 5)});
+  }
+  return keys;
+}
+
+std::optional<NightEntry> PreviousNight(const HistoryStore& store, const Night& current) {
+  const auto recorded = store.FindByKey(current.result_dir, current.sweep_id);
+  std::optional<NightEntry> previous;
+  for (const NightEntry& night : store.Nights()) {
+    if (recorded && night.id >= recorded->id) break;
+    previous = night;
+  }
+  return previous;
+}
+
 }  // namespace slamsweep::orchestrator

@@ -26,6 +26,16 @@ struct NightEntry {
   std::filesystem::path report_index;
 };
 
+/// The identity of a series across nights.
+struct SeriesKey {
+  std::string algorithm;
+  std::string sequence;
+  std::string noise;
+  std::string metric;
+  std::string statistic;
+  std::string unit;
+};
+
 /// One night's value of one series, for history plots: the samples and their summary.
 struct HistoryPoint {
   NightEntry night;
@@ -60,6 +70,9 @@ class HistoryStore {
   std::optional<NightEntry> FindByLabel(const std::string& label) const;
   /// The night recorded for this result directory (absolute, normalised) and sweep id, or none.
   std::optional<NightEntry> FindByKey(const std::filesystem::path& result_dir, std::int64_t sweep_id) const;
+  /// Every distinct series of every night, ordered by algorithm, sequence, noise, metric, statistic (unit: the
+  /// latest night's).
+  std::vector<SeriesKey> SeriesKeys() const;
   /// A whole night with its samples and counts. Throws InputError for an unknown id.
   Night Load(std::int64_t night_id) const;
   /// One series across all nights in recorded order (nights without it are left out).
@@ -75,5 +88,9 @@ class HistoryStore {
 
   SqliteDb db_;
 };
+
+/// The night `--previous` compares `current` with: the last night recorded before it (when `current` is recorded),
+/// else the last night recorded; none when there is no such night.
+std::optional<NightEntry> PreviousNight(const HistoryStore& store, const Night& current);
 
 }  // namespace slamsweep::orchestrator

@@ -186,6 +186,7 @@ std::string RenderIndexPage(const SiteData& site) {
     section += Element("details", "", Element("summary", "", E("Text files per algorithm")) + Element("ul", "", files));
     body += Element("section", "", section);
   }
+  body += site.history_section;
   return Page(site.title, "", body);
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "report/html/html.h"
 #include "report/html/report_layout.h"
 #include "report/model/sweep_model.h"
 
@@ -40,6 +41,7 @@ struct SiteData {
   std::map<std::string, std::vector<PlotArtifact>> plots;  ///< by sequence name
   bool has_summary_json = false;
   std::set<std::pair<std::string, std::string>> pose_logs;  ///< (algorithm, sequence) with files/.../pose_log.tum
+  Html history_section;  ///< the index's nightly-history section (SiteExtension), empty without one
 };
 
 /// The pages. `root` is the relative path back to the report root ("" or "../").

@@ -384,8 +384,9 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   WriteTextFile(out_dir / "style.css", StyleSheet());
   WriteTextFile(out_dir / "summary.csv", SummaryCsv(model));
   WritePaperFiles(model, layout, out_dir, site);
+  if (options.history != nullptr) site.history_section = options.history->Write(out_dir, summary);
   WriteTextFile(out_dir / "index.html", RenderIndexPage(site));
-  summary.pages = 1;
+  summary.pages += 1;
   for (const SequenceModel& sequence : model.sequences) {
     WriteTextFile(out_dir / layout.SequencePage(sequence.name), RenderSequencePage(site, sequence));
     ++summary.pages;

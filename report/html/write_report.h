@@ -6,8 +6,21 @@
 #include <vector>
 
 #include "report/html/artwork.h"
+#include "report/html/html.h"
 
 namespace slamsweep::report {
+
+struct ReportSummary;
+
+/// A part of the site made outside report/html (the nightly history of report/history), so that report/html
+/// does not depend on it. Written after the sweep's own pages and before the index.
+class SiteExtension {
+ public:
+  virtual ~SiteExtension() = default;
+  /// Writes its pages and images under `out_dir` (adding them to `summary`) and returns its section of the
+  /// index page. Throws evaluator::InputError for unusable input (e.g. a history file that is not one).
+  virtual Html Write(const std::filesystem::path& out_dir, ReportSummary& summary) = 0;
+};
 
 /// How `slamsweep report` builds the site.
 struct ReportOptions {
@@ -20,6 +33,8 @@ struct ReportOptions {
   GifSettings gif;
   /// Lines of log.txt shown on a run page (the whole log is downloadable).
   std::size_t log_tail_lines = 60;
+  /// Nightly history pages and the comparison with the previous night (report/history); null: none.
+  SiteExtension* history = nullptr;
 };
 
 /// What WriteReport did, for the command's message.

@@ -30,3 +30,8 @@ if(TARGET report)
   slamsweep_add_test(report_command_test SOURCES report_command_test.cc ${PROJECT_SOURCE_DIR}/cli/report_command.cc
                      LIBS report report_test_fixture CLI11::CLI11)
 endif()
+
+# Nightly history pages (report/history) against synthetic sweeps and a history database.
+if(TARGET report_history AND TARGET report_test_fixture AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/history/CMakeLists.txt)
+  add_subdirectory(history)
+endif()

@@ -479,5 +479,20 @@ TEST_F(SweepConfigTest, NeverFailsOtherwiseOnMalformedInput) {
   }
 }
 
+TEST_F(SweepConfigTest, RegressionBlockIsOptionalStrictAndRangeChecked) {
+  const SweepConfig defaults = Parse(kMinimal);
+  EXPECT_DOUBLE_EQ(defaults.regression.alpha, 0.05);
+  EXPECT_DOUBLE_EQ(defaults.regression.min_effect, 0.2);
+  const SweepConfig set = Parse(std::string(kMinimal) + "regression: {alpha: 0.01, min_effect: 0.3}\n");
+  EXPECT_DOUBLE_EQ(set.regression.alpha, 0.01);
+  EXPECT_DOUBLE_EQ(set.regression.min_effect, 0.3);
+  EXPECT_THAT(ErrorOf(std::string(kMinimal) + "regression: {alpha: 1.5}\n"),
+              HasSubstr(Located(6, 21) + "regression.alpha: expected a significance level in (0, 1)"));
+  EXPECT_THAT(ErrorOf(std::string(kMinimal) + "regression: {min_effect: -0.1}\n"),
+              HasSubstr(Located(6, 26) + "regression.min_effect: expected a Cliff's delta magnitude in [0, 1]"));
+  EXPECT_THAT(ErrorOf(std::string(kMinimal) + "regression: {alfa: 0.1}\n"), HasSubstr("alfa"));
+  EXPECT_THAT(ErrorOf(std::string(kMinimal) + "regression: {alpha: often}\n"), HasSubstr("regression.alpha"));
+}
+
 }  // namespace
 }  // namespace slamsweep::orchestrator

@@ -228,9 +228,15 @@ TEST_F(SlurmClusterTest, AnInterruptedSweepCancelsItsJobAndLeavesNoHalfRuns) {
   {
     InterruptionGuard guard;
     const pthread_t sweeping = ::pthread_self();
-    // Ctrl-C once the task runs; the signal stays pending until the executor waits (as in slamsweep).
+    // Ctrl-C once the job is in Slurm's queue (a fixed delay raced the submission on a loaded
+    // machine); the signal stays pending until the executor waits, as in slamsweep.
     std::thread interrupter([sweeping] {
-      std::this_thread::sleep_for(std::chrono::seconds(4));
+      const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+      while (std::chrono::steady_clock::now() < give_up) {
+        const CommandOutput queue = RunSlurmCommand({"squeue", "-h", "-o", "%T"});
+        if (queue.ok() && (queue.output.find("RUNNING") != std::string::npos)) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      }
       ::pthread_kill(sweeping, SIGINT);
     });
     outcome = Sweep({FakeProgramRun("sleeper-0", sleeper)}, work_ / "interrupted", *slurm);

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Jenkins "Setup" stage: installs the missing Debian packages (scripts/install-deps.sh, the same list
+# CI and docker/ use) and builds slamsweep with warnings as errors (scripts/build.sh).
+# Usage: jobs/setup.sh
+# Environment: SLAMSWEEP_BUILD_DIR (default <repo>/build); SKIP_DEPS=1 skips the package step (agents
+# without sudo whose packages an administrator installs).
+# Exit code: 0 built; otherwise the failing step's code.
+set -euo pipefail
+# shellcheck source=jobs/lib.sh
+source "$(dirname "$0")/lib.sh"
+
+if [[ "${SKIP_DEPS:-0}" == 1 ]]; then
+  jobs_log "SKIP_DEPS=1: not installing packages"
+else
+  jobs_run "$SLAMSWEEP_ROOT/scripts/install-deps.sh"
+fi
+jobs_run "$SLAMSWEEP_ROOT/scripts/build.sh"
+jobs_find_binary
+jobs_log "built $SLAMSWEEP_BIN"

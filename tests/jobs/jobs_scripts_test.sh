@@ -1,0 +1,415 @@
+#!/usr/bin/env bash
+# End-to-end tests of the Jenkins job scripts (jobs/*.sh) and of what the pipelines and the Docker image
+# call, run by ctest (tests/jobs/CMakeLists.txt). Jenkins and Docker do not run here, so these check that
+# every step they would run exists and works when CI runs it the same way.
+# Usage: tests/jobs/jobs_scripts_test.sh CASE SLAMSWEEP_BINARY
+#   CASE: static (Jenkinsfiles, Dockerfile, bad arguments), shard_merge (shards 1/2 + 2/2 merged equal a
+#   single sweep; nightly-compare), nightly (three nights of shards + merge + history: a re-run is no
+#   regression, noisier odometry is one; exit 77 = skipped while slamsweep has no `history` command),
+#   quickstart (jobs/run-sweep.sh on configs/quickstart.yaml).
+set -euo pipefail
+
+case_name=${1:?usage: jobs_scripts_test.sh CASE SLAMSWEEP_BINARY}
+SLAMSWEEP_BIN=${2:?usage: jobs_scripts_test.sh CASE SLAMSWEEP_BINARY}
+# Absolute: the cases run from a temporary folder.
+SLAMSWEEP_BIN=$(cd "$(dirname "$SLAMSWEEP_BIN")" && pwd)/$(basename "$SLAMSWEEP_BIN")
+export SLAMSWEEP_BIN
+root=$(cd "$(dirname "$0")/../.." && pwd)
+jobs_dir=$root/jobs
+work=$(mktemp -d "${TMPDIR:-/tmp}/slamsweep-jobs-test.XXXXXX")
+trap 'rm -rf -- "$work"' EXIT
+
+failures=0
+checks=0
+pass() {
+  checks=$((checks + 1))
+  echo "ok: $*"
+}
+fail() {
+  checks=$((checks + 1))
+  failures=$((failures + 1))
+  echo "FAILED: $*" >&2
+}
+# expect_status EXPECTED DESCRIPTION COMMAND...: runs the command (output to $work/last.log) and checks its code.
+expect_status() {
+  local expected=$1 description=$2
+  shift 2
+  local status=0
+  "$@" >"$work/last.log" 2>&1 || status=$?
+  if [[ "$status" == "$expected" ]]; then
+    pass "$description (exit $status)"
+  else
+    fail "$description: expected exit $expected, got $status; output:"
+    sed 's/^/    /' "$work/last.log" >&2
+  fi
+}
+# expect_log PATTERN DESCRIPTION: the last expect_status command's output matches the extended regex.
+expect_log() {
+  if grep -Eq -- "$1" "$work/last.log"; then pass "$2"; else fail "$2: output lacks /$1/"; fi
+}
+
+# --- static: what Jenkins and Docker would run ------------------------------------------------------------
+
+# Prints the command of every `sh` step of a Jenkinsfile, one a line: sh 'x', sh "x", sh(script: 'x', ...).
+jenkinsfile_sh_steps() {
+  local opening="\bsh[[:space:]]*(\([[:space:]]*(script:[[:space:]]*)?)?"
+  grep -oE "$opening'[^']*'|$opening\"[^\"]*\"" "$1" | sed -E "s/^${opening#\\b}['\"]//; s/['\"]$//"
+}
+
+check_jenkinsfile() {
+  local file=$1 minimum_steps=$2 steps=0 command script
+  [[ -f "$file" ]] || { fail "$file is missing"; return; }
+  while IFS= read -r command; do
+    steps=$((steps + 1))
+    script=${command%% *}
+    if [[ "$script" != jobs/* ]]; then
+      fail "$(basename "$file"): sh step '$command' does not call a script in jobs/"
+    elif [[ ! -f "$root/$script" || ! -x "$root/$script" ]]; then
+      fail "$(basename "$file"): sh step '$command' calls $script, which is missing or not executable"
+    else
+      pass "$(basename "$file"): sh step calls executable $script"
+    fi
+  done < <(jenkinsfile_sh_steps "$file")
+  # A parser that found nothing would make the checks above vacuous.
+  if ((steps >= minimum_steps)); then
+    pass "$(basename "$file"): $steps sh steps found"
+  else
+    fail "$(basename "$file"): found $steps sh steps, expected at least $minimum_steps"
+  fi
+  # Every stage the task requires, and the publishing steps.
+  local needed
+  for needed in "${@:3}"; do
+    if grep -qF -- "$needed" "$file"; then
+      pass "$(basename "$file") has $needed"
+    else
+      fail "$(basename "$file") lacks $needed"
+    fi
+  done
+}
+
+check_dockerfile() {
+  local file=$root/docker/Dockerfile
+  [[ -f "$file" ]] || { fail "docker/Dockerfile is missing"; return; }
+  grep -qE '^FROM debian:12' "$file" && pass "Dockerfile: FROM debian:12" || fail "Dockerfile: not FROM debian:12"
+  # RUN instructions with their continuation lines joined.
+  local runs
+  runs=$(sed -e ':a' -e '/\\$/N; s/\\\n//; ta' "$file" | grep -E '^RUN ' || true)
+  [[ -n "$runs" ]] || { fail "Dockerfile: no RUN instruction"; return; }
+  local line script
+  while IFS= read -r line; do
+    local scripts
+    scripts=$(grep -oE '(scripts|jobs|docker)/[A-Za-z0-9_.-]+\.sh' <<<"$line" || true)
+    if [[ -z "$scripts" ]]; then
+      fail "Dockerfile: '$line' calls no shared script (keep every step in scripts/ so that CI runs it)"
+      continue
+    fi
+    for script in $scripts; do
+      if [[ -x "$root/$script" ]]; then
+        pass "Dockerfile: $script exists and is executable"
+      else
+        fail "Dockerfile: $script missing or not executable"
+      fi
+    done
+  done <<<"$runs"
+  grep -qE '^ENTRYPOINT \["/opt/slamsweep/build/slamsweep"\]' "$file" &&
+    pass "Dockerfile: slamsweep is the entry point" ||
+    fail "Dockerfile: ENTRYPOINT is not [\"/opt/slamsweep/build/slamsweep\"]"
+  grep -qE 'SLAMSWEEP_BUILD_DIR=/opt/slamsweep/build' "$file" && pass "Dockerfile: builds where the entry point is" ||
+    fail "Dockerfile: does not build into /opt/slamsweep/build"
+  local compose=$root/docker/compose.yaml
+  if [[ -f "$compose" ]] && grep -q 'dockerfile: docker/Dockerfile' "$compose" &&
+    grep -q ':/data/datasets:ro' "$compose" && grep -q 'configs/radish.yaml' "$compose"; then
+    pass "compose.yaml builds docker/Dockerfile, mounts the datasets read-only and runs configs/radish.yaml"
+  else
+    fail "docker/compose.yaml missing or lacks the Dockerfile, the read-only datasets mount or the radish command"
+  fi
+}
+
+check_bad_arguments() {
+  expect_status 2 "run-shard.sh without arguments" "$jobs_dir/run-shard.sh"
+  expect_log 'usage: jobs/run-shard.sh' "run-shard.sh prints its usage"
+  expect_status 2 "run-shard.sh 3 2 (I > N)" "$jobs_dir/run-shard.sh" 3 2
+  expect_log "got '3/2'" "run-shard.sh names the bad shard"
+  expect_status 2 "run-shard.sh 0 2" "$jobs_dir/run-shard.sh" 0 2
+  expect_status 2 "run-shard.sh x 2" "$jobs_dir/run-shard.sh" x 2
+  expect_status 2 "merge-shards.sh with one argument" "$jobs_dir/merge-shards.sh" "$work/merged"
+  expect_status 2 "merge-shards.sh with a folder that is no result directory" "$jobs_dir/merge-shards.sh" \
+    "$work/merged" "$work/no-such-shard"
+  expect_log 'no-such-shard: not a result directory' "merge-shards.sh names the bad shard"
+  expect_status 2 "nightly-compare.sh without arguments" "$jobs_dir/nightly-compare.sh"
+  expect_status 2 "run-sweep.sh with a missing config" "$jobs_dir/run-sweep.sh" "$work/missing.yaml" "$work/out-missing"
+  mkdir -p "$work/precious" && echo keep >"$work/precious/notes.txt"
+  expect_status 2 "run-sweep.sh into a non-empty folder that is no result directory" \
+    "$jobs_dir/run-sweep.sh" "$root/tests/jobs/shard_sweep.yaml" "$work/precious"
+  [[ -f "$work/precious/notes.txt" ]] && pass "run-sweep.sh left the foreign folder alone" ||
+    fail "run-sweep.sh deleted a foreign folder"
+  expect_status 2 "run-sweep.sh with an unknown algorithm filter" env ALGORITHMS=no-such-algorithm \
+    "$jobs_dir/run-sweep.sh" "$root/tests/jobs/shard_sweep.yaml" "$work/out-filter"
+  expect_status 2 "run-sweep.sh without a slamsweep program" env SLAMSWEEP_BIN="$work/no-slamsweep" \
+    "$jobs_dir/run-sweep.sh" "$root/tests/jobs/shard_sweep.yaml" "$work/out-nobin"
+  expect_log 'run jobs/setup.sh first' "run-sweep.sh says how to get the program"
+}
+
+# nightly-compare.sh's handling of `slamsweep history` with a stand-in program (the real one is exercised in
+# shard_merge): which commands it runs, and how their exit codes map onto its own.
+check_nightly_compare_mapping() {
+  local fake=$work/fake-slamsweep night=$work/night
+  mkdir -p "$night"
+  echo '{"counts": {"total": 0, "ok": 0, "failed": 0}, "runs": []}' >"$night/summary.json"
+  cat >"$fake" <<'EOF'
+#!/usr/bin/env bash
+# Stand-in for slamsweep: logs its arguments; `history record` creates the database; `history compare`
+# exits with $FAKE_COMPARE_STATUS.
+echo "$*" >>"$FAKE_LOG"
+if [[ "$1 $2" == "history record" ]]; then echo db >"$5"; exit 0; fi
+exit "${FAKE_COMPARE_STATUS:-0}"
+EOF
+  chmod +x "$fake"
+  export FAKE_LOG=$work/fake.log
+  : >"$FAKE_LOG"
+  expect_status 0 "nightly-compare.sh, first night (stand-in)" env SLAMSWEEP_BIN="$fake" \
+    "$jobs_dir/nightly-compare.sh" "$night" "$work/fake-history.sqlite"
+  if [[ $(cat "$FAKE_LOG") == "history record $night --history $work/fake-history.sqlite" ]]; then
+    pass "the first night is only recorded"
+  else
+    fail "first night: expected only 'history record', the stand-in saw: $(cat "$FAKE_LOG")"
+  fi
+  : >"$FAKE_LOG"
+  expect_status 3 "nightly-compare.sh passes a regression (3) on" env SLAMSWEEP_BIN="$fake" FAKE_COMPARE_STATUS=3 \
+    NIGHT_LABEL=n2 REGRESSION_ALPHA=0.01 REGRESSION_MIN_EFFECT=0.5 \
+    "$jobs_dir/nightly-compare.sh" "$night" "$work/fake-history.sqlite"
+  if grep -qx -- "history record $night --history $work/fake-history.sqlite --label n2" "$FAKE_LOG" &&
+    grep -qx -- "history compare $night --history $work/fake-history.sqlite --junit $night/regressions.xml \
+--previous --alpha 0.01 --min-effect 0.5" "$FAKE_LOG"; then
+    pass "record with the label, then compare with the previous night and the options"
+  else
+    fail "unexpected slamsweep commands: $(cat "$FAKE_LOG")"
+  fi
+  : >"$FAKE_LOG"
+  expect_status 0 "nightly-compare.sh with BASELINE_LABEL, no regression" \
+    env SLAMSWEEP_BIN="$fake" BASELINE_LABEL=base \
+    "$jobs_dir/nightly-compare.sh" "$night" "$work/fake-history.sqlite"
+  if grep -q -- "--baseline-label base" "$FAKE_LOG" && ! grep -q -- "--previous" "$FAKE_LOG"; then
+    pass "BASELINE_LABEL replaces --previous"
+  else
+    fail "BASELINE_LABEL not passed: $(cat "$FAKE_LOG")"
+  fi
+  expect_status 2 "nightly-compare.sh passes a compare error (2) on" env SLAMSWEEP_BIN="$fake" FAKE_COMPARE_STATUS=2 \
+    "$jobs_dir/nightly-compare.sh" "$night" "$work/fake-history.sqlite"
+  expect_status 4 "nightly-compare.sh on a folder without summary.json" env SLAMSWEEP_BIN="$fake" \
+    "$jobs_dir/nightly-compare.sh" "$work/precious" "$work/fake-history.sqlite"
+}
+
+# --- shard_merge: shards 1/2 + 2/2 merged equal one sweep ---------------------------------------------------
+
+# Compares two summary.json files: the same run ids with the same statuses, identical metrics for the
+# odometry runs (deterministic given the seed), the same metric names for the others.
+compare_summaries() {
+  python3 - "$1" "$2" <<'EOF'
+import json, sys
+single, merged = (json.load(open(path)) for path in sys.argv[1:3])
+problems = []
+runs_single = {run["run_id"]: run for run in single["runs"]}
+runs_merged = {run["run_id"]: run for run in merged["runs"]}
+if sorted(runs_single) != sorted(runs_merged):
+    problems.append(f"run ids differ: {sorted(runs_single)} vs {sorted(runs_merged)}")
+for run_id in sorted(set(runs_single) & set(runs_merged)):
+    a, b = runs_single[run_id], runs_merged[run_id]
+    if a["status"] != b["status"]:
+        problems.append(f"{run_id}: status {a['status']} vs {b['status']}")
+    if a["status"] != "ok":
+        problems.append(f"{run_id}: not ok ({a.get('reason')})")
+    if a["algorithm"] == "odometry" and a["metrics"] != b["metrics"]:
+        problems.append(f"{run_id}: odometry metrics differ")
+    if sorted(a["metrics"]) != sorted(b["metrics"]):
+        problems.append(f"{run_id}: metric names differ")
+if single["counts"] != merged["counts"]:
+    problems.append(f"counts {single['counts']} vs {merged['counts']}")
+odometry = [r for r in runs_single.values() if r["algorithm"] == "odometry" and "ape_trans" in r["metrics"]]
+if not odometry:
+    problems.append("no odometry run with ape_trans: the metric comparison would be vacuous")
+print("\n".join(problems) if problems else f"{len(runs_single)} runs equal")
+sys.exit(1 if problems else 0)
+EOF
+}
+
+check_shard_merge() {
+  local config=$root/tests/jobs/shard_sweep.yaml
+  cd "$work"
+  expect_status 0 "run-sweep.sh on the shard test config" "$jobs_dir/run-sweep.sh" "$config" single
+  expect_status 0 "run-shard.sh 1 2" "$jobs_dir/run-shard.sh" 1 2 "$config" shard-1
+  [[ ! -e shard-1/report ]] && pass "a shard writes no report" || fail "shard-1 has a report"
+  expect_status 0 "run-shard.sh 2 2" "$jobs_dir/run-shard.sh" 2 2 "$config" shard-2
+  expect_status 0 "merge-shards.sh" "$jobs_dir/merge-shards.sh" merged shard-1 shard-2
+  expect_log 'merged 2 shards: 4 runs, 0 failed' "merge-shards.sh reports 4 runs, 0 failed"
+  local file
+  for file in merged/junit.xml merged/report/index.html merged/results.sqlite; do
+    [[ -s "$file" ]] && pass "merge wrote $file" || fail "merge did not write $file"
+  done
+  expect_status 0 "merged summary.json equals the single sweep's" \
+    compare_summaries single/summary.json merged/summary.json
+  [[ $(grep -c '<testcase ' merged/junit.xml) == 4 ]] && pass "merged junit.xml has 4 testcases" ||
+    fail "merged junit.xml has $(grep -c '<testcase ' merged/junit.xml) testcases, expected 4"
+
+  # The job's parameters reach `slamsweep run`: one algorithm, one iteration = that cell's first run, same id.
+  expect_status 0 "run-sweep.sh with ALGORITHMS=odometry SEQUENCES=floor ITERATIONS=1" \
+    env ALGORITHMS=odometry SEQUENCES=floor ITERATIONS=1 "$jobs_dir/run-sweep.sh" "$config" filtered
+  local filtered_ids expected_ids
+  local list_ids='import json, sys
+print(" ".join(r["run_id"] for r in json.load(open(sys.argv[1]))["runs"]
+               if len(sys.argv) < 3 or (r["algorithm"] == sys.argv[2] and r["iteration"] == 0)))'
+  filtered_ids=$(python3 -c "$list_ids" filtered/summary.json)
+  expected_ids=$(python3 -c "$list_ids" single/summary.json odometry)
+  if [[ -n "$filtered_ids" && "$filtered_ids" == "$expected_ids" ]]; then
+    pass "the filtered sweep is the single sweep's odometry iteration 0 ($filtered_ids)"
+  else
+    fail "filtered sweep ran '$filtered_ids', expected '$expected_ids'"
+  fi
+
+  # Running a shard again into its old folder starts afresh (the nightly workspace is reused).
+  expect_status 0 "run-shard.sh 1 2 again into the same folder" "$jobs_dir/run-shard.sh" 1 2 "$config" shard-1
+  expect_log 'removing the earlier results in shard-1' "the earlier shard results are removed"
+  expect_log '2 runs to do, 0 already done' "no run is skipped as done"
+
+  # A failed run makes merge-shards.sh exit 1 (the nightly maps it to FAILURE): a shard whose icp-slam
+  # runs time out at once.
+  sed -e 's/timeout_s: 120/timeout_s: 0.001/; s/timeout_s: 60/timeout_s: 0.001/' "$config" >broken.yaml
+  expect_status 1 "run-shard.sh with runs that fail" "$jobs_dir/run-shard.sh" 1 1 broken.yaml broken-shard
+  expect_status 1 "merge-shards.sh of a shard with failed runs" "$jobs_dir/merge-shards.sh" broken-merged broken-shard
+  expect_log '[1-9][0-9]* runs failed' "merge-shards.sh counts the failed runs"
+
+  # nightly-compare.sh: the first night has nothing to compare with; an identical second night is no regression.
+  local help
+  help=$("$SLAMSWEEP_BIN" --help 2>&1 || true)
+  if grep -qE '^[[:space:]]+history[[:space:]]' <<<"$help"; then
+    expect_status 0 "nightly-compare.sh, first night" "$jobs_dir/nightly-compare.sh" merged history.sqlite
+    expect_log 'first, nothing to compare with' "the first night is recorded without a comparison"
+    expect_status 0 "nightly-compare.sh, second identical night" "$jobs_dir/nightly-compare.sh" single history.sqlite
+    [[ -s single/regressions.xml ]] && pass "nightly-compare.sh wrote regressions.xml" ||
+      fail "no single/regressions.xml"
+    if [[ -s single/regressions.xml ]] && ! grep -q '<failure' single/regressions.xml; then
+      pass "regressions.xml lists no regression"
+    else
+      fail "regressions.xml is missing or lists a regression between identical nights"
+    fi
+    expect_status 2 "nightly-compare.sh with an unknown baseline" env BASELINE_LABEL=no-such-night \
+      "$jobs_dir/nightly-compare.sh" single history.sqlite
+  else
+    echo "note: this slamsweep has no 'history' command yet: nightly-compare.sh not tested"
+  fi
+}
+
+# --- nightly: the nightly job's chain (shards, merge, history) three nights running -----------------------
+
+# run_night DIR CONFIG: the nightly job's steps for one night, results merged into DIR.
+run_night() {
+  local night=$1 config=$2
+  expect_status 0 "$night: run-shard.sh 1 2" "$jobs_dir/run-shard.sh" 1 2 "$config" "$night-shard-1"
+  expect_status 0 "$night: run-shard.sh 2 2" "$jobs_dir/run-shard.sh" 2 2 "$config" "$night-shard-2"
+  expect_status 0 "$night: merge-shards.sh" "$jobs_dir/merge-shards.sh" "$night" "$night-shard-1" "$night-shard-2"
+}
+
+check_nightly() {
+  local help
+  help=$("$SLAMSWEEP_BIN" --help 2>&1 || true)
+  if ! grep -qE '^[[:space:]]+history[[:space:]]' <<<"$help"; then
+    echo "skipped: this slamsweep has no 'history' command"
+    exit 77
+  fi
+  local config=$root/tests/jobs/nightly_sweep.yaml
+  cd "$work"
+  export SLAMSWEEP_HISTORY=$work/history.sqlite
+  run_night night-1 "$config"
+  expect_status 0 "night 1: nightly-compare.sh records the first night" env NIGHT_LABEL=night-1 \
+    "$jobs_dir/nightly-compare.sh" night-1
+  expect_log 'nothing to compare with' "night 1 is not compared"
+  [[ -s "$SLAMSWEEP_HISTORY" ]] && pass "the history database is at \$SLAMSWEEP_HISTORY" ||
+    fail "no history database at $SLAMSWEEP_HISTORY"
+
+  # The same setting again: no regression (exit 0, which the nightly job leaves SUCCESS).
+  run_night night-2 "$config"
+  expect_status 0 "night 2 (same setting): no regression" env NIGHT_LABEL=night-2 "$jobs_dir/nightly-compare.sh" night-2
+  if [[ -s night-2/regressions.xml ]] && ! grep -q '<failure' night-2/regressions.xml; then
+    pass "night 2: regressions.xml without failures"
+  else
+    fail "night 2: regressions.xml missing or with a failure"
+  fi
+
+  # Twenty times noisier odometry under the same noise name: a regression (exit 3, UNSTABLE in Jenkins).
+  sed -e 's/alpha1: 0.002, alpha2: 0.0001, alpha3: 0.002, alpha4: 0.0001/alpha1: 0.04, alpha2: 0.002, alpha3: 0.04,/' \
+    -e 's/alpha3: 0.04,}/alpha3: 0.04, alpha4: 0.002}/' "$config" >noisier.yaml
+  grep -q 'alpha1: 0.04' noisier.yaml && pass "noisier.yaml injects the noise" || fail "could not inject the noise"
+  run_night night-3 noisier.yaml
+  expect_status 3 "night 3 (noisier odometry): regression" env NIGHT_LABEL=night-3 \
+    "$jobs_dir/nightly-compare.sh" night-3
+  expect_log 'regression found' "nightly-compare.sh says so"
+  if grep -q '<failure' night-3/regressions.xml && grep -q 'odometry' night-3/regressions.xml; then
+    pass "night 3: regressions.xml has a failing testcase for odometry"
+  else
+    fail "night 3: regressions.xml lacks the odometry regression"
+  fi
+  # Against night 2 named as the baseline, the same verdict.
+  expect_status 3 "night 3 against BASELINE_LABEL=night-2" env BASELINE_LABEL=night-2 NIGHT_LABEL=night-3 \
+    "$jobs_dir/nightly-compare.sh" night-3
+}
+
+# --- quickstart: the parameterised job's sweep on the real quick-start config --------------------------------
+
+check_quickstart() {
+  cd "$work"
+  local status=0
+  "$jobs_dir/run-sweep.sh" "$root/configs/quickstart.yaml" quickstart >"$work/last.log" 2>&1 || status=$?
+  tail -5 "$work/last.log"
+  if [[ ! -s quickstart/summary.json ]]; then
+    fail "run-sweep.sh (exit $status) wrote no summary.json"
+    return
+  fi
+  local total failed
+  local count='import json, sys; print(json.load(open(sys.argv[1]))["counts"][sys.argv[2]])'
+  total=$(python3 -c "$count" quickstart/summary.json total)
+  failed=$(python3 -c "$count" quickstart/summary.json failed)
+  # The exit code says whether runs failed, as the Jenkinsfile reads it.
+  if { ((failed == 0)) && ((status == 0)); } || { ((failed > 0)) && ((status == 1)); }; then
+    pass "run-sweep.sh exit $status matches $failed failed runs"
+  else
+    fail "run-sweep.sh exited $status with $failed failed runs"
+  fi
+  ((failed == 0)) && pass "every quick-start run ok" || fail "$failed quick-start runs failed"
+  # 3 algorithms x 2 sequences x 1 noise x 3 iterations.
+  ((total == 18)) && pass "18 runs" || fail "$total runs, expected 18"
+  [[ $(grep -c '<testcase ' quickstart/junit.xml) == 18 ]] && pass "junit.xml has 18 testcases" ||
+    fail "junit.xml has $(grep -c '<testcase ' quickstart/junit.xml) testcases, expected 18"
+  python3 -c 'import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])' quickstart/junit.xml &&
+    pass "junit.xml is well-formed XML" || fail "junit.xml is not well-formed XML"
+  [[ -s quickstart/report/index.html ]] && grep -qi '<html' quickstart/report/index.html &&
+    pass "report/index.html written" || fail "report/index.html missing or not HTML"
+}
+
+case $case_name in
+  static)
+    check_jenkinsfile "$jobs_dir/Jenkinsfile" 2 "stage('Setup')" "stage('Sweep')" "stage('Publish')" \
+      "junit testResults: 'out/junit.xml', allowEmptyResults: false" "archiveArtifacts" "publishHTML" \
+      "reportDir: 'out/report'" "keepAll: true" "name: 'ALGORITHMS'" "name: 'SEQUENCES'" "name: 'ITERATIONS'"
+    check_jenkinsfile "$jobs_dir/Jenkinsfile.nightly" 4 "cron(" "jobs/run-shard.sh" "jobs/merge-shards.sh" \
+      "jobs/nightly-compare.sh" "unstable(" "error(" "publishHTML" "junit testResults"
+    check_dockerfile
+    check_bad_arguments
+    check_nightly_compare_mapping
+    if command -v shellcheck >/dev/null; then
+      (cd "$root" && shellcheck -x -S warning jobs/*.sh tests/jobs/jobs_scripts_test.sh) >"$work/last.log" 2>&1 &&
+        pass "shellcheck finds no warning in jobs/*.sh" || { fail "shellcheck warnings:"; cat "$work/last.log" >&2; }
+    else
+      echo "note: shellcheck is not installed: the scripts are not linted"
+    fi
+    ;;
+  shard_merge) check_shard_merge ;;
+  nightly) check_nightly ;;
+  quickstart) check_quickstart ;;
+  *)
+    echo "unknown case $case_name" >&2
+    exit 2
+    ;;
+esac
+
+echo "$case_name: $((checks - failures)) of $checks checks passed"
+((failures == 0))
