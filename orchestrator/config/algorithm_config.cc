@@ -7,6 +7,7 @@
 #include <set>
 #include <string_view>
 
+#include "orchestrator/config/option_checks.h"
 #include "orchestrator/config/yaml_fields.h"
 
 namespace slamsweep::orchestrator {
@@ -17,18 +18,6 @@ constexpr std::string_view kInputFormats[] = {"rawlog", "carmen", "tum"};
 constexpr std::string_view kTrajectoryFormats[] = {"tum", "kitti", "csv", "mrpt", "carmen"};
 constexpr std::string_view kMapFormats[] = {"map_server", "mrpt", "pgm"};
 constexpr std::string_view kPlaceholders[] = {"input", "output_dir", "run_dir", "seed", "iteration"};
-
-template <std::size_t N>
-bool OneOf(const std::string& value, const std::string_view (&choices)[N]) {
-  return std::find(std::begin(choices), std::end(choices), value) != std::end(choices);
-}
-
-template <std::size_t N>
-std::string Choices(const std::string_view (&choices)[N]) {
-  std::string text;
-  for (std::size_t i = 0; i < N; ++i) text += (i == 0 ? "" : i + 1 == N ? " or " : ", ") + std::string(choices[i]);
-  return text;
-}
 
 nlohmann::json ParameterValue(const std::filesystem::path& file, const YAML::Node& node, const std::string& path) {
   if (!node.IsScalar()) FailExpected(file, node, path, "a number, text or true/false");

@@ -1,6 +1,10 @@
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
+#include <iterator>
 #include <string>
+#include <string_view>
 
 #include "orchestrator/matrix/run_spec.h"
 
@@ -11,5 +15,29 @@ namespace slamsweep::orchestrator {
 /// (the caller adds it).
 void ValidateEvaluationOptions(const EvaluationOptions& evaluation, const std::string& path);
 void ValidateThreshold(const Threshold& threshold, const std::string& path);
+
+/// The fields of an `evaluation:` block, read through either reader of strict fields (YAML in the
+/// sweep file, JSON in run.json): both offer Text, Number and Unsigned with a fallback.
+template <typename Fields>
+void ReadEvaluationFields(Fields& fields, EvaluationOptions& evaluation) {
+  evaluation.align = fields.Text("align", evaluation.align);
+  evaluation.rpe_delta_m = fields.Number("rpe_delta_m", evaluation.rpe_delta_m);
+  evaluation.t_max_diff_s = fields.Number("t_max_diff_s", evaluation.t_max_diff_s);
+  evaluation.stages = fields.Unsigned("stages", evaluation.stages);
+  evaluation.map_resolution_m = fields.Number("map_resolution_m", evaluation.map_resolution_m);
+}
+
+/// Whether `value` is one of a fixed list of names, and the list for "expected ..." messages.
+template <std::size_t N>
+bool OneOf(const std::string& value, const std::string_view (&choices)[N]) {
+  return std::find(std::begin(choices), std::end(choices), value) != std::end(choices);
+}
+
+template <std::size_t N>
+std::string Choices(const std::string_view (&choices)[N]) {
+  std::string text;
+  for (std::size_t i = 0; i < N; ++i) text += (i == 0 ? "" : i + 1 == N ? " or " : ", ") + std::string(choices[i]);
+  return text;
+}
 
 }  // namespace slamsweep::orchestrator

@@ -24,18 +24,6 @@ constexpr std::string_view kMetrics[] = {"ape_trans",      "ape_rot",       "rpe
                                          "corners",        "enclosed_areas"};
 constexpr std::string_view kStatistics[] = {"rmse", "mean", "median", "std", "min", "max", "sse", "n", "value"};
 
-template <std::size_t N>
-bool OneOf(const std::string& value, const std::string_view (&choices)[N]) {
-  return std::find(std::begin(choices), std::end(choices), value) != std::end(choices);
-}
-
-template <std::size_t N>
-std::string Choices(const std::string_view (&choices)[N]) {
-  std::string text;
-  for (std::size_t i = 0; i < N; ++i) text += (i == 0 ? "" : ", ") + std::string(choices[i]);
-  return text;
-}
-
 bool IsSafeName(const std::string& name) {
   return !name.empty() && name.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-") ==
                               std::string::npos;
@@ -69,11 +57,7 @@ EvaluationOptions ParseEvaluation(const std::filesystem::path& file, const YAML:
   EvaluationOptions evaluation;
   if (!node.IsDefined() || node.IsNull()) return evaluation;
   YamlFields fields(file, node, "evaluation");
-  evaluation.align = fields.Text("align", evaluation.align);
-  evaluation.rpe_delta_m = fields.Number("rpe_delta_m", evaluation.rpe_delta_m);
-  evaluation.t_max_diff_s = fields.Number("t_max_diff_s", evaluation.t_max_diff_s);
-  evaluation.stages = fields.Unsigned("stages", evaluation.stages);
-  evaluation.map_resolution_m = fields.Number("map_resolution_m", evaluation.map_resolution_m);
+  ReadEvaluationFields(fields, evaluation);
   fields.Finish();
   LocatedCheck(file, node, [&] { ValidateEvaluationOptions(evaluation, "evaluation"); });
   return evaluation;

@@ -184,11 +184,7 @@ EvaluationOptions EvaluationFromJson(const json& value, const std::string& path)
   const json object = WithoutNulls(value, path);
   JsonFields fields(object, path);
   EvaluationOptions evaluation;
-  evaluation.align = fields.Text("align", evaluation.align);
-  evaluation.rpe_delta_m = fields.Number("rpe_delta_m", evaluation.rpe_delta_m);
-  evaluation.t_max_diff_s = fields.Number("t_max_diff_s", evaluation.t_max_diff_s);
-  evaluation.stages = fields.Unsigned("stages", evaluation.stages);
-  evaluation.map_resolution_m = fields.Number("map_resolution_m", evaluation.map_resolution_m);
+  ReadEvaluationFields(fields, evaluation);
   fields.Finish();
   ValidateEvaluationOptions(evaluation, path);
   return evaluation;
