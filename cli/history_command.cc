@@ -11,7 +11,7 @@
 #include "evaluator/core/input_error.h"
 #include "orchestrator/history/history_store.h"
 #include "orchestrator/history/regression.h"
-#include "orchestrator/store/atomic_file.h"
+#include "orchestrator/files/atomic_file.h"
 
 namespace slamsweep::cli {
 namespace {

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "orchestrator/store/atomic_file.h"
+#include "orchestrator/files/atomic_file.h"
 
 namespace slamsweep::orchestrator {
 namespace {

@@ -1,6 +1,6 @@
 #include "orchestrator/store/summary_json.h"
 
-#include "orchestrator/store/atomic_file.h"
+#include "orchestrator/files/atomic_file.h"
 
 namespace slamsweep::orchestrator {
 namespace {

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "evaluator/core/input_error.h"
-#include "orchestrator/store/atomic_file.h"
+#include "orchestrator/files/atomic_file.h"
 
 namespace slamsweep::orchestrator {
 

@@ -1,14 +1,11 @@
 #include "orchestrator/worker/run_result.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <chrono>
-#include <cstring>
 #include <ctime>
 #include <stdexcept>
 #include <utility>
+
+#include "orchestrator/files/atomic_file.h"
 
 namespace slamsweep::orchestrator {
 
@@ -59,37 +56,7 @@ std::string NowIso8601Utc() {
 }
 
 void WriteJsonFileAtomically(const std::filesystem::path& file, const nlohmann::json& value) {
-  const std::filesystem::path temporary = file.string() + ".tmp";
-  const std::string text = value.dump(2) + "\n";
-  const auto fail = [&](const char* step) {
-    const std::string detail = std::strerror(errno);
-    ::unlink(temporary.c_str());
-    throw std::runtime_error(file.string() + ": cannot " + step + " (" + detail + ")");
-  };
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) fail("create the temporary file");
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      ::close(fd);
-      fail("write");
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  if (::fsync(fd) != 0) {
-    ::close(fd);
-    fail("fsync");
-  }
-  if (::close(fd) != 0) fail("close");
-  if (::rename(temporary.c_str(), file.c_str()) != 0) fail("rename");
-  // The rename itself is durable only once the directory is synced.
-  const int dir = ::open(file.parent_path().empty() ? "." : file.parent_path().c_str(), O_RDONLY | O_DIRECTORY);
-  if (dir >= 0) {
-    ::fsync(dir);
-    ::close(dir);
-  }
+  WriteFileAtomically(file, value.dump(2) + "\n");
 }
 
 }  // namespace slamsweep::orchestrator

@@ -1,4 +1,4 @@
-#include "orchestrator/store/atomic_file.h"
+#include "orchestrator/files/atomic_file.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -48,6 +48,13 @@ void WriteFileAtomically(const std::filesystem::path& file, std::string_view con
     const int error = errno;
     ::unlink(temporary.c_str());
     Fail(file, "replace", error);
+  }
+  // The rename itself is durable only once the folder holding it is synced.
+  const std::filesystem::path folder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+  const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir >= 0) {
+    ::fsync(dir);
+    ::close(dir);
   }
 }
 

@@ -6,7 +6,8 @@
 namespace slamsweep::orchestrator {
 
 /// Replaces `file` with `content` so that a reader (or a crash) sees either the old or the new file,
-/// never a half-written one: writes a temporary file beside it, fsyncs it, renames it over `file`.
+/// never a half-written one: writes a temporary file beside it, fsyncs it, renames it over `file`
+/// and fsyncs the folder.
 /// Throws InputError naming the file and the system error when it cannot be written.
 void WriteFileAtomically(const std::filesystem::path& file, std::string_view content);
 
