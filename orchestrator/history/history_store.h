@@ -26,16 +26,6 @@ struct NightEntry {
   std::filesystem::path report_index;
 };
 
-/// The identity of a series across nights.
-struct SeriesKey {
-  std::string algorithm;
-  std::string sequence;
-  std::string noise;
-  std::string metric;
-  std::string statistic;
-  std::string unit;
-};
-
 /// One night's value of one series, for history plots: the samples and their summary.
 struct HistoryPoint {
   NightEntry night;

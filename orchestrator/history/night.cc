@@ -13,7 +13,8 @@
 namespace slamsweep::orchestrator {
 namespace {
 
-using SeriesKey = std::tuple<std::string, std::string, std::string, std::string, std::string>;
+/// Orders a night's series: algorithm, sequence, noise, metric, statistic.
+using SeriesOrder = std::tuple<std::string, std::string, std::string, std::string, std::string>;
 using CellKey = std::tuple<std::string, std::string, std::string>;
 
 }  // namespace
@@ -47,7 +48,7 @@ Night ReadNight(const std::filesystem::path& result_dir, const std::string& labe
   if (night.label.empty()) night.label = fmt::format("{}#{}", absolute.string(), night.sweep_id);
   night.report_index = absolute / "report" / "index.html";
 
-  std::map<SeriesKey, SampleSeries> series;
+  std::map<SeriesOrder, SampleSeries> series;
   std::map<CellKey, CellCounts> cells;
   // Runs() is ordered by iteration within a cell, so samples keep the iteration order.
   for (const StoredRun& run : store.Runs()) {
@@ -63,7 +64,12 @@ Night ReadNight(const std::filesystem::path& result_dir, const std::string& labe
     for (const StoredMetric& metric : run.metrics) {
       SampleSeries& s = series[{run.algorithm, run.sequence, run.noise, metric.metric, metric.statistic}];
       if (s.metric.empty()) {
-        s = {run.algorithm, run.sequence, run.noise, metric.metric, metric.statistic, metric.unit, {}};
+        s.algorithm = run.algorithm;
+        s.sequence = run.sequence;
+        s.noise = run.noise;
+        s.metric = metric.metric;
+        s.statistic = metric.statistic;
+        s.unit = metric.unit;
       }
       if (metric.value.has_value() && std::isfinite(*metric.value)) s.values.push_back(*metric.value);
     }
@@ -73,12 +79,16 @@ Night ReadNight(const std::filesystem::path& result_dir, const std::string& labe
   return night;
 }
 
+bool SameSeries(const SeriesKey& a, const SeriesKey& b) {
+  return a.algorithm == b.algorithm && a.sequence == b.sequence && a.noise == b.noise && a.metric == b.metric &&
+         a.statistic == b.statistic;
+}
+
 const SampleSeries* FindSeries(const Night& night, const std::string& algorithm, const std::string& sequence,
                                const std::string& noise, const std::string& metric, const std::string& statistic) {
-  const auto it = std::find_if(night.series.begin(), night.series.end(), [&](const SampleSeries& s) {
-    return s.algorithm == algorithm && s.sequence == sequence && s.noise == noise && s.metric == metric &&
-           s.statistic == statistic;
-  });
+  const SeriesKey wanted{algorithm, sequence, noise, metric, statistic, ""};
+  const auto it = std::find_if(night.series.begin(), night.series.end(),
+                               [&](const SampleSeries& s) { return SameSeries(s, wanted); });
   return it == night.series.end() ? nullptr : &*it;
 }
 

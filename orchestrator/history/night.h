@@ -7,15 +7,23 @@
 
 namespace slamsweep::orchestrator {
 
-/// One algorithm x sequence x noise x metric x statistic of a sweep: the values of every ok run (one per
-/// iteration, in iteration order) — the samples a regression test compares.
-struct SampleSeries {
+/// The identity of a series across nights: algorithm x sequence x noise x metric x statistic (and
+/// the unit its values carry).
+struct SeriesKey {
   std::string algorithm;
   std::string sequence;
   std::string noise;
   std::string metric;
   std::string statistic;
   std::string unit;
+};
+
+/// Whether two keys name the same series (the unit follows from the metric).
+bool SameSeries(const SeriesKey& a, const SeriesKey& b);
+
+/// One series of a sweep: the values of every ok run (one per iteration, in iteration order) — the
+/// samples a regression test compares.
+struct SampleSeries : SeriesKey {
   /// Finite values only; a run that reported null for this statistic is left out.
   std::vector<double> values;
 };

@@ -36,14 +36,8 @@ enum class Verdict {
 std::string_view VerdictName(Verdict verdict);
 
 /// The comparison of one algorithm x sequence x noise x metric between a baseline night and the current one.
-struct Finding {
-  std::string algorithm;
-  std::string sequence;
-  std::string noise;
-  std::string metric;
-  /// "rmse" for trajectory metrics, "value" for map metrics.
-  std::string statistic;
-  std::string unit;
+/// Its statistic is "rmse" for trajectory metrics, "value" for map metrics.
+struct Finding : SeriesKey {
   std::size_t baseline_n = 0;
   std::size_t current_n = 0;
   double baseline_median = 0.0;

@@ -83,11 +83,9 @@ class HistorySite final : public SiteExtension {
     std::vector<orchestrator::SeriesKey> keys = store.SeriesKeys();
     if (current && !current_recorded) {
       for (const orchestrator::SampleSeries& s : current->series) {
-        const bool known = std::any_of(keys.begin(), keys.end(), [&](const orchestrator::SeriesKey& k) {
-          return k.algorithm == s.algorithm && k.sequence == s.sequence && k.noise == s.noise &&
-                 k.metric == s.metric && k.statistic == s.statistic;
-        });
-        if (!known) keys.push_back({s.algorithm, s.sequence, s.noise, s.metric, s.statistic, s.unit});
+        const bool known = std::any_of(keys.begin(), keys.end(),
+                                       [&](const orchestrator::SeriesKey& k) { return orchestrator::SameSeries(k, s); });
+        if (!known) keys.push_back(s);
       }
     }
     for (const orchestrator::SeriesKey& key : keys) {
