@@ -4,7 +4,11 @@
 //
 //   map_metrics_bench                  Google Benchmark timings (one OpenCV thread); the counter
 //                                      heap_peak_MB is the counted heap peak of one call.
-//   map_metrics_bench --peak_rss       one call in a fresh process, its resident-memory peak.
+//   map_metrics_bench --peak_rss       one call in a fresh process (as in a worker, which scores
+//                                      one map): its time, page faults and resident-memory peak.
+//   map_metrics_bench --repeat=N       N calls on the tiled map and nothing else, for counting
+//                                      instructions with `perf stat` (the difference between two
+//                                      N is the work of the calls, whatever the machine's load).
 //
 // Memory is measured two ways. (1) Counting: every operator new and every cv::Mat buffer
 // (through a counting cv::MatAllocator installed as OpenCV's default) adds its usable size to
@@ -19,6 +23,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -229,6 +234,13 @@ void BM_EnclosedAreas(benchmark::State& state) {
 }
 BENCHMARK(BM_EnclosedAreas)->Unit(benchmark::kMillisecond);
 
+double CpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) * 1e-6;
+}
+
 std::int64_t StatusKilobytes(const char* field) {
   std::ifstream status("/proc/self/status");
   std::string line;
@@ -248,14 +260,29 @@ int PeakRss(const OccupancyGrid& (*map)(), const char* name) {
   const bool reset = clear_refs.good();
   const std::int64_t heap_before = g_heap_bytes.load();
   g_heap_peak.store(heap_before);
+  const long faults_before = MinorPageFaults();
+  const double cpu_before_s = CpuSeconds();
+  const auto wall_before = std::chrono::steady_clock::now();
   const PaperMetrics metrics = ComputePaperMetrics(grid);
+  const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_before).count();
+  const double cpu_ms = (CpuSeconds() - cpu_before_s) * 1e3;
+  const long faults = MinorPageFaults() - faults_before;
   const std::int64_t hwm_kb = StatusKilobytes("VmHWM");
   std::printf(
       "%s: corners %lld, enclosed areas %lld; input grid %.1f MB; peak above input: RSS %.1f MB%s, "
-      "counted heap %.1f MB\n",
+      "counted heap %.1f MB; first call: %.1f ms wall, %.1f ms CPU, %ld page faults\n",
       name, static_cast<long long>(metrics.corners.corners), static_cast<long long>(metrics.enclosed.enclosed_areas),
       grid.cells.size() * 4.0 / 1e6, (hwm_kb - rss_before_kb) / 1e3,
-      reset ? "" : " (VmHWM could not be reset: includes the input)", (g_heap_peak.load() - heap_before) / 1e6);
+      reset ? "" : " (VmHWM could not be reset: includes the input)", (g_heap_peak.load() - heap_before) / 1e6, wall_ms, cpu_ms,
+      faults);
+  return 0;
+}
+
+int Repeat(int calls) {
+  const OccupancyGrid& grid = TelecomTiled();
+  std::int64_t corners = 0;
+  for (int i = 0; i < calls; ++i) corners += ComputePaperMetrics(grid).corners.corners;
+  std::printf("%d calls, %lld corners\n", calls, static_cast<long long>(corners));
   return 0;
 }
 
@@ -263,6 +290,17 @@ int PeakRss(const OccupancyGrid& (*map)(), const char* name) {
 }  // namespace slamsweep::evaluator
 
 int main(int argc, char** argv) {
+  // The Google Benchmark figures are the work of one call in a process that scores maps one
+  // after another. glibc's defaults return freed memory to the kernel above a threshold that
+  // moves with the sizes freed before, so whether a call faults its pages in anew depended on
+  // the order of frees in the call before, not on the code measured (one reordering swung the
+  // figure by 50 ms). Fixed thresholds make the heap stay. --peak_rss, a fresh process with
+  // glibc's defaults, gives the first call's cost with every page fault included.
+  const bool first_call_only = argc > 1 && std::strncmp(argv[1], "--peak_rss", 10) == 0;
+  if (!first_call_only) {
+    mallopt(M_MMAP_THRESHOLD, 64 << 20);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  }
   static CountingMatAllocator counting_allocator;
   cv::Mat::setDefaultAllocator(&counting_allocator);
   cv::setNumThreads(1);  // the target is per core
@@ -273,6 +311,7 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--peak_rss=padded") == 0) {
       return slamsweep::evaluator::PeakRss(slamsweep::evaluator::TelecomPadded, "telecom_padded 2000 x 2000");
     }
+    if (std::strncmp(argv[i], "--repeat=", 9) == 0) return slamsweep::evaluator::Repeat(std::atoi(argv[i] + 9));
   }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

@@ -1,7 +1,6 @@
 #include "evaluator/map/corner_count.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +15,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/map/harris_corners.h"
+#include "evaluator/map/laplacian_of_gaussian.h"
 #include "evaluator/map/run_components.h"
 #include "evaluator/map/zero_scan.h"
 
@@ -40,21 +40,6 @@ namespace {
 }
 
 bool OddIn(int value, int low, int high) { return value >= low && value <= high && value % 2 == 1; }
-
-// Known cells 1 - p (free bright), unknown cells 0. Written as a bit mask rather than a
-// conditional so that the compiler vectorises it (it may not speculate 1 - p past a branch).
-cv::Mat RemappedImage(const OccupancyGrid& grid) {
-  cv::Mat image(grid.height, grid.width, CV_32FC1);
-  float* out = image.ptr<float>(0);
-  const float* cells = grid.cells.data();
-  const std::size_t n = grid.cells.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const float p = cells[i];
-    const std::uint32_t keep = 0u - static_cast<std::uint32_t>(p >= 0.0f);
-    out[i] = std::bit_cast<float>(std::bit_cast<std::uint32_t>(1.0f - p) & keep);
-  }
-  return image;
-}
 
 // Keeps the pixels of one block of n <= 32 with |v| > threshold, zeroes the others (to +0,
 // as `|v| > t ? v : 0` does) and returns the kept ones as a bit mask. With SSE2 four pixels
@@ -128,18 +113,11 @@ CornerCount ComputeCornerCount(const ScorableGrid& scorable, const CornerCountOp
   Validate(options);
   CornerCount result;
 
-  // Laplacian of Gaussian, ping-ponging between two float images: never more than two alive.
-  cv::Mat log;
-  {
-    cv::Mat remapped = RemappedImage(scorable.grid());
-    cv::Mat blurred;
-    cv::GaussianBlur(remapped, blurred, cv::Size(options.gaussian_kernel_cells, options.gaussian_kernel_cells),
-                     options.gaussian_sigma_cells, options.gaussian_sigma_cells, cv::BORDER_DEFAULT);
-    log = remapped;  // reuse the buffer
-    cv::Laplacian(blurred, log, CV_32F, options.laplacian_kernel_cells, 1.0, 0.0, cv::BORDER_DEFAULT);
-  }
-
-  const float max_abs = MaxAbs(log.ptr<float>(0), log.total());  // log is continuous
+  LaplacianOfGaussianImage laplacian = LaplacianOfGaussian(
+      scorable.grid(),
+      {options.gaussian_kernel_cells, options.gaussian_sigma_cells, options.laplacian_kernel_cells});
+  cv::Mat& log = laplacian.image;
+  const float max_abs = laplacian.max_abs;
   result.max_abs_log = max_abs;
   // The threshold is a float, as when cv::compare tests a float image against a scalar.
   const float threshold = static_cast<float>(options.structure_fraction * static_cast<double>(max_abs));

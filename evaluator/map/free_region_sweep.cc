@@ -168,12 +168,15 @@ FreeRegionSweep::FreeRegionSweep(const LevelRuns& levels, const std::vector<int>
     }
   }
 
+  // Each patch's group, looked up once per pair below.
+  std::vector<std::uint16_t> patch_group(patch_count_);
+  for (std::size_t p = 0; p < patch_count_; ++p) patch_group[p] = static_cast<std::uint16_t>(group_of_rank(patch_rank[p]));
   // Adjacency buckets: 2 g for those of group g between known patches, 2 g + 1 for those with
   // an unknown patch.
   const auto bucket_of = [&](const Adjacency& pair) -> std::size_t {
-    const std::size_t group_a = group_of_rank(patch_rank[static_cast<std::size_t>(pair.a)]);
-    const std::size_t group_b = group_of_rank(patch_rank[static_cast<std::size_t>(pair.b)]);
-    return 2 * std::max(group_a, group_b) + ((group_a == 0 || group_b == 0) ? 1 : 0);
+    const std::size_t group_a = patch_group[static_cast<std::size_t>(pair.a)];
+    const std::size_t group_b = patch_group[static_cast<std::size_t>(pair.b)];
+    return 2 * std::max(group_a, group_b) + static_cast<std::size_t>(std::min(group_a, group_b) == 0);
   };
   // Along a boundary the same two patches touch on row after row. A patch usually alternates
   // between a few neighbours (left and right walls), so remembering each patch's latest

@@ -1,6 +1,5 @@
 #include "evaluator/map/occupied_proportion.h"
 
-#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -27,22 +26,10 @@ OccupiedProportion ComputeOccupiedProportion(const ScorableGrid& scorable, const
   const OccupancyGrid& grid = scorable.grid();
   const double unknown_p = options.unknown_occupancy;
 
-  // Two passes: the threshold is needed before any cell can be classified. The sum runs in
-  // four interleaved double accumulators so that it is not one long chain of dependent adds.
+  // The threshold needs the sum of p, which the grid's check computed; one pass classifies.
   const std::size_t n = grid.cells.size();
   const float* cells = grid.cells.data();
-  double partial[4] = {0.0, 0.0, 0.0, 0.0};
-  std::size_t i = 0;
-  // Unknown cells (negative) add +0: a bit mask, not a branch, so that the loop vectorises.
-  const auto known_p = [](float p) {
-    const std::uint32_t keep = 0u - static_cast<std::uint32_t>(p >= 0.0f);
-    return static_cast<double>(std::bit_cast<float>(std::bit_cast<std::uint32_t>(p) & keep));
-  };
-  for (; i + 4 <= n; i += 4) {
-    for (int k = 0; k < 4; ++k) partial[k] += known_p(cells[i + k]);
-  }
-  for (; i < n; ++i) partial[0] += known_p(cells[i]);
-  const double sum_known = (partial[0] + partial[1]) + (partial[2] + partial[3]);
+  const double sum_known = scorable.known_probability_sum();
   const double sum_p = sum_known + unknown_p * static_cast<double>(scorable.unknown_cells());
 
   OccupiedProportion result;

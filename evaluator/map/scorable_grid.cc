@@ -1,6 +1,8 @@
 #include "evaluator/map/scorable_grid.h"
 
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <sstream>
 #include <string>
 
@@ -30,14 +32,27 @@ ScorableGrid ScorableGrid::Check(const OccupancyGrid& grid) {
     throw InputError("map has " + std::to_string(grid.cells.size()) + " cells; expected width x height = " +
                      std::to_string(grid.width) + " x " + std::to_string(grid.height));
   }
-  // One branch-free counting pass (it vectorises); only when it finds a bad cell do we look
-  // for which one, so the common case costs one read of the grid.
+  // One branch-free pass (it vectorises) counts the cells and sums the known probabilities for
+  // the occupied proportion; only when it finds a bad cell do we look for which one, so the
+  // common case costs one read of the grid. The sum runs in four interleaved double
+  // accumulators so that it is not one long chain of dependent adds; unknown cells (negative)
+  // add +0 through a bit mask, not a branch.
   std::int64_t in_range = 0;
   std::int64_t unknown = 0;
-  for (const float p : grid.cells) {
+  double partial[4] = {0.0, 0.0, 0.0, 0.0};
+  const auto count = [&](float p) {
     in_range += static_cast<int>((p >= 0.0f) & (p <= 1.0f));  // NaN fails both tests
     unknown += static_cast<int>(p < 0.0f);
+    const std::uint32_t keep = 0u - static_cast<std::uint32_t>(p >= 0.0f);
+    return static_cast<double>(std::bit_cast<float>(std::bit_cast<std::uint32_t>(p) & keep));
+  };
+  const std::size_t n = grid.cells.size();
+  const float* cells = grid.cells.data();
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4) {
+    for (int k = 0; k < 4; ++k) partial[k] += count(cells[i + k]);
   }
+  for (; i < n; ++i) partial[0] += count(cells[i]);
   const std::int64_t known = in_range;
   if (in_range + unknown != static_cast<std::int64_t>(grid.cells.size())) {
     for (std::size_t i = 0; i < grid.cells.size(); ++i) {
@@ -46,7 +61,7 @@ ScorableGrid ScorableGrid::Check(const OccupancyGrid& grid) {
     }
   }
   if (known == 0) throw InputError("map has no known cell: nothing to score");
-  return ScorableGrid(grid, known);
+  return ScorableGrid(grid, known, (partial[0] + partial[1]) + (partial[2] + partial[3]));
 }
 
 }  // namespace slamsweep::evaluator

@@ -21,12 +21,16 @@ class ScorableGrid {
   std::int64_t cell_count() const { return static_cast<std::int64_t>(grid_->cells.size()); }
   std::int64_t known_cells() const { return known_cells_; }
   std::int64_t unknown_cells() const { return cell_count() - known_cells_; }
+  /// The sum of p over the known cells (in double, from the same pass as the check).
+  double known_probability_sum() const { return known_probability_sum_; }
 
  private:
-  ScorableGrid(const OccupancyGrid& grid, std::int64_t known_cells) : grid_(&grid), known_cells_(known_cells) {}
+  ScorableGrid(const OccupancyGrid& grid, std::int64_t known_cells, double known_probability_sum)
+      : grid_(&grid), known_cells_(known_cells), known_probability_sum_(known_probability_sum) {}
 
   const OccupancyGrid* grid_;
   std::int64_t known_cells_;
+  double known_probability_sum_;
 };
 
 }  // namespace slamsweep::evaluator

@@ -110,37 +110,39 @@ class TileGrid {
   std::vector<TileExtent> extents_;
 };
 
-// Computes the response of `area` into `response`, running cv::cornerHarris on that area
-// widened by `margin` (clipped to the image). cornerHarris reads the real pixels around a
-// sub-image for its derivatives, but its block sum reflects at the sub-image's edge, hence
-// the margin, which is computed and thrown away.
+// Computes the response of `area` (image coordinates) into the band that starts at image row
+// `band_first_row`, running cv::cornerHarris on that area widened by `margin` (clipped to the
+// image). cornerHarris reads the real pixels around a sub-image for its derivatives, but its
+// block sum reflects at the sub-image's edge, hence the margin, which is computed and thrown
+// away.
 void HarrisOnArea(const cv::Mat& image, cv::Rect area, int margin, const HarrisResponseOptions& options,
-                  cv::Mat& response) {
+                  int band_first_row, cv::Mat& band) {
   const cv::Rect widened =
       cv::Rect(area.x - margin, area.y - margin, area.width + 2 * margin, area.height + 2 * margin) &
       cv::Rect(0, 0, image.cols, image.rows);
   cv::Mat area_response;  // fresh, hence continuous like the whole-image call's (see below)
   cv::cornerHarris(image(widened), area_response, options.block_size_cells, options.aperture_cells, options.harris_k,
                    cv::BORDER_DEFAULT);
-  area_response(cv::Rect(area.x - widened.x, area.y - widened.y, area.width, area.height)).copyTo(response(area));
+  area_response(cv::Rect(area.x - widened.x, area.y - widened.y, area.width, area.height))
+      .copyTo(band(cv::Rect(area.x, area.y - band_first_row, area.width, area.height)));
 }
 
 }  // namespace
 
-cv::Mat SparseHarrisResponse(const cv::Mat& image, const HarrisResponseOptions& options, const RowRuns* nonzero,
-                             std::vector<cv::Rect>& computed_areas) {
+void ForEachHarrisResponseBand(const cv::Mat& image, const HarrisResponseOptions& options, const RowRuns* nonzero,
+                               const std::function<void(const HarrisResponseBand&)>& visit) {
   const int reach = ResponseReach(options);
   const int margin = options.block_size_cells + 1;
-  computed_areas.clear();
+  if (image.empty()) return;
   if (image.rows < 2 * kTileCells || image.cols < 2 * kTileCells || reach > kTileCells) {
-    cv::Mat response;
-    cv::cornerHarris(image, response, options.block_size_cells, options.aperture_cells, options.harris_k,
+    HarrisResponseBand whole;
+    cv::cornerHarris(image, whole.response, options.block_size_cells, options.aperture_cells, options.harris_k,
                      cv::BORDER_DEFAULT);
-    computed_areas.push_back(cv::Rect(0, 0, image.cols, image.rows));
-    return response;
+    whole.computed_areas.push_back(cv::Rect(0, 0, image.cols, image.rows));
+    visit(whole);
+    return;
   }
   const TileGrid tiles(image, nonzero);
-  cv::Mat response = cv::Mat::zeros(image.size(), CV_32FC1);
   // cornerHarris's last step treats a continuous image as one long row and leaves a scalar
   // remainder of fewer than 64 pixels at its end. A tile's sub-image ends with margin rows at
   // least 64 wide, so its remainder is thrown away; the last tile row is computed as one
@@ -148,8 +150,12 @@ cv::Mat SparseHarrisResponse(const cv::Mat& image, const HarrisResponseOptions& 
   // pixels as the whole-image call's.
   // Consecutive active tiles of a tile row share one call (fewer calls, shared margins).
   const int last_tile_row = tiles.rows() - 1;
-  bool last_row_active = false;
   for (int tr = 0; tr < tiles.rows(); ++tr) {
+    const cv::Range rows = tiles.RowRange(tr);
+    HarrisResponseBand band;
+    band.first_row = rows.start;
+    band.response = cv::Mat::zeros(rows.size(), image.cols, CV_32FC1);
+    bool active = false;
     for (int tc = 0; tc < tiles.cols();) {
       if (!tiles.Active(tr, tc, reach)) {
         ++tc;
@@ -157,25 +163,22 @@ cv::Mat SparseHarrisResponse(const cv::Mat& image, const HarrisResponseOptions& 
       }
       const int first_tile = tc;
       while (tc < tiles.cols() && tiles.Active(tr, tc, reach)) ++tc;
-      if (tr == last_tile_row) {
-        last_row_active = true;
-        continue;
-      }
+      active = true;
+      if (tr == last_tile_row) break;  // computed below, whole
       const cv::Rect span = tiles.Tile(tr, first_tile) | tiles.Tile(tr, tc - 1);
-      computed_areas.push_back(span);
-      HarrisOnArea(image, span, margin, options, response);
+      band.computed_areas.push_back(span);
+      HarrisOnArea(image, span, margin, options, band.first_row, band.response);
     }
+    if (tr == last_tile_row && active) {
+      const int band_row = std::max(0, (rows.start - margin) / 64 * 64);
+      cv::Mat band_response;
+      cv::cornerHarris(image.rowRange(band_row, image.rows), band_response, options.block_size_cells,
+                       options.aperture_cells, options.harris_k, cv::BORDER_DEFAULT);
+      band_response.rowRange(rows.start - band_row, band_response.rows).copyTo(band.response);
+      band.computed_areas.push_back(cv::Rect(0, rows.start, image.cols, rows.size()));
+    }
+    visit(band);
   }
-  if (last_row_active) {
-    const int first_row = tiles.RowRange(last_tile_row).start;
-    const int band_row = std::max(0, (first_row - margin) / 64 * 64);
-    cv::Mat band_response;
-    cv::cornerHarris(image.rowRange(band_row, image.rows), band_response, options.block_size_cells,
-                     options.aperture_cells, options.harris_k, cv::BORDER_DEFAULT);
-    band_response.rowRange(first_row - band_row, band_response.rows).copyTo(response.rowRange(first_row, image.rows));
-    computed_areas.push_back(cv::Rect(0, first_row, image.cols, image.rows - first_row));
-  }
-  return response;
 }
 
 }  // namespace slamsweep::evaluator

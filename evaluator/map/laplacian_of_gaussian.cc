@@ -1,0 +1,70 @@
+#include "evaluator/map/laplacian_of_gaussian.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <opencv2/imgproc.hpp>
+
+#include "evaluator/map/zero_scan.h"
+
+namespace slamsweep::evaluator {
+namespace {
+
+// 64 rows of a 2000-cell map are 0.5 MB per float band: the remapped and blurred bands stay
+// in L2 between the two filters.
+constexpr int kBandRows = 64;
+constexpr int kMinBandedWidth = 16;
+
+// Rows [row_begin, row_end) of the remapped image into `out`: known cells 1 - p, unknown 0.
+// Written as a bit mask rather than a conditional so that the compiler vectorises it (it may
+// not speculate 1 - p past a branch).
+void RemapRows(const OccupancyGrid& grid, int row_begin, int row_end, cv::Mat& out) {
+  out.create(row_end - row_begin, grid.width, CV_32FC1);
+  const float* cells = grid.cells.data() + static_cast<std::size_t>(row_begin) * grid.width;
+  float* remapped = out.ptr<float>(0);
+  const std::size_t n = static_cast<std::size_t>(row_end - row_begin) * grid.width;
+  for (std::size_t i = 0; i < n; ++i) {
+    const float p = cells[i];
+    const std::uint32_t keep = 0u - static_cast<std::uint32_t>(p >= 0.0f);
+    remapped[i] = std::bit_cast<float>(std::bit_cast<std::uint32_t>(1.0f - p) & keep);
+  }
+}
+
+}  // namespace
+
+LaplacianOfGaussianImage LaplacianOfGaussian(const OccupancyGrid& grid, const LaplacianOfGaussianOptions& options) {
+  LaplacianOfGaussianImage result;
+  result.image.create(grid.height, grid.width, CV_32FC1);
+  const int height = grid.height;
+  // Rows each filter reads beyond the rows it computes (a 1-cell Laplacian is a 3 x 3 kernel).
+  const int blur_reach = options.gaussian_kernel_cells / 2;
+  const int laplacian_reach = std::max(1, options.laplacian_kernel_cells / 2);
+  const cv::Size gaussian_size(options.gaussian_kernel_cells, options.gaussian_kernel_cells);
+
+  // OpenCV's filters take another path on single-column images, whose results depend on the
+  // height: narrow maps (cheap anyway) are filtered as one band.
+  const int band_rows = grid.width < kMinBandedWidth ? height : kBandRows;
+
+  cv::Mat remapped;  // reused by every band
+  cv::Mat blurred;
+  for (int row_begin = 0; row_begin < height; row_begin += band_rows) {
+    const int row_end = std::min(height, row_begin + band_rows);
+    // Blurred rows the Laplacian reads, and remapped rows the blur reads for those.
+    const int blurred_begin = std::max(0, row_begin - laplacian_reach);
+    const int blurred_end = std::min(height, row_end + laplacian_reach);
+    const int remapped_begin = std::max(0, blurred_begin - blur_reach);
+    const int remapped_end = std::min(height, blurred_end + blur_reach);
+
+    RemapRows(grid, remapped_begin, remapped_end, remapped);
+    cv::GaussianBlur(remapped.rowRange(blurred_begin - remapped_begin, blurred_end - remapped_begin), blurred,
+                     gaussian_size, options.gaussian_sigma_cells, options.gaussian_sigma_cells, cv::BORDER_DEFAULT);
+    cv::Mat band = result.image.rowRange(row_begin, row_end);  // written in place: same size and type
+    cv::Laplacian(blurred.rowRange(row_begin - blurred_begin, row_end - blurred_begin), band, CV_32F,
+                  options.laplacian_kernel_cells, 1.0, 0.0, cv::BORDER_DEFAULT);
+    result.max_abs = std::max(result.max_abs, MaxAbs(band.ptr<float>(0), band.total()));
+  }
+  return result;
+}
+
+}  // namespace slamsweep::evaluator
