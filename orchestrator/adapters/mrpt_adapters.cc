@@ -91,6 +91,28 @@ CollectedOutputs CollectMrpt(const RunInputs& inputs, const RunPaths& paths, con
 
 }  // namespace
 
+std::vector<IniSetting> IcpSlamDefaultSettings() {
+  return {
+      // Why each group: see the header. Points map for matching, occupancy grid for the output map.
+      {kApp, "pointsMap_count", "1"},
+      {kApp, "matchAgainstTheGrid", "false"},
+      {kApp, "insertionLinDistance", "0.5"},
+      {kApp, "insertionAngDistance", "20"},
+      // ICP thresholds of MRPT's icp-slam_demo_classic.ini, the demo that matches against points.
+      {"ICP", "maxIterations", "80"},
+      {"ICP", "thresholdDist", "0.3"},
+      {"ICP", "thresholdAng_DEG", "5"},
+      {"ICP", "ALFA", "0.8"},
+      {"ICP", "smallestThresholdDist", "0.05"},
+      {"ICP", "onlyUniqueRobust", "true"},
+      {"ICP", "corresponding_points_decimation", "5"},
+      // As MRPT's rbpf-slam intel template: rays widen with distance, so free space between diverging
+      // beams is filled instead of left as grey streaks, which the enclosed-areas metric counts as
+      // pockets (215 instead of 95 on intel's first 300 scans).
+      {"MappingApplication_occupancyGrid_00_insertOpts", "wideningBeamsWithDistance", "1"},
+  };
+}
+
 std::vector<IniSetting> IcpSlamSettings(const RunSpec& spec, const std::string& rawlog_path) {
   const std::vector<IniSetting> controlled = {
       {kApp, "rawlog_file", rawlog_path},
@@ -98,7 +120,7 @@ std::vector<IniSetting> IcpSlamSettings(const RunSpec& spec, const std::string& 
       {kApp, "SHOW_PROGRESS_3D_REAL_TIME", "0"},
       {kApp, "SAVE_3D_SCENE", "0"},
   };
-  return Compose({}, spec.algorithm.parameters, controlled);
+  return Compose(IcpSlamDefaultSettings(), spec.algorithm.parameters, controlled);
 }
 
 std::vector<IniSetting> RbpfSlamSettings(const RunSpec& spec, const std::string& rawlog_path, std::size_t scan_count) {

@@ -347,6 +347,13 @@ RunSpec RunSpecFromJson(const json& value) {
   });
 }
 
+int AdapterRevision(const std::string& adapter) {
+  // Raise an adapter's revision whenever its built-in settings change what its runs compute.
+  // mrpt-icp-slam 2: points-map matching and denser insertion on top of MRPT's template (issue 3).
+  if (adapter == "mrpt-icp-slam") return 2;
+  return 1;
+}
+
 json RunIdentity(const RunSpec& spec) {
   json sequence = ToJson(spec.sequence);
   // Descriptive texts do not change what a run computes; editing a citation must not re-run a sweep.
@@ -354,11 +361,15 @@ json RunIdentity(const RunSpec& spec) {
   sequence.erase("licence");
   sequence.erase("download");
   const json algorithm = ToJson(spec.algorithm);
-  return json{{"algorithm",
-               {{"name", algorithm["name"]},
-                {"adapter", algorithm["adapter"]},
-                {"parameters", algorithm["parameters"]},
-                {"command", algorithm["command"]}}},
+  json algorithm_identity = {{"name", algorithm["name"]},
+                             {"adapter", algorithm["adapter"]},
+                             {"parameters", algorithm["parameters"]},
+                             {"command", algorithm["command"]}};
+  // Only from revision 2 on, so that the ids of runs whose adapter never changed stay the same.
+  if (const int revision = AdapterRevision(spec.algorithm.adapter); revision > 1) {
+    algorithm_identity["adapter_revision"] = revision;
+  }
+  return json{{"algorithm", std::move(algorithm_identity)},
               {"sequence", sequence},
               {"noise", ToJson(spec.noise)},
               {"iteration", spec.iteration},

@@ -107,6 +107,11 @@ RunSpec RunSpecFromJson(const nlohmann::json& json);
 nlohmann::json ToJson(const evaluator::CatalogEntry& entry);
 evaluator::CatalogEntry CatalogEntryFromJson(const nlohmann::json& json, const std::string& path = "sequence");
 
+/// The revision of a built-in adapter's own settings (1 for adapters that never changed them, and
+/// for unknown names). Part of the run identity from 2 on: results of an adapter whose defaults
+/// changed are not reused by a re-run into the same output folder.
+int AdapterRevision(const std::string& adapter);
+
 /// The part of a run that decides its result (algorithm, sequence, noise, iteration, seed) as
 /// canonical JSON; its hash names the run, so an unchanged run keeps its id across sweeps.
 /// The sequence's citation, licence and download texts are left out: they do not change a result.

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "orchestrator/sweep/worker_environment.h"
+
 namespace slamsweep::orchestrator {
 
 std::int64_t TimeLimitMinutes(double timeout_s, double overhead_s) {
@@ -58,8 +60,12 @@ std::string BatchScript(const std::filesystem::path& worker_program, const std::
          << "if [ -z \"$run_dir\" ] || [ ! -d \"$run_dir\" ]; then\n"
          << "  echo \"slamsweep: no run folder for array task $SLURM_ARRAY_TASK_ID in $manifest\" >&2\n"
          << "  exit 2\n"
-         << "fi\n"
-         << "exec " << ShellQuote(worker_program.string()) << " worker \"$run_dir\" >\"$run_dir/worker.log\" 2>&1\n";
+         << "fi\n";
+  for (const auto& [name, value] : WorkerEnvironment()) {
+    // Computed where sbatch runs (the orchestrator's environment, which sbatch exports).
+    script << name << "=" << ShellQuote(value) << "\nexport " << name << "\n";
+  }
+  script << "exec " << ShellQuote(worker_program.string()) << " worker \"$run_dir\" >\"$run_dir/worker.log\" 2>&1\n";
   return script.str();
 }
 

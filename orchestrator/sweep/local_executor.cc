@@ -3,6 +3,8 @@
 #include <cstdlib>
 #include <utility>
 
+#include "orchestrator/sweep/worker_environment.h"
+
 namespace slamsweep::orchestrator {
 
 LocalExecutor::LocalExecutor(std::filesystem::path worker_program) : worker_program_(std::move(worker_program)) {}
@@ -10,6 +12,7 @@ LocalExecutor::LocalExecutor(std::filesystem::path worker_program) : worker_prog
 void LocalExecutor::Start(const RunSpec& run, const std::filesystem::path& run_dir) {
   ProcessSpec spec;
   spec.argv = {worker_program_.string(), "worker", run_dir.string()};
+  spec.extra_env = WorkerEnvironment();
   spec.log_path = run_dir / "worker.log";
   spec.log_cap_bytes = 1 << 20;
   spec.timeout_s = run.algorithm.timeout_s + kWorkerOverheadS;

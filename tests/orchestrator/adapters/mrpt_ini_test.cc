@@ -115,6 +115,27 @@ TEST(MrptSettingsTest, AdapterControlledKeysWinAndCannotBeParameters) {
   EXPECT_THROW(IcpSlamSettings(spec, "input/x.rawlog"), InputError);
 }
 
+TEST(MrptSettingsTest, IcpDefaultsMatchAgainstPointsAndInsertDenselyUnlessAParameterSaysOtherwise) {
+  RunSpec spec = testing::SimulatedRun("mrpt-icp-slam");
+  const std::string template_text =
+      "[ICP]\nthresholdDist=0.5\n[MappingApplication]\ninsertionLinDistance=2.0\nmatchAgainstTheGrid=true\n"
+      "pointsMap_count=0 // 1\noccupancyGrid_count=1\n";
+  const std::string ini = RenderIni(template_text, IcpSlamSettings(spec, "input/x.rawlog"));
+  EXPECT_NE(ini.find("insertionLinDistance=0.5\n"), std::string::npos) << ini;
+  EXPECT_NE(ini.find("matchAgainstTheGrid=false\n"), std::string::npos) << ini;
+  EXPECT_NE(ini.find("pointsMap_count=1\n"), std::string::npos) << ini;
+  EXPECT_NE(ini.find("thresholdDist=0.3\n"), std::string::npos) << ini;
+  // The grid stays: it is the map the adapter collects.
+  EXPECT_NE(ini.find("occupancyGrid_count=1\n"), std::string::npos) << ini;
+
+  spec.algorithm.parameters = {{"MappingApplication.insertionLinDistance", 2.0},
+                               {"MappingApplication.matchAgainstTheGrid", true}};
+  const std::string tuned = RenderIni(template_text, IcpSlamSettings(spec, "input/x.rawlog"));
+  EXPECT_NE(tuned.find("insertionLinDistance=2.0\n"), std::string::npos) << tuned;
+  EXPECT_NE(tuned.find("matchAgainstTheGrid=true\n"), std::string::npos) << tuned;
+  EXPECT_EQ(tuned.find("insertionLinDistance=0.5\n"), std::string::npos) << tuned;
+}
+
 TEST(MrptSettingsTest, RbpfLogsAboutOneStageMapPerStageAndDefaultsToFiveParticles) {
   RunSpec spec = testing::SimulatedRun("mrpt-rbpf-slam");
   spec.evaluation.stages = 24;

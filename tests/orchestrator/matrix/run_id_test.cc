@@ -84,6 +84,20 @@ TEST(RunIdTest, IsStableAndChangesWithEveryInput) {
   EXPECT_EQ(MakeRunId(changed), MakeRunId(base));
 }
 
+TEST(RunIdTest, AChangedAdaptersRevisionIsPartOfTheIdentityUnchangedAdaptersKeepTheirs) {
+  RunSpec icp = Spec("icp", "seq", "clean");
+  icp.algorithm.adapter = "mrpt-icp-slam";
+  EXPECT_EQ(AdapterRevision("mrpt-icp-slam"), 2);
+  EXPECT_EQ(RunIdentity(icp)["algorithm"]["adapter_revision"], 2);
+  // Revision 1 adds nothing: the ids of earlier sweeps of these adapters stay valid.
+  for (const char* adapter : {"odometry", "mrpt-rbpf-slam", "command"}) {
+    RunSpec other = Spec("x", "seq", "clean");
+    other.algorithm.adapter = adapter;
+    EXPECT_EQ(AdapterRevision(adapter), 1) << adapter;
+    EXPECT_FALSE(RunIdentity(other)["algorithm"].contains("adapter_revision")) << adapter;
+  }
+}
+
 TEST(RunIdTest, NamesThatSanitizeAlikeStayDistinct) {
   SweepConfig config = testing::TwoByTwo();
   config.algorithms = {testing::Algorithm("a/b", "odometry"), testing::Algorithm("a<b", "odometry"),

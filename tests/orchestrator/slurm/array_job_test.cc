@@ -12,6 +12,7 @@
 #include <fstream>
 
 #include "orchestrator/slurm/slurm_command.h"
+#include "orchestrator/sweep/worker_environment.h"
 #include "tests/support/shared_data.h"
 
 namespace slamsweep::orchestrator {
@@ -130,6 +131,12 @@ TEST_F(BatchScriptTest, ATaskWithoutARunFolderExitsTwoAndSaysWhy) {
   const CommandOutput missing = RunTask(2);
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_THAT(missing.output, HasSubstr("no run folder for array task 2"));
+}
+
+TEST_F(BatchScriptTest, TheWorkerGetsTheWorkerEnvironment) {
+  std::ofstream(worker_) << "#!/bin/sh\nprintf '%s' \"$GLIBC_TUNABLES\"\n";
+  ASSERT_EQ(RunTask(0).exit_code, 0);
+  EXPECT_EQ(ReadText(dir_ / "runs" / "a" / "worker.log"), WorkerEnvironment().front().second);
 }
 
 TEST(RunSlurmCommand, AMissingProgramIsAnExitCodeNotAnException) {
