@@ -1,8 +1,10 @@
 // The mapper against a simulated sequence, whose floor plan is the exact map.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdlib>
 
+#include "evaluator/map/occupied_proportion.h"
 #include "evaluator/mapping/occupancy_mapper.h"
 #include "evaluator/simulation/simulated_sequence.h"
 
@@ -55,6 +57,22 @@ TEST(MapFromSimulationTest, MapFromTheExactGroundTruthReproducesTheWalls) {
     free_in_plan += (!OccupancyGrid::IsUnknown(plan.cells[i]) && plan.cells[i] < 0.5f) ? 1 : 0;
   }
   EXPECT_GT(static_cast<double>(free_in_plan) / free, 0.99);
+}
+
+TEST(MapFromSimulationTest, OccupiedProportionOfTheExactMapCountsWallsNotFreeSpace) {
+  // The paper's occupied proportion thresholds at the mean p (unknown = 0). On a map rendered from
+  // the exact path, free space must end below that mean: the occupied cells are the walls and their
+  // fringe, far fewer than the known cells (free space clamped at p = 0.12 counted them all).
+  const SimulatedSequence sequence = NoiseFreeSequence();
+  OccupancyMapperOptions options;
+  options.fixed_extent = ExtentOf(sequence.floor_plan);
+  const OccupancyGrid map = OccupancyMapper(options).Build(sequence.scans, sequence.ground_truth.poses());
+  const OccupiedProportion proportion = ComputeOccupiedProportion(map);
+  std::int64_t walls = 0;
+  for (const float p : map.cells) walls += Occupied(p) ? 1 : 0;
+  const std::int64_t known = proportion.total_cells - proportion.unknown_cells;
+  EXPECT_GE(proportion.occupied_cells, walls);
+  EXPECT_LT(proportion.occupied_cells, known / 3) << proportion.occupied_cells << " of " << known << " known";
 }
 
 TEST(MapFromSimulationTest, EveryStageEqualsAMapOfTheScansSoFarAndTheLastEqualsTheFinalMap) {

@@ -94,7 +94,7 @@ TEST(OccupancyMapperTest, RepeatedScansSaturateAtTheClamps) {
   const OccupancyGrid grid = OccupancyMapper(SmallFixedGrid()).Build(scans, poses);
   const int row = RowOf(1.05, 20, 0.1);
   EXPECT_FLOAT_EQ(grid.at(row, 35), 0.9706878f);  // l = 3.5
-  EXPECT_FLOAT_EQ(grid.at(row, 20), 0.1192029f);  // l = -2
+  EXPECT_FLOAT_EQ(grid.at(row, 20), 0.0099518f);  // l = -4.6
 }
 
 TEST(OccupancyMapperTest, DiagonalBeamsEndInTheCellOfTheirEndPoint) {
