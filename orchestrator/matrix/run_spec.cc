@@ -350,7 +350,8 @@ RunSpec RunSpecFromJson(const json& value) {
 int AdapterRevision(const std::string& adapter) {
   // Raise an adapter's revision whenever its built-in settings change what its runs compute.
   // mrpt-icp-slam 2: points-map matching and denser insertion on top of MRPT's template (issue 3).
-  if (adapter == "mrpt-icp-slam") return 2;
+  // odometry 2: its map is rendered with free space clamped at p = 0.01 instead of 0.12.
+  if (adapter == "mrpt-icp-slam" || adapter == "odometry") return 2;
   return 1;
 }
 
