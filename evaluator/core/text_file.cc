@@ -5,8 +5,12 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <memory>
+#include <optional>
+#include <utility>
 
+#include "evaluator/core/gzip_inflate.h"
 #include "evaluator/core/input_error.h"
 
 namespace slamsweep::evaluator {
@@ -19,14 +23,14 @@ std::string QuoteField(std::string_view text) {
   return "'" + shown + "'";
 }
 
-bool HasGzipMagic(const std::filesystem::path& path) {
+std::string ReadWhole(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  unsigned char magic[2] = {0, 0};
-  in.read(reinterpret_cast<char*>(magic), 2);
-  return in.gcount() == 2 && magic[0] == 0x1f && magic[1] == 0x8b;
+  if (!in) throw InputError(Located(path, 0, "cannot open file for reading"));
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-std::string ReadGzip(const std::filesystem::path& path) {
+// zlib's streaming inflate, for data libdeflate refused: it says how far the data was good.
+std::string ReadGzipStreaming(const std::filesystem::path& path) {
   struct GzCloser {
     void operator()(gzFile_s* file) const { gzclose(file); }
   };
@@ -62,10 +66,10 @@ std::string ReadTextFile(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path, error)) {
     throw InputError(Located(path, 0, "no such file (expected a readable regular file)"));
   }
-  if (HasGzipMagic(path)) return ReadGzip(path);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(Located(path, 0, "cannot open file for reading"));
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  std::string bytes = ReadWhole(path);
+  if (!HasGzipMagic(bytes)) return bytes;
+  if (std::optional<std::string> text = InflateWholeGzip(bytes)) return std::move(*text);
+  return ReadGzipStreaming(path);
 }
 
 std::vector<std::string_view> SplitFields(std::string_view line, std::string_view separators) {

@@ -8,7 +8,9 @@
 #include <cstring>
 #include <algorithm>
 #include <fstream>
+#include <optional>
 
+#include "evaluator/core/gzip_inflate.h"
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
 #include "evaluator/formats/trajectory/output_file.h"
@@ -337,11 +339,6 @@ class CarmenLogParser {
   CarmenOdomRecord odom_;
 };
 
-bool HasGzipMagic(std::string_view bytes) {
-  return bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f &&
-         static_cast<unsigned char>(bytes[1]) == 0x8b;
-}
-
 /// Inflates gzip `compressed` piece by piece into a small window and hands the complete lines of
 /// each piece to `parser`. Concatenated gzip members are read one after another, as gzip does;
 /// anything else after a member is ignored, as zlib's gzread does.
@@ -426,6 +423,8 @@ CarmenLog ParseCarmenLog(std::string_view content, const std::filesystem::path& 
 CarmenLog ReadCarmenLog(const std::filesystem::path& path) {
   const std::string bytes = ReadBytes(path);
   if (!HasGzipMagic(bytes)) return ParseCarmenLog(bytes, path);
+  if (const std::optional<std::string> text = InflateWholeGzip(bytes)) return ParseCarmenLog(*text, path);
+  // Damaged: zlib's streaming inflate parses what is good and says where the data ends.
   CarmenLogParser parser(path);
   InflateAndParse(bytes, path, parser);
   return parser.Finish();
