@@ -31,8 +31,8 @@ void ReadSequence(benchmark::State& state, const std::string& relative) {
   state.counters["scans"] = static_cast<double>(scans);
 }
 
-/// The stages on their own, to see where the time goes. Inflate is core's ReadTextFile (gzread into
-/// a growing string), the path ReadCarmenLog used before it inflated and parsed in one pass.
+/// The stages on their own, to see where the time goes. Inflate is core's ReadTextFile: the whole
+/// file inflated by libdeflate, as ReadCarmenLog does before it parses.
 void Inflate(benchmark::State& state, const std::string& relative) {
   const std::filesystem::path path = SharedDataset(relative);
   if (!std::filesystem::exists(path)) {
