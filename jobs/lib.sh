@@ -40,6 +40,18 @@ jobs_run() {
   "$@"
 }
 
+# Runs `slamsweep ARGS...` (a run) and leaves its exit code in $status: failed SLAM runs (exit 1)
+# are results for the later steps to report (the script exits with $status at its end), anything
+# else (2 config/usage, 130 interrupted) ends the job at once with that code.
+jobs_run_sweep() {
+  status=0
+  jobs_run "$SLAMSWEEP_BIN" "$@" || status=$?
+  case $status in
+    0 | 1) ;;
+    *) jobs_die "$status" "slamsweep run exited with $status (2 config/usage, 130 interrupted)" ;;
+  esac
+}
+
 # Resolves the slamsweep binary into $SLAMSWEEP_BIN, or exits with a message saying how to build it.
 jobs_find_binary() {
   local build_dir=${SLAMSWEEP_BUILD_DIR:-$SLAMSWEEP_ROOT/build}

@@ -25,12 +25,7 @@ jobs_fresh_output "$output"
 
 args=(run "$config" --shard "$index/$count" --output "$output" --keep-going --no-report)
 [[ -n "${JOBS:-}" ]] && args+=(--jobs "$JOBS")
-status=0
-jobs_run "$SLAMSWEEP_BIN" "${args[@]}" || status=$?
-case $status in
-  0 | 1) ;;
-  *) jobs_die "$status" "slamsweep run exited with $status (2 config/usage, 130 interrupted)" ;;
-esac
+jobs_run_sweep "${args[@]}"
 jobs_require_files "$output/summary.json"
 jobs_log "shard $index/$count: $(jobs_summary_count "$output" ok) ok," \
   "$(jobs_summary_count "$output" failed) failed -> $output"

@@ -24,12 +24,7 @@ args=(run "$config" --output "$output" --keep-going)
 [[ -n "${ITERATIONS:-}" ]] && args+=(--iterations "$ITERATIONS")
 [[ -n "${JOBS:-}" ]] && args+=(--jobs "$JOBS")
 
-status=0
-jobs_run "$SLAMSWEEP_BIN" "${args[@]}" || status=$?
-case $status in
-  0 | 1) ;;
-  *) jobs_die "$status" "slamsweep run exited with $status (2 config/usage, 130 interrupted)" ;;
-esac
+jobs_run_sweep "${args[@]}"
 jobs_require_files "$output/summary.json" "$output/junit.xml" "$output/report/index.html"
 jobs_log "$(jobs_summary_count "$output" ok) ok, $(jobs_summary_count "$output" failed) failed of" \
   "$(jobs_summary_count "$output" total) runs; report: $output/report/index.html"
