@@ -20,6 +20,7 @@
 #include "evaluator/noise/random.h"
 #include "evaluator/noise/range_noise.h"
 #include "evaluator/sequence/sequence_file.h"
+#include "evaluator/sequence/robot_log_file.h"
 #include "evaluator/simulation/simulated_sequence.h"
 
 namespace slamsweep::cli {
@@ -124,6 +125,7 @@ void RegisterConvert(CLI::App& data, const Streams& streams) {
     double drift_rad_per_m = 0.0;
     std::string range_noise;
     std::uint64_t seed = 1;
+    std::string reference_out;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = data.add_subcommand("convert", "write a sequence for SLAM programs, optionally with noise");
@@ -136,6 +138,8 @@ void RegisterConvert(CLI::App& data, const Streams& streams) {
   command->add_option("--range-noise", options->range_noise,
                       "sigma_m[,dropout_probability[,short_reading_probability]]");
   command->add_option("--seed", options->seed, "noise seed (odometry: DeriveSeed(seed, 0), ranges: DeriveSeed(seed, 1))");
+  command->add_option("--reference-out", options->reference_out,
+                      "also write the reference trajectory (TUM) here; keep it away from the SLAM program");
   command->callback([options, streams] {
     const ev::SequenceWriteFormat format = ev::ParseSequenceWriteFormat(options->to, "--to");
     ev::Sequence sequence = LoadSource(options->input);
@@ -172,7 +176,14 @@ void RegisterConvert(CLI::App& data, const Streams& streams) {
     if (range_noise != ev::RangeNoise{}) {
       sequence.scans = ev::ApplyRangeNoise(sequence.scans, range_noise, ev::DeriveSeed(options->seed, 1));
     }
-    ev::WriteSequence(sequence, options->output, format);
+    // Only scans and odometry go into a program's input; the reference goes to its own file, on request.
+    ev::WriteRobotLog(ev::RobotLogOf(sequence), options->output, format);
+    if (!options->reference_out.empty()) {
+      if (!sequence.reference) {
+        throw ev::InputError(options->input.source + ": --reference-out: the sequence has no reference trajectory");
+      }
+      ev::WriteTum(*sequence.reference, options->reference_out);
+    }
 
     nlohmann::json record;
     record["source"] = options->input.source;
@@ -260,8 +271,9 @@ void RegisterSimulate(CLI::App& data, const Streams& streams) {
     std::filesystem::create_directories(dir, error);
     if (error) throw ev::InputError(dir.string() + ": cannot create the output folder (" + error.message() + ")");
     ev::WriteMapServer(simulated.floor_plan, dir / "floor_plan.yaml");
-    ev::WriteSequence(sequence, dir / "sequence.log", ev::SequenceWriteFormat::kCarmen);
-    if (ev::RawlogSupported()) ev::WriteSequence(sequence, dir / "sequence.rawlog", ev::SequenceWriteFormat::kRawlog);
+    const ev::RobotLog robot = ev::RobotLogOf(sequence);
+    ev::WriteRobotLog(robot, dir / "sequence.log", ev::SequenceWriteFormat::kCarmen);
+    if (ev::RawlogSupported()) ev::WriteRobotLog(robot, dir / "sequence.rawlog", ev::SequenceWriteFormat::kRawlog);
     ev::WriteTum(*sequence.reference, dir / "ground_truth.tum");
     ev::WriteTum(sequence.odometry, dir / "odometry.tum");
     nlohmann::json specification = simulated.specification;

@@ -17,6 +17,8 @@ void RegisterEvalMapCommand(CLI::App& eval, const Streams& streams) {
   struct Options {
     std::string map_path;
     std::optional<int> unknown_value;
+    bool no_crop = false;
+    int crop_margin_cells = 2;
     bool json = false;
   };
   auto options = std::make_shared<Options>();
@@ -26,19 +28,26 @@ void RegisterEvalMapCommand(CLI::App& eval, const Streams& streams) {
   command->add_option("--unknown-value", options->unknown_value,
                       "grey value (0-255) that marks unknown cells in a bare PGM/PNG (map_saver: 205)")
       ->check(CLI::Range(0, 255));
+  command->add_flag("--no-crop", options->no_crop,
+                    "score the grid as it is (the raw-grid profile) instead of its known cells' bounding box");
+  command->add_option("--crop-margin", options->crop_margin_cells, "cells kept around the known cells when cropping")
+      ->check(CLI::NonNegativeNumber);
   command->add_flag("--json", options->json, "print one JSON object instead of a table");
   command->callback([options, streams] {
     ev::MapReadOptions read_options;
     read_options.unknown_value = options->unknown_value;
     const ev::OccupancyGrid grid = ev::ReadMap(options->map_path, read_options);
-    const nlohmann::json j = ev::ComputePaperMetrics(grid).ToJson();
+    ev::PaperMetricsOptions metric_options;
+    metric_options.canvas.crop = !options->no_crop;
+    metric_options.canvas.crop_margin_cells = options->crop_margin_cells;
+    const nlohmann::json j = ev::ComputePaperMetrics(grid, metric_options).ToJson();
     if (options->json) {
       streams.out << j.dump() << "\n";
       return;
     }
     TextTable table("paper map metrics — " + options->map_path);
     for (const char* key : {"occupied_to_free_unknown", "occupied_to_all", "unknown_to_all", "corners",
-                            "enclosed_areas"}) {
+                            "enclosed_areas", "width", "height", "cropped_width", "cropped_height"}) {
       table.Add(key, j.at(key).dump());
     }
     table.Add("parameters", j.at("parameters").dump());

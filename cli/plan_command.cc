@@ -25,6 +25,7 @@ void RegisterPlanCommand(CLI::App& app, const Streams& streams) {
   command->callback([options, streams] {
     // The same loading as `run`, so the plan shows exactly what run would start.
     const LoadedSweep sweep = LoadSweep(options->config_path, options->selection);
+    streams.err << orchestrator::OdometryIsReferenceWarnings(sweep.runs);
     if (options->json) {
       streams.out << orchestrator::PlanJson(sweep.runs).dump(2) << "\n";
     } else {

@@ -11,6 +11,7 @@
 #include "cli/command.h"
 #include "cli/data_sources.h"
 #include "cli/sweep_loading.h"
+#include "orchestrator/matrix/plan_listing.h"
 #include "orchestrator/matrix/shard.h"
 #include "orchestrator/process/interruption.h"
 #include "orchestrator/slurm/slurm_executor.h"
@@ -27,6 +28,7 @@ struct RunOptions {
   std::string rerun;
   std::string output;
   bool keep_going = false;
+  bool reuse_stale = false;
   std::string executor = "local";
   std::string slurm_partition;
   bool no_report = false;
@@ -47,6 +49,7 @@ std::string CommandLine(const RunOptions& options) {
   if (!options.rerun.empty()) line += " --rerun " + options.rerun;
   if (!options.output.empty()) line += " --output " + options.output;
   if (options.keep_going) line += " --keep-going";
+  if (options.reuse_stale) line += " --reuse-stale";
   if (options.executor != "local") line += " --executor " + options.executor;
   if (!options.slurm_partition.empty()) line += " --slurm-partition " + options.slurm_partition;
   return line;
@@ -60,6 +63,7 @@ int Run(const RunOptions& options, const Streams& streams, const std::string& co
   settings.jobs = options.jobs > 0 ? options.jobs : DefaultJobs(sweep.config.workers);
   settings.failure_budget = options.keep_going ? 0 : sweep.config.failure_budget;
   settings.rerun_failed = options.rerun == "failed";
+  settings.reuse_stale = options.reuse_stale;
   settings.config_path = std::filesystem::absolute(options.config).string();
   settings.config_sha = sweep.config_hash;
   settings.command_line = command_line;
@@ -82,9 +86,15 @@ int Run(const RunOptions& options, const Streams& streams, const std::string& co
   auto status = orchestrator::MakeStatus(streams.out, smart, display_slots);
   streams.out << fmt::format("sweep {}: {} runs ({} jobs) -> {}\n", settings.name, sweep.runs.size(), settings.jobs,
                              settings.output_dir.string());
+  streams.err << orchestrator::OdometryIsReferenceWarnings(sweep.runs);
   const orchestrator::SweepOutcome outcome = RunSweep(sweep.runs, settings, *executor, *status);
   streams.out << fmt::format("{} ok, {} failed, {} done earlier, {} not started{}\n", outcome.ok, outcome.failed,
                              outcome.already_done, outcome.not_started, outcome.interrupted ? " (interrupted)" : "");
+  if (outcome.stale > 0) {
+    streams.out << fmt::format("{} earlier result{} computed by another slamsweep revision or program build {} {}\n",
+                               outcome.stale, outcome.stale == 1 ? "" : "s", outcome.stale == 1 ? "was" : "were",
+                               settings.reuse_stale ? "reused (--reuse-stale)" : "run again");
+  }
   streams.out << "results: " << (settings.output_dir / "summary.json").string() << "\n";
   if (!options.no_report && !outcome.interrupted) WriteSweepReport(settings.output_dir, streams);
   return outcome.ExitCode();
@@ -103,6 +113,8 @@ void RegisterRunCommand(CLI::App& app, const Streams& streams, int& exit_code) {
       ->check(CLI::IsMember({"failed"}));
   command->add_option("-o,--output", options->output, "output directory (default: the config's output)");
   command->add_flag("-k,--keep-going", options->keep_going, "ignore the config's failure budget");
+  command->add_flag("--reuse-stale", options->reuse_stale,
+                    "reuse finished runs computed by another slamsweep revision or program build (default: run them again)");
   command->add_flag("--no-report", options->no_report, "do not write the HTML report");
   command->add_option("--executor", options->executor, "where runs execute: local worker processes or one Slurm job array")
       ->check(CLI::IsMember({"local", "slurm"}));

@@ -9,6 +9,7 @@
 #include "cli/data_sources.h"
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
+#include "orchestrator/adapters/build_stamp.h"
 #include "orchestrator/adapters/mrpt_ini.h"
 #include "orchestrator/matrix/expand_matrix.h"
 #include "orchestrator/matrix/run_id.h"
@@ -80,6 +81,11 @@ LoadedSweep LoadSweep(const std::string& config_file, const MatrixSelection& sel
   }
   if (!selection.shard.empty()) {
     sweep.runs = orchestrator::SelectShard(std::move(sweep.runs), orchestrator::ParseShard(selection.shard));
+  }
+  try {
+    orchestrator::StampBuildIdentity(sweep.runs);
+  } catch (const evaluator::InputError& error) {
+    throw evaluator::InputError(fmt::format("{}: {}", config_file, error.what()));
   }
   return sweep;
 }

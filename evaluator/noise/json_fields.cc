@@ -62,6 +62,13 @@ std::string JsonFields::Text(std::string_view key, const std::string& fallback) 
   return value->get<std::string>();
 }
 
+bool JsonFields::Bool(std::string_view key, bool fallback) {
+  const nlohmann::json* value = Find(key);
+  if (value == nullptr) return fallback;
+  if (!value->is_boolean()) FailType(PathOf(key), "true or false", *value);
+  return value->get<bool>();
+}
+
 const nlohmann::json* JsonFields::Object(std::string_view key) {
   const nlohmann::json* value = Find(key);
   if (value != nullptr && !value->is_object()) FailType(PathOf(key), "an object", *value);

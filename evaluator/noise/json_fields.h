@@ -22,6 +22,7 @@ class JsonFields {
   std::uint64_t Unsigned(std::string_view key, std::uint64_t fallback);
   int Integer(std::string_view key, int fallback);
   std::string Text(std::string_view key, const std::string& fallback);
+  bool Bool(std::string_view key, bool fallback);
   /// The sub-object at `key`, or nullptr when it is absent (throws when it is not an object).
   const nlohmann::json* Object(std::string_view key);
   /// "path.key", for messages about a field's value.

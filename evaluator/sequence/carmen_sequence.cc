@@ -12,6 +12,7 @@
 #include "evaluator/formats/trajectory/relations_format.h"
 #include "evaluator/sequence/flaser_fan.h"
 #include "evaluator/sequence/provenance_file.h"
+#include "evaluator/sequence/robot_log.h"
 
 namespace slamsweep::evaluator {
 namespace {
@@ -47,6 +48,12 @@ std::string LineList(const std::vector<std::size_t>& lines) {
 
 /// The FLASER/RLASER max range: the option, else the log's last `param_name` PARAM
 /// (robot_front_laser_max / robot_rear_laser_max), else the default.
+bool MarkedAsRawRobotLog(const CarmenLog& log) {
+  return std::any_of(log.params.begin(), log.params.end(), [](const CarmenParam& param) {
+    return param.name == kCarmenLoggedPoseParam && param.value == kCarmenLoggedPoseOdometry;
+  });
+}
+
 double FlaserMaxRange(const CarmenLog& log, const std::filesystem::path& source, const CarmenSequenceOptions& options,
                       std::string_view param_name, std::vector<std::string>& warnings) {
   if (options.max_range_m) return *options.max_range_m;
@@ -256,6 +263,8 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
   Sequence sequence;
   sequence.name = options.name.empty() ? DefaultName(source) : options.name;
   WarnAboutIgnoredLasers(log, source, used_type, ignored, sequence.warnings);
+  // A raw robot log (a program input slamsweep wrote) logs odometry, never a corrected pose.
+  const bool logged_pose_is_reference = options.logged_pose_is_reference && !MarkedAsRawRobotLog(log);
   const double flaser_max_range_m = FlaserMaxRange(
       log, source, options, options.use_rear_laser ? kRearLaserMaxParam : kFrontLaserMaxParam, sequence.warnings);
   const std::vector<double> stamps_s = ScanStampsOf(records, source, options.stamps, sequence.warnings);
@@ -267,7 +276,7 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
   // ROBOTLASER1 carries the (corrected) robot pose but no odometry: that comes from the ODOM
   // record logged before it. Without ODOM records the robot pose has to serve as both.
   const bool odometry_from_odom = use_robot_laser && !log.odometry.empty();
-  if (use_robot_laser && log.odometry.empty() && options.logged_pose_is_reference) {
+  if (use_robot_laser && log.odometry.empty() && logged_pose_is_reference) {
     sequence.warnings.push_back(Located(source, 0,
                                         "ROBOTLASER1 log without ODOM records: the odometry is the logged robot pose, "
                                         "which is also the reference, so odometry and reference are the same"));
@@ -295,7 +304,7 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
     scan.ranges_m.assign(record.ranges_m.begin(), record.ranges_m.end());
     sequence.scans.push_back(std::move(scan));
     sequence.odometry.Add(stamps_s[i], odometry_pose);
-    if (options.logged_pose_is_reference) reference.Add(stamps_s[i], record.robot_pose);
+    if (logged_pose_is_reference) reference.Add(stamps_s[i], record.robot_pose);
   }
   if (!guessed_fan_lines.empty()) {
     sequence.warnings.push_back(Located(
@@ -304,7 +313,7 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
                     "were spread over 180 deg as CARMEN does (lines {})",
                     guessed_fan_lines.size(), used_type, LineList(guessed_fan_lines))));
   }
-  if (options.logged_pose_is_reference) sequence.reference = std::move(reference);
+  if (logged_pose_is_reference) sequence.reference = std::move(reference);
   if (options.relations_path) {
     sequence.relations = ShiftedRelations(ReadRelations(*options.relations_path), options.relations_offset_s);
   }

@@ -56,7 +56,8 @@ void CheckCarmenSequenceOptions(const CarmenSequenceOptions& options);
 ///   ROBOTLASER1: start_angle, angular_res, max_range of the record; sensor pose = laser pose in the
 ///           frame of the robot pose.
 /// Odometry: FLASER odom_x/y/theta (ROBOTLASER1: robot pose), one pose per scan at the scan's stamp.
-/// Reference: the logged pose at the same stamps, when options.logged_pose_is_reference.
+/// Reference: the logged pose at the same stamps, when options.logged_pose_is_reference and the log is not
+/// marked as a raw robot log ("PARAM slamsweep_logged_pose odometry", see FormatCarmenLog).
 /// Warnings (each naming `source`) for repaired or made-up stamps, guessed beam fans, conflicting
 /// PARAM values and ignored laser messages. A log without laser records, or a record that cannot
 /// be a scan, is an InputError "FILE:LINE: ...".

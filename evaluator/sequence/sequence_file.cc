@@ -4,21 +4,15 @@
 #include <zlib.h>
 
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <memory>
 #include <sstream>
 
 #include "evaluator/core/input_error.h"
-#include "evaluator/formats/trajectory/carmen_log.h"
-#include "evaluator/formats/trajectory/output_file.h"
-#include "evaluator/formats/trajectory/tum_format.h"
-#include "evaluator/sequence/flaser_fan.h"
 
 #ifdef SLAMSWEEP_HAVE_MRPT
 #include "evaluator/formats/rawlog/rawlog_reader.h"
-#include "evaluator/formats/rawlog/rawlog_writer.h"
 #endif
 #ifdef SLAMSWEEP_HAVE_ROSBAG
 #include "evaluator/formats/rosbag/rosbag_reader.h"
@@ -32,9 +26,6 @@ constexpr std::string_view kMrptMissing =
 constexpr std::string_view kRosbagMissing =
     "ROS bag support not built (install librosbag-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev "
     "and reconfigure slamsweep)";
-/// Beam geometry closer than this to CARMEN's inferred fan is that fan (the fans are computed in double).
-constexpr double kFanToleranceRad = 1e-9;
-constexpr double kMountToleranceM = 1e-9;
 
 bool EndsWith(const std::string& text, std::string_view suffix) { return text.ends_with(suffix); }
 
@@ -80,55 +71,10 @@ bool LooksLikeCarmen(std::string_view text) {
   return false;
 }
 
-/// The float's shortest decimal text read back as double, so that FormatCarmenRecord (which writes
-/// doubles exactly) writes "1.23" for 1.23f instead of its 17-digit double expansion.
-double ShortestFloatAsDouble(float value) {
-  std::array<char, 32> text{};
-  const auto [end, error] = std::to_chars(text.data(), text.data() + text.size(), value);
-  double result = value;
-  if (error == std::errc()) std::from_chars(text.data(), end, result);
-  return result;
-}
 
-bool IsFlaserFan(const LaserScan& scan) {
-  if (scan.BeamCount() < 2) return false;
-  const BeamFan fan = FlaserBeamFan(scan.BeamCount());
-  const Pose& mount = scan.sensor_pose_on_robot;
-  return fan.known_layout && std::abs(fan.angle_min_rad - scan.angle_min_rad) < kFanToleranceRad &&
-         std::abs(fan.angle_increment_rad - scan.angle_increment_rad) < kFanToleranceRad &&
-         mount.position.norm() < kMountToleranceM && RotationAngleRad(mount.orientation) < kFanToleranceRad;
-}
 
-/// The reference poses at the scans' stamps when the reference has every one of them, else nullopt.
-std::optional<std::vector<Pose>> ReferenceAtScans(const Sequence& sequence) {
-  if (!sequence.reference) return std::nullopt;
-  const std::vector<double>& stamps = sequence.reference->stamps_s();
-  std::vector<Pose> poses;
-  poses.reserve(sequence.scans.size());
-  std::size_t j = 0;
-  for (const LaserScan& scan : sequence.scans) {
-    while (j < stamps.size() && stamps[j] < scan.stamp_s) ++j;
-    if (j == stamps.size() || stamps[j] != scan.stamp_s) return std::nullopt;
-    poses.push_back(sequence.reference->poses()[j]);
-  }
-  return poses;
-}
 
-std::vector<double> RangesAsWritten(const LaserScan& scan) {
-  std::vector<double> ranges;
-  ranges.reserve(scan.BeamCount());
-  for (float range : scan.ranges_m) ranges.push_back(ShortestFloatAsDouble(range));
-  return ranges;
-}
 
-void WriteRawlogFile(const Sequence& sequence, const std::filesystem::path& path) {
-#ifdef SLAMSWEEP_HAVE_MRPT
-  WriteRawlog(sequence, path);
-#else
-  (void)sequence;
-  throw InputError(Located(path, 0, std::string(kMrptMissing)));
-#endif
-}
 
 }  // namespace
 
@@ -158,6 +104,8 @@ bool RawlogSupported() {
   return false;
 #endif
 }
+
+std::string_view RawlogUnsupportedMessage() { return kMrptMissing; }
 
 bool RosbagSupported() {
 #ifdef SLAMSWEEP_HAVE_ROSBAG
@@ -219,91 +167,6 @@ Sequence ReadSequence(const std::filesystem::path& path, const SequenceReadOptio
     }
   }
   throw InputError(Located(path, 0, "unknown sequence format"));
-}
-
-std::string_view SequenceWriteFormatName(SequenceWriteFormat format) {
-  switch (format) {
-    case SequenceWriteFormat::kRawlog:
-      return "rawlog";
-    case SequenceWriteFormat::kCarmen:
-      return "carmen";
-    case SequenceWriteFormat::kTum:
-      return "tum";
-  }
-  return "unknown";
-}
-
-SequenceWriteFormat ParseSequenceWriteFormat(std::string_view text, std::string_view option) {
-  for (SequenceWriteFormat format :
-       {SequenceWriteFormat::kRawlog, SequenceWriteFormat::kCarmen, SequenceWriteFormat::kTum}) {
-    if (text == SequenceWriteFormatName(format)) return format;
-  }
-  throw InputError(fmt::format("{}: expected rawlog, carmen or tum, got '{}'", option, text));
-}
-
-std::string FormatCarmenSequence(const Sequence& sequence) {
-  ValidateSequence(sequence);
-  bool flaser = true;
-  for (const LaserScan& scan : sequence.scans) flaser = flaser && IsFlaserFan(scan);
-  const std::optional<std::vector<Pose>> reference = ReferenceAtScans(sequence);
-
-  std::string out = "# " + sequence.name + ", written by slamsweep\n";
-  const double max_range_m = sequence.scans.front().range_max_m;
-  bool same_max_range = true;
-  for (const LaserScan& scan : sequence.scans) same_max_range = same_max_range && scan.range_max_m == max_range_m;
-  if (flaser && same_max_range) {
-    out += FormatCarmenRecord(CarmenParam{"robot_front_laser_max", ShortestText(max_range_m), 0}) + '\n';
-  }
-  for (std::size_t i = 0; i < sequence.scans.size(); ++i) {
-    const LaserScan& scan = sequence.scans[i];
-    const Pose& odometry = sequence.odometry.poses()[i];
-    CarmenOdomRecord odom;
-    odom.pose = odometry;
-    odom.ipc_stamp_s = scan.stamp_s;
-    odom.logger_stamp_s = scan.stamp_s;
-    out += FormatCarmenRecord(odom) + '\n';
-
-    CarmenLaserRecord laser;
-    laser.ranges_m = RangesAsWritten(scan);
-    laser.ipc_stamp_s = scan.stamp_s;
-    laser.logger_stamp_s = scan.stamp_s;
-    if (flaser) {
-      laser.type = "FLASER";
-      laser.robot_pose = reference ? (*reference)[i] : odometry;
-      laser.odom_pose = odometry;
-    } else {
-      laser.type = "ROBOTLASER1";
-      CarmenBeamGeometry geometry;
-      geometry.start_angle_rad = scan.angle_min_rad;
-      geometry.angular_resolution_rad = scan.angle_increment_rad;
-      geometry.fov_rad = scan.angle_increment_rad * static_cast<double>(scan.BeamCount() - 1);
-      geometry.max_range_m = scan.range_max_m;
-      laser.geometry = geometry;
-      // As FLASER: the logged robot pose is the reference when there is one; the odometry is in
-      // the ODOM record just written (ROBOTLASER1 has no odometry field).
-      laser.robot_pose = reference ? (*reference)[i] : odometry;
-      laser.laser_pose = laser.robot_pose * scan.sensor_pose_on_robot;
-    }
-    out += FormatCarmenRecord(laser) + '\n';
-  }
-  return out;
-}
-
-void WriteSequence(const Sequence& sequence, const std::filesystem::path& path, SequenceWriteFormat format) {
-  switch (format) {
-    case SequenceWriteFormat::kRawlog:
-      WriteRawlogFile(sequence, path);
-      return;
-    case SequenceWriteFormat::kCarmen: {
-      const std::string text = FormatCarmenSequence(sequence);
-      WriteOutputFile(path, [&](std::ostream& out) { out << text; });
-      return;
-    }
-    case SequenceWriteFormat::kTum:
-      ValidateSequence(sequence);
-      WriteTum(sequence.reference ? *sequence.reference : sequence.odometry, path);
-      return;
-  }
 }
 
 }  // namespace slamsweep::evaluator

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -10,7 +11,7 @@
 
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/core/trajectory.h"
-#include "orchestrator/adapters/run_inputs.h"
+#include "evaluator/sequence/robot_log.h"
 #include "orchestrator/adapters/run_paths.h"
 #include "orchestrator/matrix/run_spec.h"
 
@@ -37,19 +38,29 @@ struct CollectedOutputs {
 };
 
 /// How one kind of SLAM program is run (ninja's CommandRunner split: the worker decides when,
-/// the adapter knows how). Implementations are stateless and const.
+/// the adapter knows how). Implementations are stateless and const. An adapter sees only the
+/// RobotLog (scans and odometry): the reference and relations never reach it, so nothing it writes
+/// for the program can hold them.
 class Adapter {
  public:
   virtual ~Adapter() = default;
 
   /// Writes what the program reads under paths.InputDir(), creates paths.RawDir() and returns the
   /// argv. Bad parameters or declarations are InputErrors naming the field.
-  virtual PreparedRun Prepare(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const = 0;
+  virtual PreparedRun Prepare(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const = 0;
 
   /// Reads the program's outputs after it exited normally. A missing file is a RunFailure
   /// kMissingOutput naming it (relative to the run folder), an unreadable one kCorruptOutput
   /// naming it with the reader's message.
-  virtual CollectedOutputs Collect(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const = 0;
+  virtual CollectedOutputs Collect(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const = 0;
+
+  /// The files a run of `algorithm` executes or reads as its program's configuration (binary,
+  /// wrapper script, configuration template), found as the worker will find them: their digests
+  /// are the run's build identity. A program that cannot be found is an InputError saying so.
+  virtual std::vector<std::filesystem::path> ProgramFiles(const AlgorithmSpec& algorithm) const = 0;
+
+  /// Whether a run of `algorithm` can be reproduced from its seed.
+  virtual Seeding SeedingOf(const AlgorithmSpec& algorithm) const = 0;
 };
 
 /// The adapter named in run.json's algorithm.adapter: "mrpt-icp-slam", "mrpt-rbpf-slam", "command"

@@ -7,12 +7,15 @@
 #include "evaluator/formats/map/image8.h"
 #include "evaluator/formats/map/image_file.h"
 #include "evaluator/formats/trajectory/trajectory_format.h"
-#include "evaluator/sequence/sequence_file.h"
+#include "evaluator/sequence/robot_log_file.h"
 #include "orchestrator/adapters/mrpt_ini.h"
 #include "orchestrator/adapters/output_files.h"
 #include "orchestrator/adapters/rendered_map.h"
 #include "orchestrator/adapters/run_failure.h"
 #include "orchestrator/adapters/stage_image.h"
+#include "orchestrator/config/placeholders.h"
+#include "orchestrator/config/program_path.h"
+#include "orchestrator/matrix/seed_fold.h"
 
 namespace slamsweep::orchestrator {
 
@@ -21,12 +24,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kAccepted = "{input}, {output_dir}, {run_dir}, {seed}, {iteration}, {param:NAME}, {{, }}";
-
-std::string ParameterNames(const nlohmann::json& parameters) {
-  std::string names;
-  for (const auto& [name, value] : parameters.items()) names += (names.empty() ? "" : ", ") + name;
-  return names.empty() ? "none" : names;
+std::vector<std::string> ParameterNames(const nlohmann::json& parameters) {
+  std::vector<std::string> names;
+  if (parameters.is_object()) {
+    for (const auto& [name, value] : parameters.items()) names.push_back(name);
+  }
+  return names;
 }
 
 const CommandDeclaration& Declaration(const RunSpec& spec) {
@@ -52,9 +55,10 @@ PlaceholderValues Values(const RunSpec& spec, const RunPaths& paths) {
   values.input = (paths.InputDir() / (SafeFileStem(spec.sequence.entry.name) +
                                       InputExtension(ev::SequenceWriteFormatName(format))))
                      .string();
+  values.input_dir = paths.InputDir().string();
   values.output_dir = paths.RawDir().string();
-  values.run_dir = paths.root.string();
   values.seed = std::to_string(spec.seed);
+  values.seed32 = std::to_string(Seed32(spec.seed));
   values.iteration = std::to_string(spec.iteration);
   values.parameters = spec.algorithm.parameters;
   return values;
@@ -91,56 +95,38 @@ ev::MapFormat MapFormatOf(const std::string& name) {
 }  // namespace
 
 std::string ExpandPlaceholders(std::string_view text, const PlaceholderValues& values, const std::string& field) {
-  std::string out;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (c == '}') {
-      if (i + 1 < text.size() && text[i + 1] == '}') {
-        out += '}';
-        ++i;
+  try {
+    std::string out;
+    for (const TemplatePiece& piece : ParseTemplate(text)) {
+      if (!piece.is_placeholder) {
+        out += piece.text;
         continue;
       }
-      throw ev::InputError(field + ": a lone '}' in '" + std::string(text) + "' (write '}}' for a brace)");
-    }
-    if (c != '{') {
-      out += c;
-      continue;
-    }
-    if (i + 1 < text.size() && text[i + 1] == '{') {
-      out += '{';
-      ++i;
-      continue;
-    }
-    const std::size_t close = text.find('}', i);
-    if (close == std::string_view::npos) {
-      throw ev::InputError(field + ": unclosed '{' in '" + std::string(text) + "'; accepted: " + kAccepted);
-    }
-    const std::string_view name = text.substr(i + 1, close - i - 1);
-    if (name == "input") {
-      out += values.input;
-    } else if (name == "output_dir") {
-      out += values.output_dir;
-    } else if (name == "run_dir") {
-      out += values.run_dir;
-    } else if (name == "seed") {
-      out += values.seed;
-    } else if (name == "iteration") {
-      out += values.iteration;
-    } else if (name.starts_with("param:")) {
-      const std::string parameter(name.substr(6));
-      if (!values.parameters.is_object() || !values.parameters.contains(parameter)) {
-        throw ev::InputError(field + ": {param:" + parameter + "}: the run has no parameter '" + parameter +
-                             "' (parameters: " + ParameterNames(values.parameters) + ")");
+      CheckPlaceholderName(piece.text, ParameterNames(values.parameters));
+      const std::string& name = piece.text;
+      if (name == "input") {
+        out += values.input;
+      } else if (name == "input_dir") {
+        out += values.input_dir;
+      } else if (name == "output_dir") {
+        out += values.output_dir;
+      } else if (name == "seed") {
+        out += values.seed;
+      } else if (name == "seed32") {
+        out += values.seed32;
+      } else if (name == "iteration") {
+        out += values.iteration;
+      } else {
+        // The value is one argument as it is: line breaks are harmless without a shell.
+        const std::string parameter = name.substr(kParameterPlaceholderPrefix.size());
+        const nlohmann::json& value = values.parameters.at(parameter);
+        out += value.is_string() ? value.get<std::string>() : IniValueText(value, "{" + name + "}");
       }
-      // The value is one argument as it is: line breaks are harmless without a shell.
-      const nlohmann::json& value = values.parameters.at(parameter);
-      out += value.is_string() ? value.get<std::string>() : IniValueText(value, field + ": {param:" + parameter + "}");
-    } else {
-      throw ev::InputError(field + ": unknown placeholder {" + std::string(name) + "}; accepted: " + kAccepted);
     }
-    i = close;
+    return out;
+  } catch (const ev::InputError& error) {
+    throw ev::InputError(field + ": " + error.what());
   }
-  return out;
 }
 
 std::string InputExtension(std::string_view input_format) {
@@ -151,7 +137,7 @@ std::string InputExtension(std::string_view input_format) {
                        std::string(input_format) + "'");
 }
 
-PreparedRun CommandAdapter::Prepare(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const {
+PreparedRun CommandAdapter::Prepare(const RunSpec& spec, const ev::RobotLog& robot, const RunPaths& paths) const {
   const CommandDeclaration& declaration = Declaration(spec);
   const PlaceholderValues values = Values(spec, paths);
   // Expanded before anything is written: a bad declaration leaves no half-prepared run.
@@ -170,12 +156,12 @@ PreparedRun CommandAdapter::Prepare(const RunSpec& spec, const RunInputs& inputs
   }
   fs::create_directories(paths.InputDir());
   fs::create_directories(paths.RawDir());
-  ev::WriteSequence(inputs.sequence, values.input,
+  ev::WriteRobotLog(robot, values.input,
                     ev::ParseSequenceWriteFormat(declaration.input_format, "algorithm.command.input_format"));
   return prepared;
 }
 
-CollectedOutputs CommandAdapter::Collect(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const {
+CollectedOutputs CommandAdapter::Collect(const RunSpec& spec, const ev::RobotLog& robot, const RunPaths& paths) const {
   const CommandDeclaration& declaration = Declaration(spec);
   const PlaceholderValues values = Values(spec, paths);
   CollectedOutputs outputs;
@@ -183,7 +169,7 @@ CollectedOutputs CommandAdapter::Collect(const RunSpec& spec, const RunInputs& i
   if (declaration.trajectory) {
     const ev::TrajectoryFormat format = TrajectoryFormatOf(declaration.trajectory->format);
     ev::TrajectoryReadOptions options;
-    if (format == ev::TrajectoryFormat::kMrptPath) options.mrpt_step_stamps_s = ScanStamps(inputs.sequence.scans);
+    if (format == ev::TrajectoryFormat::kMrptPath) options.mrpt_step_stamps_s = ScanStamps(robot.scans);
     outputs.trajectory =
         ReadTrajectoryOutput(paths, OutputPath(*declaration.trajectory, values, paths, "algorithm.command.trajectory"),
                              format, options, outputs.warnings);
@@ -198,7 +184,7 @@ CollectedOutputs CommandAdapter::Collect(const RunSpec& spec, const RunInputs& i
         ReadMapOutput(paths, OutputPath(*declaration.map, values, paths, "algorithm.command.map"), "map", options);
     if (!stages_from_glob && outputs.trajectory && spec.evaluation.stages > 0) {
       try {
-        outputs.stages = RenderMapFromTrajectory(inputs.sequence.scans, *outputs.trajectory, spec.evaluation).stages;
+        outputs.stages = RenderMapFromTrajectory(robot.scans, *outputs.trajectory, spec.evaluation).stages;
       } catch (const ev::InputError& error) {
         outputs.warnings.push_back(std::string("no stage maps: ") + error.what());
       }
@@ -207,7 +193,7 @@ CollectedOutputs CommandAdapter::Collect(const RunSpec& spec, const RunInputs& i
     // Declaration() guarantees a trajectory here. Scans outside its time span cannot be placed.
     RenderedMap rendered;
     try {
-      rendered = RenderMapFromTrajectory(inputs.sequence.scans, *outputs.trajectory, spec.evaluation);
+      rendered = RenderMapFromTrajectory(robot.scans, *outputs.trajectory, spec.evaluation);
     } catch (const ev::InputError& error) {
       throw RunFailure(FailureKind::kCorruptOutput, std::string("no map can be rendered from the trajectory: ") +
                                                         error.what());
@@ -236,6 +222,40 @@ CollectedOutputs CommandAdapter::Collect(const RunSpec& spec, const RunInputs& i
     }
   }
   return outputs;
+}
+
+std::vector<fs::path> CommandAdapter::ProgramFiles(const AlgorithmSpec& algorithm) const {
+  if (!algorithm.command || algorithm.command->argv.empty()) return {};
+  PlaceholderValues values;
+  values.parameters = algorithm.parameters;
+  std::vector<fs::path> files;
+  const std::vector<std::string>& argv = algorithm.command->argv;
+  for (std::size_t i = 0; i < argv.size(); ++i) {
+    const std::string field = "algorithm.command.argv[" + std::to_string(i) + "]";
+    bool has_run_placeholder = false;
+    for (const TemplatePiece& piece : ParseTemplate(argv[i])) {
+      has_run_placeholder = has_run_placeholder || (piece.is_placeholder && !piece.text.starts_with("param:"));
+    }
+    if (has_run_placeholder) continue;  // {input}, {output_dir}...: files of the run, not of the program
+    const std::string value = ExpandPlaceholders(argv[i], values, field);
+    if (i == 0) {
+      files.push_back(ResolveProgram(value, fs::current_path()));
+      continue;
+    }
+    std::error_code error;
+    if (fs::path(value).is_absolute() && fs::is_regular_file(value, error)) files.emplace_back(value);
+  }
+  return files;
+}
+
+Seeding CommandAdapter::SeedingOf(const AlgorithmSpec& algorithm) const {
+  if (!algorithm.command) return Seeding::kUnseeded;
+  for (const std::string& argument : algorithm.command->argv) {
+    for (const TemplatePiece& piece : ParseTemplate(argument)) {
+      if (piece.is_placeholder && (piece.text == "seed" || piece.text == "seed32")) return Seeding::kSeeded;
+    }
+  }
+  return Seeding::kUnseeded;
 }
 
 }  // namespace slamsweep::orchestrator

@@ -8,11 +8,13 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/map/mrpt_gridmap_format.h"
-#include "evaluator/sequence/sequence_file.h"
+#include "evaluator/sequence/robot_log_file.h"
 #include "orchestrator/adapters/output_files.h"
 #include "orchestrator/adapters/rendered_map.h"
 #include "orchestrator/adapters/run_failure.h"
 #include "orchestrator/adapters/stage_image.h"
+#include "orchestrator/config/program_path.h"
+#include "orchestrator/matrix/seed_fold.h"
 
 namespace slamsweep::orchestrator {
 
@@ -53,25 +55,28 @@ std::vector<IniSetting> Compose(std::vector<IniSetting> defaults, const nlohmann
   return settings;
 }
 
-std::string RawlogName(const RunSpec& spec) { return "input/" + SafeFileStem(spec.sequence.entry.name) + ".rawlog"; }
+std::string RawlogName(const RunSpec& spec) { return SafeFileStem(spec.sequence.entry.name) + ".rawlog"; }
 
-/// Writes input/<seq>.rawlog and input/<ini_name>; returns argv {program, input/<ini_name>}.
-PreparedRun PrepareMrpt(const RunInputs& inputs, const RunPaths& paths, const std::string& rawlog_relative,
+/// Paths as the program sees them: it runs in raw/ (RunPaths::ProgramWorkingDir), its input is beside it.
+std::string FromRawDir(const std::string& input_file) { return "../input/" + input_file; }
+
+/// Writes input/<seq>.rawlog and input/<ini_name>; returns argv {program, ../input/<ini_name>}.
+PreparedRun PrepareMrpt(const ev::RobotLog& robot, const RunPaths& paths, const std::string& rawlog_name,
                         const std::string& template_text, const std::vector<IniSetting>& settings,
                         const std::string& program, const std::string& ini_name) {
   fs::create_directories(paths.InputDir());
   fs::create_directories(paths.RawDir());
-  ev::WriteSequence(inputs.sequence, paths.root / rawlog_relative, ev::SequenceWriteFormat::kRawlog);
+  ev::WriteRobotLog(robot, paths.InputDir() / rawlog_name, ev::SequenceWriteFormat::kRawlog);
   const fs::path ini = paths.InputDir() / ini_name;
   std::ofstream out(ini, std::ios::binary | std::ios::trunc);
   out << RenderIni(template_text, settings);
   out.close();
   if (!out) throw ev::InputError(ini.string() + ": cannot write the configuration");
-  return PreparedRun{{program, "input/" + ini_name}};
+  return PreparedRun{{program, FromRawDir(ini_name)}};
 }
 
 /// The final grid map and the estimated path, common to both applications.
-CollectedOutputs CollectMrpt(const RunInputs& inputs, const RunPaths& paths, const std::string& map_png) {
+CollectedOutputs CollectMrpt(const ev::RobotLog& robot, const RunPaths& paths, const std::string& map_png) {
   CollectedOutputs outputs;
   const fs::path image = paths.RawDir() / map_png;
   RequireOutputFile(paths, image, "map");
@@ -83,7 +88,7 @@ CollectedOutputs CollectMrpt(const RunInputs& inputs, const RunPaths& paths, con
   ev::TrajectoryReadOptions path_options;
   // Both apps log one line per rawlog step, and step k is scan k: the scans' stamps put the path
   // on the sequence clock (rbpf-slam's own stamps are MRPT clock values of the same instants).
-  path_options.mrpt_step_stamps_s = ScanStamps(inputs.sequence.scans);
+  path_options.mrpt_step_stamps_s = ScanStamps(robot.scans);
   outputs.trajectory = ReadTrajectoryOutput(paths, paths.RawDir() / kPathFile, ev::TrajectoryFormat::kMrptPath,
                                             path_options, outputs.warnings);
   return outputs;
@@ -113,17 +118,17 @@ std::vector<IniSetting> IcpSlamDefaultSettings() {
   };
 }
 
-std::vector<IniSetting> IcpSlamSettings(const RunSpec& spec, const std::string& rawlog_path) {
+std::vector<IniSetting> IcpSlamSettings(const RunSpec& spec, const std::string& rawlog_name) {
   const std::vector<IniSetting> controlled = {
-      {kApp, "rawlog_file", rawlog_path},
-      {kApp, "logOutput_dir", "raw"},
+      {kApp, "rawlog_file", FromRawDir(rawlog_name)},
+      {kApp, "logOutput_dir", "."},
       {kApp, "SHOW_PROGRESS_3D_REAL_TIME", "0"},
       {kApp, "SAVE_3D_SCENE", "0"},
   };
   return Compose(IcpSlamDefaultSettings(), spec.algorithm.parameters, controlled);
 }
 
-std::vector<IniSetting> RbpfSlamSettings(const RunSpec& spec, const std::string& rawlog_path, std::size_t scan_count) {
+std::vector<IniSetting> RbpfSlamSettings(const RunSpec& spec, const std::string& rawlog_name, std::size_t scan_count) {
   // A map image every LOG_FREQUENCY steps: about evaluation.stages of them over the run.
   const std::size_t stages = std::max<std::size_t>(spec.evaluation.stages, 1);
   const std::size_t frequency = std::max<std::size_t>(1, (scan_count + stages - 1) / stages);
@@ -134,8 +139,11 @@ std::vector<IniSetting> RbpfSlamSettings(const RunSpec& spec, const std::string&
       {kApp, "verbosity_level", "INFO"},
   };
   const std::vector<IniSetting> controlled = {
-      {kApp, "rawlog_file", rawlog_path},
-      {kApp, "logOutput_dir", "raw"},
+      {kApp, "rawlog_file", FromRawDir(rawlog_name)},
+      {kApp, "logOutput_dir", "."},
+      // rbpf-slam seeds MRPT's random generator from RANDOM_SEED (a negative value, its default,
+      // seeds it from the clock); it reads an int, so the run's seed is folded to 31 bits.
+      {kApp, "RANDOM_SEED", std::to_string(Seed31(spec.seed))},
       {kApp, "SHOW_PROGRESS_IN_WINDOW", "0"},
       {kApp, "SAVE_3D_SCENE", "0"},
       {kApp, "SAVE_MAP_IMAGES", spec.evaluation.stages > 0 ? "1" : "0"},
@@ -146,18 +154,18 @@ std::vector<IniSetting> RbpfSlamSettings(const RunSpec& spec, const std::string&
 
 IcpSlamAdapter::IcpSlamAdapter(fs::path template_path) : template_path_(std::move(template_path)) {}
 
-PreparedRun IcpSlamAdapter::Prepare(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const {
+PreparedRun IcpSlamAdapter::Prepare(const RunSpec& spec, const ev::RobotLog& robot, const RunPaths& paths) const {
   const std::string rawlog = RawlogName(spec);
   const std::vector<IniSetting> settings = IcpSlamSettings(spec, rawlog);
-  return PrepareMrpt(inputs, paths, rawlog, ReadTemplate(template_path_, "mrpt-icp-slam"), settings, "icp-slam",
+  return PrepareMrpt(robot, paths, rawlog, ReadTemplate(template_path_, "mrpt-icp-slam"), settings, "icp-slam",
                      "icp-slam.ini");
 }
 
-CollectedOutputs IcpSlamAdapter::Collect(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const {
-  CollectedOutputs outputs = CollectMrpt(inputs, paths, "_finalmaps_.txt_mrpt__maps__COccupancyGridMap2D_00.png");
+CollectedOutputs IcpSlamAdapter::Collect(const RunSpec& spec, const ev::RobotLog& robot, const RunPaths& paths) const {
+  CollectedOutputs outputs = CollectMrpt(robot, paths, "_finalmaps_.txt_mrpt__maps__COccupancyGridMap2D_00.png");
   if (spec.evaluation.stages > 0) {
     try {
-      outputs.stages = RenderMapFromTrajectory(inputs.sequence.scans, *outputs.trajectory, spec.evaluation).stages;
+      outputs.stages = RenderMapFromTrajectory(robot.scans, *outputs.trajectory, spec.evaluation).stages;
     } catch (const ev::InputError& error) {
       outputs.warnings.push_back(std::string("no stage maps: ") + error.what());
     }
@@ -165,17 +173,23 @@ CollectedOutputs IcpSlamAdapter::Collect(const RunSpec& spec, const RunInputs& i
   return outputs;
 }
 
+std::vector<fs::path> IcpSlamAdapter::ProgramFiles(const AlgorithmSpec& /*algorithm*/) const {
+  return {ResolveProgram("icp-slam", fs::current_path()), template_path_};
+}
+
+Seeding IcpSlamAdapter::SeedingOf(const AlgorithmSpec& /*algorithm*/) const { return Seeding::kDeterministic; }
+
 RbpfSlamAdapter::RbpfSlamAdapter(fs::path template_path) : template_path_(std::move(template_path)) {}
 
-PreparedRun RbpfSlamAdapter::Prepare(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const {
+PreparedRun RbpfSlamAdapter::Prepare(const RunSpec& spec, const ev::RobotLog& robot, const RunPaths& paths) const {
   const std::string rawlog = RawlogName(spec);
-  const std::vector<IniSetting> settings = RbpfSlamSettings(spec, rawlog, inputs.sequence.scans.size());
-  return PrepareMrpt(inputs, paths, rawlog, ReadTemplate(template_path_, "mrpt-rbpf-slam"), settings, "rbpf-slam",
+  const std::vector<IniSetting> settings = RbpfSlamSettings(spec, rawlog, robot.scans.size());
+  return PrepareMrpt(robot, paths, rawlog, ReadTemplate(template_path_, "mrpt-rbpf-slam"), settings, "rbpf-slam",
                      "rbpf-slam.ini");
 }
 
-CollectedOutputs RbpfSlamAdapter::Collect(const RunSpec& spec, const RunInputs& inputs, const RunPaths& paths) const {
-  CollectedOutputs outputs = CollectMrpt(inputs, paths, "finalMap_mrpt__maps__COccupancyGridMap2D_00.png");
+CollectedOutputs RbpfSlamAdapter::Collect(const RunSpec& spec, const ev::RobotLog& robot, const RunPaths& paths) const {
+  CollectedOutputs outputs = CollectMrpt(robot, paths, "finalMap_mrpt__maps__COccupancyGridMap2D_00.png");
   if (spec.evaluation.stages == 0) return outputs;
   // The zero-padded step number makes lexicographic order the build order.
   for (const fs::path& file : GlobFiles(paths.RawDir(), "maps/mapbuilt_*_COccupancyGridMap2D_00.png")) {
@@ -186,5 +200,11 @@ CollectedOutputs RbpfSlamAdapter::Collect(const RunSpec& spec, const RunInputs& 
   if (outputs.stages.empty()) outputs.warnings.push_back("no stage maps: raw/maps/mapbuilt_*.png missing");
   return outputs;
 }
+
+std::vector<fs::path> RbpfSlamAdapter::ProgramFiles(const AlgorithmSpec& /*algorithm*/) const {
+  return {ResolveProgram("rbpf-slam", fs::current_path()), template_path_};
+}
+
+Seeding RbpfSlamAdapter::SeedingOf(const AlgorithmSpec& /*algorithm*/) const { return Seeding::kSeeded; }
 
 }  // namespace slamsweep::orchestrator

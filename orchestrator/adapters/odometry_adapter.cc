@@ -8,7 +8,7 @@
 
 namespace slamsweep::orchestrator {
 
-PreparedRun OdometryAdapter::Prepare(const RunSpec& spec, const RunInputs& /*inputs*/,
+PreparedRun OdometryAdapter::Prepare(const RunSpec& spec, const evaluator::RobotLog& /*robot*/,
                                      const RunPaths& /*paths*/) const {
   if (!spec.algorithm.parameters.empty()) {
     throw evaluator::InputError("algorithm.parameters: the odometry adapter takes no parameters, got " +
@@ -17,15 +17,21 @@ PreparedRun OdometryAdapter::Prepare(const RunSpec& spec, const RunInputs& /*inp
   return {};
 }
 
-CollectedOutputs OdometryAdapter::Collect(const RunSpec& spec, const RunInputs& inputs,
+CollectedOutputs OdometryAdapter::Collect(const RunSpec& spec, const evaluator::RobotLog& robot,
                                           const RunPaths& /*paths*/) const {
   CollectedOutputs outputs;
-  outputs.trajectory = inputs.sequence.odometry;
-  RenderedMap rendered = RenderMapFromTrajectory(inputs.sequence.scans, inputs.sequence.odometry, spec.evaluation);
+  outputs.trajectory = robot.odometry;
+  RenderedMap rendered = RenderMapFromTrajectory(robot.scans, robot.odometry, spec.evaluation);
   outputs.map = std::move(rendered.grid);
   outputs.map_rendered_from_trajectory = true;
   outputs.stages = std::move(rendered.stages);
   return outputs;
 }
+
+std::vector<std::filesystem::path> OdometryAdapter::ProgramFiles(const AlgorithmSpec& /*algorithm*/) const {
+  return {};
+}
+
+Seeding OdometryAdapter::SeedingOf(const AlgorithmSpec& /*algorithm*/) const { return Seeding::kDeterministic; }
 
 }  // namespace slamsweep::orchestrator

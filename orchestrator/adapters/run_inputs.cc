@@ -67,13 +67,38 @@ nlohmann::json ApplyRunNoise(ev::Sequence& sequence, const NoiseSpec& noise, std
   return record;
 }
 
+bool OdometryIsReference(const ev::Sequence& sequence) {
+  constexpr double kSameM = 1e-6;
+  constexpr double kSameRad = 1e-6;
+  if (!sequence.reference || sequence.odometry.empty()) return false;
+  const std::vector<double>& stamps = sequence.reference->stamps_s();
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < sequence.odometry.size(); ++i) {
+    const double stamp = sequence.odometry.stamps_s()[i];
+    while (j < stamps.size() && stamps[j] < stamp) ++j;
+    if (j == stamps.size() || stamps[j] != stamp) return false;
+    const ev::Pose& odometry = sequence.odometry.poses()[i];
+    const ev::Pose& reference = sequence.reference->poses()[j];
+    if ((odometry.position - reference.position).norm() > kSameM ||
+        ev::RotationAngleRad(odometry.orientation.inverse() * reference.orientation) > kSameRad) {
+      return false;
+    }
+  }
+  return true;
+}
+
 RunInputs PrepareRunInputs(const RunSpec& spec) {
-  RunInputs inputs;
   // run.json holds resolved paths: no ${VARIABLE} is left to expand.
-  inputs.sequence = ev::LoadCatalogSequence(spec.sequence.entry, {});
-  if (spec.sequence.max_scans) inputs.sequence = CutSequence(std::move(inputs.sequence), *spec.sequence.max_scans);
-  ev::ValidateSequence(inputs.sequence);
-  inputs.noise_record = ApplyRunNoise(inputs.sequence, spec.noise, spec.seed);
+  ev::Sequence sequence = ev::LoadCatalogSequence(spec.sequence.entry, {});
+  if (spec.sequence.max_scans) sequence = CutSequence(std::move(sequence), *spec.sequence.max_scans);
+  ev::ValidateSequence(sequence);
+  RunInputs inputs;
+  inputs.noise_record = ApplyRunNoise(sequence, spec.noise, spec.seed);
+  inputs.odometry_is_reference = OdometryIsReference(sequence);
+  inputs.warnings = std::move(sequence.warnings);
+  inputs.truth.reference = std::move(sequence.reference);
+  inputs.truth.relations = std::move(sequence.relations);
+  inputs.robot = ev::TakeRobotLog(sequence);
   return inputs;
 }
 

@@ -1,21 +1,46 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "evaluator/core/relation.h"
+#include "evaluator/core/trajectory.h"
+#include "evaluator/sequence/robot_log.h"
 #include "evaluator/sequence/sequence.h"
 #include "orchestrator/matrix/run_spec.h"
 
 namespace slamsweep::orchestrator {
 
-/// What a run gives its program, and the truth it is scored against: the sequence after cutting
-/// (max_scans) and noise. `sequence.reference` and `sequence.relations` stay noise-free.
+/// What a run is scored against. Only the worker holds it: adapters get the RobotLog alone, and
+/// the worker writes none of it into the run folder before the program has exited.
+struct RunTruth {
+  std::optional<evaluator::Trajectory> reference;
+  std::optional<evaluator::Relations> relations;
+};
+
+/// A run's inputs split by who may see them: `robot` is what the program is given (scans and
+/// odometry after cutting and noise), `truth` what only scoring uses (noise-free).
 struct RunInputs {
-  evaluator::Sequence sequence;
+  evaluator::RobotLog robot;
+  RunTruth truth;
+  /// What the sequence reader repaired or assumed (each naming the file), for result.json.
+  std::vector<std::string> warnings;
   /// The noise applied and its seeds, recorded in result.json so the input can be reproduced.
   nlohmann::json noise_record;
+  /// The program's odometry equals the reference at every scan (a corrected log without odometry
+  /// noise): the run measures an upper bound, not SLAM (OdometryIsReference).
+  bool odometry_is_reference = false;
 };
+
+/// The words the report, summary and warnings use for a run whose odometry is the reference.
+inline constexpr std::string_view kOdometryIsReferenceWarning =
+    "odometry = reference: an upper bound, not a SLAM result (the program's odometry is the reference "
+    "trajectory; add odometry noise to make it a SLAM test)";
 
 /// The first `max_scans` scans of `sequence` with their odometry; reference poses and relations
 /// later than the last kept scan are dropped too (they describe a part the run never saw).
@@ -28,8 +53,13 @@ evaluator::Sequence CutSequence(evaluator::Sequence sequence, std::size_t max_sc
 /// DeriveSeed(seed, 1). Returns the record of what was applied.
 nlohmann::json ApplyRunNoise(evaluator::Sequence& sequence, const NoiseSpec& noise, std::uint64_t seed);
 
+/// Whether the odometry is the reference: the reference has a pose at every scan's stamp and each
+/// equals the odometry pose there (within 1 um and 1 urad). Then a SLAM program is handed the answer.
+bool OdometryIsReference(const evaluator::Sequence& sequence);
+
 /// Loads the run's sequence (LoadCatalogSequence: paths in run.json are already resolved), cuts
-/// and noises it. Every problem is an InputError naming the sequence or the field.
+/// and noises it, and splits it into the program's part and the truth. Every problem is an
+/// InputError naming the sequence or the field.
 RunInputs PrepareRunInputs(const RunSpec& spec);
 
 }  // namespace slamsweep::orchestrator

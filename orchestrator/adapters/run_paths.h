@@ -16,6 +16,9 @@ struct RunPaths {
   std::filesystem::path InputDir() const { return root / "input"; }
   /// The program's own output folder ({output_dir} of a command).
   std::filesystem::path RawDir() const { return root / "raw"; }
+  /// Where the program runs: its output folder. Its input is in ../input; the run's truth
+  /// (reference.tum) and result are written into the run folder only after it has exited.
+  std::filesystem::path ProgramWorkingDir() const { return RawDir(); }
   std::filesystem::path StagesDir() const { return root / "stages"; }
   std::filesystem::path MapYaml() const { return root / "map.yaml"; }
   std::filesystem::path TrajectoryTum() const { return root / "trajectory.tum"; }

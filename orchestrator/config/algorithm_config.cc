@@ -7,7 +7,10 @@
 #include <set>
 #include <string_view>
 
+#include "evaluator/core/input_error.h"
 #include "orchestrator/config/option_checks.h"
+#include "orchestrator/config/placeholders.h"
+#include "orchestrator/config/program_path.h"
 #include "orchestrator/config/yaml_fields.h"
 
 namespace slamsweep::orchestrator {
@@ -17,7 +20,6 @@ constexpr std::string_view kAdapters[] = {"mrpt-icp-slam", "mrpt-rbpf-slam", "co
 constexpr std::string_view kInputFormats[] = {"rawlog", "carmen", "tum"};
 constexpr std::string_view kTrajectoryFormats[] = {"tum", "kitti", "csv", "mrpt", "carmen"};
 constexpr std::string_view kMapFormats[] = {"map_server", "mrpt", "pgm"};
-constexpr std::string_view kPlaceholders[] = {"input", "output_dir", "run_dir", "seed", "iteration"};
 
 nlohmann::json ParameterValue(const std::filesystem::path& file, const YAML::Node& node, const std::string& path) {
   if (!node.IsScalar()) FailExpected(file, node, path, "a number, text or true/false");
@@ -54,34 +56,33 @@ std::vector<ParameterAxis> ParseParameters(const std::filesystem::path& file, co
   return axes;
 }
 
-/// Checks every {...} of `text` against the known placeholders and declared parameters.
+/// Checks every {...} of `text` against the known placeholders and declared parameters, with the
+/// same parser the adapter expands them with (so "{{" and "}}" mean the same to both).
 void CheckPlaceholders(const std::filesystem::path& file, const YAML::Node& node, const std::string& path,
                        const std::string& text, const std::set<std::string, std::less<>>& parameters) {
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t open = text.find('{', start);
-    if (open == std::string::npos) return;
-    const std::size_t close = text.find('}', open);
-    if (close == std::string::npos) {
-      FailAt(file, node, fmt::format("{}: '{{' without a closing '}}' in '{}'", path, text));
+  const std::vector<std::string> declared(parameters.begin(), parameters.end());
+  try {
+    for (const TemplatePiece& piece : ParseTemplate(text)) {
+      if (piece.is_placeholder) CheckPlaceholderName(piece.text, declared);
     }
-    const std::string name = text.substr(open + 1, close - open - 1);
-    if (name.starts_with("param:")) {
-      const std::string parameter = name.substr(6);
-      if (!parameters.contains(parameter)) {
-        std::string declared;
-        for (const std::string& known : parameters) declared += (declared.empty() ? "" : ", ") + known;
-        FailAt(file, node,
-               fmt::format("{}: expected {{param:NAME}} to name a declared parameter, got {{param:{}}} (declared: {})",
-                           path, parameter, declared.empty() ? "none" : declared));
-      }
-    } else if (!OneOf(name, kPlaceholders)) {
-      FailAt(file, node,
-             fmt::format("{}: expected a placeholder {{input}}, {{output_dir}}, {{run_dir}}, {{seed}}, {{iteration}} "
-                         "or {{param:NAME}}, got {{{}}}",
-                         path, name));
-    }
-    start = close + 1;
+  } catch (const evaluator::InputError& error) {
+    FailAt(file, node, fmt::format("{}: {}", path, error.what()));
+  }
+}
+
+/// The program of a command, checked now rather than in every run: found (in PATH when it names no
+/// folder) and executable. A path with a folder is taken relative to the sweep file's folder and
+/// made absolute, so that it means the same wherever the worker runs it; a bare name stays as
+/// written (the run id must not depend on where a machine's PATH finds it; the build identity
+/// records the file's digest). A program chosen by a placeholder ({param:binary}) is checked when it runs.
+void CheckProgram(const std::filesystem::path& file, const YAML::Node& node, const std::string& path,
+                  std::string& program) {
+  if (program.find('{') != std::string::npos) return;
+  try {
+    const std::filesystem::path resolved = ResolveProgram(program, file.parent_path());
+    if (program.find('/') != std::string::npos) program = resolved.string();
+  } catch (const evaluator::InputError& error) {
+    FailAt(file, node, fmt::format("{}: {}", path, error.what()));
   }
 }
 
@@ -116,6 +117,7 @@ CommandDeclaration ParseCommand(const std::filesystem::path& file, const YAML::N
     CheckPlaceholders(file, argv[i], item_path, command.argv.back(), parameters);
   }
   if (command.argv.front().empty()) FailExpected(file, argv[0], fields.PathOf("argv") + "[0]", "a program name");
+  CheckProgram(file, argv[0], fields.PathOf("argv") + "[0]", command.argv.front());
   command.input_format = fields.Text("input_format", command.input_format);
   if (!OneOf(command.input_format, kInputFormats)) {
     FailExpected(file, fields.Get("input_format"), fields.PathOf("input_format"), Choices(kInputFormats));

@@ -25,6 +25,7 @@ void ReadEvaluationFields(Fields& fields, EvaluationOptions& evaluation) {
   evaluation.t_max_diff_s = fields.Number("t_max_diff_s", evaluation.t_max_diff_s);
   evaluation.stages = fields.Unsigned("stages", evaluation.stages);
   evaluation.map_resolution_m = fields.Number("map_resolution_m", evaluation.map_resolution_m);
+  evaluation.crop = fields.Bool("crop", evaluation.crop);
 }
 
 /// Whether `value` is one of a fixed list of names, and the list for "expected ..." messages.

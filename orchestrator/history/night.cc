@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/matrix/run_spec.h"
 #include "orchestrator/store/results_store.h"
 
 namespace slamsweep::orchestrator {
@@ -52,8 +53,10 @@ Night ReadNight(const std::filesystem::path& result_dir, const std::string& labe
   std::map<CellKey, CellCounts> cells;
   // Runs() is ordered by iteration within a cell, so samples keep the iteration order.
   for (const StoredRun& run : store.Runs()) {
-    CellCounts& cell = cells[{run.algorithm, run.sequence, run.noise}];
-    cell.algorithm = run.algorithm;
+    // Runs with other parameter values are another series: never pooled into one sample.
+    const std::string algorithm = AlgorithmLabel(run.algorithm, run.parameters);
+    CellCounts& cell = cells[{algorithm, run.sequence, run.noise}];
+    cell.algorithm = algorithm;
     cell.sequence = run.sequence;
     cell.noise = run.noise;
     if (run.status != "ok") {
@@ -62,9 +65,9 @@ Night ReadNight(const std::filesystem::path& result_dir, const std::string& labe
     }
     ++cell.ok_runs;
     for (const StoredMetric& metric : run.metrics) {
-      SampleSeries& s = series[{run.algorithm, run.sequence, run.noise, metric.metric, metric.statistic}];
+      SampleSeries& s = series[{algorithm, run.sequence, run.noise, metric.metric, metric.statistic}];
       if (s.metric.empty()) {
-        s.algorithm = run.algorithm;
+        s.algorithm = algorithm;
         s.sequence = run.sequence;
         s.noise = run.noise;
         s.metric = metric.metric;

@@ -7,9 +7,10 @@
 
 namespace slamsweep::orchestrator {
 
-/// The identity of a series across nights: algorithm x sequence x noise x metric x statistic (and
-/// the unit its values carry).
+/// The identity of a series across nights: algorithm (with its parameters) x sequence x noise x metric
+/// x statistic (and the unit its values carry): a comparison group and one of its metrics.
 struct SeriesKey {
+  /// AlgorithmLabel: the name, with "[k=v;...]" when the run has parameters.
   std::string algorithm;
   std::string sequence;
   std::string noise;
@@ -28,8 +29,9 @@ struct SampleSeries : SeriesKey {
   std::vector<double> values;
 };
 
-/// The run counts of one algorithm x sequence x noise cell.
+/// The run counts of one comparison group (algorithm with parameters x sequence x noise).
 struct CellCounts {
+  /// AlgorithmLabel, as SeriesKey::algorithm.
   std::string algorithm;
   std::string sequence;
   std::string noise;

@@ -146,6 +146,7 @@ std::vector<RunSpec> ExpandMatrix(const SweepConfig& config) {
         continue;
       }
       spec.seed = SeedForRun(spec, config.seed, config.seed_policy);
+      spec.odometry_is_reference = PlannedOdometryIsReference(sequence.entry, noise);
       spec.run_id = MakeRunId(spec);
       runs.Add(std::move(spec));
     }

@@ -1,17 +1,32 @@
 #include "orchestrator/matrix/plan_listing.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
+#include <map>
+#include <utility>
 
 namespace slamsweep::orchestrator {
 
 std::string FormatParameters(const nlohmann::json& parameters) {
-  if (!parameters.is_object() || parameters.empty()) return "-";
+  const std::string text = ParametersText(parameters);
+  return text.empty() ? "-" : text;
+}
+
+std::string OdometryIsReferenceWarnings(const std::vector<RunSpec>& runs) {
+  // One line per sequence x noise cell, naming its runs: the cell is what the user must change.
+  std::map<std::pair<std::string, std::string>, std::vector<std::string>> cells;
+  for (const RunSpec& run : runs) {
+    if (run.odometry_is_reference) cells[{run.sequence.entry.name, run.noise.name}].push_back(run.run_id);
+  }
   std::string text;
-  for (const auto& [name, value] : parameters.items()) {
-    text += (text.empty() ? "" : ",") + name + "=" + (value.is_string() ? value.get<std::string>() : value.dump());
+  for (const auto& [cell, ids] : cells) {
+    text += fmt::format(
+        "warning: {} run{} on '{}' with noise '{}' get the reference as odometry (a corrected log without odometry "
+        "noise): an upper bound, not a SLAM result; add odometry noise to test SLAM: {}\n",
+        ids.size(), ids.size() == 1 ? "" : "s", cell.first, cell.second, fmt::join(ids, ", "));
   }
   return text;
 }

@@ -1,5 +1,7 @@
 #include "orchestrator/matrix/run_spec.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string_view>
@@ -177,7 +179,8 @@ json ToJson(const EvaluationOptions& evaluation) {
               {"rpe_delta_m", evaluation.rpe_delta_m},
               {"t_max_diff_s", evaluation.t_max_diff_s},
               {"stages", evaluation.stages},
-              {"map_resolution_m", evaluation.map_resolution_m}};
+              {"map_resolution_m", evaluation.map_resolution_m},
+              {"crop", evaluation.crop}};
 }
 
 EvaluationOptions EvaluationFromJson(const json& value, const std::string& path) {
@@ -297,10 +300,90 @@ evaluator::CatalogEntry CatalogEntryFromJson(const json& value, const std::strin
   return entry;
 }
 
+std::string_view SeedingName(Seeding seeding) {
+  switch (seeding) {
+    case Seeding::kSeeded:
+      return "seeded";
+    case Seeding::kDeterministic:
+      return "deterministic";
+    case Seeding::kUnseeded:
+      return "unseeded";
+  }
+  return "unseeded";
+}
+
+std::string ParametersText(const json& parameters) {
+  std::string text;
+  if (!parameters.is_object()) return text;
+  for (const auto& [name, value] : parameters.items()) {
+    if (!text.empty()) text += ';';
+    text += name + "=" + (value.is_string() ? value.get<std::string>() : value.dump());
+  }
+  return text;
+}
+
+std::string AlgorithmLabel(const std::string& algorithm, const std::string& parameters_text) {
+  return parameters_text.empty() ? algorithm : fmt::format("{} [{}]", algorithm, parameters_text);
+}
+
+ComparisonGroup ComparisonGroupOf(const RunSpec& spec) {
+  return ComparisonGroup{spec.sequence.entry.name, spec.algorithm.name, ParametersText(spec.algorithm.parameters),
+                         spec.noise.name};
+}
+
+bool PlannedOdometryIsReference(const evaluator::CatalogEntry& entry, const NoiseSpec& noise) {
+  return entry.ground_truth == evaluator::GroundTruthKind::kCorrectedPoses &&
+         (!noise.odometry || *noise.odometry == evaluator::OdometryNoise{});
+}
+
+namespace {
+
+json ToJson(const BuildIdentity& build) {
+  return json{{"slamsweep_revision", build.slamsweep_revision}, {"program_files", build.program_files}};
+}
+
+BuildIdentity BuildFromJson(const json& value, const std::string& path) {
+  json object = WithoutNulls(value, path);
+  const json files = Take(object, "program_files");
+  JsonFields fields(object, path);
+  BuildIdentity build;
+  build.slamsweep_revision = fields.Text("slamsweep_revision", "");
+  fields.Finish();
+  if (!files.is_null()) {
+    if (!files.is_object()) Fail(Join(path, "program_files"), "an object of file digests", files);
+    for (const auto& [file, digest] : files.items()) {
+      if (!digest.is_string()) Fail(Join(Join(path, "program_files"), file), "a SHA-256 hex digest", digest);
+      build.program_files[file] = digest.get<std::string>();
+    }
+  }
+  return build;
+}
+
+Seeding SeedingFromText(const std::string& text, const std::string& path) {
+  for (Seeding seeding : {Seeding::kSeeded, Seeding::kDeterministic, Seeding::kUnseeded}) {
+    if (text == SeedingName(seeding)) return seeding;
+  }
+  throw InputError(path + ": expected seeded, deterministic or unseeded, got \"" + text + "\"");
+}
+
+json ToJson(const ComparisonGroup& group) {
+  return json{{"sequence", group.sequence},
+              {"algorithm", group.algorithm},
+              {"parameters", group.parameters},
+              {"noise", group.noise}};
+}
+
+}  // namespace
+
 json ToJson(const RunSpec& spec) {
   json thresholds = json::array();
   for (const Threshold& threshold : spec.thresholds) thresholds.push_back(ToJson(threshold));
   return json{{"run_id", spec.run_id},
+              {"group", ToJson(ComparisonGroupOf(spec))},
+              {"build", ToJson(spec.build)},
+              {"seeding", SeedingName(spec.seeding)},
+              {"seeded", spec.seeding != Seeding::kUnseeded},
+              {"odometry_is_reference", spec.odometry_is_reference},
               {"sweep", spec.sweep},
               {"algorithm", ToJson(spec.algorithm)},
               {"sequence", ToJson(spec.sequence)},
@@ -316,6 +399,10 @@ RunSpec RunSpecFromJson(const json& value) {
     if (!value.is_object()) Fail("(top level)", "an object", value);
     json object = value;
     const json thresholds = Take(object, "thresholds");
+    // Derived from the other fields (ComparisonGroupOf, seeding): written for readers, not read back.
+    Take(object, "group");
+    Take(object, "seeded");
+    const json build = Take(object, "build");
     JsonFields fields(object, "");
     RunSpec spec;
     spec.run_id = fields.Text("run_id", "");
@@ -326,7 +413,11 @@ RunSpec RunSpecFromJson(const json& value) {
     const json* evaluation = fields.Object("evaluation");
     spec.iteration = fields.Integer("iteration", 0);
     spec.seed = fields.Unsigned("seed", 0);
+    const std::string seeding = fields.Text("seeding", std::string(SeedingName(spec.seeding)));
+    spec.odometry_is_reference = fields.Bool("odometry_is_reference", false);
     fields.Finish();
+    spec.seeding = SeedingFromText(seeding, "seeding");
+    if (!build.is_null()) spec.build = BuildFromJson(build, "build");
     if (spec.run_id.empty()) throw InputError("run_id: expected a non-empty run id");
     if (algorithm == nullptr) throw InputError("algorithm: missing");
     if (sequence == nullptr) throw InputError("sequence: missing");
@@ -351,7 +442,8 @@ int AdapterRevision(const std::string& adapter) {
   // Raise an adapter's revision whenever its built-in settings change what its runs compute.
   // mrpt-icp-slam 2: points-map matching and denser insertion on top of MRPT's template (issue 3).
   // odometry 2: its map is rendered with free space clamped at p = 0.01 instead of 0.12.
-  if (adapter == "mrpt-icp-slam" || adapter == "odometry") return 2;
+  // mrpt-rbpf-slam 2: seeded through RANDOM_SEED (it seeded itself from the clock before).
+  if (adapter == "mrpt-icp-slam" || adapter == "odometry" || adapter == "mrpt-rbpf-slam") return 2;
   return 1;
 }
 

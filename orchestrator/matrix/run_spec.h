@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
+#include <string_view>
 #include <optional>
 #include <string>
 #include <vector>
@@ -76,6 +78,9 @@ struct EvaluationOptions {
   std::size_t stages = 24;
   /// Cell size of maps rendered from trajectories.
   double map_resolution_m = 0.05;
+  /// The canvas rule of the map metrics (spec/metrics.md): crop to the known cells first. false gives
+  /// the raw-grid profile, which depends on each program's canvas size.
+  bool crop = true;
 };
 
 /// A metric limit: a run whose metric statistic exceeds `max` (or falls below `min`) fails in JUnit.
@@ -84,6 +89,39 @@ struct Threshold {
   std::string statistic = "rmse";
   std::optional<double> max;
   std::optional<double> min;
+};
+
+/// What a run's result depends on besides its inputs: the slamsweep that computed it and the
+/// program files it executed or read as configuration. Not part of the run id (the id names the
+/// experiment); the rerun-skip check reuses a finished run only when this is unchanged.
+struct BuildIdentity {
+  /// SlamsweepRevision() of the planning slamsweep.
+  std::string slamsweep_revision;
+  /// Absolute path -> SHA-256 of every program file (binary, wrapper script, config template).
+  std::map<std::string, std::string> program_files;
+  bool operator==(const BuildIdentity&) const = default;
+};
+
+/// Whether a run can be reproduced from its seed.
+enum class Seeding {
+  kSeeded,         ///< the run's seed reaches the program's random generator
+  kDeterministic,  ///< the program draws no random number: the same input gives the same result
+  kUnseeded,       ///< the program is randomised and takes no seed: reruns differ
+};
+
+/// "seeded", "deterministic", "unseeded".
+std::string_view SeedingName(Seeding seeding);
+
+/// Runs are averaged, compared and ranked only within one group: the same sequence, algorithm,
+/// parameter values and noise setting. Runs that differ in any of these never share a mean, a
+/// "best" mark or a history series.
+struct ComparisonGroup {
+  std::string sequence;
+  std::string algorithm;
+  /// Every parameter as "name=value", sorted by name, joined by ';' (ParametersText); "" for none.
+  std::string parameters;
+  std::string noise;
+  auto operator<=>(const ComparisonGroup&) const = default;
 };
 
 /// One cell of the matrix, fully resolved: everything a worker needs, nothing it must look up.
@@ -97,7 +135,29 @@ struct RunSpec {
   std::uint64_t seed = 0;
   EvaluationOptions evaluation;
   std::vector<Threshold> thresholds;
+  /// Set after expansion (StampBuildIdentity in orchestrator/adapters), from the program files.
+  BuildIdentity build;
+  /// From the adapter (and a command's use of {seed}/{seed32}), set with `build`.
+  Seeding seeding = Seeding::kUnseeded;
+  /// The sequence's odometry is its reference and no odometry noise is applied (a corrected log,
+  /// clean): the program is handed the answer, so the run is an upper bound, not a SLAM result.
+  bool odometry_is_reference = false;
 };
+
+/// "name=value;..." of scalar parameters, sorted by name (nlohmann's object order); text values as
+/// they are, numbers and booleans as JSON writes them.
+std::string ParametersText(const nlohmann::json& parameters);
+
+/// "name" or, when the run has parameters, "name [k=v;...]": the row of a comparison, as JUnit test
+/// names and history series show it.
+std::string AlgorithmLabel(const std::string& algorithm, const std::string& parameters_text);
+
+/// The group a run belongs to (ComparisonGroup).
+ComparisonGroup ComparisonGroupOf(const RunSpec& spec);
+
+/// Whether the odometry a run's program gets is the reference: a corrected-poses sequence whose
+/// odometry noise is absent or zero. The worker checks the same on the data (OdometryIsReference).
+bool PlannedOdometryIsReference(const evaluator::CatalogEntry& entry, const NoiseSpec& noise);
 
 /// run.json, as in orchestrator/DESIGN.md. FromJson is strict: an unknown or mistyped field is an
 /// InputError naming its path ("run.json: algorithm.timeout_s: expected a number").

@@ -26,7 +26,9 @@ struct ProcessSpec {
   /// 0 = none. Checked every ~200 ms on the summed RSS of the child's process group; on excess the
   /// group gets SIGKILL at once (a program eating memory may not live through a grace period).
   std::uint64_t memory_limit_mb = 0;
-  /// Added to (or replacing in) the runner's environment.
+  /// Variables of the runner's environment whose names start with one of these are not passed on.
+  std::vector<std::string> removed_env_prefixes;
+  /// Added to (or replacing in) the runner's environment, after the removal.
   std::vector<std::pair<std::string, std::string>> extra_env;
 };
 

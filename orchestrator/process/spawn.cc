@@ -93,6 +93,14 @@ SpawnResult SpawnChild(const ProcessSpec& spec) {
     // otherwise keep it open after the child ends. dup2 onto 1 and 2 clears the flag for the child.
     bp::pipe pipe(fds[0], fds[1]);
     bp::environment environment = boost::this_process::environment();
+    std::vector<std::string> removed;
+    for (const auto& entry : environment) {
+      const std::string name = entry.get_name();
+      for (const std::string& prefix : spec.removed_env_prefixes) {
+        if (name.starts_with(prefix)) removed.push_back(name);
+      }
+    }
+    for (const std::string& name : removed) environment.erase(name);
     for (const auto& [name, value] : spec.extra_env) environment[name] = value;
     const std::vector<std::string> args(spec.argv.begin() + 1, spec.argv.end());
     const std::string working_dir = spec.working_dir.empty() ? std::string(".") : spec.working_dir.string();

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "orchestrator/files/atomic_file.h"
+#include "orchestrator/matrix/run_spec.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -120,8 +121,12 @@ Testcase RenderTestcase(const StoredRun& run) {
     for (const std::string& line : notes) lines += line + "\n";
     body += fmt::format("      <system-out>{}</system-out>\n", XmlEscape(lines));
   }
+  // Jenkins groups by classname: one class per sequence x noise, the rows a report table compares;
+  // the name says which group (algorithm and parameters) and iteration the run is.
+  const std::string group = AlgorithmLabel(run.algorithm, run.parameters);
   const std::string open = fmt::format("    <testcase classname=\"{}\" name=\"{}\" time=\"{}\"",
-                                       XmlEscape(run.algorithm + "." + run.sequence), XmlEscape(run.run_id),
+                                       XmlEscape(run.sequence + "." + run.noise),
+                                       XmlEscape(fmt::format("{} i{} ({})", group, run.iteration, run.run_id)),
                                        Seconds(testcase.time_s));
   testcase.xml = body.empty() ? open + "/>\n" : open + ">\n" + body + "    </testcase>\n";
   return testcase;

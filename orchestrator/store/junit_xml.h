@@ -25,8 +25,9 @@ ThresholdCheck CheckThresholds(const StoredRun& run);
 /// invalid UTF-8 replaced by U+FFFD.
 std::string XmlEscape(std::string_view text);
 
-/// junit.xml: one <testsuite> per sequence, one <testcase classname="<algorithm>.<sequence>" name="<run_id>"
-/// time="<wall_s>"> per run; a failed run has <failure type="<failure_kind>" message="<reason>">, a run past a
+/// junit.xml: one <testsuite> per sequence, one <testcase classname="<sequence>.<noise>"
+/// name="<algorithm> [<parameters>] i<iteration> (<run_id>)" time="<wall_s>"> per run (no brackets without
+/// parameters); a failed run has <failure type="<failure_kind>" message="<reason>">, a run past a
 /// threshold <failure type="threshold">; unchecked thresholds are listed in <system-out>.
 std::string RenderJUnit(const std::vector<StoredRun>& runs);
 

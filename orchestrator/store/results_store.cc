@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/matrix/run_spec.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -36,6 +37,17 @@ CREATE TABLE metrics(
 CREATE TABLE metric_specs(
   run_id TEXT NOT NULL, metric TEXT NOT NULL, spec_json TEXT,
   PRIMARY KEY(run_id, metric));
+)sql";
+
+// Version 2: what makes rows comparable and results trustworthy, as columns a query can group by:
+// the parameters as "k=v;..." text (the comparison group), whether the program's odometry was the
+// reference, how the run is seeded, and the slamsweep revision that computed it.
+constexpr const char* kMigrationV2 = R"sql(
+ALTER TABLE runs ADD COLUMN parameters TEXT;
+ALTER TABLE runs ADD COLUMN odometry_is_reference INTEGER;
+ALTER TABLE runs ADD COLUMN seeding TEXT;
+ALTER TABLE runs ADD COLUMN slamsweep_revision TEXT;
+CREATE INDEX runs_group ON runs(sequence, noise, algorithm, parameters);
 )sql";
 
 const json* Find(const json& object, const char* key) {
@@ -123,6 +135,12 @@ RunColumns ValidateRun(const json& run_spec, const json& result) {
   return columns;
 }
 
+// What the worker measured on the data when it got that far, else what the plan expected.
+json OdometryIsReferenceOf(const json& run_spec, const json& result) {
+  const json& measured = FieldOrNull(result, "odometry_is_reference");
+  return measured.is_boolean() ? measured : FieldOrNull(run_spec, "odometry_is_reference");
+}
+
 // Median as evo and numpy define it: the mean of the middle two for an even count.
 double Median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
@@ -132,7 +150,7 @@ double Median(std::vector<double> values) {
 
 constexpr const char* kRunColumns =
     "run_id, sweep_id, spec_json, result_json, status, run_dir, algorithm, sequence, noise, iteration, wall_s, "
-    "finished_at";
+    "finished_at, parameters, odometry_is_reference, seeding";
 
 }  // namespace
 
@@ -170,14 +188,28 @@ void ResultsStore::InitializeSchema() {
     tables.Step();
     return tables.Int64(0);
   };
-  // The first read is where SQLite notices a file that is not a database.
-  const std::int64_t version = read_version();
+  // The first read is where SQLite notices a file that is not a database. Version and tables are read
+  // in one snapshot: another process creating the schema between the two reads would otherwise make
+  // a new store look like a foreign database (tables, version 0).
+  std::int64_t version = 0;
+  std::int64_t tables = 0;
+  {
+    db_.Execute("BEGIN");
+    try {
+      version = read_version();
+      tables = count_tables();
+    } catch (...) {
+      db_.Execute("ROLLBACK");
+      throw;
+    }
+    db_.Execute("COMMIT");
+  }
   if (version > kResultsSchemaVersion) {
     throw InputError(fmt::format("{}: results database schema version {} is newer than this slamsweep's ({}); "
                                  "use a newer slamsweep or another output directory",
                                  db_.file().string(), version, kResultsSchemaVersion));
   }
-  if (version == 0 && count_tables() > 0) {
+  if (version == 0 && tables > 0) {
     throw InputError(fmt::format("{}: an SQLite database but not a slamsweep results database (it has tables and "
                                  "no schema version); use another output directory",
                                  db_.file().string()));
@@ -187,11 +219,11 @@ void ResultsStore::InitializeSchema() {
   db_.Execute("PRAGMA synchronous = NORMAL");
   if (version == kResultsSchemaVersion) return;
   SqliteTransaction transaction(db_);
-  // Another process may have created the schema between the first read and the write lock.
-  if (read_version() == 0) {
-    db_.Execute(kSchemaV1);
-    db_.Execute(fmt::format("PRAGMA user_version = {}", kResultsSchemaVersion));
-  }
+  // Another process may have created or migrated the schema between the first read and the write lock.
+  const std::int64_t locked_version = read_version();
+  if (locked_version == 0) db_.Execute(kSchemaV1);
+  if (locked_version < 2) db_.Execute(kMigrationV2);
+  db_.Execute(fmt::format("PRAGMA user_version = {}", kResultsSchemaVersion));
   transaction.Commit();
 }
 
@@ -272,8 +304,9 @@ void ResultsStore::RecordRun(std::int64_t sweep_id, const json& run_spec, const 
     auto insert = db_.Prepare(
         "INSERT OR REPLACE INTO runs(run_id, sweep_id, algorithm, adapter, parameters_json, sequence, noise, "
         "iteration, seed, spec_json, status, failure_kind, reason, exit_code, signal, wall_s, cpu_s, peak_rss_kb, "
-        "started_at, finished_at, run_dir, result_json) "
-        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+        "started_at, finished_at, run_dir, result_json, parameters, odometry_is_reference, seeding, "
+        "slamsweep_revision) "
+        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     const json& parameters = Nested(run_spec, "algorithm", "parameters");
     insert.Bind(1, columns.run_id).Bind(2, sweep_id);
     insert.BindJson(3, Nested(run_spec, "algorithm", "name")).BindJson(4, Nested(run_spec, "algorithm", "adapter"));
@@ -292,6 +325,10 @@ void ResultsStore::RecordRun(std::int64_t sweep_id, const json& run_spec, const 
       insert.BindJson(index++, FieldOrNull(result, key));
     }
     insert.Bind(21, run_dir_relative).Bind(22, std::string_view(Dump(result)));
+    insert.BindJson(23, Nested(run_spec, "group", "parameters"));
+    insert.BindJson(24, OdometryIsReferenceOf(run_spec, result));
+    insert.BindJson(25, FieldOrNull(run_spec, "seeding"));
+    insert.BindJson(26, Nested(run_spec, "build", "slamsweep_revision"));
     insert.Run();
   }
   if (mid_transaction_hook_) mid_transaction_hook_();
@@ -371,6 +408,11 @@ std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const s
       run.iteration = select.Int64(9);
       run.wall_s = select.OptionalDouble(10);
       run.finished_at = NullableText(select, 11);
+      // Runs recorded before the column existed: the text from their parameters.
+      run.parameters = select.IsNull(12) ? ParametersText(Nested(run.spec, "algorithm", "parameters"))
+                                         : select.Text(12);
+      run.odometry_is_reference = !select.IsNull(13) && select.Int64(13) != 0;
+      run.seeding = NullableText(select, 14);
       index_of.emplace(run.run_id, runs.size());
       runs.push_back(std::move(run));
     }

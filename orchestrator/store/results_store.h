@@ -16,7 +16,7 @@ namespace slamsweep::orchestrator {
 
 /// The schema version this build writes (PRAGMA user_version). A file with a higher version was
 /// written by a newer slamsweep and is refused rather than misread.
-inline constexpr int kResultsSchemaVersion = 1;
+inline constexpr int kResultsSchemaVersion = 2;
 
 /// What is known about a sweep when it starts.
 struct SweepInfo {
@@ -64,6 +64,12 @@ struct StoredRun {
   std::string algorithm;
   std::string sequence;
   std::string noise;
+  /// The parameters as ParametersText ("k=v;..."): with sequence, algorithm and noise, the run's comparison group.
+  std::string parameters;
+  /// The program's odometry was the reference (measured by the worker, else planned).
+  bool odometry_is_reference = false;
+  /// "seeded", "deterministic" or "unseeded" (run.json's seeding; "" for runs recorded before it existed).
+  std::string seeding;
   std::int64_t iteration = 0;
   std::optional<double> wall_s;
   std::string finished_at;

@@ -1,6 +1,7 @@
 #include "orchestrator/store/summary_json.h"
 
 #include "orchestrator/files/atomic_file.h"
+#include "orchestrator/store/group_summary.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -37,10 +38,14 @@ json SummarizeRun(const StoredRun& run) {
       {"algorithm", run.algorithm},
       {"adapter", Nested(spec, "algorithm", "adapter")},
       {"parameters", parameters.is_null() ? json::object() : parameters},
+      {"parameters_text", run.parameters},
       {"sequence", run.sequence},
       {"noise", run.noise},
       {"iteration", run.iteration},
       {"seed", FieldOrNull(spec, "seed")},
+      {"seeding", run.seeding},
+      {"seeded", run.seeding == "seeded" || run.seeding == "deterministic"},
+      {"odometry_is_reference", run.odometry_is_reference},
       {"status", run.status},
       {"failure_kind", FieldOrNull(result, "failure_kind")},
       {"reason", FieldOrNull(result, "reason")},
@@ -64,7 +69,10 @@ json BuildSummaryJson(const std::vector<StoredRun>& runs, const std::string& gen
     listed.push_back(SummarizeRun(run));
     if (run.status == "ok") ++ok;
   }
+  json groups = json::array();
+  for (const GroupSummary& group : SummarizeGroups(runs)) groups.push_back(ToJson(group));
   return json{{"generated_at", generated_at},
+              {"groups", std::move(groups)},
               {"runs", std::move(listed)},
               {"counts", {{"total", runs.size()}, {"ok", ok}, {"failed", runs.size() - ok}}}};
 }

@@ -14,7 +14,8 @@ namespace slamsweep::orchestrator {
 /// ({"ape_trans": {"rmse": 0.1, ...}, "corners": {"value": 12}}), their units and the output files.
 nlohmann::json SummarizeRun(const StoredRun& run);
 
-/// The whole summary.json document: {"generated_at", "runs": [...], "counts": {"total", "ok", "failed"}}.
+/// The whole summary.json document: {"generated_at", "groups": [ToJson(GroupSummary)...] (one per
+/// comparison group: sequence x algorithm x parameters x noise), "runs": [...], "counts": {"total", "ok", "failed"}}.
 nlohmann::json BuildSummaryJson(const std::vector<StoredRun>& runs, const std::string& generated_at);
 
 /// Writes BuildSummaryJson(runs, now) to `file` atomically (readers never see a half-written file).

@@ -47,6 +47,18 @@ StoredResult ReadRunResult(const std::filesystem::path& run_dir) {
   }
 }
 
+std::optional<nlohmann::json> ReadRunSpecJson(const std::filesystem::path& run_dir) {
+  std::ifstream in(run_dir / "run.json");
+  if (!in) return std::nullopt;
+  try {
+    nlohmann::json spec = nlohmann::json::parse(in);
+    if (spec.is_object()) return spec;
+  } catch (const nlohmann::json::exception&) {
+    // An unreadable run.json adopts nothing: the run is started afresh.
+  }
+  return std::nullopt;
+}
+
 nlohmann::json MissingResult(const RunSpec& run, const std::string& reason, bool interrupted) {
   return {{"run_id", run.run_id},
           {"status", "failed"},

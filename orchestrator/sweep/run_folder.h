@@ -32,6 +32,9 @@ struct StoredResult {
 };
 StoredResult ReadRunResult(const std::filesystem::path& run_dir);
 
+/// The run folder's run.json as written when the run started; nullopt when missing or not a JSON object.
+std::optional<nlohmann::json> ReadRunSpecJson(const std::filesystem::path& run_dir);
+
 /// The result record of a run whose worker left no usable result.json (it crashed, was killed or
 /// could not start): status failed, failure_kind "internal" (or "interrupted"), the reason given.
 nlohmann::json MissingResult(const RunSpec& run, const std::string& reason, bool interrupted);

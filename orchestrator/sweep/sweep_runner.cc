@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "orchestrator/store/results_store.h"
+#include "orchestrator/store/csv_tables.h"
 #include "orchestrator/store/summary_json.h"
 #include "orchestrator/store/junit_xml.h"
 #include "orchestrator/sweep/output_lock.h"
@@ -19,9 +20,8 @@ namespace {
 
 std::string ExpectationKey(const RunSpec& run) { return run.algorithm.name + "\t" + run.sequence.entry.name; }
 
-bool IsDone(const std::optional<std::string>& status, bool rerun_failed) {
-  if (!status) return false;
-  return *status == "ok" || (*status == "failed" && !rerun_failed);
+bool IsDone(const std::string& status, bool rerun_failed) {
+  return status == "ok" || (status == "failed" && !rerun_failed);
 }
 
 /// The supervising loop's state for one sweep.
@@ -123,6 +123,16 @@ std::string HostName() {
 
 }  // namespace
 
+bool RecordedRunIsReusable(const RunSpec& run, const std::string& recorded_status, const nlohmann::json& recorded_spec,
+                           const SweepSettings& settings, bool& stale) {
+  stale = false;
+  if (!IsDone(recorded_status, settings.rerun_failed)) return false;
+  const auto build = recorded_spec.find("build");
+  nlohmann::json current = ToJson(run);
+  stale = build == recorded_spec.end() || *build != current["build"];
+  return !stale || settings.reuse_stale;
+}
+
 int SweepOutcome::ExitCode() const {
   if (interrupted) return 130;
   return failed > 0 || not_started > 0 ? 1 : 0;
@@ -163,24 +173,29 @@ SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& set
 
   for (const RunSpec& run : runs) {
     matrix_ids.insert(run.run_id);
-    const std::optional<std::string> recorded = store.RunStatus(run.run_id);
-    if (IsDone(recorded, settings.rerun_failed)) {
-      ++outcome.already_done;
-      continue;
-    }
-    // A result.json the store never saw: the orchestrator died between the worker's rename and
-    // the store's commit. Adopting it keeps "kill -9, run again" from repeating finished work.
-    const std::filesystem::path run_dir = RunFolder(settings.output_dir, run.run_id);
-    if (!recorded) {
-      StoredResult stored = ReadRunResult(run_dir);
-      if (stored.result && stored.result->value("run_id", "") == run.run_id) {
-        const std::string adopted_status = stored.result->value("status", "failed");
-        if (IsDone(adopted_status, settings.rerun_failed)) {
-          store.RecordRun(sweep_id, ToJson(run), *stored.result, std::filesystem::path("runs") / run.run_id);
-          ++outcome.already_done;
-          continue;
-        }
+    bool stale = false;
+    const std::optional<StoredRun> recorded = store.FindRun(run.run_id);
+    if (recorded) {
+      const bool reusable = RecordedRunIsReusable(run, recorded->status, recorded->spec, settings, stale);
+      outcome.stale += stale ? 1 : 0;
+      if (reusable) {
+        ++outcome.already_done;
+        continue;
       }
+    } else {
+      // A result.json the store never saw: the orchestrator died between the worker's rename and
+      // the store's commit. Adopting it keeps "kill -9, run again" from repeating finished work.
+      const std::filesystem::path run_dir = RunFolder(settings.output_dir, run.run_id);
+      StoredResult stored = ReadRunResult(run_dir);
+      std::optional<nlohmann::json> stored_spec = stored.result ? ReadRunSpecJson(run_dir) : std::nullopt;
+      if (stored.result && stored_spec && stored.result->value("run_id", "") == run.run_id &&
+          RecordedRunIsReusable(run, stored.result->value("status", "failed"), *stored_spec, settings, stale)) {
+        outcome.stale += stale ? 1 : 0;
+        store.RecordRun(sweep_id, *stored_spec, *stored.result, std::filesystem::path("runs") / run.run_id);
+        ++outcome.already_done;
+        continue;
+      }
+      outcome.stale += stale ? 1 : 0;
     }
     to_run.push_back(&run);
   }
@@ -202,6 +217,7 @@ SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& set
   store.FinishSweep(sweep_id, outcome.interrupted ? "interrupted" : (outcome.ExitCode() == 0 ? "ok" : "failed"),
                     static_cast<std::int64_t>(outcome.ok + outcome.failed));
   WriteSummaryJson(stored_runs, settings.output_dir / "summary.json");
+  WriteCsvTables(stored_runs, settings.output_dir);
   WriteJUnit(stored_runs, settings.output_dir / "junit.xml");
   return outcome;
 }

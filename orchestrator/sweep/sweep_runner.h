@@ -22,6 +22,9 @@ struct SweepSettings {
   std::size_t failure_budget = 0;
   /// Start runs that an earlier sweep recorded as failed again (`--rerun failed`).
   bool rerun_failed = false;
+  /// Reuse finished runs whose build identity (slamsweep revision, program digests) differs from
+  /// the run's now (`--reuse-stale`); by default they are run again.
+  bool reuse_stale = false;
   /// Recorded with the sweep, to reproduce it.
   std::string config_path;
   std::string config_sha;
@@ -34,6 +37,9 @@ struct SweepOutcome {
   std::size_t failed = 0;
   /// Finished by an earlier sweep and not run again.
   std::size_t already_done = 0;
+  /// Finished by an earlier sweep under another build identity: run again (or, with reuse_stale,
+  /// counted in already_done too).
+  std::size_t stale = 0;
   /// Never started: the failure budget ran out or the sweep was interrupted.
   std::size_t not_started = 0;
   bool interrupted = false;
@@ -43,7 +49,8 @@ struct SweepOutcome {
 };
 
 /// Runs `runs` (one sweep's matrix, or a shard of it) into settings.output_dir: takes the
-/// directory's lock, skips runs the results store already holds (and adopts finished result.json
+/// directory's lock, skips runs the results store already holds under the same build identity
+/// (RecordedRunIsReusable; and adopts finished result.json
 /// files the store missed, e.g. after the orchestrator was killed), starts the rest
 /// longest-expected-first through `executor` with at most `jobs` at once, records each result
 /// the moment it ends, and writes summary.json and junit.xml at the end, also when interrupted.
@@ -51,6 +58,12 @@ struct SweepOutcome {
 /// (unwritable output directory, locked directory, corrupt store).
 SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& settings, Executor& executor,
                       Status& status);
+
+/// Whether a recorded run (its run.json as recorded) may stand for `run`: it finished ("ok", or
+/// "failed" unless rerun_failed) and was computed under the same build identity, or reuse_stale.
+/// `stale` is set when only the build identity stood in the way (or was waived by reuse_stale).
+bool RecordedRunIsReusable(const RunSpec& run, const std::string& recorded_status, const nlohmann::json& recorded_spec,
+                           const SweepSettings& settings, bool& stale);
 
 /// Order in which runs start: longest expected first (durations recorded by earlier sweeps,
 /// keyed "<algorithm>\t<sequence>"), so that a long run does not start last and stretch the

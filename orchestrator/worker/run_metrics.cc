@@ -87,7 +87,9 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
   }
   if (inputs.map) {
     Attempt(out, "paper_map", [&] {
-      const ev::PaperMetrics paper = ev::ComputePaperMetrics(*inputs.map);
+      ev::PaperMetricsOptions paper_options;
+      paper_options.canvas.crop = evaluation.crop;
+      const ev::PaperMetrics paper = ev::ComputePaperMetrics(*inputs.map, paper_options);
       out.metrics.push_back({"occupied_to_free_unknown", "value", paper.occupied.occupied_to_free_unknown, "ratio"});
       out.metrics.push_back({"occupied_to_all", "value", paper.occupied.occupied_to_all, "ratio"});
       out.metrics.push_back({"unknown_to_all", "value", paper.occupied.unknown_to_all, "ratio"});

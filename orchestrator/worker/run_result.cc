@@ -26,7 +26,7 @@ nlohmann::json ToJson(const RunResult& result) {
   json["signal"] = result.signal ? nlohmann::json(*result.signal) : nlohmann::json();
   json["wall_s"] = result.wall_s;
   json["cpu_s"] = result.cpu_s;
-  json["peak_rss_kb"] = result.peak_rss_kb;
+  json["peak_rss_kb"] = result.peak_rss_kb ? nlohmann::json(*result.peak_rss_kb) : nlohmann::json();
   json["started_at"] = result.started_at;
   json["finished_at"] = result.finished_at;
   json["command"] = result.command;
@@ -38,6 +38,9 @@ nlohmann::json ToJson(const RunResult& result) {
   std::vector<std::string> warnings = result.warnings;
   warnings.insert(warnings.end(), result.metrics.warnings.begin(), result.metrics.warnings.end());
   json["warnings"] = std::move(warnings);
+  json["noise"] = result.noise;
+  json["odometry_is_reference"] =
+      result.odometry_is_reference ? nlohmann::json(*result.odometry_is_reference) : nlohmann::json();
   return json;
 }
 

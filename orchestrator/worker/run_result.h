@@ -23,13 +23,19 @@ struct RunResult {
   std::optional<int> signal;
   double wall_s = 0.0;
   double cpu_s = 0.0;
-  std::int64_t peak_rss_kb = 0;
+  /// Absent when no program ran (the odometry baseline): the worker's own memory is not the program's.
+  std::optional<std::int64_t> peak_rss_kb;
   std::string started_at;
   std::string finished_at;
   std::vector<std::string> command;
   nlohmann::json outputs = nlohmann::json::object();
   RunMetrics metrics;
   std::vector<std::string> warnings;
+  /// The noise applied to the program's input and its seeds (RunInputs::noise_record).
+  nlohmann::json noise;
+  /// The program's odometry was the reference (RunInputs::odometry_is_reference); absent when the
+  /// inputs were never prepared.
+  std::optional<bool> odometry_is_reference;
 
   bool ok() const { return !failure_kind; }
   /// Marks the run failed (the first failure wins: later ones are consequences).

@@ -122,15 +122,22 @@ bool RecordProcessOutcome(const ProcessOutcome& outcome, RunResult& result) {
 void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   const std::unique_ptr<Adapter> adapter = MakeAdapter(spec.algorithm.adapter);
   const RunInputs inputs = PrepareRunInputs(spec);
-  result.warnings.insert(result.warnings.end(), inputs.sequence.warnings.begin(), inputs.sequence.warnings.end());
-  const PreparedRun prepared = adapter->Prepare(spec, inputs, paths);
+  result.warnings.insert(result.warnings.end(), inputs.warnings.begin(), inputs.warnings.end());
+  result.noise = inputs.noise_record;
+  result.odometry_is_reference = inputs.odometry_is_reference;
+  if (inputs.odometry_is_reference) result.warnings.push_back(std::string(kOdometryIsReferenceWarning));
+  // The adapter gets the robot's part only; inputs.truth stays here until the program has exited.
+  const PreparedRun prepared = adapter->Prepare(spec, inputs.robot, paths);
   result.command = prepared.argv;
   WriteCommandTxt(paths, prepared.argv);
 
   if (!prepared.argv.empty()) {
     ProcessSpec process;
     process.argv = prepared.argv;
-    process.working_dir = paths.root;
+    process.working_dir = paths.ProgramWorkingDir();
+    // SLAMSWEEP_* variables name slamsweep's data folders (the datasets, whose logs hold the
+    // reference): none of them is the program's business.
+    process.removed_env_prefixes = {"SLAMSWEEP_"};
     process.log_path = paths.Log();
     process.log_cap_bytes = kLogCapBytes;
     process.timeout_s = spec.algorithm.timeout_s;
@@ -140,7 +147,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   if (InterruptionRequested()) return;
 
   const auto collect_start = std::chrono::steady_clock::now();
-  CollectedOutputs collected = adapter->Collect(spec, inputs, paths);
+  CollectedOutputs collected = adapter->Collect(spec, inputs.robot, paths);
   if (prepared.argv.empty()) {
     // No program: the baseline's "run" is rendering its map.
     result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - collect_start).count();
@@ -149,7 +156,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   if (collected.map_rendered_from_trajectory) {
     result.warnings.push_back("map rendered from the trajectory and the scans (the program writes no map)");
   }
-  const ev::Trajectory* reference = inputs.sequence.reference ? &*inputs.sequence.reference : nullptr;
+  const ev::Trajectory* reference = inputs.truth.reference ? &*inputs.truth.reference : nullptr;
   try {
     result.outputs = WriteRunOutputs(paths, collected, reference, result.warnings);
   } catch (const ev::InputError& error) {
@@ -160,7 +167,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   metric_inputs.map = &collected.map;
   metric_inputs.estimate = collected.trajectory ? &*collected.trajectory : nullptr;
   metric_inputs.reference = reference;
-  metric_inputs.relations = inputs.sequence.relations ? &*inputs.sequence.relations : nullptr;
+  metric_inputs.relations = inputs.truth.relations ? &*inputs.truth.relations : nullptr;
   result.metrics = ComputeRunMetrics(spec.evaluation, metric_inputs);
 }
 

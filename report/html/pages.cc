@@ -59,6 +59,20 @@ Html Cell(const MetricCell& cell) {
   return Element("td", cell.best ? "best" : "", content);
 }
 
+/// What a reader must know before comparing the row's numbers with the others.
+Html RowNotes(const AlgorithmRow& row) {
+  Html notes;
+  if (row.odometry_is_reference) {
+    notes += T("<br>") + Element("span", "warning", E("odometry = reference: an upper bound, not a SLAM result"));
+  }
+  if (row.seeding == "unseeded" || row.seeding == "mixed") {
+    notes += T("<br>") + Element("span", "warning",
+                                 E("unseeded: the program takes no seed, so its spread includes its own randomness "
+                                   "and a rerun gives other numbers"));
+  }
+  return notes;
+}
+
 Html MetricTableHtml(const SiteData& site, const SequenceModel& sequence, const std::vector<MetricColumn>& columns,
                      std::vector<MetricCell> AlgorithmRow::* cells, std::string_view caption, std::string_view root) {
   Html header = Element("th", "", E("Algorithm")) + Element("th", "", E("Runs"));
@@ -67,6 +81,7 @@ Html MetricTableHtml(const SiteData& site, const SequenceModel& sequence, const 
   for (const AlgorithmRow& row : sequence.rows) {
     Html name = E(row.algorithm);
     if (row.median_run) name = Link(std::string(root) + site.layout->RunPage(*row.median_run), name);
+    name += RowNotes(row);
     Html line = Element("th", "", name) +
                 Element("td", row.counts.failed + row.counts.unfinished > 0 ? "failures" : "", E(CountsText(row.counts)));
     for (const MetricCell& cell : row.*cells) line += Cell(cell);
@@ -98,7 +113,7 @@ Html SequenceTables(const SiteData& site, const SequenceModel& sequence, std::st
 }
 
 Html Plots(const SiteData& site, const SequenceModel& sequence, std::string_view root) {
-  const auto it = site.plots.find(sequence.name);
+  const auto it = site.plots.find(sequence.key);
   if (it == site.plots.end() || it->second.empty()) return {};
   Html figures;
   for (const PlotArtifact& plot : it->second) {
@@ -140,7 +155,7 @@ Html RunList(const SiteData& site, const SequenceModel& sequence, std::string_vi
       const std::string status(RunStatusName(record.status));
       rows += Element("tr", "",
                       Element("td", "", Link(std::string(root) + site.layout->RunPage(run), E(record.run_id))) +
-                          Element("td", "", E(record.algorithm)) +
+                          Element("td", "", E(row.algorithm)) +
                           Element("td", "", E(std::to_string(record.iteration))) +
                           Element("td", "status-" + status, E(status)) + Element("td", "", E(record.reason))) +
               T("\n");
@@ -164,21 +179,26 @@ std::string RenderIndexPage(const SiteData& site) {
   Html body = Element("p", model.counts.failed + model.counts.unfinished > 0 ? "summary failures" : "summary",
                       E(CountsText(model.counts) + " over " + std::to_string(model.sequences.size()) +
                         " sequences and " + std::to_string(model.algorithms.size()) + " algorithms."));
-  Html downloads = Element("li", "", Link("summary.csv", E("summary.csv")) + E(" (one line per run)"));
+  Html downloads;
+  if (site.has_summary_csv) {
+    downloads += Element("li", "", Link("summary.csv", E("summary.csv")) +
+                                       E(" (one line per sequence x algorithm x parameters x noise)"));
+  }
+  if (site.has_runs_csv) downloads += Element("li", "", Link("runs.csv", E("runs.csv")) + E(" (one line per run)"));
   if (site.has_summary_json) downloads += Element("li", "", Link("summary.json", E("summary.json")));
   body += Element("ul", "downloads", downloads);
   for (const SequenceModel& sequence : model.sequences) {
-    Html section = Element("h2", "", Link(site.layout->SequencePage(sequence.name), E("Sequence " + sequence.name)));
+    Html section = Element("h2", "", Link(site.layout->SequencePage(sequence.key), E("Sequence " + sequence.title)));
     section += SequenceTables(site, sequence, "");
     section += Plots(site, sequence, "");
-    section += Element("p", "", Link(site.layout->SequencePage(sequence.name),
-                                     E("Map gallery and every run of " + sequence.name)));
+    section += Element("p", "", Link(site.layout->SequencePage(sequence.key),
+                                     E("Map gallery and every run of " + sequence.title)));
     Html files;
     for (const AlgorithmRow& row : sequence.rows) {
-      const std::string dir = site.layout->FilesDir(row.algorithm, sequence.name);
+      const std::string dir = site.layout->FilesDir(row.algorithm, sequence.key);
       Html links = Link(dir + "rmse.txt", E("RMSE")) + T(" · ") + Link(dir + "corners.txt", E("corners")) + T(" · ") +
                    Link(dir + "occupied_ratio.txt", E("occupied ratio"));
-      if (site.pose_logs.count({row.algorithm, sequence.name}) > 0) {
+      if (site.pose_logs.count({row.algorithm, sequence.key}) > 0) {
         links += T(" · ") + Link(dir + "pose_log.tum", E("pose log"));
       }
       files += Element("li", "", E(row.algorithm + ": ") + links);
@@ -202,7 +222,7 @@ std::string RenderSequencePage(const SiteData& site, const SequenceModel& sequen
   body += Gallery(site, sequence, root);
   body += Element("h2", "", E("Runs"));
   body += RunList(site, sequence, root);
-  return Page("Sequence " + sequence.name, root, body);
+  return Page("Sequence " + sequence.title, root, body);
 }
 
 std::string RenderRunPage(const SiteData& site, std::size_t run) {
@@ -215,16 +235,23 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
   Html body = Element("p", "status-" + status,
                       E("Status: " + status + (record.failure_kind.empty() ? "" : " (" + record.failure_kind + ")") +
                         (record.reason.empty() ? "" : ": " + record.reason)));
+  if (record.odometry_is_reference) {
+    body += Element("p", "warning", E("odometry = reference: an upper bound, not a SLAM result (the program's odometry "
+                                      "was the reference trajectory)"));
+  }
   body += KeyValueTable({
       {"Algorithm", record.algorithm},
       {"Sequence", record.sequence},
       {"Noise", record.noise},
+      {"Parameters", record.parameters.empty() ? "-" : record.parameters},
       {"Iteration", std::to_string(record.iteration)},
       {"Exit code", record.exit_code ? std::to_string(*record.exit_code) : "n/a"},
       {"Signal", record.signal ? std::to_string(*record.signal) : "none"},
       {"Wall time", FormatOptional(record.wall_s, "s")},
       {"CPU time", FormatOptional(record.cpu_s, "s")},
-      {"Peak memory", record.peak_rss_kb ? FormatNumber(*record.peak_rss_kb / 1024.0) + " MiB" : "n/a"},
+      // No program ran for the odometry baseline: slamsweep's own memory would be a misleading number.
+      {"Peak memory", record.peak_rss_kb ? FormatNumber(*record.peak_rss_kb / 1024.0) + " MiB" : "-"},
+      {"Seeding", record.seeding.empty() ? "not recorded" : record.seeding},
       {"Started", record.started_at},
       {"Finished", record.finished_at},
   });
@@ -285,7 +312,9 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
   Html files;
   for (const std::string& name : artifacts.downloads) files += Element("li", "", Link(dir + name, E(name)));
   body += files.str().empty() ? Element("p", "note", E("No file to download.")) : Element("ul", "downloads", files);
-  body += Element("p", "", Link(root + site.layout->SequencePage(record.sequence), E("Sequence " + record.sequence)));
+  const std::string table_key = record.sequence + "/" + record.noise;
+  body += Element("p", "", Link(root + site.layout->SequencePage(table_key),
+                                E("Sequence " + record.sequence + ", noise " + record.noise)));
   return Page("Run " + record.run_id, root, body);
 }
 
@@ -304,6 +333,7 @@ td.best { background: #d8f0d8; font-weight: bold; }
 .failures, .status-failed, .status-unreadable, .status-unfinished { color: #a00; }
 .status-ok { color: #060; }
 .note { color: #555; font-style: italic; }
+.warning { color: #8a4b00; font-size: 0.85em; font-weight: normal; }
 .plots, .gallery { display: flex; flex-wrap: wrap; gap: 1em; }
 figure { margin: 0; border: 1px solid #ddd; padding: 0.5em; }
 figcaption { font-size: 0.9em; margin: 0.3em 0; word-break: break-all; }

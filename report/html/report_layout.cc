@@ -27,13 +27,19 @@ std::string Unique(std::string name, std::set<std::string>& taken) {
 ReportLayout::ReportLayout(const SweepModel& model) {
   std::set<std::string> taken_runs;
   for (const RunRecord& run : model.runs) run_names_.push_back(Unique(SafeFileName(run.run_id), taken_runs));
+  // One page per table (sequence x noise); its file name is the sequence's, plus the noise.
   std::set<std::string> taken_sequences;
   for (const SequenceModel& sequence : model.sequences) {
-    sequence_names_[sequence.name] = Unique(SafeFileName(sequence.name), taken_sequences);
+    sequence_names_[sequence.key] = Unique(SafeFileName(sequence.name + "-" + sequence.noise), taken_sequences);
   }
+  // One folder of text files per row label (algorithm with its varying parameters).
   std::set<std::string> taken_algorithms;
-  for (const std::string& algorithm : model.algorithms) {
-    algorithm_names_[algorithm] = Unique(SafeFileName(algorithm), taken_algorithms);
+  for (const SequenceModel& sequence : model.sequences) {
+    for (const AlgorithmRow& row : sequence.rows) {
+      if (algorithm_names_.count(row.algorithm) == 0) {
+        algorithm_names_[row.algorithm] = Unique(SafeFileName(row.algorithm), taken_algorithms);
+      }
+    }
   }
 }
 

@@ -19,12 +19,13 @@ class ReportLayout {
   std::string RunPage(std::size_t run) const { return "runs/" + run_names_[run] + ".html"; }
   /// "runs/<name>/": the run's images and downloadable files.
   std::string RunDir(std::size_t run) const { return "runs/" + run_names_[run] + "/"; }
-  /// "sequences/<name>.html"
-  std::string SequencePage(const std::string& sequence) const;
-  /// "plots/<sequence>-<metric>.png"
-  std::string Plot(const std::string& sequence, const std::string& metric) const;
-  /// "files/<algorithm>/<sequence>/": the paper service's text files of one algorithm on one sequence.
-  std::string FilesDir(const std::string& algorithm, const std::string& sequence) const;
+  /// "sequences/<sequence>-<noise>.html" of a table, by its SequenceModel::key.
+  std::string SequencePage(const std::string& table_key) const;
+  /// "plots/<sequence>-<noise>-<metric>.png"
+  std::string Plot(const std::string& table_key, const std::string& metric) const;
+  /// "files/<row>/<sequence>-<noise>/": the paper service's text files of one row (AlgorithmRow::algorithm,
+  /// the algorithm with its varying parameters) in one table.
+  std::string FilesDir(const std::string& row_label, const std::string& table_key) const;
 
  private:
   std::vector<std::string> run_names_;

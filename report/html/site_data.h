@@ -36,11 +36,15 @@ struct PlotArtifact {
 struct SiteData {
   const SweepModel* model = nullptr;
   const ReportLayout* layout = nullptr;
-  std::string title;                   ///< "slamsweep report — <result dir name>"
+  std::string title;                   ///< the sweep's name ("slamsweep report — <result dir name>" without one)
   std::vector<RunArtifacts> runs;      ///< parallel to model->runs
-  std::map<std::string, std::vector<PlotArtifact>> plots;  ///< by sequence name
+  std::map<std::string, std::vector<PlotArtifact>> plots;  ///< by table key (SequenceModel::key)
+  /// Files copied from the result directory into the report.
   bool has_summary_json = false;
-  std::set<std::pair<std::string, std::string>> pose_logs;  ///< (algorithm, sequence) with files/.../pose_log.tum
+  bool has_summary_csv = false;
+  bool has_runs_csv = false;
+  /// (row label, table key) with files/.../pose_log.tum
+  std::set<std::pair<std::string, std::string>> pose_logs;
   Html history_section;  ///< the index's nightly-history section (SiteExtension), empty without one
 };
 

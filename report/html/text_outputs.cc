@@ -8,16 +8,6 @@ namespace slamsweep::report {
 
 namespace {
 
-std::string CsvField(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
-
 std::string Number(const std::optional<double>& value) {
   if (!value) return "";
   char buffer[32];
@@ -36,34 +26,15 @@ std::string CellText(const std::string& name, const MetricColumn& column, const 
 }
 
 std::string Header(const SequenceModel& sequence, const AlgorithmRow& row) {
-  return "algorithm: " + row.algorithm + "\nsequence: " + sequence.name + "\nruns: " +
+  return "algorithm: " + row.name + "\nparameters: " + (row.parameters.empty() ? "-" : row.parameters) +
+         "\nsequence: " + sequence.name + "\nnoise: " + sequence.noise +
+         (row.odometry_is_reference ? "\nnote: odometry = reference: an upper bound, not a SLAM result" : "") +
+         "\nruns: " +
          std::to_string(row.counts.total) + "\nok: " + std::to_string(row.counts.ok) +
          "\nfailed: " + std::to_string(row.counts.failed) + "\n";
 }
 
 }  // namespace
-
-std::string SummaryCsv(const SweepModel& model) {
-  std::set<std::string> metric_names;
-  for (const RunRecord& run : model.runs) {
-    for (const FlatMetric& metric : run.metrics) metric_names.insert(metric.metric + "." + metric.statistic);
-  }
-  std::string out = "run_id,algorithm,sequence,noise,iteration,status,failure_kind,reason,wall_s,cpu_s,peak_rss_kb";
-  for (const std::string& name : metric_names) out.append(",").append(CsvField(name));
-  out += "\n";
-  for (const RunRecord& run : model.runs) {
-    out += CsvField(run.run_id) + "," + CsvField(run.algorithm) + "," + CsvField(run.sequence) + "," +
-           CsvField(run.noise) + "," + std::to_string(run.iteration) + "," + std::string(RunStatusName(run.status)) +
-           "," + CsvField(run.failure_kind) + "," + CsvField(run.reason) + "," + Number(run.wall_s) + "," +
-           Number(run.cpu_s) + "," + Number(run.peak_rss_kb);
-    for (const std::string& name : metric_names) {
-      const std::size_t dot = name.rfind('.');
-      out.append(",").append(Number(run.Metric(name.substr(0, dot), name.substr(dot + 1))));
-    }
-    out += "\n";
-  }
-  return out;
-}
 
 std::string RmseText(const SequenceModel& sequence, const AlgorithmRow& row) {
   std::string out = Header(sequence, row);

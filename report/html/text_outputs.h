@@ -6,10 +6,6 @@
 
 namespace slamsweep::report {
 
-/// summary.csv: one line per run (RFC 4180 quoting): identity, status, reason, resources, then
-/// one column per flat metric "metric.statistic" that any run has (sorted), empty where absent.
-std::string SummaryCsv(const SweepModel& model);
-
 /// The paper service's text files for one algorithm on one sequence, as "name: value" lines.
 /// rmse.txt: ATE translation RMSE mean and std (with its alignment); corners.txt and
 /// occupied_ratio.txt: mean and std over iterations. std reads "n/a" for one iteration.

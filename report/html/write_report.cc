@@ -183,7 +183,7 @@ std::vector<PlotRequest> PlanPlots(const SweepModel& model, const ReportLayout& 
     for (const PlotSpec& spec : specs) {
       const MetricColumn& column = *spec.column;
       PlotRequest request;
-      request.title = sequence.name + ": " + column.title + (column.spec.empty() ? "" : ", " + column.spec);
+      request.title = sequence.title + ": " + column.title + (column.spec.empty() ? "" : ", " + column.spec);
       request.y_label = column.title + (column.unit.empty() ? "" : " (" + column.unit + ")");
       request.log_scale = true;
       for (const AlgorithmRow& row : sequence.rows) {
@@ -194,10 +194,10 @@ std::vector<PlotRequest> PlanPlots(const SweepModel& model, const ReportLayout& 
       PlotArtifact artifact;
       artifact.metric = column.metric;
       artifact.title = request.title;
-      artifact.path = layout.Plot(sequence.name, column.metric + (column.spec.empty() ? "" : "-" + column.spec));
+      artifact.path = layout.Plot(sequence.key, column.metric + (column.spec.empty() ? "" : "-" + column.spec));
       artifact.note = "no image maker configured";
       request.png = out_dir / artifact.path;
-      site.plots[sequence.name].push_back(artifact);
+      site.plots[sequence.key].push_back(artifact);
       requests.push_back(std::move(request));
     }
   }
@@ -296,17 +296,28 @@ void WritePaperFiles(const SweepModel& model, const ReportLayout& layout, const 
   std::error_code error;
   for (const SequenceModel& sequence : model.sequences) {
     for (const AlgorithmRow& row : sequence.rows) {
-      const fs::path files = out_dir / layout.FilesDir(row.algorithm, sequence.name);
+      const fs::path files = out_dir / layout.FilesDir(row.algorithm, sequence.key);
       MakeDirectories(files);
       WriteTextFile(files / "rmse.txt", RmseText(sequence, row));
       WriteTextFile(files / "corners.txt", MapMetricText(sequence, row, "corners"));
       WriteTextFile(files / "occupied_ratio.txt", MapMetricText(sequence, row, "occupied_to_free_unknown"));
       if (row.median_run && IsRegularFile(model.runs[*row.median_run].dir / "trajectory.tum")) {
         LinkOrCopy(model.runs[*row.median_run].dir / "trajectory.tum", files / "pose_log.tum", error);
-        if (!error) site.pose_logs.insert({row.algorithm, sequence.name});
+        if (!error) site.pose_logs.insert({row.algorithm, sequence.key});
       }
     }
   }
+}
+
+// Copies RESULT_DIR/name into the report; false (and no stale copy left) when the sweep wrote none.
+bool CopyResultFile(const fs::path& result_dir, const fs::path& out_dir, const char* name) {
+  std::error_code error;
+  if (!IsRegularFile(result_dir / name)) {
+    fs::remove(out_dir / name, error);
+    return false;
+  }
+  fs::copy_file(result_dir / name, out_dir / name, fs::copy_options::overwrite_existing, error);
+  return !error;
 }
 
 // Marks the plots whose files exist and counts the images made and not made. Without an image
@@ -343,7 +354,7 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   site.layout = &layout;
   fs::path normal = fs::absolute(result_dir).lexically_normal();
   if (normal.filename().empty()) normal = normal.parent_path();  // "out/" -> "out"
-  site.title = "slamsweep report — " + normal.filename().string();
+  site.title = model.sweep_name.empty() ? "slamsweep report — " + normal.filename().string() : model.sweep_name;
   site.runs.resize(model.runs.size());
 
   ParallelFor(model.runs.size(), options.jobs, [&](std::size_t i) {
@@ -374,21 +385,17 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   RunImageJobs(jobs, options.jobs);
   ReportSummary summary = CountImages(out_dir, options.artwork != nullptr, site);
 
-  std::error_code error;
-  if (IsRegularFile(result_dir / "summary.json")) {
-    fs::copy_file(result_dir / "summary.json", out_dir / "summary.json", fs::copy_options::overwrite_existing, error);
-    site.has_summary_json = !error;
-  } else {
-    fs::remove(out_dir / "summary.json", error);
-  }
+  // The sweep's own tables, as the orchestrator wrote them: one computation of every aggregate.
+  site.has_summary_json = CopyResultFile(result_dir, out_dir, "summary.json");
+  site.has_summary_csv = CopyResultFile(result_dir, out_dir, "summary.csv");
+  site.has_runs_csv = CopyResultFile(result_dir, out_dir, "runs.csv");
   WriteTextFile(out_dir / "style.css", StyleSheet());
-  WriteTextFile(out_dir / "summary.csv", SummaryCsv(model));
   WritePaperFiles(model, layout, out_dir, site);
   if (options.history != nullptr) site.history_section = options.history->Write(out_dir, summary);
   WriteTextFile(out_dir / "index.html", RenderIndexPage(site));
   summary.pages += 1;
   for (const SequenceModel& sequence : model.sequences) {
-    WriteTextFile(out_dir / layout.SequencePage(sequence.name), RenderSequencePage(site, sequence));
+    WriteTextFile(out_dir / layout.SequencePage(sequence.key), RenderSequencePage(site, sequence));
     ++summary.pages;
   }
   ParallelFor(model.runs.size(), options.jobs,

@@ -48,17 +48,45 @@ cv::Size CanvasSize(const std::vector<std::filesystem::path>& paths) {
   return canvas;
 }
 
+/// Stages of one size share one frame of the world: the canvas rule crops them all to the union of
+/// their known cells (plus the metrics' 2-cell margin), so the animation shows the map, not the
+/// program's padding, at the scale of every other map in the report. Stages of different sizes carry
+/// no origin to align them by, so they are not cropped. Returns the whole canvas when nothing is known.
+cv::Rect CommonKnownWindow(const std::vector<std::filesystem::path>& paths, cv::Size canvas) {
+  constexpr int kMarginPx = 2;
+  const cv::Rect whole(0, 0, canvas.width, canvas.height);
+  cv::Rect known;
+  for (const auto& path : paths) {
+    const std::optional<cv::Size> size = PeekImageSize(path);
+    if (!size || *size != canvas) return whole;
+  }
+  for (const auto& path : paths) {
+    const cv::Mat stage = evaluator::ReadGreyImageFile(path);
+    if (stage.size() != canvas) return whole;
+    const cv::Rect box = cv::boundingRect(stage != kUnknownGrey);
+    known = known.empty() ? box : (box.empty() ? known : (known | box));
+  }
+  if (known.empty()) return whole;
+  const cv::Rect grown(known.x - kMarginPx, known.y - kMarginPx, known.width + 2 * kMarginPx,
+                       known.height + 2 * kMarginPx);
+  return grown & whole;
+}
+
 /// The stages, each read only when first needed (a size cap may leave most of a long list out),
-/// put on the common canvas and shrunk to max_side_px, then kept.
+/// put on the common canvas, cropped to CommonKnownWindow and shrunk to max_side_px, then kept.
 class StageFrames {
  public:
   StageFrames(const std::vector<std::filesystem::path>& paths, int max_side_px)
-      : paths_(paths), canvas_size_(CanvasSize(paths)), max_side_px_(max_side_px), frames_(paths.size()) {}
+      : paths_(paths),
+        canvas_size_(CanvasSize(paths)),
+        window_(CommonKnownWindow(paths, canvas_size_)),
+        max_side_px_(max_side_px),
+        frames_(paths.size()) {}
 
   std::size_t size() const { return paths_.size(); }
   /// Longer side of a frame before any further shrinking.
   int SidePx() const {
-    const cv::Size size = ShrunkSize(canvas_size_, max_side_px_);
+    const cv::Size size = ShrunkSize(window_.size(), max_side_px_);
     return std::max(size.width, size.height);
   }
 
@@ -76,13 +104,14 @@ class StageFrames {
                                    stage.cols, stage.rows)));
       stage = canvas;
     }
-    frame = ShrinkToFit(stage, max_side_px_);
+    frame = ShrinkToFit(stage(window_), max_side_px_);
     return frame;
   }
 
  private:
   const std::vector<std::filesystem::path>& paths_;
   cv::Size canvas_size_;
+  cv::Rect window_;
   int max_side_px_;
   std::vector<cv::Mat> frames_;
 };

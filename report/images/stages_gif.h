@@ -24,7 +24,9 @@ void ValidateGifOptions(const GifOptions& options);
 /// occupied, 254 free, 205 unknown) as a looping animated GIF of the map being built:
 /// - every stage is read as grey; stages of different sizes are centred on a canvas of the
 ///   largest width and height, filled with map_saver's unknown grey 205 (a stage image carries
-///   no origin, so centring is the best guess for a map that grows in all directions);
+///   no origin, so centring is the best guess for a map that grows in all directions); stages that
+///   all have one size are cropped to the union of their known pixels plus 2 (the canvas rule of
+///   the map metrics), so padding a program adds around its map does not shrink the animation;
 /// - the canvas is shrunk (area interpolation) so its longest side is at most max_side_px;
 /// - 8-bit grey palette, LZW by giflib, NETSCAPE2.0 loop, a graphics control block per frame;
 /// - when the file exceeds max_bytes: frames are dropped evenly (the first and last are kept)

@@ -82,6 +82,23 @@ void ReadRunSpec(const std::filesystem::path& file, RunRecord& run) {
     if (!it->is_object()) FieldError(file, "noise", "an object");
     run.noise = OptionalString(*it, "name", file);
   }
+  if (const auto it = spec.find("algorithm"); it != spec.end()) {
+    if (const auto parameters = it->find("parameters"); parameters != it->end() && parameters->is_object()) {
+      run.parameter_values = *parameters;
+    }
+  }
+  if (const auto it = spec.find("group"); it != spec.end()) {
+    if (!it->is_object()) FieldError(file, "group", "an object");
+    run.parameters = OptionalString(*it, "parameters", file);
+  } else if (!run.parameter_values.empty()) {
+    // A run recorded before run.json named its group: its parameters still set it apart.
+    run.parameters = run.parameter_values.dump();
+  }
+  if (const auto it = spec.find("odometry_is_reference"); it != spec.end() && it->is_boolean()) {
+    run.odometry_is_reference = it->get<bool>();
+  }
+  run.seeding = OptionalString(spec, "seeding", file);
+  run.sweep = OptionalString(spec, "sweep", file);
   run.iteration = OptionalInteger(spec, "iteration", file).value_or(0);
 }
 
@@ -106,6 +123,9 @@ void ReadResult(const std::filesystem::path& file, RunRecord& run) {
   run.started_at = OptionalString(result, "started_at", file);
   run.finished_at = OptionalString(result, "finished_at", file);
   run.command = OptionalStrings(result, "command", file);
+  if (const auto it = result.find("odometry_is_reference"); it != result.end() && it->is_boolean()) {
+    run.odometry_is_reference = it->get<bool>();
+  }
   run.warnings = OptionalStrings(result, "warnings", file);
   if (const auto it = result.find("outputs"); it != result.end() && !it->is_null()) {
     if (!it->is_object()) FieldError(file, "outputs", "an object");

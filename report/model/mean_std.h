@@ -1,23 +1,11 @@
 #pragma once
 
-#include <cstddef>
-#include <optional>
-#include <span>
+#include "evaluator/core/sample_summary.h"
 
 namespace slamsweep::report {
 
-/// Mean and sample standard deviation of one metric over the iterations of one algorithm on one
-/// sequence (the paper's "mean +- std"). std uses n - 1 and is absent for n < 2 (undefined, shown
-/// as "n/a"), never 0, so one iteration does not pass for a perfectly repeatable one.
-struct MeanStd {
-  std::size_t n = 0;
-  double mean = 0.0;
-  std::optional<double> std;
-  double min = 0.0;
-  double max = 0.0;
-};
-
-/// Mean, sample std (n - 1), min and max of `values`; n = 0 gives {n = 0}.
-MeanStd ComputeMeanStd(std::span<const double> values);
+// The report's cells use the evaluator's summary over iterations, as summary.json/csv do.
+using evaluator::ComputeMeanStd;
+using evaluator::MeanStd;
 
 }  // namespace slamsweep::report

@@ -45,6 +45,16 @@ struct RunRecord {
   std::string algorithm;       ///< "?" when unknown
   std::string sequence;        ///< "?" when unknown
   std::string noise;
+  /// run.json's group.parameters ("k=v;...", "" for none): with algorithm, sequence and noise, the
+  /// comparison group. `parameter_values` holds them as JSON for labels that show what varies.
+  std::string parameters;
+  nlohmann::json parameter_values = nlohmann::json::object();
+  /// The program got the reference as odometry (result.json when measured, else run.json).
+  bool odometry_is_reference = false;
+  /// run.json's seeding: "seeded", "deterministic", "unseeded" ("" when not recorded).
+  std::string seeding;
+  /// run.json's sweep name.
+  std::string sweep;
   int iteration = 0;
   RunStatus status = RunStatus::kUnfinished;
   std::string failure_kind;

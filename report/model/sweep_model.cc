@@ -90,13 +90,48 @@ void MarkBest(std::vector<AlgorithmRow>& rows, std::vector<MetricCell> Algorithm
     double best = std::numeric_limits<double>::infinity();
     for (const AlgorithmRow& row : rows) {
       const MetricCell& cell = (row.*cells)[c];
-      if (cell.summary.n > 0) best = std::min(best, cell.summary.mean);
+      if (cell.summary.n > 0 && !row.odometry_is_reference) best = std::min(best, cell.summary.mean);
     }
     for (AlgorithmRow& row : rows) {
       MetricCell& cell = (row.*cells)[c];
-      cell.best = cell.summary.n > 0 && cell.summary.mean == best;
+      cell.best = cell.summary.n > 0 && !row.odometry_is_reference && cell.summary.mean == best;
     }
   }
+}
+
+/// Per algorithm name, the parameter names whose values are not the same in all its runs: what a
+/// row's label must show to tell its rows apart.
+std::map<std::string, std::set<std::string>> VaryingParameters(const std::vector<RunRecord>& runs) {
+  std::map<std::string, std::vector<const json*>> by_algorithm;
+  for (const RunRecord& run : runs) by_algorithm[run.algorithm].push_back(&run.parameter_values);
+  std::map<std::string, std::set<std::string>> varying;
+  for (const auto& [algorithm, values] : by_algorithm) {
+    std::set<std::string> names;
+    for (const json* parameters : values) {
+      for (const auto& [name, value] : parameters->items()) names.insert(name);
+    }
+    for (const std::string& name : names) {
+      const json* first = values.front()->contains(name) ? &values.front()->at(name) : nullptr;
+      for (const json* parameters : values) {
+        const json* value = parameters->contains(name) ? &parameters->at(name) : nullptr;
+        if ((first == nullptr) != (value == nullptr) || (first != nullptr && *first != *value)) {
+          varying[algorithm].insert(name);
+          break;
+        }
+      }
+    }
+  }
+  return varying;
+}
+
+std::string RowLabel(const RunRecord& run, const std::set<std::string>& varying) {
+  std::string shown;
+  for (const auto& [name, value] : run.parameter_values.items()) {
+    if (varying.count(name) == 0) continue;
+    if (!shown.empty()) shown += ';';
+    shown += name + "=" + (value.is_string() ? value.get<std::string>() : value.dump());
+  }
+  return shown.empty() ? run.algorithm : run.algorithm + " [" + shown + "]";
 }
 
 // Lower middle of the successful runs ordered by the metric: a real run, never an average.
@@ -173,20 +208,30 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs) {
   SweepModel model;
   std::sort(runs.begin(), runs.end(), [](const RunRecord& a, const RunRecord& b) { return a.run_id < b.run_id; });
   model.runs = std::move(runs);
-  std::map<std::string, std::map<std::string, std::vector<std::size_t>>> by_sequence;
+  // Table (sequence, noise) -> row (algorithm name, parameters) -> runs.
+  using RowKey = std::pair<std::string, std::string>;
+  std::map<std::pair<std::string, std::string>, std::map<RowKey, std::vector<std::size_t>>> tables;
   std::set<std::string> algorithms;
+  std::set<std::string> sweep_names;
   for (std::size_t i = 0; i < model.runs.size(); ++i) {
     const RunRecord& run = model.runs[i];
-    by_sequence[run.sequence][run.algorithm].push_back(i);
+    tables[{run.sequence, run.noise}][{run.algorithm, run.parameters}].push_back(i);
     algorithms.insert(run.algorithm);
+    if (!run.sweep.empty()) sweep_names.insert(run.sweep);
     Count(run, model.counts);
   }
   model.algorithms.assign(algorithms.begin(), algorithms.end());
-  for (auto& [sequence_name, by_algorithm] : by_sequence) {
+  for (const std::string& name : sweep_names) model.sweep_name += (model.sweep_name.empty() ? "" : ", ") + name;
+  const std::map<std::string, std::set<std::string>> varying = VaryingParameters(model.runs);
+  static const std::set<std::string> kNone;
+  for (auto& [table_key, rows] : tables) {
     SequenceModel sequence;
-    sequence.name = sequence_name;
+    sequence.name = table_key.first;
+    sequence.noise = table_key.second;
+    sequence.key = sequence.name + "/" + sequence.noise;
+    sequence.title = sequence.noise.empty() ? sequence.name : sequence.name + ", noise " + sequence.noise;
     std::vector<std::size_t> all;
-    for (auto& [algorithm, indices] : by_algorithm) {
+    for (auto& [row_key, indices] : rows) {
       std::stable_sort(indices.begin(), indices.end(), [&](std::size_t a, std::size_t b) {
         return model.runs[a].iteration < model.runs[b].iteration;
       });
@@ -195,11 +240,21 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs) {
     sequence.trajectory_columns = BuildColumns(model.runs, all, kTrajectoryCandidates);
     sequence.map_columns = BuildColumns(model.runs, all, kMapCandidates);
     sequence.has_reference = !sequence.trajectory_columns.empty();
-    for (auto& [algorithm, indices] : by_algorithm) {
+    for (auto& [row_key, indices] : rows) {
+      const RunRecord& first = model.runs[indices.front()];
+      const auto found = varying.find(first.algorithm);
       AlgorithmRow row;
-      row.algorithm = algorithm;
+      row.name = first.algorithm;
+      row.parameters = first.parameters;
+      row.algorithm = RowLabel(first, found == varying.end() ? kNone : found->second);
+      row.seeding = first.seeding;
       row.runs = indices;
-      for (std::size_t index : indices) Count(model.runs[index], row.counts);
+      for (std::size_t index : indices) {
+        const RunRecord& run = model.runs[index];
+        Count(run, row.counts);
+        row.odometry_is_reference = row.odometry_is_reference || run.odometry_is_reference;
+        if (run.seeding != row.seeding) row.seeding = "mixed";
+      }
       for (const MetricColumn& column : sequence.trajectory_columns) {
         row.trajectory_cells.push_back(BuildCell(model.runs, indices, column));
       }

@@ -21,8 +21,9 @@ struct MetricColumn {
   std::string spec;       ///< e.g. "alignment se2"; empty when the metric has no options to state
 };
 
-/// One algorithm's cell in one column: the values of its successful runs (iteration order) and
-/// their mean +- std. `best` marks the lowest mean of the column (every metric here is "lower is better").
+/// One row's cell in one column: the values of its successful runs (iteration order) and their
+/// mean +- std. `best` marks the lowest mean of the column among the table's SLAM rows (every metric
+/// here is "lower is better"; rows whose odometry is the reference are upper bounds, not contenders).
 struct MetricCell {
   std::vector<double> values;
   MeanStd summary;
@@ -37,9 +38,19 @@ struct RunCounts {
   std::size_t unfinished = 0;  ///< unfinished or unreadable
 };
 
-/// One algorithm on one sequence.
+/// One comparison group: an algorithm with one set of parameter values, on the table's sequence and
+/// noise setting. Runs of other parameter values are other rows, never pooled into this one.
 struct AlgorithmRow {
+  /// What the row is called everywhere (tables, legends, galleries, file folders): the algorithm's
+  /// name, followed by "[k=v;...]" of the parameters whose values differ between its rows in the sweep.
   std::string algorithm;
+  /// The algorithm's name alone, and all its parameters ("k=v;...").
+  std::string name;
+  std::string parameters;
+  /// Some run of the row got the reference as odometry: an upper bound, not a SLAM result.
+  bool odometry_is_reference = false;
+  /// "seeded", "deterministic", "unseeded" or "mixed"; "" when not recorded.
+  std::string seeding;
   RunCounts counts;
   std::vector<MetricCell> trajectory_cells;  ///< parallel to SequenceModel::trajectory_columns
   std::vector<MetricCell> map_cells;         ///< parallel to SequenceModel::map_columns
@@ -50,24 +61,32 @@ struct AlgorithmRow {
   std::string median_by;  ///< "ATE translation RMSE", "corner count" or "" (first successful run)
 };
 
-/// Everything the report shows about one sequence.
+/// One comparison table: a sequence under one noise setting. Rows are compared only within it.
 struct SequenceModel {
-  std::string name;
+  std::string name;  ///< the sequence
+  std::string noise;
+  /// "<sequence>/<noise>": unique per table, the key of its page and plots.
+  std::string key;
+  /// For headings: "intel, noise odo-low".
+  std::string title;
   bool has_reference = false;  ///< some run has a trajectory metric
   std::vector<MetricColumn> trajectory_columns;  ///< Table I: ATE, RPE, relations
   std::vector<MetricColumn> map_columns;         ///< occupied proportion, corners, enclosed areas
-  std::vector<AlgorithmRow> rows;                ///< sorted by algorithm name
+  std::vector<AlgorithmRow> rows;                ///< sorted by name, then parameters
 };
 
 /// The whole sweep, ready to render.
 struct SweepModel {
   std::vector<RunRecord> runs;  ///< sorted by run id
-  std::vector<SequenceModel> sequences;  ///< sorted by name
-  std::vector<std::string> algorithms;   ///< sorted, distinct
+  std::vector<SequenceModel> sequences;  ///< one per sequence x noise, sorted by sequence, then noise
+  std::vector<std::string> algorithms;   ///< names, sorted, distinct
+  /// The sweep's name (run.json's "sweep"; the names joined by ", " when a merged directory holds several).
+  std::string sweep_name;
   RunCounts counts;
 };
 
-/// Groups runs by sequence and algorithm, builds the columns, cells, best marks and median runs.
+/// Groups runs by sequence x noise (a table) and algorithm x parameters (a row), builds the columns,
+/// cells, best marks and median runs.
 SweepModel BuildSweepModel(std::vector<RunRecord> runs);
 
 /// The specification a run computed `metric` under, as shown in a column header: "alignment se2"

@@ -86,7 +86,7 @@ TEST(DataConvertCommandTest, NoisyCarmenIsReproducibleAndRecordsItsNoise) {
   testing::TempDir dir;
   const std::vector<std::string> args = {"data", "convert", "intel", "--to", "carmen", "--odometry-noise",
                                          "0.01,0.001,0.01,0.001", "--drift", "0.002", "--range-noise", "0.02",
-                                         "--seed", "7", "-o"};
+                                         "--seed", "7", "--reference-out", (dir / "ref.tum").string(), "-o"};
   auto first_args = args;
   first_args.push_back((dir / "a.log").string());
   auto second_args = args;
@@ -105,21 +105,26 @@ TEST(DataConvertCommandTest, NoisyCarmenIsReproducibleAndRecordsItsNoise) {
   const evaluator::Sequence converted = evaluator::ReadSequence(dir / "a.log");
   const evaluator::Sequence original = evaluator::ReadSequence(log);
   ASSERT_EQ(converted.scans.size(), 910u);
-  // The reference survives; the odometry starts on it and then drifts away.
-  EXPECT_EQ(converted.reference->poses().back().position, original.reference->poses().back().position);
+  // A program input: the noisy odometry only. The reference goes to its own file, on request.
+  EXPECT_FALSE(converted.reference.has_value());
+  const evaluator::Trajectory reference = evaluator::ReadTum(dir / "ref.tum");
+  ASSERT_EQ(reference.size(), 910u);
+  EXPECT_NEAR((reference.poses().back().position - original.reference->poses().back().position).norm(), 0.0, 1e-6);
+  // The odometry starts on the reference and then drifts away.
   EXPECT_EQ(converted.odometry.poses().front().position, original.reference->poses().front().position);
   EXPECT_GT((converted.odometry.poses().back().position - original.reference->poses().back().position).norm(), 0.1);
   EXPECT_NE(converted.scans[5].ranges_m, original.scans[5].ranges_m);
 }
 
-TEST(DataConvertCommandTest, TumHoldsTheReference) {
+TEST(DataConvertCommandTest, TumHoldsTheOdometry) {
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
   testing::TempDir dir;
   const auto run = RunCli({"data", "convert", log.string(), "--to", "tum", "-o", (dir / "intel.tum").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const evaluator::Trajectory tum = evaluator::ReadTum(dir / "intel.tum");
   ASSERT_EQ(tum.size(), 910u);
-  // The first FLASER of the file: pose 0.600266 -0.0320327 -0.354665 at 32.9068.
+  // Without noise the corrected log's odometry is its reference pose: the FLASER odom fields.
+  // The first FLASER of the file: odometry 0.600266 -0.0320327 -0.354665 at 32.9068.
   EXPECT_EQ(tum.stamps_s().front(), 32.9068);
   EXPECT_DOUBLE_EQ(tum.poses().front().position.x(), 0.600266);
   EXPECT_NEAR(tum.poses().front().Yaw(), -0.354665, 1e-12);

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <string>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/run_cli.h"
@@ -13,8 +15,9 @@ namespace {
 using ::testing::HasSubstr;
 using testing::RunCli;
 
-TEST(EvalMapCommandTest, JsonMatchesIndependentImplementationOnRbpfMap) {
-  SLAMSWEEP_REQUIRE_SHARED(expected_path, "reference/maps/expected_paper_metrics.json");
+/// `slamsweep eval map` of the reference rbpf map against one of the independent implementation's files.
+void ExpectRbpfValues(const std::string& reference_json, const std::vector<std::string>& extra_args) {
+  SLAMSWEEP_REQUIRE_SHARED(expected_path, "reference/maps/" + reference_json);
   std::ifstream in(expected_path);
   const nlohmann::json all = nlohmann::json::parse(in);
   nlohmann::json expected;
@@ -22,8 +25,10 @@ TEST(EvalMapCommandTest, JsonMatchesIndependentImplementationOnRbpfMap) {
     if (entry.at("map") == "telecom_rbpf.pgm") expected = entry;
   }
   ASSERT_FALSE(expected.is_null());
-  const auto run = RunCli({"eval", "map", (expected_path.parent_path() / "telecom_rbpf.pgm").string(),
-                           "--unknown-value", "205", "--json"});
+  std::vector<std::string> args = {"eval", "map", (expected_path.parent_path() / "telecom_rbpf.pgm").string(),
+                                   "--unknown-value", "205", "--json"};
+  args.insert(args.end(), extra_args.begin(), extra_args.end());
+  const auto run = RunCli(args);
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json result = nlohmann::json::parse(run.out);
   for (const char* key : {"occupied_to_free_unknown", "occupied_to_all", "unknown_to_all"}) {
@@ -31,7 +36,17 @@ TEST(EvalMapCommandTest, JsonMatchesIndependentImplementationOnRbpfMap) {
   }
   EXPECT_EQ(result.at("corners"), expected.at("corners"));
   EXPECT_EQ(result.at("enclosed_areas"), expected.at("enclosed_areas"));
+  EXPECT_EQ(result.at("cropped_width"), expected.value("cropped_width", expected.at("width")));
+  EXPECT_EQ(result.at("cropped_height"), expected.value("cropped_height", expected.at("height")));
   EXPECT_TRUE(result.contains("parameters"));
+}
+
+TEST(EvalMapCommandTest, DefaultsMatchTheIndependentImplementationWithTheCanvasRule) {
+  ExpectRbpfValues("expected_paper_metrics_cropped.json", {});
+}
+
+TEST(EvalMapCommandTest, NoCropMatchesTheIndependentRawGridProfile) {
+  ExpectRbpfValues("expected_paper_metrics.json", {"--no-crop"});
 }
 
 TEST(EvalMapCommandTest, YamlPointingAtMissingImageExitsTwoNamingBoth) {

@@ -185,7 +185,7 @@ TEST_F(BrowserTest, PagesLoadUnderJenkinsCsp) {
   std::cout << "screenshot of the index: " << screenshot.string() << "\n";
   RecordProperty("screenshot", screenshot.string());
   EXPECT_FALSE(testing::ImageSources(dir_ / "report/index.html").empty());
-  CheckPage("sequences/intel.html");
+  CheckPage("sequences/intel-clean.html");
   CheckPage("runs/_script_alert_1___script_-intel-clean-i0-0000abcd.html");
 }
 

@@ -42,9 +42,9 @@ TEST_F(WriteReportTest, WritesTheSite) {
   EXPECT_EQ(summary.runs, 10u);
   EXPECT_EQ(summary.pages, 1u + 2u + 10u);  // index, 2 sequences, 10 runs
   const fs::path out = dir_ / "report";
-  for (const char* file : {"index.html", "style.css", "summary.csv", "summary.json", "sequences/intel.html",
-                           "sequences/mit-no-ref.html", "files/gmapping/intel/rmse.txt",
-                           "files/gmapping/intel/pose_log.tum", "files/gmapping/mit-no-ref/corners.txt",
+  for (const char* file : {"index.html", "style.css", "summary.csv", "runs.csv", "summary.json", "sequences/intel-clean.html",
+                           "sequences/mit-no-ref-clean.html", "files/gmapping/intel-clean/rmse.txt",
+                           "files/gmapping/intel-clean/pose_log.tum", "files/gmapping/mit-no-ref-clean/corners.txt",
                            "runs/gmapping-intel-clean-i1-0000abcd.html",
                            "runs/gmapping-intel-clean-i1-0000abcd/map.pgm",
                            "runs/gmapping-intel-clean-i1-0000abcd/map.yaml",
@@ -104,38 +104,44 @@ TEST_F(WriteReportTest, TableMarksBestAndCountsFailures) {
 
 TEST_F(WriteReportTest, SequenceWithoutReferenceRendersSensibly) {
   Write();
-  const std::string page = ReadAll(dir_ / "report/sequences/mit-no-ref.html");
+  const std::string page = ReadAll(dir_ / "report/sequences/mit-no-ref-clean.html");
   EXPECT_NE(page.find("Table I is not available"), std::string::npos);
   EXPECT_NE(page.find("median run by corner count, iteration 1"), std::string::npos);
-  EXPECT_FALSE(fs::exists(dir_ / "report/files/gmapping/mit-no-ref/reference.tum"));
-  const std::string rmse = ReadAll(dir_ / "report/files/gmapping/mit-no-ref/rmse.txt");
+  EXPECT_FALSE(fs::exists(dir_ / "report/files/gmapping/mit-no-ref-clean/reference.tum"));
+  const std::string rmse = ReadAll(dir_ / "report/files/gmapping/mit-no-ref-clean/rmse.txt");
   EXPECT_NE(rmse.find("rmse_mean: n/a"), std::string::npos);
 }
 
 TEST_F(WriteReportTest, TextFilesOfThePaperService) {
   Write();
-  const std::string rmse = ReadAll(dir_ / "report/files/gmapping/intel/rmse.txt");
+  const std::string rmse = ReadAll(dir_ / "report/files/gmapping/intel-clean/rmse.txt");
   EXPECT_NE(rmse.find("n: 3\n"), std::string::npos) << rmse;
   EXPECT_NE(rmse.find("rmse_mean: 0.11"), std::string::npos) << rmse;
   EXPECT_NE(rmse.find("specification: alignment se2"), std::string::npos) << rmse;
-  const std::string single = ReadAll(dir_ / "report/files/single/intel/rmse.txt");
+  const std::string single = ReadAll(dir_ / "report/files/single/intel-clean/rmse.txt");
   EXPECT_NE(single.find("rmse_std: n/a"), std::string::npos) << single;
-  const std::string corners = ReadAll(dir_ / "report/files/gmapping/mit-no-ref/corners.txt");
+  const std::string corners = ReadAll(dir_ / "report/files/gmapping/mit-no-ref-clean/corners.txt");
   EXPECT_NE(corners.find("corners_mean: 29\n"), std::string::npos) << corners;
   EXPECT_NE(corners.find("corners_std: 1\n"), std::string::npos) << corners;
   // The pose log is the median run's trajectory (iteration 1).
-  EXPECT_EQ(ReadAll(dir_ / "report/files/gmapping/intel/pose_log.tum"),
+  EXPECT_EQ(ReadAll(dir_ / "report/files/gmapping/intel-clean/pose_log.tum"),
             ReadAll(dir_ / "sweep/runs/gmapping-intel-clean-i1-0000abcd/trajectory.tum"));
 }
 
-TEST_F(WriteReportTest, SummaryCsvHasOneLinePerRun) {
+TEST_F(WriteReportTest, TheSweepsTablesAreCopiedNotRecomputed) {
+  // summary.csv (one line per comparison group) and runs.csv come from the orchestrator: the report
+  // links the sweep's own files, so the numbers a user downloads are the numbers the sweep recorded.
   Write();
-  const std::string csv = ReadAll(dir_ / "report/summary.csv");
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 11);
-  EXPECT_EQ(csv.find("run_id,algorithm,sequence,noise,iteration,status,failure_kind,reason,wall_s,cpu_s,peak_rss_kb,"
-                     "ape_trans.mean,ape_trans.rmse,corners.value,enclosed_areas.value,occupied_to_free_unknown.value\n"),
-            0u);
-  EXPECT_NE(csv.find(",failed,exit_code,killed by SIGSEGV,"), std::string::npos);
+  EXPECT_EQ(ReadAll(dir_ / "report/summary.csv"), ReadAll(dir_ / "sweep/summary.csv"));
+  EXPECT_EQ(ReadAll(dir_ / "report/runs.csv"), ReadAll(dir_ / "sweep/runs.csv"));
+  const std::string index = ReadAll(dir_ / "report/index.html");
+  EXPECT_NE(index.find("href=\"summary.csv\""), std::string::npos);
+  EXPECT_NE(index.find("href=\"runs.csv\""), std::string::npos);
+  fs::remove(dir_ / "sweep/runs.csv");
+  Write();
+  EXPECT_FALSE(fs::exists(dir_ / "report/runs.csv"));
+  EXPECT_EQ(ReadAll(dir_ / "report/index.html").find("href=\"runs.csv\""), std::string::npos);
+  EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
 }
 
 TEST_F(WriteReportTest, PlotsGetEveryIterationPerAlgorithm) {
@@ -144,7 +150,7 @@ TEST_F(WriteReportTest, PlotsGetEveryIterationPerAlgorithm) {
   bool found = false;
   for (const PlotRequest& plot : artwork_.plots) {
     EXPECT_TRUE(plot.log_scale);
-    if (plot.title != "intel: ATE translation RMSE, alignment se2") continue;
+    if (plot.title != "intel, noise clean: ATE translation RMSE, alignment se2") continue;
     found = true;
     ASSERT_EQ(plot.series.size(), 3u);
     EXPECT_EQ(plot.series[1].algorithm, "gmapping");
@@ -189,7 +195,7 @@ TEST_F(WriteReportTest, HostileRunFolderNamesStayInside) {
   run.corners = 3.0;
   testing::WriteFixtureSweep(dir_ / "sweep", {run});
   Write();
-  EXPECT_NE(ReadAll(dir_ / "report/sequences/s.html").find("a b&amp;c&lt;d&gt;"), std::string::npos);
+  EXPECT_NE(ReadAll(dir_ / "report/sequences/s-clean.html").find("a b&amp;c&lt;d&gt;"), std::string::npos);
   EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
 }
 

@@ -25,8 +25,8 @@ using rawlog_internal::ToMrptScan;
 /// Tolerance on z, roll and pitch of the odometry: a rawlog action is a planar increment.
 constexpr double kPlanarTolerance = 1e-6;
 
-void CheckWritable(const Sequence& sequence) {
-  ValidateSequence(sequence);
+void CheckWritable(const RobotLog& sequence) {
+  ValidateRobotLog(sequence);
   for (std::size_t i = 0; i < sequence.scans.size(); ++i) {
     if (sequence.scans[i].BeamCount() < 2) {
       throw InputError(fmt::format("sequence '{}': scan {} has {} beam(s); an MRPT 2D scan needs at least 2",
@@ -51,7 +51,7 @@ mrpt::obs::CActionCollection OdometryAction(const Pose& increment, double stamp_
   return actions;
 }
 
-void WriteObjects(const Sequence& sequence, mrpt::serialization::CArchive& archive, const RawlogWriteOptions& options,
+void WriteObjects(const RobotLog& sequence, mrpt::serialization::CArchive& archive, const RawlogWriteOptions& options,
                   RawlogSummary& summary) {
   const auto range_std_m = static_cast<float>(options.range_std_m);
   const std::vector<Pose>& odometry = sequence.odometry.poses();
@@ -95,7 +95,7 @@ void CheckRawlogWriteOptions(const RawlogWriteOptions& options) {
   }
 }
 
-RawlogSummary WriteRawlog(const Sequence& sequence, const std::filesystem::path& path,
+RawlogSummary WriteRawlog(const RobotLog& sequence, const std::filesystem::path& path,
                           const RawlogWriteOptions& options) {
   CheckRawlogWriteOptions(options);
   CheckWritable(sequence);

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <string>
 
-#include "evaluator/sequence/sequence.h"
+#include "evaluator/sequence/robot_log.h"
 
 namespace slamsweep::evaluator {
 
@@ -42,7 +42,7 @@ struct RawlogSummary {
   double last_stamp_s = 0.0;
 };
 
-/// Writes `sequence` as an MRPT rawlog with libmrpt-obs's own serialization (gzip-compressed, as
+/// Writes a robot log (scans and odometry: what a SLAM program may read) as an MRPT rawlog with libmrpt-obs's own serialization (gzip-compressed, as
 /// MRPT writes them). kActionsSensoryFrames, per scan i:
 ///   CActionCollection{ CActionRobotMovement2D: odometry increment odometry[i-1]^-1 * odometry[i]
 ///     (for i = 0 the odometry pose itself, the move from the odometry origin, so that a SLAM run
@@ -50,9 +50,9 @@ struct RawlogSummary {
 ///   CSensoryFrame{ CObservation2DRangeScan }.
 /// kObservations, per scan: CObservationOdometry (absolute), CObservation2DRangeScan.
 /// Every object carries the scan's stamp (mrpt::Clock::fromDouble). Scans: see ToMrptScan.
-/// Throws InputError when the sequence is invalid (ValidateSequence), a scan has fewer than 2 beams,
+/// Throws InputError when the log is invalid (ValidateRobotLog), a scan has fewer than 2 beams,
 /// the odometry is not planar, or the file cannot be written (a half-written file is removed).
-RawlogSummary WriteRawlog(const Sequence& sequence, const std::filesystem::path& path,
+RawlogSummary WriteRawlog(const RobotLog& log, const std::filesystem::path& path,
                           const RawlogWriteOptions& options = {});
 
 }  // namespace slamsweep::evaluator

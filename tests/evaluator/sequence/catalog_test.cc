@@ -27,8 +27,8 @@ std::string ErrorOf(const std::function<void()>& action) {
 }
 
 std::filesystem::path ShippedCatalog() {
-  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path().parent_path() / "configs" /
-         "datasets.yaml";
+  // Not __FILE__: compiler caches may make it relative to the build folder.
+  return std::filesystem::path(SLAMSWEEP_SOURCE_DIR) / "configs" / "datasets.yaml";
 }
 
 CatalogVariables Shared() { return {{"SHARED", testing::SharedRoot().string()}}; }

@@ -1,4 +1,5 @@
 #include "evaluator/sequence/sequence_file.h"
+#include "evaluator/sequence/robot_log_file.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -61,11 +62,11 @@ void ExpectSamePoses(const Trajectory& actual, const Trajectory& expected, doubl
   }
 }
 
-TEST(SequenceFileTest, CarmenFlaserRoundTripKeepsScansOdometryAndReference) {
+TEST(SequenceFileTest, CarmenFlaserRoundTripKeepsScansAndOdometryAndNoReference) {
   testing::TempDir dir;
   const Sequence written = CarmenLikeSequence();
-  WriteSequence(written, dir / "hand.log", SequenceWriteFormat::kCarmen);
-  const std::string text = FormatCarmenSequence(written);
+  WriteRobotLog(RobotLogOf(written), dir / "hand.log", SequenceWriteFormat::kCarmen);
+  const std::string text = FormatCarmenLog(RobotLogOf(written));
   EXPECT_THAT(text, HasSubstr("PARAM robot_front_laser_max 50\n"));
   EXPECT_THAT(text, HasSubstr("FLASER 181 0.013 "));  // shortest text of the float, not its double expansion
 
@@ -80,8 +81,8 @@ TEST(SequenceFileTest, CarmenFlaserRoundTripKeepsScansOdometryAndReference) {
     EXPECT_FALSE(read.scans[i].IsHit(read.scans[i].ranges_m[7]));
   }
   ExpectSamePoses(read.odometry, written.odometry, 1e-12);
-  ASSERT_TRUE(read.reference.has_value());
-  ExpectSamePoses(*read.reference, *written.reference, 1e-12);
+  // A program input is a raw robot log: its logged poses are odometry, read back as no reference.
+  EXPECT_FALSE(read.reference.has_value());
   EXPECT_TRUE(read.warnings.empty());
 }
 
@@ -95,10 +96,10 @@ TEST(SequenceFileTest, CarmenRobotLaserRoundTripKeepsAnyFanAndTheMount) {
     scan.angle_increment_rad = 2 * kPi / 360;
     scan.sensor_pose_on_robot = Pose::Planar(0.2, -0.05, 0.1);
   }
-  const std::string text = FormatCarmenSequence(written);
+  const std::string text = FormatCarmenLog(RobotLogOf(written));
   EXPECT_THAT(text, HasSubstr("ROBOTLASER1 "));
   EXPECT_THAT(text, ::testing::Not(HasSubstr("FLASER")));
-  WriteSequence(written, dir / "any.log", SequenceWriteFormat::kCarmen);
+  WriteRobotLog(RobotLogOf(written), dir / "any.log", SequenceWriteFormat::kCarmen);
   const Sequence read = ReadSequence(dir / "any.log");
   ASSERT_EQ(read.scans.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
@@ -113,45 +114,26 @@ TEST(SequenceFileTest, CarmenRobotLaserRoundTripKeepsAnyFanAndTheMount) {
   ExpectSamePoses(read.odometry, written.odometry, 1e-12);
 }
 
-TEST(SequenceFileTest, CarmenRobotLaserRoundTripKeepsReferenceAndOdometryApart) {
-  // ROBOTLASER1 has no odometry field: the odometry must come back from the ODOM records and the
-  // logged robot pose must be the reference, not a copy of the odometry.
+TEST(SequenceFileTest, TumProgramInputIsTheOdometry) {
   testing::TempDir dir;
-  Sequence written = CarmenLikeSequence();
-  ASSERT_TRUE(written.reference.has_value());
-  for (LaserScan& scan : written.scans) {
-    scan.ranges_m.resize(360);
-    scan.angle_min_rad = -kPi;
-    scan.angle_increment_rad = 2 * kPi / 360;
-  }
-  WriteSequence(written, dir / "ref.log", SequenceWriteFormat::kCarmen);
-  const Sequence read = ReadSequence(dir / "ref.log");
-  ExpectSamePoses(read.odometry, written.odometry, 1e-12);
-  ASSERT_TRUE(read.reference.has_value());
-  // The hand-made reference is 0.1 m / 0.2 m / 0.05 rad off the odometry at every scan.
-  ExpectSamePoses(*read.reference, *written.reference, 1e-12);
-}
-
-TEST(SequenceFileTest, TumHoldsTheReferenceOrElseTheOdometry) {
-  testing::TempDir dir;
-  Sequence sequence = CarmenLikeSequence();
-  WriteSequence(sequence, dir / "ref.tum", SequenceWriteFormat::kTum);
-  ExpectSamePoses(ReadTum(dir / "ref.tum"), *sequence.reference, 1e-12);
-  sequence.reference.reset();
-  WriteSequence(sequence, dir / "odo.tum", SequenceWriteFormat::kTum);
+  const Sequence sequence = CarmenLikeSequence();
+  ASSERT_TRUE(sequence.reference.has_value());
+  WriteRobotLog(RobotLogOf(sequence), dir / "odo.tum", SequenceWriteFormat::kTum);
   ExpectSamePoses(ReadTum(dir / "odo.tum"), sequence.odometry, 1e-12);
 }
 
 TEST(SequenceFileTest, RawlogRoundTripWhenMrptIsBuilt) {
   if (!RawlogSupported()) {
     testing::TempDir dir;
-    EXPECT_THAT(ErrorOf([&] { WriteSequence(CarmenLikeSequence(), dir / "x.rawlog", SequenceWriteFormat::kRawlog); }),
+    EXPECT_THAT(ErrorOf([&] {
+                  WriteRobotLog(RobotLogOf(CarmenLikeSequence()), dir / "x.rawlog", SequenceWriteFormat::kRawlog);
+                }),
                 HasSubstr("MRPT rawlog support not built"));
     GTEST_SKIP() << "MRPT not built";
   }
   testing::TempDir dir;
   const Sequence written = CarmenLikeSequence();
-  WriteSequence(written, dir / "hand.rawlog", SequenceWriteFormat::kRawlog);
+  WriteRobotLog(RobotLogOf(written), dir / "hand.rawlog", SequenceWriteFormat::kRawlog);
   EXPECT_EQ(DetectSequenceFormat(dir / "hand.rawlog"), SequenceFormat::kRawlog);
   const Sequence read = ReadSequence(dir / "hand.rawlog");
   ASSERT_EQ(read.scans.size(), 3u);
@@ -167,7 +149,7 @@ TEST(SequenceFileTest, RawlogRoundTripWhenMrptIsBuilt) {
 
 TEST(SequenceFileTest, FormatComesFromTheExtensionThenTheContent) {
   testing::TempDir dir;
-  const std::string carmen = FormatCarmenSequence(CarmenLikeSequence());
+  const std::string carmen = FormatCarmenLog(RobotLogOf(CarmenLikeSequence()));
   EXPECT_EQ(DetectSequenceFormat(testing::WriteFile(dir / "a.clf", carmen)), SequenceFormat::kCarmen);
   EXPECT_EQ(DetectSequenceFormat(testing::WriteFile(dir / "a.gfs", carmen)), SequenceFormat::kCarmen);
   EXPECT_EQ(DetectSequenceFormat(testing::WriteFile(dir / "no_extension", carmen)), SequenceFormat::kCarmen);

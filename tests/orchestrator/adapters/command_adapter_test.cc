@@ -21,8 +21,9 @@ PlaceholderValues SomeValues() {
   PlaceholderValues values;
   values.input = "/r/input/s.log";
   values.output_dir = "/r/raw";
-  values.run_dir = "/r";
+  values.input_dir = "/r/input";
   values.seed = "42";
+  values.seed32 = "7";
   values.iteration = "3";
   values.parameters = {{"x", "a b"}, {"n", 2.5}, {"flag", false}};
   return values;
@@ -32,7 +33,9 @@ TEST(ExpandPlaceholdersTest, ReplacesEveryPlaceholder) {
   const PlaceholderValues values = SomeValues();
   EXPECT_EQ(ExpandPlaceholders("--in={input}", values, "f"), "--in=/r/input/s.log");
   EXPECT_EQ(ExpandPlaceholders("{output_dir}/map.yaml", values, "f"), "/r/raw/map.yaml");
-  EXPECT_EQ(ExpandPlaceholders("{run_dir}:{seed}:{iteration}", values, "f"), "/r:42:3");
+  EXPECT_EQ(ExpandPlaceholders("{input_dir}:{seed}:{seed32}:{iteration}", values, "f"), "/r/input:42:7:3");
+  // The run folder holds the run's record (and, after the program, its truth): no placeholder names it.
+  EXPECT_THROW(ExpandPlaceholders("{run_dir}", values, "f"), InputError);
   EXPECT_EQ(ExpandPlaceholders("{param:x}|{param:n}|{param:flag}", values, "f"), "a b|2.5|false");
   EXPECT_EQ(ExpandPlaceholders("{{\"k\": 1}}", values, "f"), "{\"k\": 1}");
   EXPECT_EQ(ExpandPlaceholders("plain", values, "f"), "plain");
@@ -52,7 +55,7 @@ TEST(ExpandPlaceholdersTest, NamesTheFieldAndWhatIsAccepted) {
     ExpandPlaceholders("{param:missing}", values, "argv[1]");
     FAIL() << "accepted";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("no parameter 'missing' (parameters: flag, n, x)"), std::string::npos)
+    EXPECT_NE(std::string(error.what()).find("{param:missing} names no parameter of the algorithm (declared: flag, n, x)"), std::string::npos)
         << error.what();
   }
   EXPECT_THROW(ExpandPlaceholders("{input", values, "f"), InputError);
@@ -72,7 +75,7 @@ TEST(CommandAdapterTest, HostileParameterValuesStayOneArgumentEach) {
   spec.algorithm.command = declaration;
 
   const RunInputs inputs = PrepareRunInputs(spec);
-  const PreparedRun prepared = CommandAdapter().Prepare(spec, inputs, paths);
+  const PreparedRun prepared = CommandAdapter().Prepare(spec, inputs.robot, paths);
   ASSERT_EQ(prepared.argv.size(), 6u);
   EXPECT_TRUE(std::filesystem::exists(paths.InputDir() / "simulated-floor.log"));
 
@@ -96,25 +99,25 @@ TEST(CommandAdapterTest, RefusesBadDeclarationsBeforeWritingAnything) {
   const RunPaths paths{dir.path() / "run"};
   RunSpec spec = testing::SimulatedRun("command", 20);
   const RunInputs inputs = PrepareRunInputs(spec);
-  EXPECT_THROW(CommandAdapter().Prepare(spec, inputs, paths), InputError);  // no declaration
+  EXPECT_THROW(CommandAdapter().Prepare(spec, inputs.robot, paths), InputError);  // no declaration
 
   CommandDeclaration declaration;
   declaration.argv = {"prog", "{output_dir}"};
   spec.algorithm.command = declaration;
-  EXPECT_THROW(CommandAdapter().Prepare(spec, inputs, paths), InputError);  // no outputs declared
+  EXPECT_THROW(CommandAdapter().Prepare(spec, inputs.robot, paths), InputError);  // no outputs declared
 
   declaration.trajectory = DeclaredOutput{"../../escape.tum", "tum"};
   spec.algorithm.command = declaration;
-  EXPECT_THROW(CommandAdapter().Prepare(spec, inputs, paths), InputError);  // leaves raw/
+  EXPECT_THROW(CommandAdapter().Prepare(spec, inputs.robot, paths), InputError);  // leaves raw/
 
   declaration.trajectory = DeclaredOutput{"t.tum", "yaml"};
   spec.algorithm.command = declaration;
-  EXPECT_THROW(CommandAdapter().Prepare(spec, inputs, paths), InputError);  // unknown format
+  EXPECT_THROW(CommandAdapter().Prepare(spec, inputs.robot, paths), InputError);  // unknown format
 
   declaration.trajectory = DeclaredOutput{"t.tum", "tum"};
   declaration.input_format = "bag";
   spec.algorithm.command = declaration;
-  EXPECT_THROW(CommandAdapter().Prepare(spec, inputs, paths), InputError);  // unknown input format
+  EXPECT_THROW(CommandAdapter().Prepare(spec, inputs.robot, paths), InputError);  // unknown input format
   EXPECT_FALSE(std::filesystem::exists(paths.InputDir()));
 }
 
@@ -124,14 +127,14 @@ TEST(MrptAdapterTest, MissingOutputsAndTemplatesAreNamed) {
   const RunSpec spec = testing::SimulatedRun("mrpt-icp-slam", 20);
   const RunInputs inputs = PrepareRunInputs(spec);
   try {
-    IcpSlamAdapter().Collect(spec, inputs, paths);
+    IcpSlamAdapter().Collect(spec, inputs.robot, paths);
     FAIL() << "collected nothing";
   } catch (const RunFailure& failure) {
     EXPECT_EQ(failure.kind(), FailureKind::kMissingOutput);
     EXPECT_STREQ(failure.what(), "no map: raw/_finalmaps_.txt_mrpt__maps__COccupancyGridMap2D_00.png missing");
   }
   try {
-    RbpfSlamAdapter(dir / "no-template.ini").Prepare(spec, inputs, paths);
+    RbpfSlamAdapter(dir / "no-template.ini").Prepare(spec, inputs.robot, paths);
     FAIL() << "prepared without a template";
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find((dir / "no-template.ini").string() + " missing"), std::string::npos)

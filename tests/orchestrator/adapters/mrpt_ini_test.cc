@@ -103,16 +103,17 @@ TEST(IniSettingsFromParametersTest, RefusesValuesThatAreNotOneLineScalars) {
 TEST(MrptSettingsTest, AdapterControlledKeysWinAndCannotBeParameters) {
   RunSpec spec = testing::SimulatedRun("mrpt-icp-slam");
   spec.algorithm.parameters = {{"ICP.maxIterations", 40}};
-  const std::vector<IniSetting> settings = IcpSlamSettings(spec, "input/x.rawlog");
+  const std::vector<IniSetting> settings = IcpSlamSettings(spec, "x.rawlog");
   const std::string ini = RenderIni("[MappingApplication]\nrawlog_file=a\nSAVE_3D_SCENE=1\n[ICP]\nmaxIterations=80\n",
                                     settings);
-  EXPECT_NE(ini.find("rawlog_file=input/x.rawlog\n"), std::string::npos) << ini;
+  // The program runs in raw/: its input is beside it, its output is where it runs.
+  EXPECT_NE(ini.find("rawlog_file=../input/x.rawlog\n"), std::string::npos) << ini;
   EXPECT_NE(ini.find("SAVE_3D_SCENE=0\n"), std::string::npos) << ini;
-  EXPECT_NE(ini.find("logOutput_dir=raw\n"), std::string::npos) << ini;
+  EXPECT_NE(ini.find("logOutput_dir=.\n"), std::string::npos) << ini;
   EXPECT_NE(ini.find("maxIterations=40\n"), std::string::npos) << ini;
 
   spec.algorithm.parameters = {{"MappingApplication.logOutput_dir", "/tmp/elsewhere"}};
-  EXPECT_THROW(IcpSlamSettings(spec, "input/x.rawlog"), InputError);
+  EXPECT_THROW(IcpSlamSettings(spec, "x.rawlog"), InputError);
 }
 
 TEST(MrptSettingsTest, IcpDefaultsMatchAgainstPointsAndInsertDenselyUnlessAParameterSaysOtherwise) {
@@ -120,7 +121,7 @@ TEST(MrptSettingsTest, IcpDefaultsMatchAgainstPointsAndInsertDenselyUnlessAParam
   const std::string template_text =
       "[ICP]\nthresholdDist=0.5\n[MappingApplication]\ninsertionLinDistance=2.0\nmatchAgainstTheGrid=true\n"
       "pointsMap_count=0 // 1\noccupancyGrid_count=1\n";
-  const std::string ini = RenderIni(template_text, IcpSlamSettings(spec, "input/x.rawlog"));
+  const std::string ini = RenderIni(template_text, IcpSlamSettings(spec, "x.rawlog"));
   EXPECT_NE(ini.find("insertionLinDistance=0.5\n"), std::string::npos) << ini;
   EXPECT_NE(ini.find("matchAgainstTheGrid=false\n"), std::string::npos) << ini;
   EXPECT_NE(ini.find("pointsMap_count=1\n"), std::string::npos) << ini;
@@ -130,7 +131,7 @@ TEST(MrptSettingsTest, IcpDefaultsMatchAgainstPointsAndInsertDenselyUnlessAParam
 
   spec.algorithm.parameters = {{"MappingApplication.insertionLinDistance", 2.0},
                                {"MappingApplication.matchAgainstTheGrid", true}};
-  const std::string tuned = RenderIni(template_text, IcpSlamSettings(spec, "input/x.rawlog"));
+  const std::string tuned = RenderIni(template_text, IcpSlamSettings(spec, "x.rawlog"));
   EXPECT_NE(tuned.find("insertionLinDistance=2.0\n"), std::string::npos) << tuned;
   EXPECT_NE(tuned.find("matchAgainstTheGrid=true\n"), std::string::npos) << tuned;
   EXPECT_EQ(tuned.find("insertionLinDistance=0.5\n"), std::string::npos) << tuned;
@@ -140,14 +141,14 @@ TEST(MrptSettingsTest, RbpfLogsAboutOneStageMapPerStageAndDefaultsToFiveParticle
   RunSpec spec = testing::SimulatedRun("mrpt-rbpf-slam");
   spec.evaluation.stages = 24;
   const std::string ini = RenderIni("[MappingApplication]\nsampleSize=20\nLOG_FREQUENCY=10\n",
-                                    RbpfSlamSettings(spec, "input/x.rawlog", 300));
+                                    RbpfSlamSettings(spec, "x.rawlog", 300));
   // ceil(300 / 24) = 13: maps at steps 0, 13, ..., 299 -> 24 of them.
   EXPECT_NE(ini.find("LOG_FREQUENCY=13\n"), std::string::npos) << ini;
   EXPECT_NE(ini.find("sampleSize=5\n"), std::string::npos) << ini;
 
   spec.algorithm.parameters = {{"MappingApplication.sampleSize", 12}};
   const std::string tuned = RenderIni("[MappingApplication]\nsampleSize=20\n",
-                                      RbpfSlamSettings(spec, "input/x.rawlog", 300));
+                                      RbpfSlamSettings(spec, "x.rawlog", 300));
   EXPECT_NE(tuned.find("sampleSize=12\n"), std::string::npos) << tuned;
   EXPECT_EQ(tuned.find("sampleSize=5\n"), std::string::npos) << tuned;
 }

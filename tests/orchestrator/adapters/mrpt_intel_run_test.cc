@@ -165,7 +165,7 @@ TEST(IcpSlamRunTest, IcpSlamProcessesEveryStepOfAWrittenRawlogAndMapsTheBuilding
 
   const testing::TempDir dir;
   const std::filesystem::path rawlog = dir / "intel300.rawlog";
-  WriteRawlog(intel, rawlog);
+  WriteRawlog(RobotLogOf(intel), rawlog);
   if (HaveProgram("rawlog-edit")) {
     const std::string command =
         "rawlog-edit --info -i '" + rawlog.string() + "' > '" + (dir / "info.txt").string() + "' 2>&1 < /dev/null";
@@ -250,7 +250,7 @@ TEST(IcpSlamRunTest, RbpfSlamProcessesEveryStepOfAWrittenRawlogAndMapsTheBuildin
   const IntelPrefix prefix = FirstIntelScans(log, kRbpfScans);
   const testing::TempDir dir;
   const std::filesystem::path rawlog = dir / "intel.rawlog";
-  WriteRawlog(prefix.sequence, rawlog);
+  WriteRawlog(RobotLogOf(prefix.sequence), rawlog);
 
   const std::filesystem::path out = dir / "out";
   // Only the final map is needed: no 3D scenes, no window, no intermediate map images; INFO

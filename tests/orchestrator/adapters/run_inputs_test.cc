@@ -85,11 +85,11 @@ TEST(OdometryAdapterTest, TheTrajectoryIsTheOdometryAndTheMapIsRenderedFromIt) {
   const RunSpec spec = testing::SimulatedRun("odometry", 40);
   const RunInputs inputs = PrepareRunInputs(spec);
   const OdometryAdapter adapter;
-  EXPECT_TRUE(adapter.Prepare(spec, inputs, paths).argv.empty());
-  const CollectedOutputs outputs = adapter.Collect(spec, inputs, paths);
+  EXPECT_TRUE(adapter.Prepare(spec, inputs.robot, paths).argv.empty());
+  const CollectedOutputs outputs = adapter.Collect(spec, inputs.robot, paths);
   ASSERT_TRUE(outputs.trajectory);
-  EXPECT_EQ(outputs.trajectory->stamps_s(), inputs.sequence.odometry.stamps_s());
-  EXPECT_EQ(outputs.trajectory->poses().back().position, inputs.sequence.odometry.poses().back().position);
+  EXPECT_EQ(outputs.trajectory->stamps_s(), inputs.robot.odometry.stamps_s());
+  EXPECT_EQ(outputs.trajectory->poses().back().position, inputs.robot.odometry.poses().back().position);
   EXPECT_TRUE(outputs.map_rendered_from_trajectory);
   EXPECT_DOUBLE_EQ(outputs.map.resolution_m, spec.evaluation.map_resolution_m);
   ASSERT_EQ(outputs.stages.size(), spec.evaluation.stages);
@@ -100,7 +100,7 @@ TEST(OdometryAdapterTest, TheTrajectoryIsTheOdometryAndTheMapIsRenderedFromIt) {
 
   RunSpec with_parameters = spec;
   with_parameters.algorithm.parameters = {{"x", 1}};
-  EXPECT_THROW(adapter.Prepare(with_parameters, inputs, paths), ev::InputError);
+  EXPECT_THROW(adapter.Prepare(with_parameters, inputs.robot, paths), ev::InputError);
 }
 
 }  // namespace

@@ -112,7 +112,7 @@ algorithms:
   - name: gm
     adapter: command
     command:
-      argv: [gfs, -filename, "{input}", -o, "{output_dir}/out.log", -p, "{param:particles}", "{seed}{iteration}{run_dir}"]
+      argv: [true, -filename, "{input}", -o, "{output_dir}/out.log", -p, "{param:particles}", "{seed}{iteration}{seed32}"]
       input_format: carmen
       trajectory: {path: out.log, format: carmen}
       map: {path: map.yaml, format: map_server}
@@ -170,6 +170,8 @@ include:
   const AlgorithmConfig& gm = config.algorithms[1];
   ASSERT_TRUE(gm.command.has_value());
   EXPECT_EQ(gm.command->argv.size(), 8u);
+  // The program is checked when the sweep is read (`true` is found in PATH) and kept as written.
+  EXPECT_EQ(gm.command->argv[0], "true");
   EXPECT_EQ(gm.command->argv[2], "{input}");
   EXPECT_EQ(gm.command->input_format, "carmen");
   EXPECT_EQ(gm.command->trajectory, (DeclaredOutput{"out.log", "carmen"}));
@@ -226,7 +228,7 @@ algorithms:
   - name: gm
     adapter: command
     command:
-      argv: [gfs]
+      argv: [true]
       trajectory: {path: a.log, format: carmen, unit: m}
 sequences: [lab]
 )"),
@@ -357,30 +359,30 @@ algorithms:
   - name: a
     adapter: command
     command:
-      argv: [prog, "{inptu}"]
+      argv: [true, "{inptu}"]
       trajectory: {path: t.tum, format: tum}
 sequences: [lab]
 )"),
-              HasSubstr(Located(6, 20) + "algorithms[0].command.argv[1]: expected a placeholder {input}"));
+              HasSubstr(Located(6, 20) + "algorithms[0].command.argv[1]: unknown placeholder {inptu}; accepted: {input}"));
   EXPECT_THAT(ErrorOf(R"(name: x
 algorithms:
   - name: a
     adapter: command
     parameters: {particles: 30}
     command:
-      argv: [prog, "--iterations={param:iterations}"]
+      argv: [true, "--iterations={param:iterations}"]
       trajectory: {path: t.tum, format: tum}
 sequences: [lab]
 )"),
               HasSubstr(Located(7, 20) +
-                        "algorithms[0].command.argv[1]: expected {param:NAME} to name a declared parameter, got "
-                        "{param:iterations} (declared: particles)"));
+                        "algorithms[0].command.argv[1]: {param:iterations} names no parameter of the algorithm "
+                        "(declared: particles)"));
   EXPECT_THAT(ErrorOf(R"(name: x
 algorithms:
   - name: a
     adapter: command
     command:
-      argv: [prog]
+      argv: [true]
       trajectory: {path: t.tum, format: g2o}
 sequences: [lab]
 )"),
@@ -389,7 +391,7 @@ sequences: [lab]
 algorithms:
   - name: a
     adapter: command
-    command: {argv: [prog]}
+    command: {argv: [true]}
 sequences: [lab]
 )"),
               HasSubstr(Located(5, 14) + "algorithms[0].command: expected a trajectory or a map output"));
@@ -397,7 +399,7 @@ sequences: [lab]
 algorithms:
   - name: a
     adapter: odometry
-    command: {argv: [prog]}
+    command: {argv: [true]}
 sequences: [lab]
 )"),
               HasSubstr(Located(5, 14) + "algorithms[0].command: only the command adapter takes a command"));

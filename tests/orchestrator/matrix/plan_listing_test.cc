@@ -15,7 +15,7 @@ using ::testing::HasSubstr;
 
 TEST(PlanListingTest, FormatsParametersAsSortedKeyValuePairs) {
   EXPECT_EQ(FormatParameters(nlohmann::json::object()), "-");
-  EXPECT_EQ(FormatParameters({{"b", "fast"}, {"a", 40}, {"c", true}, {"d", 0.5}}), "a=40,b=fast,c=true,d=0.5");
+  EXPECT_EQ(FormatParameters({{"b", "fast"}, {"a", 40}, {"c", true}, {"d", 0.5}}), "a=40;b=fast;c=true;d=0.5");
 }
 
 TEST(PlanListingTest, OneLinePerRunThenTheCount) {
@@ -34,7 +34,7 @@ TEST(PlanListingTest, OneLinePerRunThenTheCount) {
   EXPECT_THAT(lines[0], HasSubstr("seed"));
   EXPECT_THAT(lines[1], ::testing::StartsWith(runs[0].run_id + "  "));
   EXPECT_THAT(lines[1], HasSubstr(" icp "));
-  EXPECT_THAT(lines[1], HasSubstr(" p=1,q=a "));
+  EXPECT_THAT(lines[1], HasSubstr(" p=1;q=a "));
   EXPECT_THAT(lines[1], HasSubstr(" seq1 "));
   EXPECT_THAT(lines[1], HasSubstr(" clean "));
   EXPECT_THAT(lines[1], ::testing::EndsWith(" " + std::to_string(runs[0].seed)));

@@ -52,6 +52,7 @@ StoredRun MakeRun(const json& spec, const json& result, std::vector<StoredMetric
   run.status = result.at("status");
   run.algorithm = spec.at("algorithm").at("name");
   run.sequence = spec.at("sequence").at("name");
+  run.noise = "clean";
   run.wall_s = result.at("wall_s").get<double>();
   run.metrics = std::move(metrics);
   return run;
@@ -97,16 +98,17 @@ TEST(JUnitXmlTest, OneSuitePerSequenceOneCasePerRunWithFailuresAndThresholds) {
   EXPECT_EQ(suites[1].at("attrib").at("time"), "3.250");
 
   const json& crashed_case = suites[0].at("cases")[0];
-  EXPECT_EQ(crashed_case.at("attrib").at("classname"), "rbpf.fr079");
-  EXPECT_EQ(crashed_case.at("attrib").at("name"), "crashed");
+  // A class per sequence x noise, the runs a report table compares; the name says the row and iteration.
+  EXPECT_EQ(crashed_case.at("attrib").at("classname"), "fr079.clean");
+  EXPECT_EQ(crashed_case.at("attrib").at("name"), "rbpf i0 (crashed)");
   EXPECT_EQ(crashed_case.at("attrib").at("time"), "1.500");
   ASSERT_EQ(crashed_case.at("failures").size(), 1u);
   EXPECT_EQ(crashed_case.at("failures")[0].at("attrib").at("type"), "signal");
   EXPECT_EQ(crashed_case.at("failures")[0].at("attrib").at("message"), "killed by SIGSEGV");
 
   const json& past_case = suites[1].at("cases")[0];
-  EXPECT_EQ(past_case.at("attrib").at("classname"), "icp-slam.intel");
-  EXPECT_EQ(past_case.at("attrib").at("name"), "past");
+  EXPECT_EQ(past_case.at("attrib").at("classname"), "intel.clean");
+  EXPECT_EQ(past_case.at("attrib").at("name"), "icp-slam i0 (past)");
   ASSERT_EQ(past_case.at("failures").size(), 1u);
   EXPECT_EQ(past_case.at("failures")[0].at("attrib").at("type"), "threshold");
   // 0.7 > 0.5 and 17 corners < min 20; 17 <= max 100 is fine.
@@ -118,7 +120,7 @@ TEST(JUnitXmlTest, OneSuitePerSequenceOneCasePerRunWithFailuresAndThresholds) {
   EXPECT_THAT(past_case.at("system_out")[0].get<std::string>(), HasSubstr("ape_rot.rmse"));
 
   const json& fine_case = suites[1].at("cases")[1];
-  EXPECT_EQ(fine_case.at("attrib").at("name"), "fine");
+  EXPECT_EQ(fine_case.at("attrib").at("name"), "icp-slam i0 (fine)");
   EXPECT_TRUE(fine_case.at("failures").empty());
   EXPECT_TRUE(fine_case.at("system_out").empty());
 }
@@ -134,8 +136,8 @@ TEST(JUnitXmlTest, EscapesMarkupAndDropsControlCharacters) {
   ASSERT_FALSE(xml.is_discarded());
   EXPECT_EQ(xml.at("suites")[0].at("attrib").at("name"), "seq\"<x>'&");
   const json& testcase = xml.at("suites")[0].at("cases")[0];
-  EXPECT_EQ(testcase.at("attrib").at("classname"), "alg<&>\"'.seq\"<x>'&");
-  EXPECT_EQ(testcase.at("attrib").at("name"), "id<&>\"'");
+  EXPECT_EQ(testcase.at("attrib").at("classname"), "seq\"<x>'&.clean");
+  EXPECT_EQ(testcase.at("attrib").at("name"), "alg<&>\"' i0 (id<&>\"')");
   // \x01 and ESC are dropped, tab and newline survive (also in the attribute), DEL is a legal XML character,
   // the stray byte 0xff becomes U+FFFD.
   const std::string expected = "bad <tag> & \"quoted\" 'single'[31m\ttab\nline\x7f\xEF\xBF\xBD end";

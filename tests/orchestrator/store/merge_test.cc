@@ -93,7 +93,7 @@ TEST(MergeTest, CombinesShardsKeepsDuplicatesOnceAndTheNewerConflict) {
 
   const json summary = json::parse(ReadText(out / "summary.json"));
   EXPECT_EQ(summary.at("counts").at("total"), 3);
-  EXPECT_THAT(ReadText(out / "junit.xml"), HasSubstr("name=\"r3\""));
+  EXPECT_THAT(ReadText(out / "junit.xml"), HasSubstr("i0 (r3)\""));
 }
 
 TEST(MergeTest, OlderConflictingResultDoesNotReplaceANewerOne) {

@@ -68,11 +68,11 @@ TEST(WorkerMrptTest, IcpSlamRunsToAScoredResult_SlowTest) {
   if (!ev::RawlogSupported()) GTEST_SKIP() << "this build cannot write rawlogs (MRPT not found)";
   const slamsweep::testing::TempDir dir;
   const nlohmann::json result = RunMrpt("mrpt-icp-slam", dir / "icp");
-  EXPECT_EQ(result["command"], nlohmann::json({"icp-slam", "input/icp-slam.ini"}));
+  EXPECT_EQ(result["command"], nlohmann::json({"icp-slam", "../input/icp-slam.ini"}));
   // icp-slam saves no stage maps: they are rendered from its path, evaluation.stages of them.
   EXPECT_EQ(result["outputs"]["stages"].size(), 4u);
   const std::string ini = testing::ReadText(dir / "icp" / "input" / "icp-slam.ini");
-  EXPECT_NE(ini.find("rawlog_file=input/simulated-floor.rawlog"), std::string::npos);
+  EXPECT_NE(ini.find("rawlog_file=../input/simulated-floor.rawlog"), std::string::npos);
   EXPECT_NE(ini.find("SHOW_PROGRESS_3D_REAL_TIME=0"), std::string::npos);
 }
 

@@ -50,8 +50,8 @@ class WorkerTest : public ::testing::Test {
     // The "estimate": the exact ground truth moved 0.3 m along x. Unaligned, every pose is off by
     // exactly 0.3 m (APE) while every relative motion is exact (RPE 0).
     const RunInputs inputs = PrepareRunInputs(spec_);
-    ASSERT_TRUE(inputs.sequence.reference);
-    ev::Trajectory shifted = *inputs.sequence.reference;
+    ASSERT_TRUE(inputs.truth.reference);
+    ev::Trajectory shifted = *inputs.truth.reference;
     for (ev::Pose& pose : shifted.mutable_poses()) pose.position.x() += kShiftM;
     ev::WriteTum(shifted, dir_ / "estimate.tum");
     // A 20 x 20 room: free inside, one ring of occupied wall cells (76 of 400).

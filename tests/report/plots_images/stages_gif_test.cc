@@ -30,20 +30,25 @@ cv::Mat GrowingMap(int side, int step) {
   return map;
 }
 
-std::vector<std::filesystem::path> WriteStages(const std::filesystem::path& dir, int count, int side) {
+/// `known_corner`: one free cell in the bottom-right corner of every stage, so that the known part of
+/// the stages spans the whole image and the canvas rule crops nothing.
+std::vector<std::filesystem::path> WriteStages(const std::filesystem::path& dir, int count, int side,
+                                               bool known_corner = false) {
   std::vector<std::filesystem::path> paths;
   for (int i = 0; i < count; ++i) {
     char name[32];
     std::snprintf(name, sizeof name, "stage_%04d.png", i);
     paths.push_back(dir / name);
-    EXPECT_TRUE(cv::imwrite(paths.back().string(), GrowingMap(side, i)));
+    cv::Mat map = GrowingMap(side, i);
+    if (known_corner) map.at<uchar>(side - 1, side - 1) = 254;
+    EXPECT_TRUE(cv::imwrite(paths.back().string(), map));
   }
   return paths;
 }
 
 TEST(WriteStagesGifTest, OneFramePerStageWithDelaysAndLoop) {
   testing::TempDir dir;
-  const auto stages = WriteStages(dir.path(), 6, 400);
+  const auto stages = WriteStages(dir.path(), 6, 400, /*known_corner=*/true);
   const GifOptions options{.max_side_px = 480, .frame_delay_cs = 15, .last_frame_delay_cs = 150};
   WriteStagesGif(stages, dir / "map.gif", options);
   const gif_check::DecodedGif gif = gif_check::DecodeGif(dir / "map.gif");
@@ -53,14 +58,16 @@ TEST(WriteStagesGifTest, OneFramePerStageWithDelaysAndLoop) {
   EXPECT_EQ(gif.delays_cs, (std::vector<int>{15, 15, 15, 15, 15, 150}));
   ASSERT_EQ(gif.canvases.size(), 6u);
   for (int i = 0; i < 6; ++i) {
-    EXPECT_EQ(cv::norm(gif.canvases[i], GrowingMap(400, i), cv::NORM_INF), 0.0) << "frame " << i;
+    cv::Mat expected = GrowingMap(400, i);
+    expected.at<uchar>(399, 399) = 254;
+    EXPECT_EQ(cv::norm(gif.canvases[i], expected, cv::NORM_INF), 0.0) << "frame " << i;
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "map.gif.tmp"));
 }
 
 TEST(WriteStagesGifTest, ShrinksToMaxSideWithAreaInterpolation) {
   testing::TempDir dir;
-  const auto stages = WriteStages(dir.path(), 3, 960);
+  const auto stages = WriteStages(dir.path(), 3, 960, /*known_corner=*/true);
   WriteStagesGif(stages, dir / "map.gif", {.max_side_px = 480});
   const gif_check::DecodedGif gif = gif_check::DecodeGif(dir / "map.gif");
   EXPECT_EQ(gif.width, 480);
@@ -74,6 +81,23 @@ TEST(WriteStagesGifTest, ShrinksToMaxSideWithAreaInterpolation) {
   EXPECT_EQ(last.at<uchar>(10, 58), 254);
   EXPECT_EQ(last.at<uchar>(10, 60), 205);
   EXPECT_EQ(last.at<uchar>(60, 10), 205);
+}
+
+TEST(WriteStagesGifTest, UnknownPaddingAroundStagesOfOneSizeIsCropped) {
+  // The canvas rule of the map metrics, for the animation: the union of the known cells of all
+  // stages plus 2, so a program that draws on a huge canvas shows its map as large as the others.
+  testing::TempDir dir;
+  const auto stages = WriteStages(dir.path(), 6, 400);
+  WriteStagesGif(stages, dir / "map.gif", {});
+  const gif_check::DecodedGif gif = gif_check::DecodeGif(dir / "map.gif");
+  // The last stage's free square is 240 x 240 at the top-left: 242 x 242 with the margin.
+  EXPECT_EQ(gif.width, 242);
+  EXPECT_EQ(gif.height, 242);
+  ASSERT_EQ(gif.canvases.size(), 6u);
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_EQ(cv::norm(gif.canvases[i], GrowingMap(400, i)(cv::Rect(0, 0, 242, 242)), cv::NORM_INF), 0.0)
+        << "frame " << i;
+  }
 }
 
 TEST(WriteStagesGifTest, StagesOfDifferentSizesAreCentredOnUnknown) {

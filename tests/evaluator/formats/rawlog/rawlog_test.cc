@@ -67,7 +67,7 @@ TEST(RawlogTest, ActionsAndSensoryFramesRoundTrip) {
   for (std::size_t beams : {181u, 180u, 360u}) {
     SCOPED_TRACE(std::to_string(beams) + " beams");
     const Sequence written = SyntheticSequence(40, beams, 7);
-    const RawlogSummary summary = WriteRawlog(written, dir / "s.rawlog");
+    const RawlogSummary summary = WriteRawlog(RobotLogOf(written), dir / "s.rawlog");
     EXPECT_EQ(summary.actions, 40u);
     EXPECT_EQ(summary.sensory_frames, 40u);
     const RawlogContents contents = ReadRawlogContents(dir / "s.rawlog");
@@ -85,7 +85,7 @@ TEST(RawlogTest, ObservationsFormRoundTrip) {
   const Sequence written = SyntheticSequence(25, 361, 11);
   RawlogWriteOptions options;
   options.form = RawlogForm::kObservations;
-  EXPECT_EQ(WriteRawlog(written, dir / "o.rawlog", options).observations, 50u);
+  EXPECT_EQ(WriteRawlog(RobotLogOf(written), dir / "o.rawlog", options).observations, 50u);
   const RawlogContents contents = ReadRawlogContents(dir / "o.rawlog");
   EXPECT_EQ(contents.summary.actions, 0u);
   EXPECT_EQ(contents.summary.observations, 50u);
@@ -96,7 +96,7 @@ TEST(RawlogTest, MrptReadsWhatWasWrittenAsActionSensoryFramePairs) {
   // MRPT's own CRawlog, not our reader, checks the layout and the odometry increments.
   const testing::TempDir dir;
   const Sequence written = SyntheticSequence(30, 181, 3);
-  WriteRawlog(written, dir / "m.rawlog");
+  WriteRawlog(RobotLogOf(written), dir / "m.rawlog");
   mrpt::obs::CRawlog rawlog;
   ASSERT_TRUE(rawlog.loadFromRawLogFile((dir / "m.rawlog").string()));
   ASSERT_EQ(rawlog.size(), 60u);
@@ -133,7 +133,7 @@ TEST(RawlogTest, MrptProjectsEveryBeamWhereTheLaserScanPutsIt) {
   sequence.scans[2].angle_min_rad = 1.2;
   sequence.scans[2].angle_increment_rad = -0.01;
   sequence.scans[2].sensor_pose_on_robot = Pose::Planar(-0.1, 0.05, 0.7);
-  WriteRawlog(sequence, dir / "g.rawlog");
+  WriteRawlog(RobotLogOf(sequence), dir / "g.rawlog");
   mrpt::obs::CRawlog rawlog;
   ASSERT_TRUE(rawlog.loadFromRawLogFile((dir / "g.rawlog").string()));
   for (std::size_t s = 0; s < 3; ++s) {
@@ -157,7 +157,7 @@ TEST(RawlogTest, IntelCarmenLogRoundTrips) {
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
   const Sequence intel = ReadCarmenSequence(log);
   const testing::TempDir dir;
-  WriteRawlog(intel, dir / "intel.rawlog");
+  WriteRawlog(RobotLogOf(intel), dir / "intel.rawlog");
   const Sequence read = ReadRawlog(dir / "intel.rawlog");
   ExpectSameSequence(intel, read);
 }
@@ -244,7 +244,7 @@ TEST(RawlogTest, UnreadableFilesAreInputErrorsNamingTheFile) {
   // A rawlog cut in the middle of an object (uncompressed, so the cut lands inside the objects).
   RawlogWriteOptions options;
   options.compression_level = 0;
-  WriteRawlog(SyntheticSequence(10, 181, 1), dir / "whole.rawlog", options);
+  WriteRawlog(RobotLogOf(SyntheticSequence(10, 181, 1)), dir / "whole.rawlog", options);
   std::ifstream in(dir / "whole.rawlog", std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   testing::WriteFile(dir / "cut.rawlog", bytes.substr(0, bytes.size() / 2));
@@ -256,7 +256,7 @@ TEST(RawlogTest, ScansOfAnotherLabelAreSkippedWithAWarning) {
   const testing::TempDir dir;
   RawlogWriteOptions options;
   options.scan_label = "FRONT";
-  WriteRawlog(SyntheticSequence(5, 181, 2), dir / "f.rawlog", options);
+  WriteRawlog(RobotLogOf(SyntheticSequence(5, 181, 2)), dir / "f.rawlog", options);
   RawlogReadOptions read_options;
   read_options.scan_label = "REAR";
   EXPECT_NE(
@@ -270,33 +270,33 @@ TEST(RawlogTest, WriterRejectsWhatARawlogCannotHold) {
   const testing::TempDir dir;
   Sequence one_beam = SyntheticSequence(2, 181, 1);
   one_beam.scans[1].ranges_m.resize(1);
-  EXPECT_NE(ErrorOf([&] { WriteRawlog(one_beam, dir / "a.rawlog"); }).find("scan 1 has 1 beam(s)"), std::string::npos);
+  EXPECT_NE(ErrorOf([&] { WriteRawlog(RobotLogOf(one_beam), dir / "a.rawlog"); }).find("scan 1 has 1 beam(s)"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "a.rawlog"));
 
   Sequence tilted = SyntheticSequence(2, 181, 1);
   Pose pose = tilted.odometry.poses()[1];
   pose.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()));
   tilted.odometry.mutable_poses()[1] = pose;
-  EXPECT_NE(ErrorOf([&] { WriteRawlog(tilted, dir / "b.rawlog"); }).find("odometry leaves the plane"),
+  EXPECT_NE(ErrorOf([&] { WriteRawlog(RobotLogOf(tilted), dir / "b.rawlog"); }).find("odometry leaves the plane"),
             std::string::npos);
 
   Sequence backwards = SyntheticSequence(2, 181, 1);
   backwards.scans[1].stamp_s = backwards.scans[0].stamp_s;
-  EXPECT_NE(ErrorOf([&] { WriteRawlog(backwards, dir / "c.rawlog"); }).find("does not come after"), std::string::npos);
+  EXPECT_NE(ErrorOf([&] { WriteRawlog(RobotLogOf(backwards), dir / "c.rawlog"); }).find("does not come after"), std::string::npos);
 
   EXPECT_NE(ErrorOf([&] {
-              WriteRawlog(SyntheticSequence(2, 181, 1), dir / "no" / "such" / "d.rawlog");
+              WriteRawlog(RobotLogOf(SyntheticSequence(2, 181, 1)), dir / "no" / "such" / "d.rawlog");
             }).find("d.rawlog: cannot create the rawlog"),
             std::string::npos);
 
   RawlogWriteOptions options;
   options.compression_level = 10;
   EXPECT_NE(
-      ErrorOf([&] { WriteRawlog(SyntheticSequence(2, 181, 1), dir / "e.rawlog", options); }).find("compression_level"),
+      ErrorOf([&] { WriteRawlog(RobotLogOf(SyntheticSequence(2, 181, 1)), dir / "e.rawlog", options); }).find("compression_level"),
       std::string::npos);
   options = {};
   options.range_std_m = 0.0;
-  EXPECT_NE(ErrorOf([&] { WriteRawlog(SyntheticSequence(2, 181, 1), dir / "e.rawlog", options); }).find("range_std_m"),
+  EXPECT_NE(ErrorOf([&] { WriteRawlog(RobotLogOf(SyntheticSequence(2, 181, 1)), dir / "e.rawlog", options); }).find("range_std_m"),
             std::string::npos);
 }
 

@@ -1,9 +1,9 @@
-#include "report/model/mean_std.h"
+#include "evaluator/core/sample_summary.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace slamsweep::report {
+namespace slamsweep::evaluator {
 
 MeanStd ComputeMeanStd(std::span<const double> values) {
   MeanStd out;
@@ -23,4 +23,4 @@ MeanStd ComputeMeanStd(std::span<const double> values) {
   return out;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::evaluator

@@ -1,0 +1,15 @@
+#pragma once
+
+#include <vector>
+
+#include "orchestrator/matrix/run_spec.h"
+
+namespace slamsweep::orchestrator {
+
+/// Fills every run's `build` (SlamsweepRevision() and the SHA-256 of each of its adapter's
+/// ProgramFiles) and `seeding` (its adapter's SeedingOf). Each file is read once however many runs
+/// share it. Throws InputError naming the algorithm when a program file is missing or unreadable:
+/// a sweep whose program cannot run stops before any run starts.
+void StampBuildIdentity(std::vector<RunSpec>& runs);
+
+}  // namespace slamsweep::orchestrator

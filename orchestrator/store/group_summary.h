@@ -1,0 +1,49 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "evaluator/core/sample_summary.h"
+#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/store/results_store.h"
+
+namespace slamsweep::orchestrator {
+
+/// One flat metric (metric x statistic) over the ok runs of a group.
+struct MetricAggregate {
+  std::string metric;
+  std::string statistic;
+  std::string unit;
+  evaluator::MeanStd summary;
+};
+
+/// Every run of one comparison group (same sequence, algorithm, parameters, noise), summarised.
+/// Nothing is ever pooled across groups: that is what makes two rows comparable.
+struct GroupSummary {
+  ComparisonGroup group;
+  std::size_t runs = 0;
+  std::size_t ok = 0;
+  std::size_t failed = 0;
+  /// Some run of the group got the reference as odometry: an upper bound, not a SLAM result.
+  bool odometry_is_reference = false;
+  /// The runs' seeding ("seeded", "deterministic", "unseeded"; "mixed" if they differ).
+  std::string seeding;
+  /// Sorted by metric, then statistic; only metrics some ok run has.
+  std::vector<MetricAggregate> metrics;
+};
+
+/// The groups of `runs`, sorted by sequence, noise, algorithm, parameters.
+std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs);
+
+/// {"sequence", "algorithm", "parameters", "noise", "n_runs", "n_ok", "n_failed", "odometry_is_reference",
+///  "seeding", "metrics": {metric: {statistic: {"n", "mean", "std", "min", "max", "unit"}}}}
+nlohmann::json ToJson(const GroupSummary& group);
+
+/// Whether a flat metric is the one a table shows for it: rmse of APE/RPE, mean of the relations
+/// metric, value of the map metrics (summary.csv's columns).
+bool IsHeadlineStatistic(const std::string& metric, const std::string& statistic);
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,290 @@
+// "Trustworthy comparisons" end to end, through `slamsweep run` as a user runs it: programs never
+// see the reference, rows are never pooled across settings, stale results are not reused silently,
+// and a sweep that cannot run stops before it starts.
+#include <stdlib.h>
+#include <sys/stat.h>
+
+#include <fstream>
+#include <map>
+#include <vector>
+#include <sstream>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/run_cli.h"
+#include "tests/support/shared_data.h"
+
+namespace slamsweep {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+using testing::RunCli;
+
+const bool kWorkerProgramSet = setenv("SLAMSWEEP_WORKER_PROGRAM", SLAMSWEEP_BINARY, 1) == 0;
+
+std::string Fixture(const std::string& name) {
+  return std::string(SLAMSWEEP_SOURCE_DIR) + "/tests/cli/echo_programs/" + name;
+}
+
+std::string ReadText(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+nlohmann::json ReadJson(const std::filesystem::path& file) { return nlohmann::json::parse(ReadText(file)); }
+
+/// A command algorithm that echoes one pose field of its CARMEN input as its trajectory.
+std::string EchoAlgorithm(const std::string& name, const std::string& field) {
+  return "  - name: " + name + "\n    adapter: command\n    timeout_s: 60\n    command:\n      argv: [awk, -v, field=" +
+         field + ", -v, \"out={output_dir}/trajectory.tum\", -f, " + Fixture("echo_pose.awk") +
+         ", \"{input}\"]\n      input_format: carmen\n      trajectory: {path: trajectory.tum, format: tum}\n";
+}
+
+/// The headline value of `metric` for each algorithm of a sequence x noise table in summary.json.
+std::map<std::string, double> GroupMeans(const nlohmann::json& summary, const std::string& sequence,
+                                         const std::string& metric, const std::string& statistic) {
+  std::map<std::string, double> means;
+  for (const auto& group : summary.at("groups")) {
+    if (group.at("sequence") != sequence || group.at("n_ok").get<int>() == 0) continue;
+    const auto& metrics = group.at("metrics");
+    if (!metrics.contains(metric)) continue;
+    means[group.at("algorithm").get<std::string>()] = metrics.at(metric).at(statistic).at("mean").get<double>();
+  }
+  return means;
+}
+
+TEST(TrustTest, ProgramsThatEchoTheirInputPosesNeverBeatTheOdometryBaseline) {
+  SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
+  testing::TempDir dir;
+  std::string config =
+      "name: echo\noutput: out\niterations: 1\nseed: 7\n"
+      "evaluation: {align: se2, stages: 0}\n"
+      "algorithms:\n"
+      "  - name: odometry\n    adapter: odometry\n" +
+      EchoAlgorithm("echo-flaser-pose", "flaser_pose") + EchoAlgorithm("echo-flaser-odom", "flaser_odom") +
+      EchoAlgorithm("echo-robotlaser-robot", "robotlaser_robot") +
+      EchoAlgorithm("echo-robotlaser-laser", "robotlaser_laser") + EchoAlgorithm("echo-odom", "odom") +
+      "  - name: echo-tum\n    adapter: command\n    command:\n      argv: [" + Fixture("echo_tum.sh") +
+      ", \"{input}\", \"{output_dir}\"]\n      input_format: tum\n      trajectory: {path: trajectory.tum, format: tum}\n"
+      "sequences:\n"
+      "  - {catalog: intel, name: intel-300, max_scans: 300}\n"
+      "  - name: floor\n    format: simulated\n    ground_truth: exact\n"
+      "    simulation: {floor_plan: {seed: 3, rooms_per_side: 1}, path: {rate_hz: 4.0}, noise_seed: 3}\n"
+      "noise:\n  - name: noisy\n    odometry: {alpha1: 0.05, alpha2: 0.001, alpha3: 0.05, alpha4: 0.001}\n";
+  const auto file = testing::WriteFile(dir / "echo.yaml", config);
+  const auto run = RunCli({"run", file.string(), "--no-report", "-k"});
+  // The FLASER echoes find no FLASER record in the floor's ROBOTLASER1 log and fail there, and the
+  // reverse on intel: the sweep exits 1, but every echo scores where its field exists.
+  ASSERT_LE(run.exit_code, 1) << run.out << run.err;
+  const nlohmann::json summary = ReadJson(dir / "out" / "summary.json");
+  for (const std::string sequence : {"intel-300", "floor"}) {
+    const auto means = GroupMeans(summary, sequence, "ape_trans", "rmse");
+    ASSERT_TRUE(means.contains("odometry")) << sequence << "\n" << summary.dump(1);
+    const double baseline = means.at("odometry");
+    ASSERT_GT(baseline, 0.05) << sequence << ": the noisy odometry must give SLAM real work";
+    std::size_t echoes = 0;
+    for (const auto& [algorithm, ate] : means) {
+      if (algorithm == "odometry") continue;
+      ++echoes;
+      // An echo of the odometry scores the odometry's ATE (up to the print precision and, for the
+      // laser pose, the sensor mount): anything clearly better is the reference leaking.
+      EXPECT_GE(ate, 0.99 * baseline) << sequence << ": " << algorithm << " scored ATE " << ate
+                                      << " m against the odometry's " << baseline << " m";
+      std::cout << "[ echo ] " << sequence << " " << algorithm << " ATE rmse " << ate << " m (odometry " << baseline
+                << " m)\n";
+    }
+    // FLASER pose and odom, ODOM, TUM on intel; ROBOTLASER1 robot and laser, ODOM, TUM on the floor.
+    EXPECT_GE(echoes, 4u) << sequence << ": too few echo programs produced a trajectory\n" << run.out;
+  }
+
+  // What the TUM echo could see while it ran: its own folder, no truth, no slamsweep variables.
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "out" / "runs")) {
+    if (entry.path().filename().string().rfind("echo-tum-", 0) != 0) continue;
+    const auto raw = entry.path() / "raw";
+    EXPECT_EQ(ReadText(raw / "seen_cwd.txt"), std::filesystem::canonical(raw).string() + "\n");
+    const std::string listing = ReadText(raw / "seen_run_folder.txt");
+    EXPECT_THAT(listing, HasSubstr("input"));
+    EXPECT_THAT(listing, Not(HasSubstr("reference")));
+    EXPECT_THAT(listing, Not(HasSubstr("result.json")));
+    EXPECT_THAT(ReadText(raw / "seen_environment.txt"), Not(HasSubstr("SLAMSWEEP_")));
+    // Written once the program had exited.
+    EXPECT_TRUE(std::filesystem::exists(entry.path() / "reference.tum"));
+  }
+}
+
+TEST(TrustTest, RowsWithOtherParametersOrNoiseAreNeverPooled) {
+  testing::TempDir dir;
+  const std::string config =
+      "name: groups\noutput: out\niterations: 2\nseed: 3\nevaluation: {stages: 0}\n"
+      "algorithms:\n"
+      "  - name: odometry\n    adapter: odometry\n"
+      "  - name: echo\n    adapter: command\n    parameters: {gain: [1, 2, 3]}\n    command:\n      argv: [" +
+      Fixture("echo_tum.sh") +
+      ", \"{input}\", \"{output_dir}\", \"{param:gain}\"]\n      input_format: tum\n"
+      "      trajectory: {path: trajectory.tum, format: tum}\n"
+      "sequences:\n"
+      "  - name: floor\n    format: simulated\n    ground_truth: exact\n"
+      "    simulation: {floor_plan: {seed: 1, rooms_per_side: 1}, path: {rate_hz: 2.0}, noise_seed: 1}\n"
+      "noise:\n  - name: low\n    odometry: {alpha1: 0.001}\n  - name: high\n    odometry: {alpha1: 0.02}\n";
+  const auto file = testing::WriteFile(dir / "groups.yaml", config);
+  const auto run = RunCli({"run", file.string()});
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+
+  // (odometry + echo x 3 gains) x 2 noise levels = 8 groups of 2 iterations each.
+  const std::string csv = ReadText(dir / "out" / "summary.csv");
+  std::istringstream lines(csv);
+  std::string header;
+  std::getline(lines, header);
+  EXPECT_THAT(header, HasSubstr("sequence,algorithm,parameters,noise,n_runs,n_ok"));
+  EXPECT_THAT(header, HasSubstr("ape_trans.rmse.mean"));
+  std::map<std::string, int> rows;
+  for (std::string line; std::getline(lines, line);) {
+    ++rows[line.substr(0, line.find(",2,2,"))];  // sequence,algorithm,parameters,noise before n_runs,n_ok
+    EXPECT_THAT(line, HasSubstr(",2,2,0,")) << line;  // n_runs 2, n_ok 2, n_failed 0
+  }
+  EXPECT_EQ(rows.size(), 8u) << csv;
+  for (const char* group : {"floor,echo,gain=1,low", "floor,echo,gain=2,high", "floor,odometry,,high"}) {
+    EXPECT_EQ(rows[group], 1) << group << "\n" << csv;
+  }
+  const std::string runs_csv = ReadText(dir / "out" / "runs.csv");
+  EXPECT_EQ(std::count(runs_csv.begin(), runs_csv.end(), '\n'), 1 + 16) << runs_csv;
+
+  // The report: one table per noise level, a row per gain (the varying parameter named in the row).
+  const std::string index = ReadText(dir / "out" / "report" / "index.html");
+  EXPECT_THAT(index, HasSubstr("floor, noise low"));
+  EXPECT_THAT(index, HasSubstr("floor, noise high"));
+  EXPECT_THAT(index, HasSubstr("echo [gain=3]"));
+  EXPECT_THAT(index, HasSubstr("<title>groups</title>"));  // the sweep's name
+  // JUnit names the group of every testcase.
+  const std::string junit = ReadText(dir / "out" / "junit.xml");
+  EXPECT_THAT(junit, HasSubstr("classname=\"floor.high\" name=\"echo [gain=2] i1 ("));
+}
+
+TEST(TrustTest, CorrectedLogsWithoutOdometryNoiseAreFlaggedEverywhere) {
+  SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
+  testing::TempDir dir;
+  const auto file = testing::WriteFile(
+      dir / "clean.yaml",
+      "name: clean\noutput: out\nevaluation: {stages: 0}\nalgorithms:\n  - {name: odometry, adapter: odometry}\n"
+      "sequences:\n  - {catalog: intel, name: intel-50, max_scans: 50}\n");
+  const auto plan = RunCli({"plan", file.string()});
+  ASSERT_EQ(plan.exit_code, 0) << plan.err;
+  EXPECT_THAT(plan.err, HasSubstr("warning: 1 run on 'intel-50' with noise 'clean' get the reference as odometry"));
+  EXPECT_THAT(plan.err, HasSubstr("odometry-intel-50-clean-i0-"));
+  const auto run = RunCli({"run", file.string()});
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_THAT(run.err, HasSubstr("upper bound, not a SLAM result"));
+  const nlohmann::json summary = ReadJson(dir / "out" / "summary.json");
+  EXPECT_EQ(summary.at("runs").at(0).at("odometry_is_reference"), true);
+  EXPECT_EQ(summary.at("groups").at(0).at("odometry_is_reference"), true);
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "out" / "runs")) {
+    EXPECT_EQ(ReadJson(entry.path() / "run.json").at("odometry_is_reference"), true);
+    EXPECT_EQ(ReadJson(entry.path() / "result.json").at("odometry_is_reference"), true);
+  }
+  EXPECT_THAT(ReadText(dir / "out" / "report" / "index.html"),
+              HasSubstr("odometry = reference: an upper bound, not a SLAM result"));
+}
+
+TEST(TrustTest, AChangedProgramIsRunAgainUnlessStaleResultsAreAllowed) {
+  testing::TempDir dir;
+  const auto program = testing::WriteFile(dir / "slam.sh", ReadText(Fixture("echo_tum.sh")));
+  ::chmod(program.c_str(), 0755);
+  const auto file = testing::WriteFile(
+      dir / "stale.yaml",
+      "name: stale\noutput: out\nevaluation: {stages: 0}\nalgorithms:\n  - name: echo\n    adapter: command\n"
+      "    command:\n      argv: [./slam.sh, \"{input}\", \"{output_dir}\"]\n      input_format: tum\n"
+      "      trajectory: {path: trajectory.tum, format: tum}\n"
+      "sequences:\n  - name: floor\n    format: simulated\n    ground_truth: exact\n"
+      "    simulation: {floor_plan: {seed: 1, rooms_per_side: 1}, path: {rate_hz: 2.0}, noise_seed: 1}\n");
+  const auto first = RunCli({"run", file.string(), "--no-report"});
+  ASSERT_EQ(first.exit_code, 0) << first.out << first.err;
+  const auto same = RunCli({"run", file.string(), "--no-report"});
+  EXPECT_THAT(same.out, HasSubstr("0 ok, 0 failed, 1 done earlier"));
+  // The run folder names the program's digest: an edited wrapper is another program.
+  const nlohmann::json plan = nlohmann::json::parse(RunCli({"plan", file.string(), "--json"}).out);
+  EXPECT_THAT(plan.at(0).at("build").at("program_files").dump(), HasSubstr("slam.sh"));
+  EXPECT_FALSE(plan.at(0).at("build").at("slamsweep_revision").get<std::string>().empty());
+  testing::WriteFile(program, ReadText(program) + "# edited\n");
+  const auto reused = RunCli({"run", file.string(), "--no-report", "--reuse-stale"});
+  EXPECT_THAT(reused.out, HasSubstr("0 ok, 0 failed, 1 done earlier"));
+  EXPECT_THAT(reused.out, HasSubstr("1 earlier result computed by another slamsweep revision or program build was reused"));
+  const auto rerun = RunCli({"run", file.string(), "--no-report"});
+  EXPECT_THAT(rerun.out, HasSubstr("1 ok, 0 failed, 0 done earlier"));
+  EXPECT_THAT(rerun.out, HasSubstr("was run again"));
+}
+
+TEST(TrustTest, RbpfSlamWithTheSameSeedGivesTheSameTrajectory) {
+  SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
+  if (std::system("command -v rbpf-slam > /dev/null") != 0) GTEST_SKIP() << "rbpf-slam not installed (mrpt-apps)";
+  testing::TempDir dir;
+  // seed_policy fixed: both iterations get the same seed, hence the same noisy input and RANDOM_SEED.
+  const std::string config =
+      "name: rbpf\noutput: OUT\niterations: 2\nseed: SEED\nseed_policy: fixed\nevaluation: {stages: 0}\n"
+      "algorithms:\n  - {name: rbpf, adapter: mrpt-rbpf-slam, parameters: {MappingApplication.sampleSize: 5}}\n"
+      "sequences:\n  - {catalog: intel, name: intel-120, max_scans: 120}\n"
+      "noise:\n  - name: noisy\n    odometry: {alpha1: 0.02, alpha3: 0.02}\n";
+  const auto with = [&](const std::string& out, const std::string& seed) {
+    std::string text = config;
+    text.replace(text.find("OUT"), 3, out);
+    text.replace(text.find("SEED"), 4, seed);
+    return testing::WriteFile(dir / (out + ".yaml"), text);
+  };
+  const auto run = RunCli({"run", with("out", "11").string(), "--no-report"});
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  std::vector<std::string> trajectories;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "out" / "runs")) {
+    trajectories.push_back(ReadText(entry.path() / "trajectory.tum"));
+    EXPECT_EQ(ReadJson(entry.path() / "run.json").at("seeding"), "seeded");
+  }
+  ASSERT_EQ(trajectories.size(), 2u);
+  EXPECT_GT(trajectories[0].size(), 1000u);
+  EXPECT_EQ(trajectories[0], trajectories[1]) << "same seed, same input: rbpf-slam must give the same trajectory";
+  // Another seed gives another noisy input and another draw: the seed does reach the program.
+  ASSERT_EQ(RunCli({"run", with("out2", "12").string(), "--no-report", "--iterations", "1"}).exit_code, 0);
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "out2" / "runs")) {
+    EXPECT_NE(ReadText(entry.path() / "trajectory.tum"), trajectories[0]);
+  }
+}
+
+TEST(TrustTest, ASweepThatCannotRunStopsAtPlanTimeNamingTheLine) {
+  testing::TempDir dir;
+  const std::string head = "name: bad\nalgorithms:\n  - name: x\n    adapter: command\n    command:\n      argv: [";
+  const std::string tail =
+      "]\n      input_format: tum\n      trajectory: {path: t.tum, format: tum}\nsequences:\n  - name: floor\n"
+      "    format: simulated\n    ground_truth: exact\n    simulation: {floor_plan: {seed: 1}}\n";
+  const auto plan = [&](const std::string& argv) {
+    return RunCli({"plan", testing::WriteFile(dir / "bad.yaml", head + argv + tail).string()});
+  };
+  const auto missing = plan("no-such-slam-program, \"{input}\"");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_THAT(missing.err, HasSubstr("bad.yaml:6:"));
+  EXPECT_THAT(missing.err,
+              HasSubstr("algorithms[0].command.argv[0]: program 'no-such-slam-program' not found in PATH"));
+  testing::WriteFile(dir / "not-executable.sh", "#!/bin/sh\n");
+  const auto not_executable = plan("./not-executable.sh");
+  EXPECT_EQ(not_executable.exit_code, 2);
+  EXPECT_THAT(not_executable.err, HasSubstr("not-executable.sh: not executable"));
+  const auto unknown = plan("true, \"{run_dir}\"");
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_THAT(unknown.err, HasSubstr("bad.yaml:6:"));
+  EXPECT_THAT(unknown.err, HasSubstr("algorithms[0].command.argv[1]: unknown placeholder {run_dir}"));
+  const auto unbalanced = plan("true, \"{input\"");
+  EXPECT_EQ(unbalanced.exit_code, 2);
+  EXPECT_THAT(unbalanced.err, HasSubstr("'{' without its closing '}'"));
+  const auto lone = plan("true, \"a}b\"");
+  EXPECT_EQ(lone.exit_code, 2);
+  EXPECT_THAT(lone.err, HasSubstr("a lone '}'"));
+  // Doubled braces are literal braces, for the check and for the expansion alike.
+  const auto escaped = plan("true, \"{{input}}\", \"{seed32}\"");
+  EXPECT_EQ(escaped.exit_code, 0) << escaped.err;
+  const nlohmann::json runs = nlohmann::json::parse(RunCli({"plan", (dir / "bad.yaml").string(), "--json"}).out);
+  EXPECT_EQ(runs.at(0).at("seeding"), "seeded");
+}
+
+}  // namespace
+}  // namespace slamsweep
