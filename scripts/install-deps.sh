@@ -2,6 +2,8 @@
 # Installs the Debian 12 packages slamsweep needs to build, test and run.
 # Idempotent and fast when everything is present: it asks dpkg first and only calls apt
 # for what is missing. Used by both README commands, .ci/run and docker/.
+# With arguments it installs those packages instead, by the same check: scripts/install-slam.sh
+# passes each roster algorithm's build dependencies this way.
 set -euo pipefail
 
 packages=(
@@ -22,6 +24,10 @@ packages=(
   # the Slurm executor's test: a real one-node cluster on localhost (jobs/slurm/local-cluster.sh)
   slurm-wlm munge
 )
+
+if (($# > 0)); then
+  packages=("$@")
+fi
 
 missing=()
 for package in "${packages[@]}"; do
