@@ -28,6 +28,9 @@ using Configure =
 /// refuses parameters it did not read, writes parameters.txt (every parameter with the value used)
 /// and runs it. Exit codes: 0 success; 2 bad command line, input or parameter (message
 /// "<program>: error: ..." naming the argument, file or line); 1 the algorithm failed.
+/// `--list-parameters` prints every parameter with its default (key=value lines, as configured for
+/// a 360-degree example scan) and exits: `slamsweep algorithms` shows them. Configure must therefore
+/// not write files or depend on --input/--output-dir.
 int DriverMain(int argc, const char* const* argv, std::string_view program, const Configure& configure);
 
 }  // namespace slamsweep::slam
