@@ -36,6 +36,8 @@ void RegisterWorkerCommand(CLI::App& app, const Streams& streams, int& exit_code
 /// `history record|compare`: nightly history and regression detection. Sets `exit_code` (3 when
 /// compare finds a regression).
 void RegisterHistoryCommands(CLI::App& app, const Streams& streams, int& exit_code);
+/// `algorithms [--json]`: the adapters, what is installed, licences and parameter defaults.
+void RegisterAlgorithmsCommand(CLI::App& app, const Streams& streams);
 /// `report RESULT_DIR [-o DIR]`.
 void RegisterReportCommand(CLI::App& app, const Streams& streams);
 

@@ -17,6 +17,7 @@ int RunCommandLine(int argc, const char* const* argv, const Streams& streams) {
   RegisterRunCommand(app, streams, exit_code);
   RegisterMergeCommand(app, streams);
   RegisterReportCommand(app, streams);
+  RegisterAlgorithmsCommand(app, streams);
   RegisterWorkerCommand(app, streams, exit_code);
   RegisterHistoryCommands(app, streams, exit_code);
   try {

@@ -124,7 +124,7 @@ SequenceFormat DetectSequenceFormat(const std::filesystem::path& path) {
   if (EndsWith(name, ".bag")) return SequenceFormat::kRosbag;
   if (EndsWith(name, ".gz")) name.resize(name.size() - 3);
   if (EndsWith(name, ".rawlog")) return SequenceFormat::kRawlog;
-  for (std::string_view suffix : {".log", ".clf", ".gfs"}) {
+  for (std::string_view suffix : {".log", ".clf"}) {
     if (EndsWith(name, suffix)) return SequenceFormat::kCarmen;
   }
   const std::string head = PeekContent(path, 4096);
@@ -132,7 +132,7 @@ SequenceFormat DetectSequenceFormat(const std::filesystem::path& path) {
   if (LooksLikeCarmen(head)) return SequenceFormat::kCarmen;
   if (HasGzipMagic(path)) return SequenceFormat::kRawlog;
   throw InputError(Located(path, 0,
-                           "unknown sequence format: expected a CARMEN log (.log, .clf, .gfs, optionally .gz), an "
+                           "unknown sequence format: expected a CARMEN log (.log, .clf, optionally .gz), an "
                            "MRPT rawlog (.rawlog) or a ROS1 bag (.bag)"));
 }
 

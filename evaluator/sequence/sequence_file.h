@@ -11,7 +11,7 @@ namespace slamsweep::evaluator {
 
 /// The file formats a sequence is read from.
 enum class SequenceFormat {
-  kCarmen,  ///< CARMEN text log, plain or gzip (.log, .log.gz, .clf, .gfs)
+  kCarmen,  ///< CARMEN text log, plain or gzip (.log, .log.gz, .clf)
   kRawlog,  ///< MRPT rawlog (.rawlog), in either of its two forms
   kRosbag,  ///< ROS1 bag (.bag)
 };
@@ -41,7 +41,7 @@ struct SequenceReadOptions {
   std::string reference_topic;
 };
 
-/// The format of `path`: by extension first (.bag; .rawlog[.gz]; .log, .clf, .gfs with optional
+/// The format of `path`: by extension first (.bag; .rawlog[.gz]; .log, .clf with optional
 /// .gz), then by content (the "#ROSBAG" magic; text whose first record is a CARMEN message;
 /// other gzip data is taken for a rawlog). Throws InputError naming the file when it is missing
 /// or none of these.

@@ -63,8 +63,8 @@ class Adapter {
   virtual Seeding SeedingOf(const AlgorithmSpec& algorithm) const = 0;
 };
 
-/// The adapter named in run.json's algorithm.adapter: "mrpt-icp-slam", "mrpt-rbpf-slam", "command"
-/// or "odometry". Anything else is an InputError listing these.
+/// The adapter named in run.json's algorithm.adapter: "mrpt-icp-slam", "mrpt-rbpf-slam", "command",
+/// "odometry" or a roster algorithm (roster.h). Anything else is an InputError listing these.
 std::unique_ptr<Adapter> MakeAdapter(std::string_view name);
 
 }  // namespace slamsweep::orchestrator

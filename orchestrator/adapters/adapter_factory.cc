@@ -6,6 +6,7 @@
 #include "orchestrator/adapters/command_adapter.h"
 #include "orchestrator/adapters/mrpt_adapters.h"
 #include "orchestrator/adapters/odometry_adapter.h"
+#include "orchestrator/adapters/roster_adapter.h"
 
 namespace slamsweep::orchestrator {
 
@@ -14,8 +15,9 @@ std::unique_ptr<Adapter> MakeAdapter(std::string_view name) {
   if (name == "mrpt-rbpf-slam") return std::make_unique<RbpfSlamAdapter>();
   if (name == "command") return std::make_unique<CommandAdapter>();
   if (name == "odometry") return std::make_unique<OdometryAdapter>();
-  throw evaluator::InputError("algorithm.adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command or odometry, got '" +
-                              std::string(name) + "'");
+  if (const RosterAlgorithm* algorithm = FindRosterAlgorithm(name)) return std::make_unique<RosterAdapter>(*algorithm);
+  throw evaluator::InputError("algorithm.adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command, odometry, gmapping, "
+                              "tinyslam, vinyslam, hector or cartographer, got '" + std::string(name) + "'");
 }
 
 }  // namespace slamsweep::orchestrator

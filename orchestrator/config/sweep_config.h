@@ -26,12 +26,12 @@
 //       memory_limit_mb: 2048        # default 0 = none
 //       parameters:                  # scalars; a LIST sweeps the parameter (cartesian product over lists)
 //         ICP.maxIterations: [40, 80]
-//     - name: my-gmapping
-//       adapter: command
+//     - name: my-slam                # configs/examples/command-adapter.yaml runs a real one
+//       adapter: command             # placeholders: {input} {input_dir} {output_dir} {seed} {seed32} {iteration} {param:NAME}
 //       command:
-//         argv: [gfs_nogui, -filename, "{input}", -outputlog, "{output_dir}/out.log", -particles, "{param:particles}"]
-//         input_format: carmen       # rawlog | carmen | tum
-//         trajectory: {path: out.log, format: carmen}   # tum | kitti | csv | mrpt | carmen
+//         argv: [my-slam, --log, "{input}", --out, "{output_dir}", --particles, "{param:particles}"]
+//         input_format: carmen       # carmen | rawlog (scans + odometry) | tum (the odometry alone)
+//         trajectory: {path: trajectory.tum, format: tum}   # tum | kitti | csv | mrpt | carmen
 //         map: {path: map.yaml, format: map_server}     # map_server | mrpt | pgm
 //         stage_maps: "stages/*.pgm"
 //         stage_unknown_value: 205

@@ -26,11 +26,12 @@ struct DeclaredOutput {
 
 /// A SLAM program run through a declared argv template (adapter "command"). Never a shell:
 /// each element of `argv` becomes exactly one argument after its placeholders are replaced:
-/// {input} (the sequence written in `input_format`), {output_dir} (the run's raw/ folder),
-/// {run_dir}, {seed}, {iteration}, {param:NAME} (a parameter's value).
+/// {input} (the robot log written in `input_format`), {input_dir}, {output_dir} (the run's raw/
+/// folder, the program's working directory), {seed}, {seed32}, {iteration}, {param:NAME}
+/// (config/placeholders.h).
 struct CommandDeclaration {
   std::vector<std::string> argv;
-  /// "rawlog", "carmen" or "tum" (SequenceWriteFormat names).
+  /// "rawlog", "carmen" or "tum" (SequenceWriteFormat names; "tum" is the odometry alone).
   std::string input_format = "carmen";
   std::optional<DeclaredOutput> trajectory;
   std::optional<DeclaredOutput> map;

@@ -35,6 +35,14 @@ void DriverOutputs::AddPose(std::size_t scan_index, double stamp_s, const evalua
   trajectory_.Add(stamp_s, pose);
 }
 
+void DriverOutputs::ReplaceTrajectory(evaluator::Trajectory trajectory) {
+  if (trajectory.size() != trajectory_.size() || trajectory.stamps_s() != trajectory_.stamps_s()) {
+    throw std::logic_error(fmt::format("replacement trajectory has {} poses for {} scans, or other stamps",
+                                       trajectory.size(), trajectory_.size()));
+  }
+  trajectory_ = std::move(trajectory);
+}
+
 bool DriverOutputs::StageDue(std::size_t scan_index) const {
   if (stage_count_ <= 0 || scan_count_ == 0) return false;
   const std::size_t stages = std::min<std::size_t>(static_cast<std::size_t>(stage_count_), scan_count_);

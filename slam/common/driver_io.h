@@ -28,6 +28,9 @@ class DriverOutputs {
 
   /// The algorithm's pose estimate after scan `scan_index` (in order, one per scan).
   void AddPose(std::size_t scan_index, double stamp_s, const evaluator::Pose& pose);
+  /// Replaces the poses given so far by a smoothed estimate (a particle filter's best trajectory, a
+  /// pose graph after its final optimisation): one pose per scan added, same stamps.
+  void ReplaceTrajectory(evaluator::Trajectory trajectory);
   /// Whether a stage map is wanted after scan `scan_index`.
   bool StageDue(std::size_t scan_index) const;
   void WriteStage(std::size_t scan_index, const evaluator::OccupancyGrid& map);

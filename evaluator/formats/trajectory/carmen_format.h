@@ -45,7 +45,7 @@ struct CarmenPoses {
 /// Throws InputError when the log holds no FLASER or ROBOTLASER1 record.
 CarmenPoses CarmenPosesFromLog(const CarmenLog& log, const std::filesystem::path& source,
                                const CarmenReadOptions& options = {});
-/// Reads a plain or gzip CARMEN log (.log, .log.gz, .clf, .gfs).
+/// Reads a plain or gzip CARMEN log (.log, .log.gz, .clf).
 CarmenPoses ReadCarmenPoses(const std::filesystem::path& path, const CarmenReadOptions& options = {});
 
 /// Writes one FLASER record with no beams per pose (x y theta twice, the stamp as ipc and

@@ -19,7 +19,7 @@ constexpr std::string_view kTriedFormats =
     "KITTI (.kitti, or 12 fields: row-major 3x4 [R|t]); "
     "MRPT path (log_estimated_path.txt, or 4 fields 'step x y phi', or 8 fields "
     "'step x y z yaw pitch roll timestamp'); "
-    "CARMEN (.log/.log.gz/.clf/.gfs, lines 'FLASER ...' or 'ROBOTLASER1 ...'); "
+    "CARMEN (.log/.log.gz/.clf, lines 'FLASER ...' or 'ROBOTLASER1 ...'); "
     "CSV (.csv with header 'timestamp,x,y,theta' or 'timestamp,x,y,z,qx,qy,qz,qw'). "
     "Name the format explicitly to skip detection";
 
@@ -46,7 +46,7 @@ std::optional<TrajectoryFormat> FormatFromName(const std::filesystem::path& path
   if (path.filename() == "log_estimated_path.txt") return TrajectoryFormat::kMrptPath;
   const std::string extension = FormatExtension(path);
   if (extension == ".csv") return TrajectoryFormat::kCsv;
-  if (extension == ".log" || extension == ".clf" || extension == ".gfs") return TrajectoryFormat::kCarmen;
+  if (extension == ".log" || extension == ".clf") return TrajectoryFormat::kCarmen;
   if (extension == ".kitti") return TrajectoryFormat::kKitti;
   if (extension == ".tum") return TrajectoryFormat::kTum;
   return std::nullopt;

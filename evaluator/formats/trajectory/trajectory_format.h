@@ -17,7 +17,7 @@ std::optional<TrajectoryFormat> ParseTrajectoryFormat(std::string_view name);
 /// (the first line that is not blank and not a `#` or `%` comment) in `content`:
 ///   name log_estimated_path.txt                                   -> MRPT path
 ///   extension .csv, or a comma in the line                        -> CSV
-///   extension .log .clf .gfs (also with .gz), or a line starting
+///   extension .log .clf (also with .gz), or a line starting
 ///   with a CARMEN message (FLASER, ROBOTLASER1, ODOM, PARAM, ...)  -> CARMEN
 ///   extension .kitti, or 12 fields                                -> KITTI
 ///   extension .tum, or 8 fields ending in a unit quaternion (1e-2)  -> TUM
@@ -28,7 +28,7 @@ std::optional<TrajectoryFormat> ParseTrajectoryFormat(std::string_view name);
 TrajectoryFormat DetectTrajectoryFormat(const std::filesystem::path& path, std::string_view content);
 
 /// The format for writing `path`, from its name alone (.tum/.txt -> TUM, .csv, .kitti,
-/// .log/.clf/.gfs -> CARMEN, log_estimated_path.txt -> MRPT); InputError when the name says nothing
+/// .log/.clf -> CARMEN, log_estimated_path.txt -> MRPT); InputError when the name says nothing
 /// or ends in .gz (the writers produce plain text).
 TrajectoryFormat FormatForOutputPath(const std::filesystem::path& path);
 

@@ -151,6 +151,7 @@ TEST(SequenceFileTest, FormatComesFromTheExtensionThenTheContent) {
   testing::TempDir dir;
   const std::string carmen = FormatCarmenLog(RobotLogOf(CarmenLikeSequence()));
   EXPECT_EQ(DetectSequenceFormat(testing::WriteFile(dir / "a.clf", carmen)), SequenceFormat::kCarmen);
+  // GMapping's .gfs output is not a CARMEN log: only the content can make it one.
   EXPECT_EQ(DetectSequenceFormat(testing::WriteFile(dir / "a.gfs", carmen)), SequenceFormat::kCarmen);
   EXPECT_EQ(DetectSequenceFormat(testing::WriteFile(dir / "no_extension", carmen)), SequenceFormat::kCarmen);
   EXPECT_EQ(DetectSequenceFormat(testing::WriteFile(dir / "x.bag", "#ROSBAG V2.0\n")), SequenceFormat::kRosbag);

@@ -24,7 +24,7 @@ TEST(ParametersTest, GivenValuesOverrideDefaultsAndAreRecorded) {
 }
 
 TEST(ParametersTest, RefusesAMisspeltNameListingTheAcceptedOnes) {
-  Parameters parameters({{"particels", "30"}});
+  Parameters parameters(std::map<std::string, std::string>{{"particels", "30"}});
   parameters.Integer("particles", 10);
   try {
     parameters.RejectUnread("gmapping");

@@ -27,7 +27,8 @@ TEST(TrajectoryFormatTest, DetectsByName) {
   EXPECT_EQ(DetectTrajectoryFormat("a.log", ""), TrajectoryFormat::kCarmen);
   EXPECT_EQ(DetectTrajectoryFormat("a.log.gz", ""), TrajectoryFormat::kCarmen);
   EXPECT_EQ(DetectTrajectoryFormat("a.CLF", ""), TrajectoryFormat::kCarmen);
-  EXPECT_EQ(DetectTrajectoryFormat("a.gfs", ""), TrajectoryFormat::kCarmen);
+  // GMapping's .gfs is its own format, not CARMEN: the name alone says nothing.
+  EXPECT_THROW(DetectTrajectoryFormat("a.gfs", ""), InputError);
   EXPECT_EQ(DetectTrajectoryFormat("a.kitti", ""), TrajectoryFormat::kKitti);
   EXPECT_EQ(DetectTrajectoryFormat("a.tum", ""), TrajectoryFormat::kTum);
 }

@@ -1,0 +1,108 @@
+#include "orchestrator/adapters/algorithm_info.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "evaluator/core/input_error.h"
+#include "orchestrator/adapters/mrpt_adapters.h"
+#include "orchestrator/adapters/roster.h"
+#include "orchestrator/config/program_path.h"
+#include "orchestrator/process/process_set.h"
+
+namespace slamsweep::orchestrator {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// stdout+stderr of a short probe (a driver's --list-parameters, dpkg-query), or nullopt when it fails.
+std::optional<std::string> ProbeOutput(std::vector<std::string> argv) {
+  const fs::path log = fs::temp_directory_path() / ("slamsweep-probe-" + std::to_string(::getpid()) + ".txt");
+  ProcessSpec spec;
+  spec.argv = std::move(argv);
+  spec.log_path = log;
+  spec.timeout_s = 30;
+  const ProcessOutcome outcome = RunProcess(spec);
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::error_code ignored;
+  fs::remove(log, ignored);
+  if (!outcome.ok()) return std::nullopt;
+  return text.str();
+}
+
+std::vector<std::pair<std::string, std::string>> KeyValueLines(const std::string& text) {
+  std::vector<std::pair<std::string, std::string>> pairs;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    const std::size_t equals = line.find('=');
+    if (equals != std::string::npos && equals > 0) pairs.emplace_back(line.substr(0, equals), line.substr(equals + 1));
+  }
+  return pairs;
+}
+
+AlgorithmInfo DescribeRoster(const RosterAlgorithm& algorithm) {
+  AlgorithmInfo info{std::string(algorithm.name), std::string(algorithm.title), false, "", std::string(algorithm.license),
+                     std::string(SeedingName(algorithm.seeding)), {}, "upstream names; unknown names fail the run"};
+  std::optional<nlohmann::json> manifest;
+  try {
+    manifest = ReadRosterManifest(algorithm);
+  } catch (const evaluator::InputError& error) {
+    info.status = error.what();
+    return info;
+  }
+  if (!manifest) {
+    info.status = "not installed: scripts/install-slam.sh " + std::string(algorithm.upstream) + " && scripts/build.sh";
+    return info;
+  }
+  const std::string commit = manifest->value("commit", "");
+  info.status = std::string(algorithm.upstream) + " " + commit.substr(0, 12) + " (tarball sha256 " +
+                manifest->value("tarball_sha256", "").substr(0, 16) + ")";
+  fs::path driver;
+  try {
+    driver = RosterDriver(algorithm);
+  } catch (const evaluator::InputError& error) {
+    info.status += "; driver not built: scripts/build.sh";
+    return info;
+  }
+  info.installed = true;
+  if (const auto listed = ProbeOutput({driver.string(), "--list-parameters"})) info.parameters = KeyValueLines(*listed);
+  return info;
+}
+
+AlgorithmInfo DescribeMrpt(const std::string& adapter, const std::string& program, const std::string& title,
+                           Seeding seeding, const std::vector<IniSetting>& defaults, const std::string& template_path) {
+  AlgorithmInfo info{adapter, title, false, "", "BSD-3-Clause", std::string(SeedingName(seeding)), {},
+                     "any Section.key of " + template_path};
+  try {
+    ResolveProgram(program, fs::current_path());
+    info.installed = true;
+    const auto version = ProbeOutput({"dpkg-query", "-W", "-f", "${Version}", "mrpt-apps"});
+    info.status = "mrpt-apps " + (version ? *version : std::string("(version unknown)"));
+  } catch (const evaluator::InputError&) {
+    info.status = "not installed: apt install mrpt-apps (scripts/install-deps.sh)";
+  }
+  for (const IniSetting& setting : defaults) info.parameters.emplace_back(setting.section + "." + setting.key, setting.value);
+  return info;
+}
+
+}  // namespace
+
+std::vector<AlgorithmInfo> DescribeAlgorithms() {
+  std::vector<AlgorithmInfo> all;
+  for (const RosterAlgorithm& algorithm : Roster()) all.push_back(DescribeRoster(algorithm));
+  all.push_back(DescribeMrpt("mrpt-icp-slam", "icp-slam", "MRPT icp-slam", Seeding::kDeterministic, IcpSlamDefaultSettings(),
+                             kIcpSlamTemplate));
+  all.push_back(DescribeMrpt("mrpt-rbpf-slam", "rbpf-slam", "MRPT rbpf-slam", Seeding::kSeeded,
+                             {{"MappingApplication", "sampleSize", "5"}}, kRbpfSlamTemplate));
+  all.push_back(AlgorithmInfo{"odometry", "odometry baseline (the odometry as the trajectory)", true, "built in", "-",
+                              std::string(SeedingName(Seeding::kDeterministic)), {}, "none"});
+  all.push_back(AlgorithmInfo{"command", "any SLAM program through a declared command", true, "built in", "the program's",
+                              "seeded when its argv uses {seed} or {seed32}", {}, "{param:NAME} in its argv"});
+  return all;
+}
+
+}  // namespace slamsweep::orchestrator

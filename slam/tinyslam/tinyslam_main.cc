@@ -1,0 +1,11 @@
+// slamsweep-slam-tinyslam: tinySLAM as slam-constructor builds it from tiny_slam_base.properties.
+#include "slam/slam_constructor/slam_constructor_run.h"
+
+int main(int argc, char** argv) {
+  return slamsweep::slam::DriverMain(
+      argc, argv, "slamsweep-slam-tinyslam",
+      [](slamsweep::slam::Parameters& parameters, const slamsweep::slam::DriverArgs& args, const slamsweep::evaluator::RobotLog&) {
+        return slamsweep::slam::slam_constructor::ConfigureFromProperties(
+            SLAM_CONSTRUCTOR_ROOT "/config/slams/tiny_slam_base.properties", parameters, args);
+      });
+}
