@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# The slam_* variables come from the sourced recipe (scripts/slam/NAME.sh).
+# shellcheck disable=SC2154
 # Builds the paper's SLAM roster from pinned upstream sources into a prefix the drivers
 # (slam/<algorithm>/) build against and the adapters read their manifests from.
 #
@@ -105,7 +107,7 @@ install_one() {
     echo "install-slam: $name from cache ($built)"
   fi
   seconds=$(cat "$built/.build-seconds")
-  rm -rf "$prefix/$name"
+  rm -rf "${prefix:?}/${name:?}"
   cp -a "$built" "$prefix/$name"
   cat > "$manifest" <<JSON
 {

@@ -1,4 +1,7 @@
+# shellcheck shell=bash
 # openslam_gmapping: GMapping (Grisetti, Stachniss, Burgard), the RBPF of the paper's roster.
+# Sourced by scripts/install-slam.sh, which reads these variables.
+# shellcheck disable=SC2034
 # Built: the libraries the driver links (utils, sensor_*, scanmatcher, gridfastslam and what they
 # need), static, into OUT/lib with the headers in OUT/include. gfs_nogui is not built: it busy-waits
 # on its worker thread and needs a GCC 12 fix; slam/gmapping drives GridSlamProcessor directly.

@@ -1,4 +1,7 @@
+# shellcheck shell=bash
 # hector_slam: Hector SLAM's scan matcher and multi-resolution map, hector_slam_lib (header-only, Eigen).
+# Sourced by scripts/install-slam.sh, which reads these variables.
+# shellcheck disable=SC2034
 # Installed: hector_mapping/include/hector_slam_lib into OUT/include, and the licence file.
 slam_name=hector
 slam_tarball=hector_slam-b7d19bf.tar.gz

@@ -1,4 +1,7 @@
+# shellcheck shell=bash
 # slam-constructor (OSLL): the framework whose tinySLAM and vinySLAM the paper's authors wrote.
+# Sourced by scripts/install-slam.sh, which reads these variables.
+# shellcheck disable=SC2034
 # Header-only: src/core, src/utils, src/slams and the properties files in config/ go to OUT as they
 # are (ROS is only needed by src/ros, which is not installed).
 slam_name=slam-constructor
