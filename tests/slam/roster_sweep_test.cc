@@ -118,6 +118,38 @@ TEST(RosterSweepTest, EveryBuiltAlgorithmBeatsNoisyOdometryOnIntel) {
   EXPECT_TRUE(found || std::find(built.begin(), built.end(), "gmapping") == built.end());
 }
 
+TEST(RosterSweepTest, AlgorithmsListsEveryAdapterWithWhatIsInstalled) {
+  const auto run = RunCli({"algorithms", "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json list = nlohmann::json::parse(run.out);
+  std::map<std::string, nlohmann::json> by_adapter;
+  for (const auto& entry : list) by_adapter[entry.at("adapter").get<std::string>()] = entry;
+  for (const char* adapter : {"gmapping", "tinyslam", "vinyslam", "hector", "cartographer", "mrpt-icp-slam",
+                              "mrpt-rbpf-slam", "odometry", "command"}) {
+    ASSERT_TRUE(by_adapter.contains(adapter)) << adapter << "\n" << run.out;
+  }
+  const std::vector<std::string> built = BuiltRoster();
+  for (const std::string name : {"gmapping", "tinyslam", "vinyslam", "hector", "cartographer"}) {
+    const nlohmann::json& entry = by_adapter.at(name);
+    const bool is_built = std::find(built.begin(), built.end(), name) != built.end();
+    EXPECT_EQ(entry.at("installed").get<bool>(), is_built) << entry.dump();
+    if (!is_built) {
+      EXPECT_THAT(entry.at("status").get<std::string>(), HasSubstr("scripts/install-slam.sh")) << entry.dump();
+    }
+  }
+  if (std::find(built.begin(), built.end(), "gmapping") != built.end()) {
+    const nlohmann::json& gmapping = by_adapter.at("gmapping");
+    EXPECT_EQ(gmapping.at("license"), "BSD");
+    EXPECT_EQ(gmapping.at("seeding"), "seeded");
+    EXPECT_EQ(gmapping.at("parameters").at("particles"), "30");
+    EXPECT_THAT(gmapping.at("status").get<std::string>(), HasSubstr("5105476edb12"));
+  }
+  if (std::find(built.begin(), built.end(), "vinyslam") != built.end()) {
+    // slam-constructor's parameters are the properties of its file, under their own names.
+    EXPECT_TRUE(by_adapter.at("vinyslam").at("parameters").contains("slam/mapping/blur")) << by_adapter.at("vinyslam").dump();
+  }
+}
+
 TEST(RosterSweepTest, TheCommandAdapterExampleRunsARealProgramLikeItsBuiltInAdapter) {
   SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
   const std::vector<std::string> built = BuiltRoster();

@@ -142,17 +142,20 @@ TEST(MrptAdapterTest, MissingOutputsAndTemplatesAreNamed) {
   }
 }
 
-TEST(MakeAdapterTest, KnowsTheFourAdaptersAndListsThemOtherwise) {
-  for (const char* name : {"mrpt-icp-slam", "mrpt-rbpf-slam", "command", "odometry"}) {
+TEST(MakeAdapterTest, KnowsEveryAdapterAndListsThemOtherwise) {
+  for (const char* name : {"mrpt-icp-slam", "mrpt-rbpf-slam", "command", "odometry", "gmapping", "tinyslam", "vinyslam",
+                           "hector", "cartographer"}) {
     EXPECT_NE(MakeAdapter(name), nullptr) << name;
   }
   try {
-    MakeAdapter("gmapping");
+    MakeAdapter("gfs_nogui");
     FAIL() << "accepted";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("algorithm.adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command or "
-                                             "odometry, got 'gmapping'"),
-              std::string::npos);
+    EXPECT_NE(std::string(error.what()).find("algorithm.adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command, "
+                                             "odometry, gmapping, tinyslam, vinyslam, hector or cartographer, got "
+                                             "'gfs_nogui'"),
+              std::string::npos)
+        << error.what();
   }
 }
 

@@ -332,10 +332,10 @@ sequences:
 }
 
 TEST_F(SweepConfigTest, AdaptersAndCommandDeclarationsAreChecked) {
-  EXPECT_THAT(ErrorOf("name: x\nalgorithms:\n  - {name: a, adapter: gmapping}\nsequences: [lab]\n"),
+  EXPECT_THAT(ErrorOf("name: x\nalgorithms:\n  - {name: a, adapter: gfs_nogui}\nsequences: [lab]\n"),
               HasSubstr(Located(3, 24) +
-                        "algorithms[0].adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command or odometry, got "
-                        "'gmapping'"));
+                        "algorithms[0].adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command, odometry, gmapping, "
+                        "tinyslam, vinyslam, hector or cartographer, got 'gfs_nogui'"));
   EXPECT_THAT(ErrorOf("name: x\nalgorithms:\n  - {name: a, adapter: command}\nsequences: [lab]\n"),
               HasSubstr(Located(3, 5) + "algorithms[0].command: missing"));
   EXPECT_THAT(ErrorOf(R"(name: x

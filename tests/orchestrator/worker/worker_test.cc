@@ -214,7 +214,7 @@ TEST_F(WorkerTest, AProgramThatCannotStartIsAnInputError) {
 }
 
 TEST_F(WorkerTest, ABadDeclarationIsAnInputErrorInTheResult) {
-  spec_.algorithm.adapter = "gmapping";
+  spec_.algorithm.adapter = "gfs_nogui";
   const nlohmann::json result = Run();
   EXPECT_EQ(result["failure_kind"], "input_error");
   EXPECT_NE(result["reason"].get<std::string>().find("algorithm.adapter"), std::string::npos);
