@@ -6,8 +6,9 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
 # The paper's roster from the pinned sources (../shared/peers when present, else upstream at the
 # pinned commits), cached outside the clone: seconds when already built. Cartographer takes minutes
-# to build: SLAMSWEEP_ROSTER="gmapping slam-constructor hector cartographer" adds it.
-read -r -a roster <<< "${SLAMSWEEP_ROSTER:-gmapping slam-constructor hector}"
+# to build: SLAMSWEEP_ROSTER="gmapping slam-constructor hector breezyslam cartographer" adds it.
+# BreezySLAM is only the independent tinySLAM that tests/slam/tinyslam cross-checks against.
+read -r -a roster <<< "${SLAMSWEEP_ROSTER:-gmapping slam-constructor hector breezyslam}"
 "$root/scripts/install-slam.sh" "${roster[@]}"
 "$root/scripts/build.sh"
 cd "${SLAMSWEEP_BUILD_DIR:-$root/build}"

@@ -72,6 +72,12 @@ std::string Parameters::Text(const std::string& key, const std::string& fallback
   return value;
 }
 
+std::vector<std::string> Parameters::GivenKeys() const {
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : given_) keys.push_back(key);
+  return keys;
+}
+
 void Parameters::RejectUnread(std::string_view algorithm) const {
   std::string unknown;
   for (const auto& [key, value] : given_) {

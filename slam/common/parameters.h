@@ -4,6 +4,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace slamsweep::slam {
 
@@ -20,6 +21,9 @@ class Parameters {
   bool Flag(const std::string& key, bool fallback);
   std::string Text(const std::string& key, const std::string& fallback);
   bool Has(const std::string& key) const { return given_.contains(key); }
+  /// The names given on the command line, for an algorithm whose options are an open set it
+  /// validates itself (Cartographer's Lua paths); each still has to be read to count as known.
+  std::vector<std::string> GivenKeys() const;
 
   /// InputError "unknown parameter(s) for <algorithm>: a, b (accepted: ...)" when a given key was never read.
   void RejectUnread(std::string_view algorithm) const;

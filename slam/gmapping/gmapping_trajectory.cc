@@ -1,57 +1,20 @@
 #include "slam/gmapping/gmapping_trajectory.h"
 
-#include <cmath>
 #include <map>
 
+#include "slam/common/key_pose_trajectory.h"
+
 namespace slamsweep::slam::gmapping {
-namespace {
-
-struct Pose2 {
-  double x = 0, y = 0, theta = 0;
-};
-
-Pose2 Of(const evaluator::Pose& pose) { return {pose.position.x(), pose.position.y(), pose.Yaw()}; }
-
-/// a^-1 * b
-Pose2 Between(const Pose2& a, const Pose2& b) {
-  const double c = std::cos(a.theta), s = std::sin(a.theta);
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  return {c * dx + s * dy, -s * dx + c * dy, std::remainder(b.theta - a.theta, 2 * M_PI)};
-}
-
-/// a * d
-Pose2 Compose(const Pose2& a, const Pose2& d) {
-  const double c = std::cos(a.theta), s = std::sin(a.theta);
-  return {a.x + c * d.x - s * d.y, a.y + s * d.x + c * d.y, std::remainder(a.theta + d.theta, 2 * M_PI)};
-}
-
-}  // namespace
 
 evaluator::Trajectory BestTrajectory(const GMapping::GridSlamProcessor& processor, const evaluator::RobotLog& robot) {
   const GMapping::GridSlamProcessor::Particle& best = processor.getParticles()[processor.getBestParticleIndex()];
-  std::map<double, Pose2> corrected;  // by the stamp of the scan each node was built from
+  std::map<double, evaluator::Pose> key_poses;  // by the stamp of the scan each node was built from
   for (const GMapping::GridSlamProcessor::TNode* node = best.node; node != nullptr; node = node->parent) {
-    if (node->reading != nullptr) corrected[node->reading->getTime()] = {node->pose.x, node->pose.y, node->pose.theta};
-  }
-  evaluator::Trajectory trajectory;
-  trajectory.Reserve(robot.scans.size());
-  bool have_anchor = false;
-  Pose2 anchor_corrected, anchor_odometry;
-  for (std::size_t i = 0; i < robot.scans.size(); ++i) {
-    const double stamp = robot.scans[i].stamp_s;
-    const Pose2 odometry = Of(robot.odometry.poses()[i]);
-    Pose2 pose = odometry;
-    if (const auto found = corrected.find(stamp); found != corrected.end()) {
-      pose = found->second;
-      anchor_corrected = pose;
-      anchor_odometry = odometry;
-      have_anchor = true;
-    } else if (have_anchor) {
-      pose = Compose(anchor_corrected, Between(anchor_odometry, odometry));
+    if (node->reading != nullptr) {
+      key_poses[node->reading->getTime()] = evaluator::Pose::Planar(node->pose.x, node->pose.y, node->pose.theta);
     }
-    trajectory.Add(stamp, evaluator::Pose::Planar(pose.x, pose.y, pose.theta));
   }
-  return trajectory;
+  return TrajectoryFromKeyPoses(robot, key_poses);
 }
 
 }  // namespace slamsweep::slam::gmapping

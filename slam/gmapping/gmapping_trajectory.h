@@ -7,7 +7,7 @@
 
 namespace slamsweep::slam::gmapping {
 
-/// One pose per scan from the best particle's trajectory tree: a scan the filter processed gets its
+/// One pose per scan from the best particle's trajectory tree (TrajectoryFromKeyPoses): a scan the filter processed gets its
 /// node's pose; any other scan gets the pose of the last processed scan before it moved by the
 /// odometry between the two (GMapping skips scans until the robot has moved linearUpdate or turned
 /// angularUpdate). Scans before the first processed one keep their odometry.
