@@ -36,7 +36,7 @@ evaluator::OccupancyGrid PaintSubmaps(const carto::mapping::PoseGraphInterface& 
     const carto::mapping::MapLimits& limits = grid->limits();
     const double width = limits.cell_limits().num_x_cells * limits.resolution();
     const double height = limits.cell_limits().num_y_cells * limits.resolution();
-    for (const Eigen::Vector2d corner : {Eigen::Vector2d(limits.max().x(), limits.max().y()),
+    for (const Eigen::Vector2d& corner : {Eigen::Vector2d(limits.max().x(), limits.max().y()),
                                          Eigen::Vector2d(limits.max().x() - width, limits.max().y()),
                                          Eigen::Vector2d(limits.max().x(), limits.max().y() - height),
                                          Eigen::Vector2d(limits.max().x() - width, limits.max().y() - height)}) {

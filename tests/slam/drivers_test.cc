@@ -109,7 +109,9 @@ TEST_P(DriverTest, AnUnknownParameterIsRefusedByName) {
                                      "no_such_parameter=1"},
                                     dir / "out.txt", 30);
   EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_THAT(run.output, HasSubstr("unknown parameter(s) for slamsweep-slam-" + GetParam() + ": no_such_parameter"));
+  // Each driver says it its own way (Cartographer's options are Lua paths), but always by name.
+  EXPECT_THAT(run.output, HasSubstr("no_such_parameter"));
+  EXPECT_THAT(run.output, HasSubstr("slamsweep-slam-" + GetParam() + ": error: "));
 }
 
 TEST_P(DriverTest, TheSameSeedGivesTheSameTrajectoryAndEveryOutput) {
