@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Jenkins "Setup" stage: installs the missing Debian packages (scripts/install-deps.sh, the same list
-# CI and docker/ use) and builds slamsweep with warnings as errors (scripts/build.sh).
+# CI and docker/ use), the SLAM roster (scripts/install-slam.sh) and builds slamsweep with warnings as
+# errors (scripts/build.sh).
 # Usage: jobs/setup.sh
 # Environment: SLAMSWEEP_BUILD_DIR (default <repo>/build); SKIP_DEPS=1 skips the package step (agents
 # without sudo whose packages an administrator installs).
@@ -14,6 +15,9 @@ if [[ "${SKIP_DEPS:-0}" == 1 ]]; then
 else
   jobs_run "$SLAMSWEEP_ROOT/scripts/install-deps.sh"
 fi
+# The paper's roster (pinned upstream builds, cached outside the workspace); SLAMSWEEP_ROSTER as in scripts/test.sh.
+read -r -a roster <<< "${SLAMSWEEP_ROSTER:-gmapping slam-constructor hector}"
+jobs_run "$SLAMSWEEP_ROOT/scripts/install-slam.sh" "${roster[@]}"
 jobs_run "$SLAMSWEEP_ROOT/scripts/build.sh"
 jobs_find_binary
 jobs_log "built $SLAMSWEEP_BIN"
