@@ -22,6 +22,8 @@ void RegisterEvalTrajectoryCommands(CLI::App& eval, const Streams& streams);
 void RegisterEvalMapCommand(CLI::App& eval, const Streams& streams);
 /// `data info|convert|map|simulate` on the top-level app.
 void RegisterDataCommands(CLI::App& app, const Streams& streams);
+/// `eval map-compare` on the `eval` subcommand.
+void RegisterEvalMapCompareCommand(CLI::App& eval, const Streams& streams);
 /// `vectorize` on the top-level app.
 void RegisterVectorizeCommand(CLI::App& app, const Streams& streams);
 

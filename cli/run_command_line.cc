@@ -10,6 +10,7 @@ int RunCommandLine(int argc, const char* const* argv, const Streams& streams) {
   eval->require_subcommand(1);
   RegisterEvalTrajectoryCommands(*eval, streams);
   RegisterEvalMapCommand(*eval, streams);
+  RegisterEvalMapCompareCommand(*eval, streams);
   RegisterVectorizeCommand(app, streams);
   RegisterDataCommands(app, streams);
   int exit_code = 0;

@@ -6,6 +6,8 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
+#include "evaluator/core/occupancy_grid.h"
+#include "evaluator/formats/map/map_server_format.h"
 #include "tests/cli/run_cli.h"
 #include "tests/support/shared_data.h"
 
@@ -72,6 +74,48 @@ TEST(EvalMapCommandTest, MapWithNoKnownCellExitsTwo) {
 
 TEST(EvalMapCommandTest, UnknownValueOutOfRangeIsAUsageError) {
   EXPECT_EQ(RunCli({"eval", "map", "x.pgm", "--unknown-value", "300"}).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace slamsweep
+
+namespace slamsweep {
+namespace {
+
+/// A 100 x 60-cell room with an inner wall, written as a map_server map whose origin is shifted.
+std::string WriteRoom(const std::filesystem::path& yaml, double origin_x) {
+  evaluator::OccupancyGrid grid(100, 60, 0.05, {origin_x, 0.0, 0.0});
+  for (int r = 5; r < 55; ++r) {
+    for (int c = 5; c < 95; ++c) grid.at(r, c) = (r == 5 || r == 54 || c == 5 || c == 94 || (c == 40 && r < 35)) ? 1.0f : 0.0f;
+  }
+  evaluator::WriteMapServer(grid, yaml);
+  return yaml.string();
+}
+
+TEST(EvalMapCompareCommandTest, ScoresAMapAgainstAReferenceAndFindsTheOffset) {
+  testing::TempDir dir;
+  const std::string reference = WriteRoom(dir / "reference.yaml", 0.0);
+  const std::string shifted = WriteRoom(dir / "shifted.yaml", 0.2);
+  const auto self = RunCli({"eval", "map-compare", reference, reference, "--json"});
+  ASSERT_EQ(self.exit_code, 0) << self.err;
+  const nlohmann::json same = nlohmann::json::parse(self.out);
+  EXPECT_DOUBLE_EQ(same.at("chamfer_m").get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(same.at("f1").get<double>(), 1.0);
+
+  const auto as_given = RunCli({"eval", "map-compare", shifted, reference, "--json"});
+  ASSERT_EQ(as_given.exit_code, 0) << as_given.err;
+  EXPECT_NEAR(nlohmann::json::parse(as_given.out).at("estimate_to_reference").at("max_m").get<double>(), 0.2, 0.05);
+
+  const auto aligned = RunCli({"eval", "map-compare", shifted, reference, "--align", "se2", "--json"});
+  ASSERT_EQ(aligned.exit_code, 0) << aligned.err;
+  const nlohmann::json result = nlohmann::json::parse(aligned.out);
+  EXPECT_LT(result.at("chamfer_m").get<double>(), 0.01);
+  EXPECT_NEAR(result.at("transform").at("x_m").get<double>(), -0.2, 0.02);
+  EXPECT_EQ(result.at("specification").at("alignment"), "icp");
+
+  const auto bad = RunCli({"eval", "map-compare", shifted, (dir / "missing.yaml").string()});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_THAT(bad.err, ::testing::HasSubstr("missing.yaml"));
 }
 
 }  // namespace

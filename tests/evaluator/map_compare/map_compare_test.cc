@@ -1,0 +1,173 @@
+#include "evaluator/map_compare/map_compare.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "evaluator/core/input_error.h"
+
+namespace slamsweep::evaluator {
+namespace {
+
+/// A 120 x 80-cell floor (0.05 m cells): free inside, walls around, two inner walls, unknown outside.
+OccupancyGrid Floor(double origin_x = -1.0, double origin_y = -2.0) {
+  OccupancyGrid grid(120, 80, 0.05, {origin_x, origin_y, 0.0});
+  for (int r = 10; r < 70; ++r) {
+    for (int c = 10; c < 110; ++c) {
+      const bool wall = r == 10 || r == 69 || c == 10 || c == 109 || (c == 50 && r < 50) || (r == 40 && c > 70);
+      grid.at(r, c) = wall ? 1.0f : 0.0f;
+    }
+  }
+  return grid;
+}
+
+/// Only vertical walls: shifting along x moves every occupied cell away from its twin by the shift.
+OccupancyGrid VerticalWalls() {
+  OccupancyGrid grid(100, 60, 0.05);
+  for (int r = 0; r < 60; ++r) {
+    for (int c = 0; c < 100; ++c) grid.at(r, c) = (c == 20 || c == 70) ? 1.0f : 0.0f;
+  }
+  return grid;
+}
+
+TEST(MapCompareTest, AMapAgainstItselfIsPerfect) {
+  const OccupancyGrid map = Floor();
+  const MapComparison result = CompareMaps(map, map);
+  EXPECT_DOUBLE_EQ(result.chamfer_m, 0.0);
+  EXPECT_DOUBLE_EQ(result.estimate_to_reference_max_m, 0.0);
+  EXPECT_DOUBLE_EQ(result.f1, 1.0);
+  EXPECT_DOUBLE_EQ(result.iou_occupied, 1.0);
+  EXPECT_DOUBLE_EQ(result.iou_free, 1.0);
+  EXPECT_GT(result.estimate_occupied, 300u);
+}
+
+TEST(MapCompareTest, AShiftOfKCellsIsKCellsAway) {
+  const OccupancyGrid reference = VerticalWalls();
+  for (int k : {1, 3, 6}) {
+    OccupancyGrid shifted = reference;
+    shifted.origin.x_m += k * reference.resolution_m;
+    const MapComparison result = CompareMaps(shifted, reference);
+    EXPECT_NEAR(result.estimate_to_reference_mean_m, k * 0.05, 0.05) << k;
+    EXPECT_NEAR(result.reference_to_estimate_mean_m, k * 0.05, 0.05) << k;
+    EXPECT_NEAR(result.estimate_to_reference_max_m, k * 0.05, 0.05) << k;
+    // Within the 2-cell radius only for k <= 2.
+    EXPECT_EQ(result.f1 == 1.0, k <= 2) << k;
+    // The same shift given as the transform undoes it.
+    MapCompareOptions options;
+    options.transform.x_m = -k * reference.resolution_m;
+    EXPECT_NEAR(CompareMaps(shifted, reference, options).chamfer_m, 0.0, 1e-9) << k;
+  }
+}
+
+TEST(MapCompareTest, PaddingWithUnknownCellsChangesNothing) {
+  const OccupancyGrid map = Floor();
+  OccupancyGrid padded(map.width + 70, map.height + 30, map.resolution_m,
+                       {map.origin.x_m - 40 * map.resolution_m, map.origin.y_m - 10 * map.resolution_m, 0.0});
+  for (int r = 0; r < map.height; ++r) {
+    for (int c = 0; c < map.width; ++c) padded.at(r + 20, c + 40) = map.at(r, c);
+  }
+  OccupancyGrid other = Floor(-1.0 + 0.1, -2.0);  // two cells off, so the scores are not trivial
+  const MapComparison plain = CompareMaps(other, map);
+  const MapComparison with_padding = CompareMaps(other, padded);
+  EXPECT_DOUBLE_EQ(plain.chamfer_m, with_padding.chamfer_m);
+  EXPECT_DOUBLE_EQ(plain.f1, with_padding.f1);
+  EXPECT_DOUBLE_EQ(plain.iou_occupied, with_padding.iou_occupied);
+  EXPECT_DOUBLE_EQ(plain.iou_free, with_padding.iou_free);
+  EXPECT_EQ(plain.known_in_both, with_padding.known_in_both);
+}
+
+TEST(MapCompareTest, MoreNoiseNeverRaisesF1) {
+  const OccupancyGrid reference = Floor();
+  double previous_f1 = 1.0 + 1e-12;
+  for (double fraction : {0.0, 0.01, 0.03, 0.1, 0.3}) {
+    OccupancyGrid noisy = reference;
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    std::mt19937 draw(7);  // the same cells in the same order: noise levels are nested
+    for (float& cell : noisy.cells) {
+      if (OccupancyGrid::IsUnknown(cell)) continue;
+      if (uniform(draw) < fraction) cell = 1.0f - cell;
+    }
+    const double f1 = CompareMaps(noisy, reference).f1;
+    EXPECT_LE(f1, previous_f1) << fraction;
+    previous_f1 = f1;
+  }
+  EXPECT_LT(previous_f1, 0.5);
+}
+
+TEST(MapCompareTest, IcpFindsAnUnknownRigidOffset) {
+  const OccupancyGrid reference = Floor();
+  OccupancyGrid moved = reference;
+  moved.origin.x_m += 0.15;
+  moved.origin.y_m -= 0.10;
+  MapCompareOptions options;
+  EXPECT_GT(CompareMaps(moved, reference, options).chamfer_m, 0.05);
+  options.refine_with_icp = true;
+  const MapComparison refined = CompareMaps(moved, reference, options);
+  EXPECT_LT(refined.chamfer_m, 0.01);
+  EXPECT_NEAR(refined.transform.x_m, -0.15, 0.026);
+  EXPECT_NEAR(refined.transform.y_m, 0.10, 0.026);
+}
+
+/// Brute force over every pair of occupied cells: an independent computation of the distances,
+/// accuracy and completeness for maps on one lattice.
+struct BruteForce {
+  double est_to_ref_mean = 0, ref_to_est_mean = 0, accuracy = 0, completeness = 0;
+};
+
+BruteForce BruteForceScores(const OccupancyGrid& estimate, const OccupancyGrid& reference, int radius) {
+  std::vector<std::pair<int, int>> est, ref;
+  for (int r = 0; r < estimate.height; ++r) {
+    for (int c = 0; c < estimate.width; ++c) {
+      if (estimate.at(r, c) >= 0.65f) est.push_back({r, c});
+      if (reference.at(r, c) >= 0.65f) ref.push_back({r, c});
+    }
+  }
+  const auto directed = [&](const auto& from, const auto& to, double& mean, double& within) {
+    double sum = 0;
+    std::size_t close = 0;
+    for (const auto& [r, c] : from) {
+      double best = 1e18;
+      for (const auto& [r2, c2] : to) best = std::min(best, std::hypot(r - r2, c - c2));
+      sum += best;
+      close += best <= radius;
+    }
+    mean = sum / from.size() * estimate.resolution_m;
+    within = static_cast<double>(close) / from.size();
+  };
+  BruteForce scores;
+  directed(est, ref, scores.est_to_ref_mean, scores.accuracy);
+  directed(ref, est, scores.ref_to_est_mean, scores.completeness);
+  return scores;
+}
+
+TEST(MapCompareTest, AgreesWithABruteForceComputation) {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  for (int trial = 0; trial < 5; ++trial) {
+    OccupancyGrid estimate(60, 40, 0.05), reference(60, 40, 0.05);
+    for (std::size_t i = 0; i < estimate.cells.size(); ++i) {
+      estimate.cells[i] = uniform(random) < 0.05f ? 1.0f : 0.0f;
+      reference.cells[i] = uniform(random) < 0.05f ? 1.0f : 0.0f;
+    }
+    const MapComparison result = CompareMaps(estimate, reference);
+    const BruteForce expected = BruteForceScores(estimate, reference, 2);
+    EXPECT_NEAR(result.estimate_to_reference_mean_m, expected.est_to_ref_mean, 1e-5) << trial;
+    EXPECT_NEAR(result.reference_to_estimate_mean_m, expected.ref_to_est_mean, 1e-5) << trial;
+    EXPECT_NEAR(result.accuracy, expected.accuracy, 1e-12) << trial;
+    EXPECT_NEAR(result.completeness, expected.completeness, 1e-12) << trial;
+  }
+}
+
+TEST(MapCompareTest, RefusesMapsItCannotCompare) {
+  OccupancyGrid coarse = Floor();
+  coarse.resolution_m = 0.1;
+  EXPECT_THROW(CompareMaps(coarse, Floor()), InputError);
+  const OccupancyGrid empty(10, 10, 0.05, {}, 0.0f);
+  EXPECT_THROW(CompareMaps(empty, Floor()), InputError);
+}
+
+}  // namespace
+}  // namespace slamsweep::evaluator
