@@ -1,9 +1,12 @@
 #include "orchestrator/worker/run_metrics.h"
 
+#include <cmath>
 #include <functional>
+#include <optional>
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/map/paper_metrics.h"
+#include "evaluator/map_compare/map_compare.h"
 #include "evaluator/trajectory/ape.h"
 #include "evaluator/trajectory/relations_metric.h"
 #include "evaluator/trajectory/rpe.h"
@@ -52,12 +55,16 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
   alignment.mode = ev::ParseAlignmentMode(evaluation.align);
 
   RunMetrics out;
+  // The estimate-to-reference transform of the ATE: the map-versus-reference scores place the map with it.
+  std::optional<ev::Alignment> ape_alignment;
   if (inputs.estimate && inputs.reference) {
     for (const auto& [name, relation] : {std::pair<const char*, ev::PoseRelation>{"ape_trans", ev::PoseRelation::kTranslation},
                                          {"ape_rot", ev::PoseRelation::kRotationDeg}}) {
       Attempt(out, name, [&, name = std::string(name), relation = relation] {
         const ev::Ape ape({relation, association, alignment});
-        AddStatistics(out, name, ape.Compute(*inputs.reference, *inputs.estimate));
+        const ev::MetricResult result = ape.Compute(*inputs.reference, *inputs.estimate);
+        if (relation == ev::PoseRelation::kTranslation) ape_alignment = result.alignment;
+        AddStatistics(out, name, result);
       });
     }
     for (const auto& [name, relation] : {std::pair<const char*, ev::PoseRelation>{"rpe_trans", ev::PoseRelation::kTranslation},
@@ -96,6 +103,24 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
       out.metrics.push_back({"corners", "value", static_cast<double>(paper.corners.corners), "count"});
       out.metrics.push_back({"enclosed_areas", "value", static_cast<double>(paper.enclosed.enclosed_areas), "count"});
       out.details["paper_map"] = paper.ToJson();
+    });
+  }
+  if (inputs.map && inputs.reference_map && inputs.estimate) {
+    Attempt(out, "map_compare", [&] {
+      ev::MapCompareOptions options;
+      if (ape_alignment) {
+        const Eigen::Matrix3d& rotation = ape_alignment->rotation;
+        options.transform = {ape_alignment->translation.x(), ape_alignment->translation.y(),
+                             std::atan2(rotation(1, 0), rotation(0, 0))};
+      }
+      const ev::MapComparison compared = ev::CompareMaps(*inputs.map, *inputs.reference_map, options);
+      out.metrics.push_back({"map_chamfer", "value", compared.chamfer_m, "m"});
+      out.metrics.push_back({"map_f1", "value", compared.f1, "ratio"});
+      out.metrics.push_back({"map_accuracy", "value", compared.accuracy, "ratio"});
+      out.metrics.push_back({"map_completeness", "value", compared.completeness, "ratio"});
+      out.metrics.push_back({"map_iou_occupied", "value", compared.iou_occupied, "ratio"});
+      out.metrics.push_back({"map_iou_free", "value", compared.iou_free, "ratio"});
+      out.details["map_compare"] = compared.ToJson(options);
     });
   }
   return out;

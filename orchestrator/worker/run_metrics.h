@@ -36,6 +36,9 @@ struct MetricInputs {
   const evaluator::Trajectory* estimate = nullptr;    ///< null: trajectory metrics are skipped
   const evaluator::Trajectory* reference = nullptr;   ///< null: APE and RPE are skipped
   const evaluator::Relations* relations = nullptr;    ///< null: the relations metric is skipped
+  /// The map rendered from the reference poses and the run's scans at the map's cell size, the way
+  /// the odometry baseline renders its map; null: the map-versus-reference scores are skipped.
+  const evaluator::OccupancyGrid* reference_map = nullptr;
 };
 
 /// Computes what the inputs allow: ape_trans/ape_rot (evaluation.align, t_max_diff_s),

@@ -29,6 +29,8 @@ constexpr ColumnCandidate kMapCandidates[] = {
     {"occupied_to_free_unknown", "value", "Occupied proportion (occupied / free+unknown)"},
     {"corners", "value", "Corners"},
     {"enclosed_areas", "value", "Enclosed areas"},
+    // Beyond the paper, where the sequence has a reference (evaluator/map_compare/README.md).
+    {"map_chamfer", "value", "Map vs reference: Chamfer distance"},
 };
 
 std::string JsonScalarText(const json& value) {

@@ -267,6 +267,30 @@ TEST_F(WorkerTest, TheOdometryBaselineRunsNoProgramAndIsScored) {
   EXPECT_FALSE(std::isnan(Metric(result, "corners", "value")));
 }
 
+TEST_F(WorkerTest, EveryRunWithAReferenceIsScoredAgainstTheReferenceMap) {
+  spec_.algorithm.adapter = "odometry";
+  spec_.evaluation.align = "se2";
+  const nlohmann::json clean = Run();
+  ASSERT_EQ(clean["status"], "ok") << clean.dump(2);
+  const double clean_chamfer = Metric(clean, "map_chamfer", "value");
+  const double clean_f1 = Metric(clean, "map_f1", "value");
+  // The simulator's odometry drifts a little: nearly the reference map, not exactly.
+  EXPECT_LT(clean_chamfer, 0.2);
+  EXPECT_GT(clean_f1, 0.7);
+  EXPECT_TRUE(clean["metric_details"].contains("map_compare"));
+
+  // Much more odometry noise: the map drifts away from the reference and every score says so.
+  spec_.noise.name = "noisy";
+  spec_.noise.odometry = evaluator::OdometryNoise{};
+  spec_.noise.odometry->alpha1 = 0.2;
+  spec_.noise.odometry->alpha3 = 0.2;
+  const nlohmann::json noisy = Run();
+  ASSERT_EQ(noisy["status"], "ok") << noisy.dump(2);
+  EXPECT_GT(Metric(noisy, "map_chamfer", "value"), clean_chamfer);
+  EXPECT_LT(Metric(noisy, "map_f1", "value"), clean_f1);
+  EXPECT_LT(Metric(noisy, "map_iou_occupied", "value"), Metric(clean, "map_iou_occupied", "value"));
+}
+
 TEST_F(WorkerTest, InterruptionStopsTheProgramAndLeavesNoResult) {
   UseProgram("exec sleep 30");
   testing::WriteRunJson(run_dir_, spec_);
