@@ -10,7 +10,8 @@ MAP_BUILDER.use_trajectory_builder_2d = true
 -- one core, as the sweep gives every run.
 MAP_BUILDER.num_background_threads = 1
 
-TRAJECTORY_BUILDER_2D.use_imu_data = false
+-- The driver derives a yaw-rate "IMU" from the wheel odometry (cartographer_main.cc says why).
+TRAJECTORY_BUILDER_2D.use_imu_data = true
 TRAJECTORY_BUILDER_2D.num_accumulated_range_data = 1
 -- Logs like intel's have scans a metre apart: match every one, with the correlative matcher to
 -- find the pose before the Ceres refinement (as the 2D demos without IMU do).
