@@ -4,8 +4,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -21,12 +19,6 @@ std::string QuoteField(std::string_view text) {
   std::string shown(text.substr(0, kMaxShown));
   if (text.size() > kMaxShown) shown += "...";
   return "'" + shown + "'";
-}
-
-std::string ReadWhole(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(Located(path, 0, "cannot open file for reading"));
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 // zlib's streaming inflate, for data libdeflate refused: it says how far the data was good.
@@ -61,15 +53,51 @@ std::string ReadGzipStreaming(const std::filesystem::path& path) {
 
 }  // namespace
 
-std::string ReadTextFile(const std::filesystem::path& path) {
+TextFileContent ReadTextFileContent(const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) {
     throw InputError(Located(path, 0, "no such file (expected a readable regular file)"));
   }
-  std::string bytes = ReadWhole(path);
-  if (!HasGzipMagic(bytes)) return bytes;
-  if (std::optional<std::string> text = InflateWholeGzip(bytes)) return std::move(*text);
-  return ReadGzipStreaming(path);
+  std::optional<MappedFile> file = MappedFile::Open(path);
+  if (!file) throw InputError(Located(path, 0, "cannot open file for reading"));
+  if (!HasGzipMagic(file->bytes())) return TextFileContent(std::move(*file));
+  if (std::optional<std::string> text = InflateWholeGzip(file->bytes())) return TextFileContent(std::move(*text));
+  return TextFileContent(ReadGzipStreaming(path));
+}
+
+std::string ReadTextFile(const std::filesystem::path& path) {
+  const TextFileContent content = ReadTextFileContent(path);
+  return std::string(content.text());
+}
+
+bool ParseNumberFields(std::string_view line, std::span<double> values) {
+  const char* cursor = line.data();
+  const char* const end = line.data() + line.size();
+  std::size_t count = 0;
+  while (true) {
+    while (cursor < end && IsFieldBlank(*cursor)) ++cursor;
+    if (cursor == end) break;
+    if (count == values.size()) return false;
+    double value = 0.0;
+    const auto [stop, error] = std::from_chars(cursor, end, value);
+    if (error != std::errc() || (stop != end && !IsFieldBlank(*stop)) || !std::isfinite(value)) return false;
+    values[count++] = value;
+    cursor = stop;
+  }
+  return count == values.size();
+}
+
+std::size_t CountLines(std::string_view content) {
+  std::size_t lines = 0;
+  const char* cursor = content.data();
+  const char* const end = content.data() + content.size();
+  while (cursor < end) {
+    const void* newline = std::memchr(cursor, '\n', static_cast<std::size_t>(end - cursor));
+    ++lines;
+    if (newline == nullptr) break;
+    cursor = static_cast<const char*>(newline) + 1;
+  }
+  return lines;
 }
 
 std::vector<std::string_view> SplitFields(std::string_view line, std::string_view separators) {

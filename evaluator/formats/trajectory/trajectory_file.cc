@@ -30,7 +30,8 @@ void RejectOptionsForOtherFormats(const std::filesystem::path& path, TrajectoryF
 TrajectoryFile ReadTrajectoryFile(const std::filesystem::path& path, TrajectoryFormat format,
                                   const TrajectoryReadOptions& options) {
   if (format == TrajectoryFormat::kCarmen) ValidateCarmenReadOptions(options.carmen);
-  const std::string content = ReadTextFile(path);
+  const TextFileContent file_content = ReadTextFileContent(path);
+  const std::string_view content = file_content.text();
   TrajectoryFile file;
   file.format = format == TrajectoryFormat::kAuto ? DetectTrajectoryFormat(path, content) : format;
   RejectOptionsForOtherFormats(path, file.format, options);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <fstream>
 
 #include "evaluator/core/input_error.h"
@@ -9,24 +10,50 @@
 
 namespace slamsweep::evaluator {
 
+namespace {
+
+/// One TUM line read field by field: the slow path, whose checks name what is wrong.
+void AddTumRecord(const TextRecord& record, Trajectory& trajectory) {
+  record.RequireFields(8, "timestamp tx ty tz qx qy qz qw");
+  if (record.size() > 8)
+    record.Fail("expected 8 fields (timestamp tx ty tz qx qy qz qw), got " + std::to_string(record.size()));
+  const double stamp = record.Number(0, "timestamp");
+  Pose pose;
+  pose.position = {record.Number(1, "tx"), record.Number(2, "ty"), record.Number(3, "tz")};
+  const Eigen::Quaterniond q(record.Number(7, "qw"), record.Number(4, "qx"), record.Number(5, "qy"),
+                             record.Number(6, "qz"));
+  if (q.norm() < 1e-9) record.Fail("quaternion (qx qy qz qw) has zero norm; expected a rotation");
+  pose.orientation = q.normalized();
+  try {
+    trajectory.Add(stamp, pose);
+  } catch (const InputError& error) {
+    record.Fail(error.what());
+  }
+}
+
+}  // namespace
+
 Trajectory ParseTum(std::string_view content, const std::filesystem::path& source) {
   Trajectory trajectory;
-  ForEachRecord(source, content, [&](const TextRecord& record) {
-    record.RequireFields(8, "timestamp tx ty tz qx qy qz qw");
-    if (record.size() > 8)
-      record.Fail("expected 8 fields (timestamp tx ty tz qx qy qz qw), got " + std::to_string(record.size()));
-    const double stamp = record.Number(0, "timestamp");
-    Pose pose;
-    pose.position = {record.Number(1, "tx"), record.Number(2, "ty"), record.Number(3, "tz")};
-    const Eigen::Quaterniond q(record.Number(7, "qw"), record.Number(4, "qx"), record.Number(5, "qy"),
-                               record.Number(6, "qz"));
-    if (q.norm() < 1e-9) record.Fail("quaternion (qx qy qz qw) has zero norm; expected a rotation");
-    pose.orientation = q.normalized();
-    try {
-      trajectory.Add(stamp, pose);
-    } catch (const InputError& error) {
-      record.Fail(error.what());
+  trajectory.Reserve(CountLines(content));
+  ForEachDataLine(content, [&](std::string_view line, std::size_t line_number) {
+    // Fast path: eight finite numbers and a valid pose, the same values AddTumRecord would read.
+    std::array<double, 8> v;
+    if (ParseNumberFields(line, v)) {
+      const Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
+      Pose pose;
+      pose.position = {v[1], v[2], v[3]};
+      pose.orientation = q.normalized();
+      if (q.norm() >= 1e-9) {
+        try {
+          trajectory.Add(v[0], pose);
+          return;
+        } catch (const InputError&) {
+          // AddTumRecord below says which check failed, located at this line.
+        }
+      }
     }
+    AddTumRecord(TextRecord(source, line_number, SplitFields(line, " \t\r")), trajectory);
   });
   if (trajectory.empty())
     throw InputError(Located(source, 0, "no poses found (expected TUM lines 'timestamp tx ty tz qx qy qz qw')"));

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
+#include <array>
 #include <fstream>
 
 #include "evaluator/core/input_error.h"
@@ -48,6 +49,35 @@ TEST(TextFileTest, TruncatedGzipNamesTheFile) {
     EXPECT_THAT(error.what(), HasSubstr("cut.gz"));
     EXPECT_THAT(error.what(), HasSubstr("truncated"));
   }
+}
+
+TEST(TextFileTest, PlainFilesAreReadInPlaceAndProcFilesToo) {
+  testing::TempDir dir;
+  testing::WriteFile(dir / "plain.txt", "1 2\n3 4\n");
+  EXPECT_EQ(ReadTextFileContent(dir / "plain.txt").text(), "1 2\n3 4\n");
+  testing::WriteFile(dir / "empty.txt", "");
+  EXPECT_EQ(ReadTextFileContent(dir / "empty.txt").text(), "");
+  // /proc files say they hold 0 bytes; their content is read, not mapped.
+  EXPECT_THAT(std::string(ReadTextFileContent("/proc/self/status").text()), HasSubstr("Name:"));
+}
+
+TEST(TextFileTest, NumberFieldsTakeExactlyTheCountOfFiniteNumbers) {
+  std::array<double, 3> values{};
+  ASSERT_TRUE(ParseNumberFields(" 1.5\t-2e3  0x\r", values) == false);  // "0x" is not a number
+  ASSERT_TRUE(ParseNumberFields(" 1.5\t-2e3  7\r", values));
+  EXPECT_EQ(values, (std::array<double, 3>{1.5, -2000.0, 7.0}));
+  EXPECT_FALSE(ParseNumberFields("1 2", values));
+  EXPECT_FALSE(ParseNumberFields("1 2 3 4", values));
+  EXPECT_FALSE(ParseNumberFields("1 nan 3", values));
+  EXPECT_FALSE(ParseNumberFields("1 2 1e999", values));
+  EXPECT_FALSE(ParseNumberFields("1,2,3", values));
+}
+
+TEST(TextFileTest, CountLinesCountsALastLineWithoutNewline) {
+  EXPECT_EQ(CountLines(""), 0u);
+  EXPECT_EQ(CountLines("a"), 1u);
+  EXPECT_EQ(CountLines("a\n"), 1u);
+  EXPECT_EQ(CountLines("a\n\nb"), 3u);
 }
 
 TEST(TextFileTest, MissingFileIsAnInputError) {

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace slamsweep::evaluator {
+
+/// The folders where slamsweep's helper programs (slamsweep-maps, slamsweep-sweep) and format
+/// modules (slamsweep-rawlog.so, slamsweep-rosbag.so) are looked for, in this order:
+///  - $SLAMSWEEP_LIBEXEC_DIR alone, when it is set and not empty;
+///  - the folder of the running program: the build tree (build/slamsweep and its helpers side
+///    by side) and a flat installation;
+///  - that folder's ../lib/slamsweep: an installation under a prefix (bin/slamsweep,
+///    lib/slamsweep/slamsweep-sweep, ...);
+///  - the build tree this code was compiled in, so that test programs deeper in it find them.
+std::vector<std::filesystem::path> LibexecSearchDirs();
+
+/// The first existing `name` in LibexecSearchDirs(); std::nullopt when there is none.
+std::optional<std::filesystem::path> FindLibexecFile(std::string_view name);
+
+/// "looked in A, B and C (set SLAMSWEEP_LIBEXEC_DIR to choose the folder)": the end of the
+/// message that reports a missing helper or module.
+std::string DescribeLibexecSearch();
+
+}  // namespace slamsweep::evaluator
