@@ -11,11 +11,7 @@
 #include "evaluator/formats/trajectory/output_file.h"
 #include "evaluator/formats/trajectory/tum_format.h"
 #include "evaluator/sequence/flaser_fan.h"
-#include "evaluator/sequence/sequence_file.h"
-
-#ifdef SLAMSWEEP_HAVE_MRPT
-#include "evaluator/formats/rawlog/rawlog_writer.h"
-#endif
+#include "evaluator/sequence/format_modules.h"
 
 namespace slamsweep::evaluator {
 namespace {
@@ -121,13 +117,11 @@ std::string FormatCarmenLog(const RobotLog& log) {
 
 void WriteRobotLog(const RobotLog& log, const std::filesystem::path& path, SequenceWriteFormat format) {
   switch (format) {
-    case SequenceWriteFormat::kRawlog:
-#ifdef SLAMSWEEP_HAVE_MRPT
-      WriteRawlog(log, path);
+    case SequenceWriteFormat::kRawlog: {
+      RawlogSummary summary;
+      ThrowIfFailed(LoadRawlogModule(path).write(log, path, RawlogWriteOptions{}, summary));
       return;
-#else
-      throw InputError(Located(path, 0, std::string(RawlogUnsupportedMessage())));
-#endif
+    }
     case SequenceWriteFormat::kCarmen: {
       const std::string text = FormatCarmenLog(log);
       WriteOutputFile(path, [&](std::ostream& out) { out << text; });

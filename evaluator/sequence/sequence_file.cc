@@ -10,22 +10,10 @@
 #include <sstream>
 
 #include "evaluator/core/input_error.h"
-
-#ifdef SLAMSWEEP_HAVE_MRPT
-#include "evaluator/formats/rawlog/rawlog_reader.h"
-#endif
-#ifdef SLAMSWEEP_HAVE_ROSBAG
-#include "evaluator/formats/rosbag/rosbag_reader.h"
-#endif
+#include "evaluator/sequence/format_modules.h"
 
 namespace slamsweep::evaluator {
 namespace {
-
-constexpr std::string_view kMrptMissing =
-    "MRPT rawlog support not built (install libmrpt-obs-dev and reconfigure slamsweep)";
-constexpr std::string_view kRosbagMissing =
-    "ROS bag support not built (install librosbag-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev "
-    "and reconfigure slamsweep)";
 
 bool EndsWith(const std::string& text, std::string_view suffix) { return text.ends_with(suffix); }
 
@@ -97,23 +85,9 @@ SequenceFormat ParseSequenceFormat(std::string_view text, std::string_view optio
   throw InputError(fmt::format("{}: expected carmen, rawlog or rosbag, got '{}'", option, text));
 }
 
-bool RawlogSupported() {
-#ifdef SLAMSWEEP_HAVE_MRPT
-  return true;
-#else
-  return false;
-#endif
-}
+bool RawlogSupported() { return RawlogModuleAvailable(); }
 
-std::string_view RawlogUnsupportedMessage() { return kMrptMissing; }
-
-bool RosbagSupported() {
-#ifdef SLAMSWEEP_HAVE_ROSBAG
-  return true;
-#else
-  return false;
-#endif
-}
+bool RosbagSupported() { return RosbagModuleAvailable(); }
 
 SequenceFormat DetectSequenceFormat(const std::filesystem::path& path) {
   std::error_code error;
@@ -144,26 +118,24 @@ Sequence ReadSequence(const std::filesystem::path& path, const SequenceReadOptio
       return ReadCarmenSequence(path, carmen);
     }
     case SequenceFormat::kRawlog: {
-#ifdef SLAMSWEEP_HAVE_MRPT
+      const RawlogModule& module = LoadRawlogModule(path);
       RawlogReadOptions rawlog;
       rawlog.name = options.name;
       rawlog.stamps = options.rawlog_stamps;
-      return ReadRawlog(path, rawlog);
-#else
-      throw InputError(Located(path, 0, std::string(kMrptMissing)));
-#endif
+      Sequence sequence;
+      ThrowIfFailed(module.read(path, rawlog, sequence));
+      return sequence;
     }
     case SequenceFormat::kRosbag: {
-#ifdef SLAMSWEEP_HAVE_ROSBAG
+      const RosbagModule& module = LoadRosbagModule(path);
       RosbagReadOptions rosbag;
       rosbag.name = options.name;
       rosbag.scan_topic = options.scan_topic;
       rosbag.odometry_topic = options.odometry_topic;
       rosbag.reference_topic = options.reference_topic;
-      return ReadRosbag(path, rosbag);
-#else
-      throw InputError(Located(path, 0, std::string(kRosbagMissing)));
-#endif
+      Sequence sequence;
+      ThrowIfFailed(module.read(path, rosbag, sequence));
+      return sequence;
     }
   }
   throw InputError(Located(path, 0, "unknown sequence format"));

@@ -21,11 +21,10 @@ std::string_view SequenceFormatName(SequenceFormat format);
 /// Inverse of SequenceFormatName; InputError naming `option` and the accepted values otherwise.
 SequenceFormat ParseSequenceFormat(std::string_view text, std::string_view option = "format");
 
-/// Whether this build can read and write MRPT rawlogs (libmrpt-obs was found) and read ROS1 bags.
+/// Whether this installation can read and write MRPT rawlogs and read ROS1 bags: the format's module
+/// (evaluator/sequence/format_modules.h) was built and loads. Loads it.
 bool RawlogSupported();
 bool RosbagSupported();
-/// What to tell a user whose build lacks MRPT rawlog support (how to get it).
-std::string_view RawlogUnsupportedMessage();
 
 struct SequenceReadOptions {
   /// Empty: the reader's default (the file name without its extensions).
