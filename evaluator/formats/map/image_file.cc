@@ -4,82 +4,57 @@
 
 #include <cstdint>
 #include <fstream>
-#include <iterator>
-#include <limits>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <vector>
+#include <optional>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/core/mapped_file.h"
+#include "evaluator/formats/map/png_image.h"
 #include "evaluator/formats/map/pnm_image.h"
 
 namespace slamsweep::evaluator {
 namespace {
 
-std::string ReadBytes(const std::filesystem::path& path) {
+MappedFile ReadBytes(const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) {
     throw InputError(Located(path, 0, "no such image file (expected a readable PGM or PNG file)"));
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(Located(path, 0, "cannot open image file for reading"));
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  std::optional<MappedFile> file = MappedFile::Open(path);
+  if (!file) throw InputError(Located(path, 0, "cannot open image file for reading"));
+  return std::move(*file);
 }
 
-constexpr std::string_view kPngSignature = "\x89PNG\r\n\x1a\n";
 // The IEND chunk every PNG ends with: length 0, type, CRC.
 constexpr std::string_view kPngEnd = std::string_view("\0\0\0\0IEND\xae\x42\x60\x82", 12);
 
-cv::Mat DecodeWithOpenCv(const std::string& bytes, const std::filesystem::path& path) {
-  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
-    throw InputError(Located(path, 0, "image file larger than 2 GiB"));
-  }
-  // Caught here, a cut PNG gets a clear message (libpng would only print to stderr).
-  if (bytes.starts_with(kPngSignature) && !bytes.ends_with(kPngEnd)) {
-    throw InputError(Located(path, 0, "truncated PNG (the file does not end with the IEND chunk)"));
-  }
-  cv::Mat decoded;
-  try {
-    const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8UC1, const_cast<char*>(bytes.data()));
-    // UNCHANGED keeps the alpha channel and the bit depth, and ignores EXIF rotation.
-    decoded = cv::imdecode(buffer, cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception& exception) {
-    throw InputError(Located(path, 0, fmt::format("corrupt image ({})", exception.what())));
-  }
-  if (decoded.empty()) {
-    throw InputError(Located(path, 0, "not a readable image, or a truncated/corrupt one (expected a PGM or PNG map)"));
-  }
-  if (decoded.depth() != CV_8U) {
-    throw InputError(Located(
-        path, 0, fmt::format("{}-bit samples; expected an 8-bit image, as map_server reads", decoded.elemSize1() * 8)));
-  }
-  // OpenCV stores B, G, R(, A); map_server's channel rules are written for SDL's R, G, B(, A).
-  const int channels = decoded.channels();
-  if (channels == 1) return decoded;
-  if (channels < 1 || channels > 4) {
-    throw InputError(Located(path, 0, fmt::format("{} channels; expected grey, RGB or RGBA", channels)));
-  }
-  std::vector<int> from_to;
-  if (channels == 2) {
-    // Grey + alpha: SDL_image hands map_server R = G = B = grey, then alpha.
-    from_to = {0, 0, 0, 1, 0, 2, 1, 3};
-  } else if (channels == 3) {
-    from_to = {0, 2, 1, 1, 2, 0};
-  } else {
-    from_to = {0, 2, 1, 1, 2, 0, 3, 3};
-  }
-  cv::Mat rgb(decoded.rows, decoded.cols, CV_8UC(channels == 2 ? 4 : channels));
-  cv::mixChannels(&decoded, 1, &rgb, 1, from_to.data(), from_to.size() / 2);
-  return rgb;
+/// What a file that is neither PNM nor PNG is, when its magic bytes tell.
+std::string_view OtherImageKind(std::string_view bytes) {
+  if (bytes.starts_with("BM")) return "a BMP image";
+  if (bytes.starts_with("\xff\xd8\xff")) return "a JPEG image";
+  if (bytes.starts_with("II*") || bytes.starts_with(std::string_view("MM\0*", 4))) return "a TIFF image";
+  if (bytes.starts_with("GIF8")) return "a GIF image";
+  return {};
 }
 
 }  // namespace
 
 cv::Mat ReadImageFile(const std::filesystem::path& path) {
-  const std::string bytes = ReadBytes(path);
+  const MappedFile file = ReadBytes(path);
+  const std::string_view bytes = file.bytes();
   if (bytes.empty()) throw InputError(Located(path, 0, "empty file; expected a PGM or PNG image"));
   if (LooksLikePnm(bytes)) return DecodePnm(bytes, path);
-  return DecodeWithOpenCv(bytes, path);
+  if (LooksLikePng(bytes)) {
+    // Caught here, a cut PNG gets a clear message before libpng reports a missing chunk.
+    if (!bytes.ends_with(kPngEnd)) {
+      throw InputError(Located(path, 0, "truncated PNG (the file does not end with the IEND chunk)"));
+    }
+    return DecodePng(bytes, path);
+  }
+  if (const std::string_view kind = OtherImageKind(bytes); !kind.empty()) {
+    throw InputError(Located(path, 0, fmt::format("{}; slamsweep reads PGM and PNG maps (convert it to PNG)", kind)));
+  }
+  throw InputError(Located(path, 0, "not a readable image, or a truncated/corrupt one (expected a PGM or PNG map)"));
 }
 
 cv::Mat ReadGreyImageFile(const std::filesystem::path& path) {
@@ -112,10 +87,6 @@ void WriteBinaryFile(const std::filesystem::path& path, std::string_view bytes) 
   if (!out) throw InputError(Located(path, 0, "write failed"));
 }
 
-std::string EncodePng(const cv::Mat& image) {
-  std::vector<unsigned char> buffer;
-  if (!cv::imencode(".png", image, buffer)) throw InputError("PNG encoding failed");
-  return std::string(buffer.begin(), buffer.end());
-}
+std::string EncodePng(const cv::Mat& image) { return EncodePngBytes(image); }
 
 }  // namespace slamsweep::evaluator

@@ -9,10 +9,10 @@ namespace slamsweep::evaluator {
 
 /// An image file as map_server's loader (SDL_image) sees it: 8-bit samples, 1 channel (grey),
 /// 3 (R, G, B) or 4 (R, G, B, A) in that order. Grey + alpha images are widened to R = G = B
-/// plus alpha, as SDL_image does. PGM/PPM are decoded by DecodePnm; PNG and the other formats
-/// OpenCV reads by OpenCV (a palette PNG gives its colours).
-/// Throws InputError naming the file when it is missing, empty, not an image, truncated or
-/// corrupt, or holds 16-bit samples.
+/// plus alpha, as SDL_image does. PGM/PPM are decoded by DecodePnm, PNG by DecodePng (libpng; a
+/// palette PNG gives its colours). Throws InputError naming the file when it is missing, empty,
+/// not a PGM/PPM or PNG (naming BMP, JPEG, TIFF and GIF files as such), truncated or corrupt, or
+/// holds 16-bit samples.
 cv::Mat ReadImageFile(const std::filesystem::path& path);
 
 /// ReadImageFile for formats whose pixels are grey levels (MRPT bitmaps, bare maps): CV_8UC1.
@@ -23,7 +23,7 @@ cv::Mat ReadGreyImageFile(const std::filesystem::path& path);
 /// Writes `bytes` to `path` (replacing it); InputError naming the file on failure.
 void WriteBinaryFile(const std::filesystem::path& path, std::string_view bytes);
 
-/// PNG encoding of an 8-bit image (grey, or B, G, R, A in OpenCV's order).
+/// PNG encoding of an 8-bit image (grey, or B, G, R, A in OpenCV's order): EncodePngBytes.
 std::string EncodePng(const cv::Mat& image);
 
 }  // namespace slamsweep::evaluator

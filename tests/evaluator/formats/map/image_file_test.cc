@@ -62,6 +62,18 @@ TEST(ImageFileTest, MissingEmptyNotAnImageAndTruncatedPng) {
   EXPECT_THAT(message, HasSubstr("truncated"));
 }
 
+TEST(ImageFileTest, OtherImageFormatsAreNamedAndRefused) {
+  // slamsweep reads PGM and PNG maps (README); a BMP or JPEG map is named as such, not misread.
+  testing::TempDir dir;
+  map_test::WriteImage(dir / "map.bmp", cv::Mat(4, 4, CV_8UC1, cv::Scalar(254)));
+  map_test::WriteImage(dir / "map.jpg", cv::Mat(4, 4, CV_8UC1, cv::Scalar(254)));
+  const std::string bmp = InputErrorOf([&] { ReadImageFile(dir / "map.bmp"); });
+  EXPECT_THAT(bmp, HasSubstr("map.bmp"));
+  EXPECT_THAT(bmp, HasSubstr("a BMP image"));
+  EXPECT_THAT(bmp, HasSubstr("PGM and PNG"));
+  EXPECT_THAT(InputErrorOf([&] { ReadImageFile(dir / "map.jpg"); }), HasSubstr("a JPEG image"));
+}
+
 TEST(ImageFileTest, GreyReaderAcceptsGreySavedAsColourOnly) {
   testing::TempDir dir;
   map_test::WriteImage(dir / "grey_rgb.png", map_test::RgbRow({cv::Vec3b(7, 7, 7), cv::Vec3b(200, 200, 200)}));

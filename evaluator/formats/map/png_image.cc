@@ -1,0 +1,171 @@
+#include "evaluator/formats/map/png_image.h"
+
+#include <png.h>
+#include <zlib.h>
+
+#include <csetjmp>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "evaluator/core/input_error.h"
+
+namespace slamsweep::evaluator {
+namespace {
+
+constexpr std::string_view kPngSignature = "\x89PNG\r\n\x1a\n";
+
+/// libpng reports errors through a callback that must not return: it records the reason here and
+/// jumps back to the setjmp of the call in progress (libpng's documented error protocol).
+struct PngErrors {
+  std::string message;
+};
+
+void OnPngError(png_structp png, png_const_charp message) {
+  static_cast<PngErrors*>(png_get_error_ptr(png))->message = message;
+  png_longjmp(png, 1);
+}
+
+void OnPngWarning(png_structp, png_const_charp) {}
+
+struct ReadCursor {
+  std::string_view bytes;
+  std::size_t position = 0;
+};
+
+void ReadFromBytes(png_structp png, png_bytep out, png_size_t count) {
+  auto* cursor = static_cast<ReadCursor*>(png_get_io_ptr(png));
+  if (count > cursor->bytes.size() - cursor->position) png_error(png, "PNG data ends early (truncated file?)");
+  std::memcpy(out, cursor->bytes.data() + cursor->position, count);
+  cursor->position += count;
+}
+
+void AppendToString(png_structp png, png_bytep data, png_size_t count) {
+  static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<const char*>(data), count);
+}
+
+void FlushNothing(png_structp) {}
+
+/// Runs libpng calls with libpng's error protocol: an error jumps back here and makes this return
+/// false. `step` must not own objects with destructors (a jump would skip them); the caller owns them.
+template <typename Step>
+bool RunPngStep(png_structp png, Step&& step) {
+  if (setjmp(png_jmpbuf(png)) != 0) return false;
+  step();
+  return true;
+}
+
+/// The channel count OpenCV's PNG decoder chooses for a colour type, and so the layout map_server
+/// rules are written for.
+int ChannelsFor(png_structp png, png_infop info, int color_type) {
+  switch (color_type) {
+    case PNG_COLOR_TYPE_RGB:
+    case PNG_COLOR_TYPE_PALETTE: {
+      png_bytep trans = nullptr;
+      int num_trans = 0;
+      png_color_16p trans_values = nullptr;
+      png_get_tRNS(png, info, &trans, &num_trans, &trans_values);
+      return num_trans > 0 ? 4 : 3;
+    }
+    case PNG_COLOR_TYPE_GRAY_ALPHA:
+    case PNG_COLOR_TYPE_RGB_ALPHA:
+      return 4;
+    default:
+      return 1;
+  }
+}
+
+}  // namespace
+
+bool LooksLikePng(std::string_view bytes) { return bytes.starts_with(kPngSignature); }
+
+cv::Mat DecodePng(std::string_view bytes, const std::filesystem::path& source) {
+  PngErrors errors;
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &errors, OnPngError, OnPngWarning);
+  if (png == nullptr) throw InputError(Located(source, 0, "PNG decoder could not start (out of memory?)"));
+  png_infop info = png_create_info_struct(png);
+  ReadCursor cursor{bytes, 0};
+  png_uint_32 width = 0;
+  png_uint_32 height = 0;
+  int bit_depth = 0;
+  int color_type = 0;
+  int channels = 1;
+  cv::Mat image;
+  std::vector<png_bytep> rows;
+  const auto fail = [&](const std::string& message) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    throw InputError(Located(source, 0, message));
+  };
+  const auto corrupt = [&] {
+    fail("not a readable image, or a truncated/corrupt one (expected a PGM or PNG map): " +
+         (errors.message.empty() ? std::string("the PNG decoder failed") : errors.message));
+  };
+  if (info == nullptr) fail("PNG decoder could not start (out of memory?)");
+  const bool header_read = RunPngStep(png, [&] {
+    png_set_read_fn(png, &cursor, ReadFromBytes);
+    png_read_info(png, info);
+    png_get_IHDR(png, info, &width, &height, &bit_depth, &color_type, nullptr, nullptr, nullptr);
+  });
+  if (!header_read) corrupt();
+  if (bit_depth == 16) fail("16-bit samples; expected an 8-bit image, as map_server reads");
+  channels = ChannelsFor(png, info, color_type);
+  const bool pixels_read = RunPngStep(png, [&] {
+    // The transformations OpenCV's decoder applies, with R, G, B kept in file order (no BGR swap).
+    if (channels < 4) {
+      png_set_strip_alpha(png);
+    } else {
+      png_set_tRNS_to_alpha(png);
+    }
+    if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
+    if ((color_type & PNG_COLOR_MASK_COLOR) == 0 && bit_depth < 8) png_set_expand_gray_1_2_4_to_8(png);
+    if ((color_type & PNG_COLOR_MASK_COLOR) == 0 && channels > 1) png_set_gray_to_rgb(png);
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    image.create(static_cast<int>(height), static_cast<int>(width), CV_8UC(channels));
+    if (png_get_rowbytes(png, info) != image.step[0]) png_error(png, "unexpected row size after transformations");
+    rows.resize(height);
+    for (png_uint_32 row = 0; row < height; ++row) rows[row] = image.ptr<png_byte>(static_cast<int>(row));
+    png_read_image(png, rows.data());
+    png_read_end(png, nullptr);
+  });
+  if (!pixels_read) corrupt();
+  png_destroy_read_struct(&png, &info, nullptr);
+  return image;
+}
+
+std::string EncodePngBytes(const cv::Mat& image) {
+  const int channels = image.channels();
+  if (image.depth() != CV_8U || (channels != 1 && channels != 3 && channels != 4) || image.empty()) {
+    throw InputError("PNG encoding: expected a non-empty 8-bit image with 1, 3 or 4 channels");
+  }
+  PngErrors errors;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &errors, OnPngError, OnPngWarning);
+  if (png == nullptr) throw InputError("PNG encoding failed (out of memory?)");
+  png_infop info = png_create_info_struct(png);
+  std::string out;
+  std::vector<png_bytep> rows(static_cast<std::size_t>(image.rows));
+  for (int row = 0; row < image.rows; ++row) {
+    rows[static_cast<std::size_t>(row)] = const_cast<png_bytep>(image.ptr<png_byte>(row));
+  }
+  const bool written = info != nullptr && RunPngStep(png, [&] {
+    png_set_write_fn(png, &out, AppendToString, FlushNothing);
+    // OpenCV's choices when no compression level is given ("tuned for speed").
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+    png_set_compression_level(png, Z_BEST_SPEED);
+    png_set_compression_strategy(png, Z_RLE);
+    png_set_IHDR(png, info, static_cast<png_uint_32>(image.cols), static_cast<png_uint_32>(image.rows), 8,
+                 channels == 1   ? PNG_COLOR_TYPE_GRAY
+                 : channels == 3 ? PNG_COLOR_TYPE_RGB
+                                 : PNG_COLOR_TYPE_RGB_ALPHA,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    png_set_bgr(png);
+    png_write_image(png, rows.data());
+    png_write_end(png, info);
+  });
+  png_destroy_write_struct(&png, &info);
+  if (!written) throw InputError("PNG encoding failed: " + errors.message);
+  return out;
+}
+
+}  // namespace slamsweep::evaluator
