@@ -53,14 +53,8 @@ class Adapter {
   /// kMissingOutput naming it (relative to the run folder), an unreadable one kCorruptOutput
   /// naming it with the reader's message.
   virtual CollectedOutputs Collect(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const = 0;
-
-  /// The files a run of `algorithm` executes or reads as its program's configuration (binary,
-  /// wrapper script, configuration template), found as the worker will find them: their digests
-  /// are the run's build identity. A program that cannot be found is an InputError saying so.
-  virtual std::vector<std::filesystem::path> ProgramFiles(const AlgorithmSpec& algorithm) const = 0;
-
-  /// Whether a run of `algorithm` can be reproduced from its seed.
-  virtual Seeding SeedingOf(const AlgorithmSpec& algorithm) const = 0;
+  // What a run depends on (program files, seeding) is program_identity.h's: planning needs it
+  // without the run-time code here.
 };
 
 /// The adapter named in run.json's algorithm.adapter: "mrpt-icp-slam", "mrpt-rbpf-slam", "command",

@@ -1,11 +1,11 @@
 #include <memory>
 #include <string>
 
-#include "evaluator/core/input_error.h"
 #include "orchestrator/adapters/adapter.h"
 #include "orchestrator/adapters/command_adapter.h"
 #include "orchestrator/adapters/mrpt_adapters.h"
 #include "orchestrator/adapters/odometry_adapter.h"
+#include "orchestrator/adapters/program_identity.h"
 #include "orchestrator/adapters/roster_adapter.h"
 
 namespace slamsweep::orchestrator {
@@ -16,8 +16,7 @@ std::unique_ptr<Adapter> MakeAdapter(std::string_view name) {
   if (name == "command") return std::make_unique<CommandAdapter>();
   if (name == "odometry") return std::make_unique<OdometryAdapter>();
   if (const RosterAlgorithm* algorithm = FindRosterAlgorithm(name)) return std::make_unique<RosterAdapter>(*algorithm);
-  throw evaluator::InputError("algorithm.adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command, odometry, gmapping, "
-                              "tinyslam, vinyslam, hector or cartographer, got '" + std::string(name) + "'");
+  ThrowUnknownAdapter(name);
 }
 
 }  // namespace slamsweep::orchestrator

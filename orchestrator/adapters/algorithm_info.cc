@@ -6,7 +6,7 @@
 #include <unistd.h>
 
 #include "evaluator/core/input_error.h"
-#include "orchestrator/adapters/mrpt_adapters.h"
+#include "orchestrator/adapters/mrpt_settings.h"
 #include "orchestrator/adapters/roster.h"
 #include "orchestrator/config/program_path.h"
 #include "orchestrator/process/process_set.h"

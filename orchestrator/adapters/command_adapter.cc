@@ -24,14 +24,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<std::string> ParameterNames(const nlohmann::json& parameters) {
-  std::vector<std::string> names;
-  if (parameters.is_object()) {
-    for (const auto& [name, value] : parameters.items()) names.push_back(name);
-  }
-  return names;
-}
-
 const CommandDeclaration& Declaration(const RunSpec& spec) {
   if (!spec.algorithm.command) {
     throw ev::InputError("algorithm.command: the command adapter needs a command declaration (argv, input_format, "
@@ -93,49 +85,6 @@ ev::MapFormat MapFormatOf(const std::string& name) {
 }
 
 }  // namespace
-
-std::string ExpandPlaceholders(std::string_view text, const PlaceholderValues& values, const std::string& field) {
-  try {
-    std::string out;
-    for (const TemplatePiece& piece : ParseTemplate(text)) {
-      if (!piece.is_placeholder) {
-        out += piece.text;
-        continue;
-      }
-      CheckPlaceholderName(piece.text, ParameterNames(values.parameters));
-      const std::string& name = piece.text;
-      if (name == "input") {
-        out += values.input;
-      } else if (name == "input_dir") {
-        out += values.input_dir;
-      } else if (name == "output_dir") {
-        out += values.output_dir;
-      } else if (name == "seed") {
-        out += values.seed;
-      } else if (name == "seed32") {
-        out += values.seed32;
-      } else if (name == "iteration") {
-        out += values.iteration;
-      } else {
-        // The value is one argument as it is: line breaks are harmless without a shell.
-        const std::string parameter = name.substr(kParameterPlaceholderPrefix.size());
-        const nlohmann::json& value = values.parameters.at(parameter);
-        out += value.is_string() ? value.get<std::string>() : IniValueText(value, "{" + name + "}");
-      }
-    }
-    return out;
-  } catch (const ev::InputError& error) {
-    throw ev::InputError(field + ": " + error.what());
-  }
-}
-
-std::string InputExtension(std::string_view input_format) {
-  if (input_format == "rawlog") return ".rawlog";
-  if (input_format == "carmen") return ".log";
-  if (input_format == "tum") return ".tum";
-  throw ev::InputError("algorithm.command.input_format: expected rawlog, carmen or tum, got '" +
-                       std::string(input_format) + "'");
-}
 
 PreparedRun CommandAdapter::Prepare(const RunSpec& spec, const ev::RobotLog& robot, const RunPaths& paths) const {
   const CommandDeclaration& declaration = Declaration(spec);
@@ -222,40 +171,6 @@ CollectedOutputs CommandAdapter::Collect(const RunSpec& spec, const ev::RobotLog
     }
   }
   return outputs;
-}
-
-std::vector<fs::path> CommandAdapter::ProgramFiles(const AlgorithmSpec& algorithm) const {
-  if (!algorithm.command || algorithm.command->argv.empty()) return {};
-  PlaceholderValues values;
-  values.parameters = algorithm.parameters;
-  std::vector<fs::path> files;
-  const std::vector<std::string>& argv = algorithm.command->argv;
-  for (std::size_t i = 0; i < argv.size(); ++i) {
-    const std::string field = "algorithm.command.argv[" + std::to_string(i) + "]";
-    bool has_run_placeholder = false;
-    for (const TemplatePiece& piece : ParseTemplate(argv[i])) {
-      has_run_placeholder = has_run_placeholder || (piece.is_placeholder && !piece.text.starts_with("param:"));
-    }
-    if (has_run_placeholder) continue;  // {input}, {output_dir}...: files of the run, not of the program
-    const std::string value = ExpandPlaceholders(argv[i], values, field);
-    if (i == 0) {
-      files.push_back(ResolveProgram(value, fs::current_path()));
-      continue;
-    }
-    std::error_code error;
-    if (fs::path(value).is_absolute() && fs::is_regular_file(value, error)) files.emplace_back(value);
-  }
-  return files;
-}
-
-Seeding CommandAdapter::SeedingOf(const AlgorithmSpec& algorithm) const {
-  if (!algorithm.command) return Seeding::kUnseeded;
-  for (const std::string& argument : algorithm.command->argv) {
-    for (const TemplatePiece& piece : ParseTemplate(argument)) {
-      if (piece.is_placeholder && (piece.text == "seed" || piece.text == "seed32")) return Seeding::kSeeded;
-    }
-  }
-  return Seeding::kUnseeded;
 }
 
 }  // namespace slamsweep::orchestrator

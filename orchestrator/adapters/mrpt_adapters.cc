@@ -23,7 +23,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kApp = "MappingApplication";
 constexpr const char* kPathFile = "log_estimated_path.txt";
 
 std::string ReadTemplate(const fs::path& path, const std::string& adapter) {
@@ -37,28 +36,7 @@ std::string ReadTemplate(const fs::path& path, const std::string& adapter) {
   return text.str();
 }
 
-/// defaults, then the run's parameters, then the adapter's controlled keys; a parameter that
-/// names a controlled key would silently lose, so it is refused.
-std::vector<IniSetting> Compose(std::vector<IniSetting> defaults, const nlohmann::json& parameters,
-                                const std::vector<IniSetting>& controlled) {
-  std::vector<IniSetting> settings = std::move(defaults);
-  for (IniSetting& setting : IniSettingsFromParameters(parameters)) {
-    for (const IniSetting& fixed : controlled) {
-      if (fixed.section == setting.section && fixed.key == setting.key) {
-        throw ev::InputError("algorithm.parameters." + setting.section + "." + setting.key +
-                             ": set by the adapter (the run folder's layout needs it), cannot be a parameter");
-      }
-    }
-    settings.push_back(std::move(setting));
-  }
-  settings.insert(settings.end(), controlled.begin(), controlled.end());
-  return settings;
-}
-
 std::string RawlogName(const RunSpec& spec) { return SafeFileStem(spec.sequence.entry.name) + ".rawlog"; }
-
-/// Paths as the program sees them: it runs in raw/ (RunPaths::ProgramWorkingDir), its input is beside it.
-std::string FromRawDir(const std::string& input_file) { return "../input/" + input_file; }
 
 /// Writes input/<seq>.rawlog and input/<ini_name>; returns argv {program, ../input/<ini_name>}.
 PreparedRun PrepareMrpt(const ev::RobotLog& robot, const RunPaths& paths, const std::string& rawlog_name,
@@ -96,62 +74,6 @@ CollectedOutputs CollectMrpt(const ev::RobotLog& robot, const RunPaths& paths, c
 
 }  // namespace
 
-std::vector<IniSetting> IcpSlamDefaultSettings() {
-  return {
-      // Why each group: see the header. Points map for matching, occupancy grid for the output map.
-      {kApp, "pointsMap_count", "1"},
-      {kApp, "matchAgainstTheGrid", "false"},
-      {kApp, "insertionLinDistance", "0.5"},
-      {kApp, "insertionAngDistance", "20"},
-      // ICP thresholds of MRPT's icp-slam_demo_classic.ini, the demo that matches against points.
-      {"ICP", "maxIterations", "80"},
-      {"ICP", "thresholdDist", "0.3"},
-      {"ICP", "thresholdAng_DEG", "5"},
-      {"ICP", "ALFA", "0.8"},
-      {"ICP", "smallestThresholdDist", "0.05"},
-      {"ICP", "onlyUniqueRobust", "true"},
-      {"ICP", "corresponding_points_decimation", "5"},
-      // As MRPT's rbpf-slam intel template: rays widen with distance, so free space between diverging
-      // beams is filled instead of left as grey streaks, which the enclosed-areas metric counts as
-      // pockets (215 instead of 95 on intel's first 300 scans).
-      {"MappingApplication_occupancyGrid_00_insertOpts", "wideningBeamsWithDistance", "1"},
-  };
-}
-
-std::vector<IniSetting> IcpSlamSettings(const RunSpec& spec, const std::string& rawlog_name) {
-  const std::vector<IniSetting> controlled = {
-      {kApp, "rawlog_file", FromRawDir(rawlog_name)},
-      {kApp, "logOutput_dir", "."},
-      {kApp, "SHOW_PROGRESS_3D_REAL_TIME", "0"},
-      {kApp, "SAVE_3D_SCENE", "0"},
-  };
-  return Compose(IcpSlamDefaultSettings(), spec.algorithm.parameters, controlled);
-}
-
-std::vector<IniSetting> RbpfSlamSettings(const RunSpec& spec, const std::string& rawlog_name, std::size_t scan_count) {
-  // A map image every LOG_FREQUENCY steps: about evaluation.stages of them over the run.
-  const std::size_t stages = std::max<std::size_t>(spec.evaluation.stages, 1);
-  const std::size_t frequency = std::max<std::size_t>(1, (scan_count + stages - 1) / stages);
-  const std::vector<IniSetting> defaults = {
-      // 5 particles instead of the template's 20: a quick-start run takes seconds, not minutes.
-      {kApp, "sampleSize", "5"},
-      // DEBUG (the template's) writes megabytes of log per run.
-      {kApp, "verbosity_level", "INFO"},
-  };
-  const std::vector<IniSetting> controlled = {
-      {kApp, "rawlog_file", FromRawDir(rawlog_name)},
-      {kApp, "logOutput_dir", "."},
-      // rbpf-slam seeds MRPT's random generator from RANDOM_SEED (a negative value, its default,
-      // seeds it from the clock); it reads an int, so the run's seed is folded to 31 bits.
-      {kApp, "RANDOM_SEED", std::to_string(Seed31(spec.seed))},
-      {kApp, "SHOW_PROGRESS_IN_WINDOW", "0"},
-      {kApp, "SAVE_3D_SCENE", "0"},
-      {kApp, "SAVE_MAP_IMAGES", spec.evaluation.stages > 0 ? "1" : "0"},
-      {kApp, "LOG_FREQUENCY", std::to_string(frequency)},
-  };
-  return Compose(defaults, spec.algorithm.parameters, controlled);
-}
-
 IcpSlamAdapter::IcpSlamAdapter(fs::path template_path) : template_path_(std::move(template_path)) {}
 
 PreparedRun IcpSlamAdapter::Prepare(const RunSpec& spec, const ev::RobotLog& robot, const RunPaths& paths) const {
@@ -172,12 +94,6 @@ CollectedOutputs IcpSlamAdapter::Collect(const RunSpec& spec, const ev::RobotLog
   }
   return outputs;
 }
-
-std::vector<fs::path> IcpSlamAdapter::ProgramFiles(const AlgorithmSpec& /*algorithm*/) const {
-  return {ResolveProgram("icp-slam", fs::current_path()), template_path_};
-}
-
-Seeding IcpSlamAdapter::SeedingOf(const AlgorithmSpec& /*algorithm*/) const { return Seeding::kDeterministic; }
 
 RbpfSlamAdapter::RbpfSlamAdapter(fs::path template_path) : template_path_(std::move(template_path)) {}
 
@@ -200,11 +116,5 @@ CollectedOutputs RbpfSlamAdapter::Collect(const RunSpec& spec, const ev::RobotLo
   if (outputs.stages.empty()) outputs.warnings.push_back("no stage maps: raw/maps/mapbuilt_*.png missing");
   return outputs;
 }
-
-std::vector<fs::path> RbpfSlamAdapter::ProgramFiles(const AlgorithmSpec& /*algorithm*/) const {
-  return {ResolveProgram("rbpf-slam", fs::current_path()), template_path_};
-}
-
-Seeding RbpfSlamAdapter::SeedingOf(const AlgorithmSpec& /*algorithm*/) const { return Seeding::kSeeded; }
 
 }  // namespace slamsweep::orchestrator

@@ -28,10 +28,4 @@ CollectedOutputs OdometryAdapter::Collect(const RunSpec& spec, const evaluator::
   return outputs;
 }
 
-std::vector<std::filesystem::path> OdometryAdapter::ProgramFiles(const AlgorithmSpec& /*algorithm*/) const {
-  return {};
-}
-
-Seeding OdometryAdapter::SeedingOf(const AlgorithmSpec& /*algorithm*/) const { return Seeding::kDeterministic; }
-
 }  // namespace slamsweep::orchestrator

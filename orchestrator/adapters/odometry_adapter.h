@@ -11,9 +11,6 @@ class OdometryAdapter : public Adapter {
  public:
   PreparedRun Prepare(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const override;
   CollectedOutputs Collect(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const override;
-  /// None: slamsweep itself renders the baseline, and its revision is in every build identity.
-  std::vector<std::filesystem::path> ProgramFiles(const AlgorithmSpec& algorithm) const override;
-  Seeding SeedingOf(const AlgorithmSpec& algorithm) const override;
 };
 
 }  // namespace slamsweep::orchestrator

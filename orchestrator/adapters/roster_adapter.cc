@@ -44,17 +44,4 @@ CollectedOutputs RosterAdapter::Collect(const RunSpec& spec, const ev::RobotLog&
   return outputs;
 }
 
-std::vector<fs::path> RosterAdapter::ProgramFiles(const AlgorithmSpec& /*algorithm*/) const {
-  std::vector<fs::path> files = {RosterDriver(algorithm_)};
-  const fs::path manifest = RosterManifestPath(algorithm_);
-  if (!fs::is_regular_file(manifest)) {
-    throw ev::InputError("algorithm.adapter " + std::string(algorithm_.name) + ": " + manifest.string() +
-                         " missing: install the upstream with scripts/install-slam.sh " + std::string(algorithm_.upstream));
-  }
-  files.push_back(manifest);
-  return files;
-}
-
-Seeding RosterAdapter::SeedingOf(const AlgorithmSpec& /*algorithm*/) const { return algorithm_.seeding; }
-
 }  // namespace slamsweep::orchestrator

@@ -18,9 +18,6 @@ class RosterAdapter : public Adapter {
 
   PreparedRun Prepare(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const override;
   CollectedOutputs Collect(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const override;
-  /// The driver and the upstream's manifest (its tarball hash and recipe hash name the build).
-  std::vector<std::filesystem::path> ProgramFiles(const AlgorithmSpec& algorithm) const override;
-  Seeding SeedingOf(const AlgorithmSpec& algorithm) const override;
 
  private:
   const RosterAlgorithm& algorithm_;

@@ -11,6 +11,7 @@
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/formats/trajectory/tum_format.h"
 #include "orchestrator/adapters/adapter.h"
+#include "orchestrator/adapters/program_identity.h"
 #include "orchestrator/adapters/run_inputs.h"
 #include "tests/orchestrator/worker/run_spec_fixture.h"
 #include "tests/support/shared_data.h"
@@ -20,6 +21,12 @@ namespace {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
+
+AlgorithmSpec Algorithm(const std::string& adapter) {
+  AlgorithmSpec algorithm;
+  algorithm.adapter = adapter;
+  return algorithm;
+}
 
 /// Points the roster at a folder of our own for the test's lifetime: a fake driver and prefix, so the
 /// adapter's contract is checked whether or not any upstream is installed.
@@ -130,7 +137,7 @@ TEST(RosterAdapterTest, SaysHowToInstallAMissingDriverOrUpstream) {
   const std::string old_path = std::getenv("PATH") ? std::getenv("PATH") : "";
   setenv("PATH", (dir / "empty").c_str(), 1);
   try {
-    MakeAdapter("vinyslam")->ProgramFiles(AlgorithmSpec{});
+    ProgramFilesOf(Algorithm("vinyslam"));
     FAIL() << "no error";
   } catch (const evaluator::InputError& error) {
     EXPECT_THAT(error.what(), HasSubstr("slamsweep-slam-vinyslam is not built"));
@@ -140,14 +147,14 @@ TEST(RosterAdapterTest, SaysHowToInstallAMissingDriverOrUpstream) {
 
   WriteExecutable(dir / "roster" / "bin" / "slamsweep-slam-vinyslam");
   try {
-    MakeAdapter("vinyslam")->ProgramFiles(AlgorithmSpec{});
+    ProgramFilesOf(Algorithm("vinyslam"));
     FAIL() << "no error";
   } catch (const evaluator::InputError& error) {
     EXPECT_THAT(error.what(), HasSubstr("slam-constructor.json missing"));
   }
   slamsweep::testing::WriteFile(dir / "roster" / "prefix" / "share" / "slamsweep" / "slam" / "slam-constructor.json",
                                 "{\"commit\": \"d70196c\"}");
-  const std::vector<fs::path> files = MakeAdapter("vinyslam")->ProgramFiles(AlgorithmSpec{});
+  const std::vector<fs::path> files = ProgramFilesOf(Algorithm("vinyslam"));
   ASSERT_EQ(files.size(), 2u);
   EXPECT_EQ(files[0].filename(), "slamsweep-slam-vinyslam");
   EXPECT_EQ(files[1].filename(), "slam-constructor.json");
@@ -155,10 +162,10 @@ TEST(RosterAdapterTest, SaysHowToInstallAMissingDriverOrUpstream) {
 
 TEST(RosterAdapterTest, TheRandomisedAlgorithmsAreSeeded) {
   // GMapping's particle filter and slam-constructor's Monte-Carlo scan matcher draw random numbers.
-  EXPECT_EQ(MakeAdapter("gmapping")->SeedingOf(AlgorithmSpec{}), Seeding::kSeeded);
-  EXPECT_EQ(MakeAdapter("tinyslam")->SeedingOf(AlgorithmSpec{}), Seeding::kSeeded);
-  EXPECT_EQ(MakeAdapter("vinyslam")->SeedingOf(AlgorithmSpec{}), Seeding::kSeeded);
-  EXPECT_EQ(MakeAdapter("hector")->SeedingOf(AlgorithmSpec{}), Seeding::kDeterministic);
+  EXPECT_EQ(SeedingOf(Algorithm("gmapping")), Seeding::kSeeded);
+  EXPECT_EQ(SeedingOf(Algorithm("tinyslam")), Seeding::kSeeded);
+  EXPECT_EQ(SeedingOf(Algorithm("vinyslam")), Seeding::kSeeded);
+  EXPECT_EQ(SeedingOf(Algorithm("hector")), Seeding::kDeterministic);
 }
 
 }  // namespace
