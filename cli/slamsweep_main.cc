@@ -1,9 +1,11 @@
-// Thin entry point: everything testable lives in RunCommandLine.
+// The core program: light commands in-process, the others handed to a helper (cli/program.h).
+#include <array>
 #include <iostream>
 
-#include "cli/command.h"
+#include "cli/program.h"
 
 int main(int argc, char** argv) {
-  const slamsweep::cli::Streams streams{std::cout, std::cerr};
-  return slamsweep::cli::RunCommandLine(argc, argv, streams);
+  using namespace slamsweep::cli;
+  constexpr std::array<RegisterCommands, 1> kOwn = {RegisterCoreCommands};
+  return RunProgram(argc, argv, Streams{std::cout, std::cerr}, kOwn, HelperCommands());
 }

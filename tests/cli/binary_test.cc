@@ -15,8 +15,10 @@ struct ProcessResult {
   std::string out;
 };
 
-ProcessResult RunBinary(const std::string& args) {
-  const std::string command = std::string(SLAMSWEEP_BINARY) + " " + args + " 2>/dev/null";
+/// Runs `slamsweep ARGS` with `environment` ("NAME=value ..." or ""); stderr is kept when `with_stderr`.
+ProcessResult RunBinary(const std::string& args, const std::string& environment = "", bool with_stderr = false) {
+  const std::string command =
+      environment + " " + std::string(SLAMSWEEP_BINARY) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
   ProcessResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -40,6 +42,39 @@ TEST(BinaryTest, UsageErrorsExitTwoWithNothingOnStdout) {
   EXPECT_EQ(unknown.out, "");
   EXPECT_EQ(RunBinary("").exit_code, 2);
   EXPECT_EQ(RunBinary("eval map /nonexistent/map.yaml").exit_code, 2);
+}
+
+TEST(BinaryTest, VersionPrintsTheRevision) {
+  const ProcessResult result = RunBinary("--version");
+  EXPECT_EQ(result.exit_code, 0);
+  EXPECT_THAT(result.out, ::testing::StartsWith("slamsweep 0."));
+}
+
+TEST(BinaryTest, TheCoreLoadsNoHeavyLibrary) {
+  // What the dynamic loader maps at start (ldd's way): the map, report, sweep and format libraries
+  // belong to the helpers and modules (README "Programs and libraries").
+  const ProcessResult result = RunBinary("--version", "LD_TRACE_LOADED_OBJECTS=1");
+  EXPECT_THAT(result.out, ::testing::HasSubstr("libstdc++"));
+  for (const char* heavy : {"opencv", "mrpt", "ros", "gdal", "assimp", "sqlite", "gif", "spdlog", "png"}) {
+    EXPECT_THAT(result.out, ::testing::Not(::testing::HasSubstr(heavy))) << heavy;
+  }
+}
+
+TEST(BinaryTest, HelperCommandsAreListedAndGetTheirHelp) {
+  const ProcessResult help = RunBinary("--help");
+  for (const char* command : {"run", "merge", "report", "history", "data", "plan", "algorithms"}) {
+    EXPECT_THAT(help.out, ::testing::HasSubstr(command));
+  }
+  const ProcessResult map_help = RunBinary("eval map --help");
+  EXPECT_EQ(map_help.exit_code, 0);
+  EXPECT_THAT(map_help.out, ::testing::HasSubstr("--unknown-value"));  // slamsweep-maps' own help
+}
+
+TEST(BinaryTest, AMissingHelperIsNamedWithWhereItWasLookedFor) {
+  const ProcessResult result = RunBinary("eval map map.yaml", "SLAMSWEEP_LIBEXEC_DIR=/nonexistent/libexec", true);
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_THAT(result.out, ::testing::HasSubstr("slamsweep-maps"));
+  EXPECT_THAT(result.out, ::testing::HasSubstr("/nonexistent/libexec"));
 }
 
 }  // namespace

@@ -1,0 +1,29 @@
+// The commands the core hands to a helper program (program.h), with the descriptions its help shows.
+#include <array>
+
+#include "cli/program.h"
+
+namespace slamsweep::cli {
+namespace {
+
+constexpr std::string_view kMaps = "slamsweep-maps";
+constexpr std::string_view kSweep = "slamsweep-sweep";
+
+// The descriptions repeat those of the commands themselves; cli_test checks that they agree.
+constexpr std::array<HelperCommand, 9> kHelperCommands = {{
+    {"eval", "map", "occupied proportion, corners and enclosed areas (paper profile)", kMaps},
+    {"eval", "map-compare", "an estimated map against a reference map: distances, F1, IoU", kMaps},
+    {"", "vectorize", "trace obstacle borders and export polygons", kMaps},
+    {"", "data", "inspect, convert, map and simulate sequences", kSweep},
+    {"", "run", "run a sweep: every run in a worker process, results in OUTPUT", kSweep},
+    {"", "merge", "combine result directories (shards of one sweep) into one", kSweep},
+    {"", "report", "turn a sweep's output directory into a static HTML report", kSweep},
+    {"", "history", "nightly history: record sweeps, compare them for regressions", kSweep},
+    {"", "worker", "run one prepared run folder (started by `slamsweep run`)", kSweep, true},
+}};
+
+}  // namespace
+
+std::span<const HelperCommand> HelperCommands() { return kHelperCommands; }
+
+}  // namespace slamsweep::cli

@@ -1,0 +1,11 @@
+// slamsweep-sweep: sweeps, results, report and data commands, started by `slamsweep` (cli/program.h).
+#include <array>
+#include <iostream>
+
+#include "cli/program.h"
+
+int main(int argc, char** argv) {
+  using namespace slamsweep::cli;
+  constexpr std::array<RegisterCommands, 1> kOwn = {RegisterSweepCommands};
+  return RunProgram(argc, argv, Streams{std::cout, std::cerr}, kOwn, {});
+}
