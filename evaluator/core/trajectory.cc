@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "evaluator/core/input_error.h"
 
@@ -59,13 +60,33 @@ bool Trajectory::IsPlanar(double tolerance) const {
 }
 
 Trajectory Trajectory::Subset(std::span<const std::size_t> indices) const {
+  for (std::size_t index : indices) {
+    if (index >= poses_.size()) {
+      throw std::out_of_range("Trajectory::Subset: index " + std::to_string(index) + " of " +
+                              std::to_string(poses_.size()) + " poses");
+    }
+  }
   Trajectory subset;
   subset.Reserve(indices.size());
   for (std::size_t index : indices) {
-    subset.stamps_s_.push_back(stamps_s_.at(index));
-    subset.poses_.push_back(poses_.at(index));
+    subset.stamps_s_.push_back(stamps_s_[index]);
+    subset.poses_.push_back(poses_[index]);
   }
   return subset;
+}
+
+Trajectory Trajectory::Select(std::span<const std::size_t> indices) && {
+  bool increasing = indices.empty() || indices.back() < poses_.size();
+  for (std::size_t k = 1; increasing && k < indices.size(); ++k) increasing = indices[k - 1] < indices[k];
+  if (!increasing) return Subset(indices);
+  // indices[k] >= k, so every pose is read before its slot is overwritten.
+  for (std::size_t k = 0; k < indices.size(); ++k) {
+    stamps_s_[k] = stamps_s_[indices[k]];
+    poses_[k] = poses_[indices[k]];
+  }
+  stamps_s_.resize(indices.size());
+  poses_.resize(indices.size());
+  return std::move(*this);
 }
 
 Trajectory Trajectory::Shifted(double offset_s) const {

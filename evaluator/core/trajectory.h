@@ -33,6 +33,9 @@ class Trajectory {
   bool IsPlanar(double tolerance = 1e-9) const;
   /// The poses at the given indices, in that order.
   Trajectory Subset(std::span<const std::size_t> indices) const;
+  /// Subset of a trajectory that is no longer needed: when the indices strictly increase (the
+  /// usual selection) the poses are moved down in place, without new memory; otherwise a Subset.
+  Trajectory Select(std::span<const std::size_t> indices) &&;
   /// A copy whose stamps are shifted by offset_s.
   Trajectory Shifted(double offset_s) const;
 

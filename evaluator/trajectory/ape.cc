@@ -19,7 +19,14 @@ nlohmann::json Ape::Specification() const {
 }
 
 MetricResult Ape::Compute(const Trajectory& reference, const Trajectory& estimate) const {
-  Association association = Associate(reference, estimate, options_.association);
+  return Score(Associate(reference, estimate, options_.association));
+}
+
+MetricResult Ape::Compute(Trajectory&& reference, Trajectory&& estimate) const {
+  return Score(Associate(std::move(reference), std::move(estimate), options_.association));
+}
+
+MetricResult Ape::Score(Association association) const {
   MetricResult result;
   result.alignment = ComputeAlignment(association.reference, association.estimate, options_.alignment);
   const Trajectory aligned = result.alignment ? ApplyAlignment(std::move(association.estimate), *result.alignment)

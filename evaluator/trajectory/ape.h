@@ -24,6 +24,8 @@ class Ape {
 
   /// Throws InputError when no pairs associate or the alignment is degenerate.
   MetricResult Compute(const Trajectory& reference, const Trajectory& estimate) const;
+  /// The same for trajectories the caller gives up: no copy of the paired poses is made.
+  MetricResult Compute(Trajectory&& reference, Trajectory&& estimate) const;
 
   const ApeOptions& options() const { return options_; }
   /// The specification stored in every result: pose_relation, alignment, n_to_align,
@@ -31,6 +33,8 @@ class Ape {
   nlohmann::json Specification() const;
 
  private:
+  MetricResult Score(Association association) const;
+
   ApeOptions options_;
 };
 

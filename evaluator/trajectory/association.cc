@@ -139,58 +139,87 @@ nlohmann::json ToJson(const AssociationOptions& options) {
   return nlohmann::json{{"t_max_diff_s", options.t_max_diff_s}, {"t_offset_s", options.t_offset_s}};
 }
 
-Association Associate(const Trajectory& reference, const Trajectory& estimate, const AssociationOptions& options) {
+namespace {
+
+/// The pairs Associate forms, as indices, before any pose is copied.
+struct Pairing {
+  bool estimate_longer = false;
+  std::vector<std::size_t> shorter_ids;
+  std::vector<std::size_t> longer_ids;
+  std::size_t shorter_unpaired = 0;
+  std::size_t longer_unpaired = 0;
+};
+
+Pairing PairByStamp(const Trajectory& reference, const Trajectory& estimate, const AssociationOptions& options) {
   ValidateAssociationOptions(options);
   if (reference.empty() || estimate.empty()) {
     throw InputError(std::string("association: the ") + (reference.empty() ? "reference" : "estimate") +
                      " trajectory has no poses (reference " + DescribeTimeRange(reference) + ", estimate " +
                      DescribeTimeRange(estimate) + ")");
   }
+  Pairing pairing;
   // evo iterates the trajectory with fewer poses so that none of its poses can be lost.
-  const bool estimate_longer = estimate.size() > reference.size();
-  const Trajectory& shorter = estimate_longer ? reference : estimate;
-  const Trajectory& longer = estimate_longer ? estimate : reference;
+  pairing.estimate_longer = estimate.size() > reference.size();
+  const Trajectory& shorter = pairing.estimate_longer ? reference : estimate;
+  const Trajectory& longer = pairing.estimate_longer ? estimate : reference;
   // The offset belongs to the estimate: shift it forward, or the reference backward.
-  const double shift_s = estimate_longer ? options.t_offset_s : -options.t_offset_s;
+  const double shift_s = pairing.estimate_longer ? options.t_offset_s : -options.t_offset_s;
 
   std::vector<double> shifted_s(longer.stamps_s());
   for (double& stamp : shifted_s) stamp += shift_s;
   const NearestStamp nearest(std::move(shifted_s));
 
-  std::vector<std::size_t> shorter_ids;
-  std::vector<std::size_t> longer_ids;
-  shorter_ids.reserve(shorter.size());
-  longer_ids.reserve(shorter.size());
+  pairing.shorter_ids.reserve(shorter.size());
+  pairing.longer_ids.reserve(shorter.size());
   const std::vector<double>& shorter_stamps = shorter.stamps_s();
   std::size_t cursor = 0;
   for (std::size_t i = 0; i < shorter_stamps.size(); ++i) {
     const NearestStamp::Match match = nearest.Nearest(shorter_stamps[i], cursor);
     if (match.difference_s <= options.t_max_diff_s) {
-      shorter_ids.push_back(i);
-      longer_ids.push_back(match.index);
+      pairing.shorter_ids.push_back(i);
+      pairing.longer_ids.push_back(match.index);
     }
   }
-  if (shorter_ids.empty()) ThrowNoPairs(reference, estimate, options);
+  if (pairing.shorter_ids.empty()) ThrowNoPairs(reference, estimate, options);
 
   std::vector<char> longer_used(longer.size(), 0);
   std::size_t longer_distinct = 0;
-  for (std::size_t index : longer_ids) {
+  for (std::size_t index : pairing.longer_ids) {
     if (!longer_used[index]) {
       longer_used[index] = 1;
       ++longer_distinct;
     }
   }
-  const std::size_t shorter_unpaired = shorter.size() - shorter_ids.size();
-  const std::size_t longer_unpaired = longer.size() - longer_distinct;
+  pairing.shorter_unpaired = shorter.size() - pairing.shorter_ids.size();
+  pairing.longer_unpaired = longer.size() - longer_distinct;
+  return pairing;
+}
 
+/// The association of `pairing` from the paired poses (copies or kept in place, as the caller chose).
+Association Assemble(const Pairing& pairing, Trajectory shorter_paired, Trajectory longer_paired) {
   Association association;
-  Trajectory shorter_paired = shorter.Subset(shorter_ids);
-  Trajectory longer_paired = longer.Subset(longer_ids);
+  const bool estimate_longer = pairing.estimate_longer;
   association.reference = std::move(estimate_longer ? shorter_paired : longer_paired);
   association.estimate = std::move(estimate_longer ? longer_paired : shorter_paired);
-  association.reference_unpaired = estimate_longer ? shorter_unpaired : longer_unpaired;
-  association.estimate_unpaired = estimate_longer ? longer_unpaired : shorter_unpaired;
+  association.reference_unpaired = estimate_longer ? pairing.shorter_unpaired : pairing.longer_unpaired;
+  association.estimate_unpaired = estimate_longer ? pairing.longer_unpaired : pairing.shorter_unpaired;
   return association;
+}
+
+}  // namespace
+
+Association Associate(const Trajectory& reference, const Trajectory& estimate, const AssociationOptions& options) {
+  const Pairing pairing = PairByStamp(reference, estimate, options);
+  const Trajectory& shorter = pairing.estimate_longer ? reference : estimate;
+  const Trajectory& longer = pairing.estimate_longer ? estimate : reference;
+  return Assemble(pairing, shorter.Subset(pairing.shorter_ids), longer.Subset(pairing.longer_ids));
+}
+
+Association Associate(Trajectory&& reference, Trajectory&& estimate, const AssociationOptions& options) {
+  const Pairing pairing = PairByStamp(reference, estimate, options);
+  Trajectory& shorter = pairing.estimate_longer ? reference : estimate;
+  Trajectory& longer = pairing.estimate_longer ? estimate : reference;
+  return Assemble(pairing, std::move(shorter).Select(pairing.shorter_ids), std::move(longer).Select(pairing.longer_ids));
 }
 
 }  // namespace slamsweep::evaluator

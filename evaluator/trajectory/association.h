@@ -46,4 +46,8 @@ struct Association {
 /// both time ranges and suggests a larger --t-max-diff or a --t-offset.
 Association Associate(const Trajectory& reference, const Trajectory& estimate, const AssociationOptions& options);
 
+/// Associate for trajectories the caller gives up: their paired poses stay where they are
+/// (Trajectory::Select) instead of being copied. The same pairs and counts.
+Association Associate(Trajectory&& reference, Trajectory&& estimate, const AssociationOptions& options);
+
 }  // namespace slamsweep::evaluator

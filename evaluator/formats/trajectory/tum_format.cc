@@ -35,26 +35,28 @@ void AddTumRecord(const TextRecord& record, Trajectory& trajectory) {
 
 Trajectory ParseTum(std::string_view content, const std::filesystem::path& source) {
   Trajectory trajectory;
-  trajectory.Reserve(CountLines(content));
-  ForEachDataLine(content, [&](std::string_view line, std::size_t line_number) {
-    // Fast path: eight finite numbers and a valid pose, the same values AddTumRecord would read.
-    std::array<double, 8> v;
-    if (ParseNumberFields(line, v)) {
-      const Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
-      Pose pose;
-      pose.position = {v[1], v[2], v[3]};
-      pose.orientation = q.normalized();
-      if (q.norm() >= 1e-9) {
-        try {
-          trajectory.Add(v[0], pose);
-          return;
-        } catch (const InputError&) {
-          // AddTumRecord below says which check failed, located at this line.
+  trajectory.Reserve(EstimateLineCount(content));
+  ForEachNumberLine<8>(
+      content,
+      [&](const std::array<double, 8>& v, std::string_view line, std::size_t line_number) {
+        // Eight finite numbers: the values AddTumRecord would read, without splitting the line.
+        const Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
+        if (q.norm() >= 1e-9) {
+          Pose pose;
+          pose.position = {v[1], v[2], v[3]};
+          pose.orientation = q.normalized();
+          try {
+            trajectory.Add(v[0], pose);
+            return;
+          } catch (const InputError&) {
+            // AddTumRecord below says which check failed, located at this line.
+          }
         }
-      }
-    }
-    AddTumRecord(TextRecord(source, line_number, SplitFields(line, " \t\r")), trajectory);
-  });
+        AddTumRecord(TextRecord(source, line_number, SplitFields(line, " \t\r")), trajectory);
+      },
+      [&](std::string_view line, std::size_t line_number) {
+        AddTumRecord(TextRecord(source, line_number, SplitFields(line, " \t\r")), trajectory);
+      });
   if (trajectory.empty())
     throw InputError(Located(source, 0, "no poses found (expected TUM lines 'timestamp tx ty tz qx qy qz qw')"));
   return trajectory;

@@ -5,7 +5,14 @@
 #include <zlib.h>
 
 #include <array>
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <random>
+#include <string>
+#include <vector>
 
 #include "evaluator/core/input_error.h"
 #include "tests/support/shared_data.h"
@@ -61,23 +68,69 @@ TEST(TextFileTest, PlainFilesAreReadInPlaceAndProcFilesToo) {
   EXPECT_THAT(std::string(ReadTextFileContent("/proc/self/status").text()), HasSubstr("Name:"));
 }
 
-TEST(TextFileTest, NumberFieldsTakeExactlyTheCountOfFiniteNumbers) {
-  std::array<double, 3> values{};
-  ASSERT_TRUE(ParseNumberFields(" 1.5\t-2e3  0x\r", values) == false);  // "0x" is not a number
-  ASSERT_TRUE(ParseNumberFields(" 1.5\t-2e3  7\r", values));
-  EXPECT_EQ(values, (std::array<double, 3>{1.5, -2000.0, 7.0}));
-  EXPECT_FALSE(ParseNumberFields("1 2", values));
-  EXPECT_FALSE(ParseNumberFields("1 2 3 4", values));
-  EXPECT_FALSE(ParseNumberFields("1 nan 3", values));
-  EXPECT_FALSE(ParseNumberFields("1 2 1e999", values));
-  EXPECT_FALSE(ParseNumberFields("1,2,3", values));
+TEST(TextFileTest, NumberLinesTakeExactlyTheCountOfFiniteNumbersAndPassOnTheRest) {
+  const std::string content =
+      "# header\n"
+      " 1.5\t-2e3  7\r\n"  // numbers, any blanks
+      "\n"
+      "  # indented comment\n"
+      "1 2 0x\n"          // not a number
+      "1 2\n"             // too few
+      "1 2 3 4\n"         // too many
+      "1 nan 3\n"         // not finite
+      "1 2-3 4\n"         // fields must be separated by blanks
+      "4 5 6";            // last line without a newline
+  std::vector<std::pair<std::size_t, std::array<double, 3>>> numbers;
+  std::vector<std::pair<std::size_t, std::string>> others;
+  ForEachNumberLine<3>(
+      content,
+      [&](const std::array<double, 3>& values, std::string_view line, std::size_t line_number) {
+        numbers.emplace_back(line_number, values);
+        EXPECT_EQ(SplitFields(line, " \t\r").size(), 3u) << line;
+      },
+      [&](std::string_view line, std::size_t line_number) { others.emplace_back(line_number, std::string(line)); });
+  ASSERT_EQ(numbers.size(), 2u);
+  EXPECT_EQ(numbers[0], (std::pair<std::size_t, std::array<double, 3>>{2, {1.5, -2000.0, 7.0}}));
+  EXPECT_EQ(numbers[1], (std::pair<std::size_t, std::array<double, 3>>{10, {4.0, 5.0, 6.0}}));
+  const std::vector<std::pair<std::size_t, std::string>> expected_others = {
+      {5, "1 2 0x"}, {6, "1 2"}, {7, "1 2 3 4"}, {8, "1 nan 3"}, {9, "1 2-3 4"}};
+  EXPECT_EQ(others, expected_others);
 }
 
-TEST(TextFileTest, CountLinesCountsALastLineWithoutNewline) {
-  EXPECT_EQ(CountLines(""), 0u);
-  EXPECT_EQ(CountLines("a"), 1u);
-  EXPECT_EQ(CountLines("a\n"), 1u);
-  EXPECT_EQ(CountLines("a\n\nb"), 3u);
+TEST(TextFileTest, QuickNumberReaderAgreesWithFromChars) {
+  // TextRecord::Number's rule (std::from_chars, finite only) is the specification.
+  std::vector<std::string> tokens = {"0", "-0", "0.000", "0e-999", "00012", ".5", "5.", "-.5e3", "1e", "1e+", "1E-3",
+                                     "1e-320", "4.9406564584124654e-324", "1e-400", "-1e-400", "1e308", "1e309",
+                                     "-1e400", "inf", "nan", "+1", "--1", "0x1p3", "1.5x", "123456789012345678901234567890",
+                                     "0.1000000000000000055511151231257827", "2.2250738585072011e-308", "e5", "-", ""};
+  std::mt19937_64 random(3);
+  for (int i = 0; i < 2000; ++i) {
+    const double x = std::ldexp(std::uniform_real_distribution<double>(-1.0, 1.0)(random),
+                                std::uniform_int_distribution<int>(-1070, 1020)(random));
+    std::array<char, 40> buffer{};
+    tokens.emplace_back(buffer.data(), std::to_chars(buffer.data(), buffer.data() + buffer.size(), x).ptr);
+  }
+  for (const std::string& token : tokens) {
+    const char* first = token.data();
+    const char* last = token.data() + token.size();
+    double expected = 0.0;
+    const auto [expected_stop, error] = std::from_chars(first, last, expected);
+    const bool accepted = error == std::errc() && std::isfinite(expected);
+    double actual = 0.0;
+    const char* stop = ReadFiniteNumber(first, last, actual);
+    ASSERT_EQ(stop != nullptr, accepted) << "'" << token << "'";
+    if (!accepted) continue;
+    EXPECT_EQ(stop, expected_stop) << "'" << token << "'";
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(actual), std::bit_cast<std::uint64_t>(expected)) << "'" << token << "'";
+  }
+}
+
+TEST(TextFileTest, LineCountEstimateCoversFilesOfEvenLines) {
+  EXPECT_EQ(EstimateLineCount(""), 0u);
+  std::string content;
+  for (int i = 0; i < 1000; ++i) content += "0.1 0.2 0.3\n";
+  EXPECT_GE(EstimateLineCount(content), 1000u);
+  EXPECT_LE(EstimateLineCount(content), 1400u);
 }
 
 TEST(TextFileTest, MissingFileIsAnInputError) {

@@ -41,6 +41,27 @@ TEST(TrajectoryTest, SubsetShiftAndPlanarity) {
   EXPECT_FALSE(trajectory.IsPlanar());
 }
 
+TEST(TrajectoryTest, SelectMovesIncreasingIndicesDownInPlaceAndCopiesOtherwise) {
+  Trajectory trajectory;
+  for (int i = 0; i < 6; ++i) trajectory.Add(10.0 + i, Pose::Planar(i, 0, 0));
+  const std::vector<std::size_t> increasing = {1, 2, 4, 5};
+  const Trajectory expected = trajectory.Subset(increasing);
+  const Pose* storage = trajectory.poses().data();
+  const Trajectory selected = std::move(trajectory).Select(increasing);
+  EXPECT_EQ(selected.poses().data(), storage);  // no new memory
+  EXPECT_EQ(selected.stamps_s(), expected.stamps_s());
+  ASSERT_EQ(selected.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(selected.poses()[k].position, expected.poses()[k].position);
+
+  Trajectory again;
+  for (int i = 0; i < 3; ++i) again.Add(i, Pose::Planar(i, 0, 0));
+  const std::vector<std::size_t> repeated = {1, 1, 0};
+  const Trajectory copied = std::move(again).Select(repeated);
+  EXPECT_EQ(copied.stamps_s(), (std::vector<double>{1.0, 1.0, 0.0}));
+  const std::vector<std::size_t> outside = {0, 7};
+  EXPECT_THROW(Trajectory(copied).Select(outside), std::out_of_range);
+}
+
 TEST(TrajectoryTest, EmptyTrajectoryHasNoTimeRange) {
   EXPECT_THROW(Trajectory().StartS(), InputError);
   EXPECT_EQ(DescribeTimeRange(Trajectory()), "no poses");

@@ -179,6 +179,15 @@ TEST(AssociationTest, MatchesTheQuadraticOracleOnRandomUnsortedStamps) {
     const Association association = Associate(Indexed(reference_s), Indexed(estimate_s), options);
     ASSERT_EQ(Indices(association.reference), expected.reference) << "round " << round;
     ASSERT_EQ(Indices(association.estimate), expected.estimate) << "round " << round;
+    // Giving the trajectories up (the poses stay in place) pairs the same poses with the same counts.
+    const Trajectory reference = Indexed(reference_s);
+    const Trajectory estimate = Indexed(estimate_s);
+    const Association kept = Associate(Trajectory(reference), Trajectory(estimate), options);
+    ASSERT_EQ(Indices(kept.reference), expected.reference) << "round " << round;
+    ASSERT_EQ(Indices(kept.estimate), expected.estimate) << "round " << round;
+    EXPECT_EQ(kept.reference.stamps_s(), association.reference.stamps_s());
+    EXPECT_EQ(kept.reference_unpaired, association.reference_unpaired);
+    EXPECT_EQ(kept.estimate_unpaired, association.estimate_unpaired);
     ++compared;
   }
   EXPECT_GT(compared, 200);
