@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "cli/command.h"
 #include "cli/text_table.h"
@@ -36,11 +37,11 @@ void RegisterEvalMapCommand(CLI::App& eval, const Streams& streams) {
   command->callback([options, streams] {
     ev::MapReadOptions read_options;
     read_options.unknown_value = options->unknown_value;
-    const ev::OccupancyGrid grid = ev::ReadMap(options->map_path, read_options);
+    ev::OccupancyGrid grid = ev::ReadMap(options->map_path, read_options);
     ev::PaperMetricsOptions metric_options;
     metric_options.canvas.crop = !options->no_crop;
     metric_options.canvas.crop_margin_cells = options->crop_margin_cells;
-    const nlohmann::json j = ev::ComputePaperMetrics(grid, metric_options).ToJson();
+    const nlohmann::json j = ev::ComputePaperMetrics(std::move(grid), metric_options).ToJson();
     if (options->json) {
       streams.out << j.dump() << "\n";
       return;

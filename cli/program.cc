@@ -1,3 +1,4 @@
+#include <malloc.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -53,6 +54,12 @@ void AddHelperCommand(CommandLine& line, const HelperCommand& command, int argc,
 }
 
 }  // namespace
+
+void ReuseFreedMemory() {
+  // Blocks up to 32 MB come from the heap, and up to 256 MB of free heap top is kept.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+}
 
 CLI::App& CommandLine::Eval() {
   if (eval_ == nullptr) {

@@ -56,6 +56,13 @@ struct HelperCommand {
 /// The commands of slamsweep-maps and slamsweep-sweep, as the core lists them.
 std::span<const HelperCommand> HelperCommands();
 
+/// For a process that does one large computation and exits (a map's metrics, one worker run):
+/// memory it frees stays with it for its next allocations instead of going back to the kernel
+/// and being faulted in, page by page, again. glibc's defaults return every freed block above
+/// 128 KB and trim the heap top, which made OpenCV's per-band buffers cost 20 000 page faults on
+/// a 2000 x 2000 map.
+void ReuseFreedMemory();
+
 /// Parses argv with the commands of `own` (in this order) in-process and `helpers` forwarded, and
 /// runs the chosen one. Exit codes as RunCommandLine; a helper that cannot be found or started is
 /// exit 1 with a message naming it and where it was looked for.

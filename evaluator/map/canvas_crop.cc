@@ -39,15 +39,21 @@ CellWindow KnownCellsWindow(const OccupancyGrid& grid, int margin_cells) {
   return CellWindow{col0, row0, col1 - col0 + 1, row1 - row0 + 1};
 }
 
-OccupancyGrid CropGrid(const OccupancyGrid& grid, const CellWindow& window) {
+namespace {
+
+/// Throws unless `window` is non-empty and inside `grid`.
+void CheckWindow(const OccupancyGrid& grid, const CellWindow& window) {
   if (window.width <= 0 || window.height <= 0 || window.col < 0 || window.row < 0 ||
       window.col + window.width > grid.width || window.row + window.height > grid.height) {
     throw InputError("crop window " + std::to_string(window.width) + " x " + std::to_string(window.height) + " at (" +
                      std::to_string(window.col) + ", " + std::to_string(window.row) + ") does not fit the " +
                      std::to_string(grid.width) + " x " + std::to_string(grid.height) + " map");
   }
-  // The origin is the world pose of the lower-left corner; the window's lower-left cell lies
-  // `col` cells right of and `height - row - window.height` cells above the grid's.
+}
+
+/// The origin is the world pose of the lower-left corner; the window's lower-left cell lies
+/// `col` cells right of and `height - row - window.height` cells above the grid's.
+GridOrigin CroppedOrigin(const OccupancyGrid& grid, const CellWindow& window) {
   const double dx = window.col * grid.resolution_m;
   const double dy = (grid.height - window.row - window.height) * grid.resolution_m;
   const double c = std::cos(grid.origin.yaw_rad);
@@ -55,13 +61,36 @@ OccupancyGrid CropGrid(const OccupancyGrid& grid, const CellWindow& window) {
   GridOrigin origin = grid.origin;
   origin.x_m += c * dx - s * dy;
   origin.y_m += s * dx + c * dy;
-  OccupancyGrid cropped(window.width, window.height, grid.resolution_m, origin);
+  return origin;
+}
+
+/// Copies the window's rows to the start of `to`, row after row. In place (to = the grid's own
+/// cells) this is safe: every row lands at or before where it is read, after the rows it follows.
+void CopyWindowRows(const OccupancyGrid& grid, const CellWindow& window, float* to) {
   for (int row = 0; row < window.height; ++row) {
-    const auto source = grid.cells.begin() + static_cast<std::ptrdiff_t>(window.row + row) * grid.width + window.col;
-    std::copy(source, source + window.width,
-              cropped.cells.begin() + static_cast<std::ptrdiff_t>(row) * window.width);
+    const float* source = grid.cells.data() + static_cast<std::ptrdiff_t>(window.row + row) * grid.width + window.col;
+    std::copy(source, source + window.width, to + static_cast<std::ptrdiff_t>(row) * window.width);
   }
+}
+
+}  // namespace
+
+OccupancyGrid CropGrid(const OccupancyGrid& grid, const CellWindow& window) {
+  CheckWindow(grid, window);
+  OccupancyGrid cropped(window.width, window.height, grid.resolution_m, CroppedOrigin(grid, window));
+  CopyWindowRows(grid, window, cropped.cells.data());
   return cropped;
+}
+
+OccupancyGrid CropGrid(OccupancyGrid&& grid, const CellWindow& window) {
+  CheckWindow(grid, window);
+  const GridOrigin origin = CroppedOrigin(grid, window);
+  CopyWindowRows(grid, window, grid.cells.data());
+  grid.cells.resize(static_cast<std::size_t>(window.width) * static_cast<std::size_t>(window.height));
+  grid.width = window.width;
+  grid.height = window.height;
+  grid.origin = origin;
+  return std::move(grid);
 }
 
 }  // namespace slamsweep::evaluator

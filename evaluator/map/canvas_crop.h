@@ -24,5 +24,7 @@ CellWindow KnownCellsWindow(const OccupancyGrid& grid, int margin_cells);
 /// stays where it was in the world (origin yaw included). Throws InputError when the window is
 /// empty or leaves the grid.
 OccupancyGrid CropGrid(const OccupancyGrid& grid, const CellWindow& window);
+/// CropGrid of a grid that is no longer needed: the kept cells move up in place, without new memory.
+OccupancyGrid CropGrid(OccupancyGrid&& grid, const CellWindow& window);
 
 }  // namespace slamsweep::evaluator

@@ -21,7 +21,10 @@ void Validate(const PaperMetricsOptions& options) {
   Validate(options.enclosed);
 }
 
-PaperMetrics ComputePaperMetrics(const OccupancyGrid& grid, const PaperMetricsOptions& options) {
+namespace {
+
+/// The metrics before the three scores: options checked, the sizes and the crop window.
+PaperMetrics Frame(const OccupancyGrid& grid, const PaperMetricsOptions& options) {
   Validate(options);
   PaperMetrics metrics;
   metrics.options = options;
@@ -29,13 +32,35 @@ PaperMetrics ComputePaperMetrics(const OccupancyGrid& grid, const PaperMetricsOp
   metrics.height = grid.height;
   metrics.window = CellWindow{0, 0, grid.width, grid.height};
   if (options.canvas.crop) metrics.window = KnownCellsWindow(grid, options.canvas.crop_margin_cells);
+  return metrics;
+}
+
+bool Crops(const PaperMetrics& metrics) { return metrics.window != CellWindow{0, 0, metrics.width, metrics.height}; }
+
+void Score(const OccupancyGrid& scored, PaperMetrics& metrics) {
+  const ScorableGrid scorable = ScorableGrid::Check(scored);  // one check for the three metrics
+  metrics.occupied = ComputeOccupiedProportion(scorable, metrics.options.occupied);
+  metrics.corners = ComputeCornerCount(scorable, metrics.options.corners);
+  metrics.enclosed = ComputeEnclosedAreas(scorable, metrics.options.enclosed);
+}
+
+}  // namespace
+
+PaperMetrics ComputePaperMetrics(const OccupancyGrid& grid, const PaperMetricsOptions& options) {
+  PaperMetrics metrics = Frame(grid, options);
   // Copied only when the crop removes something: the metrics' memory budget is a few grids.
-  const bool cropped = metrics.window != CellWindow{0, 0, grid.width, grid.height};
-  const OccupancyGrid cropped_grid = cropped ? CropGrid(grid, metrics.window) : OccupancyGrid();
-  const ScorableGrid scorable = ScorableGrid::Check(cropped ? cropped_grid : grid);  // one check for the three metrics
-  metrics.occupied = ComputeOccupiedProportion(scorable, options.occupied);
-  metrics.corners = ComputeCornerCount(scorable, options.corners);
-  metrics.enclosed = ComputeEnclosedAreas(scorable, options.enclosed);
+  if (Crops(metrics)) {
+    Score(CropGrid(grid, metrics.window), metrics);
+  } else {
+    Score(grid, metrics);
+  }
+  return metrics;
+}
+
+PaperMetrics ComputePaperMetrics(OccupancyGrid&& grid, const PaperMetricsOptions& options) {
+  PaperMetrics metrics = Frame(grid, options);
+  if (Crops(metrics)) grid = CropGrid(std::move(grid), metrics.window);
+  Score(grid, metrics);
   return metrics;
 }
 

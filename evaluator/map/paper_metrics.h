@@ -58,5 +58,7 @@ struct PaperMetrics {
 /// grid, a cell that is not a probability, or a map with no known cell ("map has no known
 /// cell: nothing to score").
 PaperMetrics ComputePaperMetrics(const OccupancyGrid& grid, const PaperMetricsOptions& options = {});
+/// The same for a grid the caller gives up: it is cropped in place instead of copied.
+PaperMetrics ComputePaperMetrics(OccupancyGrid&& grid, const PaperMetricsOptions& options = {});
 
 }  // namespace slamsweep::evaluator

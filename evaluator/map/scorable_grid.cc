@@ -1,5 +1,6 @@
 #include "evaluator/map/scorable_grid.h"
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -7,6 +8,10 @@
 #include <string>
 
 #include "evaluator/core/input_error.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace slamsweep::evaluator {
 namespace {
@@ -49,9 +54,39 @@ ScorableGrid ScorableGrid::Check(const OccupancyGrid& grid) {
   const std::size_t n = grid.cells.size();
   const float* cells = grid.cells.data();
   std::size_t i = 0;
+#if defined(__SSE2__)
+  // The same four accumulators as two SSE2 registers (partial 0 and 1, 2 and 3): the same adds in
+  // the same order, four cells per step; counts in 32-bit lanes, flushed before they could overflow.
+  __m128d sum01 = _mm_setzero_pd();
+  __m128d sum23 = _mm_setzero_pd();
+  const __m128 zero = _mm_setzero_ps();
+  const __m128 one = _mm_set1_ps(1.0f);
+  while (i + 4 <= n) {
+    __m128i in_range_lanes = _mm_setzero_si128();
+    __m128i unknown_lanes = _mm_setzero_si128();
+    const std::size_t block_end = std::min(n - n % 4, i + (std::size_t{1} << 28));
+    for (; i < block_end; i += 4) {
+      const __m128 p = _mm_loadu_ps(cells + i);
+      const __m128 known = _mm_cmpge_ps(p, zero);  // false for NaN, as p >= 0.0f
+      in_range_lanes = _mm_sub_epi32(in_range_lanes, _mm_castps_si128(_mm_and_ps(known, _mm_cmple_ps(p, one))));
+      unknown_lanes = _mm_sub_epi32(unknown_lanes, _mm_castps_si128(_mm_cmplt_ps(p, zero)));
+      const __m128 kept = _mm_and_ps(p, known);
+      sum01 = _mm_add_pd(sum01, _mm_cvtps_pd(kept));
+      sum23 = _mm_add_pd(sum23, _mm_cvtps_pd(_mm_movehl_ps(kept, kept)));
+    }
+    alignas(16) std::int32_t lanes[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(lanes), in_range_lanes);
+    in_range += std::int64_t{lanes[0]} + lanes[1] + lanes[2] + lanes[3];
+    _mm_store_si128(reinterpret_cast<__m128i*>(lanes), unknown_lanes);
+    unknown += std::int64_t{lanes[0]} + lanes[1] + lanes[2] + lanes[3];
+  }
+  _mm_storeu_pd(partial, sum01);
+  _mm_storeu_pd(partial + 2, sum23);
+#else
   for (; i + 4 <= n; i += 4) {
     for (int k = 0; k < 4; ++k) partial[k] += count(cells[i + k]);
   }
+#endif
   for (; i < n; ++i) partial[0] += count(cells[i]);
   const std::int64_t known = in_range;
   if (in_range + unknown != static_cast<std::int64_t>(grid.cells.size())) {

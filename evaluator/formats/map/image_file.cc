@@ -37,11 +37,7 @@ std::string_view OtherImageKind(std::string_view bytes) {
   return {};
 }
 
-}  // namespace
-
-cv::Mat ReadImageFile(const std::filesystem::path& path) {
-  const MappedFile file = ReadBytes(path);
-  const std::string_view bytes = file.bytes();
+cv::Mat DecodeImage(std::string_view bytes, const std::filesystem::path& path) {
   if (bytes.empty()) throw InputError(Located(path, 0, "empty file; expected a PGM or PNG image"));
   if (LooksLikePnm(bytes)) return DecodePnm(bytes, path);
   if (LooksLikePng(bytes)) {
@@ -55,6 +51,22 @@ cv::Mat ReadImageFile(const std::filesystem::path& path) {
     throw InputError(Located(path, 0, fmt::format("{}; slamsweep reads PGM and PNG maps (convert it to PNG)", kind)));
   }
   throw InputError(Located(path, 0, "not a readable image, or a truncated/corrupt one (expected a PGM or PNG map)"));
+}
+
+}  // namespace
+
+cv::Mat ReadImageFile(const std::filesystem::path& path) {
+  const MappedFile file = ReadBytes(path);
+  return DecodeImage(file.bytes(), path);
+}
+
+void WithImageFile(const std::filesystem::path& path, const std::function<void(const cv::Mat&)>& use) {
+  const MappedFile file = ReadBytes(path);
+  if (const std::optional<cv::Mat> view = BinaryGreyPnmView(file.bytes(), path)) {
+    use(*view);
+    return;
+  }
+  use(DecodeImage(file.bytes(), path));
 }
 
 cv::Mat ReadGreyImageFile(const std::filesystem::path& path) {

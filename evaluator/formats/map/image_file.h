@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <opencv2/core/mat.hpp>
 #include <string>
 #include <string_view>
@@ -14,6 +15,10 @@ namespace slamsweep::evaluator {
 /// not a PGM/PPM or PNG (naming BMP, JPEG, TIFF and GIF files as such), truncated or corrupt, or
 /// holds 16-bit samples.
 cv::Mat ReadImageFile(const std::filesystem::path& path);
+
+/// Calls use(image) with the image ReadImageFile returns; a binary PGM with maxval 255 is handed
+/// over where the file is mapped, without decoding it into a copy. Errors as ReadImageFile.
+void WithImageFile(const std::filesystem::path& path, const std::function<void(const cv::Mat&)>& use);
 
 /// ReadImageFile for formats whose pixels are grey levels (MRPT bitmaps, bare maps): CV_8UC1.
 /// An RGB or RGBA file is accepted when every pixel has R = G = B and is opaque (a grey map

@@ -106,7 +106,9 @@ OccupancyGrid ReadMapServer(const std::filesystem::path& yaml_path) {
     throw InputError(Located(yaml_path, metadata.image_line,
                              fmt::format("field 'image': image file '{}' not found", metadata.image.string())));
   }
-  return MapServerGridFromImage(ReadImageFile(metadata.image), metadata);
+  OccupancyGrid grid;
+  WithImageFile(metadata.image, [&](const cv::Mat& image) { grid = MapServerGridFromImage(image, metadata); });
+  return grid;
 }
 
 void WriteMapServer(const OccupancyGrid& grid, const std::filesystem::path& yaml_path, const MapWriteOptions& options) {

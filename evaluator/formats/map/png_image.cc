@@ -3,7 +3,9 @@
 #include <png.h>
 #include <zlib.h>
 
+#include <array>
 #include <csetjmp>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -73,6 +75,44 @@ int ChannelsFor(png_structp png, png_infop info, int color_type) {
     default:
       return 1;
   }
+}
+
+/// Which grey levels `grey` holds. Maps are long runs of one level: eight pixels equal to the last
+/// level seen are passed over at once.
+std::array<bool, 256> GreyLevelsPresent(const cv::Mat& grey) {
+  std::array<bool, 256> present{};
+  for (int row = 0; row < grey.rows; ++row) {
+    const std::uint8_t* pixels = grey.ptr<std::uint8_t>(row);
+    std::uint8_t last = pixels[0];
+    present[last] = true;
+    int col = 0;
+    for (; col + 8 <= grey.cols; col += 8) {
+      std::uint64_t eight = 0;
+      std::memcpy(&eight, pixels + col, sizeof(eight));
+      if (eight == last * 0x0101010101010101ull) continue;
+      for (int k = 0; k < 8; ++k) present[pixels[col + k]] = true;
+      last = pixels[col + 7];
+    }
+    for (; col < grey.cols; ++col) present[pixels[col]] = true;
+  }
+  return present;
+}
+
+/// One row of palette indices packed kBits to a pixel, the first pixel in the highest bits.
+template <int kBits>
+void PackRow(const std::uint8_t* pixels, int width, const std::array<std::uint8_t, 256>& index_of, png_byte* out) {
+  constexpr int kPerByte = 8 / kBits;
+  int col = 0;
+  for (; col + kPerByte <= width; col += kPerByte) {
+    unsigned byte = 0;
+    for (int k = 0; k < kPerByte; ++k) byte = (byte << kBits) | index_of[pixels[col + k]];
+    *out++ = static_cast<png_byte>(byte);
+  }
+  if (col == width) return;
+  unsigned byte = 0;
+  int k = 0;
+  for (; col < width; ++col, ++k) byte = (byte << kBits) | index_of[pixels[col]];
+  *out = static_cast<png_byte>(byte << (kBits * (kPerByte - k)));
 }
 
 }  // namespace
@@ -166,6 +206,65 @@ std::string EncodePngBytes(const cv::Mat& image) {
   png_destroy_write_struct(&png, &info);
   if (!written) throw InputError("PNG encoding failed: " + errors.message);
   return out;
+}
+
+std::string EncodeGreyPalettePng(const cv::Mat& grey) {
+  if (grey.type() != CV_8UC1 || grey.empty()) {
+    throw InputError("PNG encoding: expected a non-empty 8-bit single-channel image for a grey palette");
+  }
+  const std::array<bool, 256> present = GreyLevelsPresent(grey);
+  std::array<std::uint8_t, 256> index_of{};
+  std::vector<png_color> palette;
+  for (int level = 0; level < 256; ++level) {
+    if (!present[static_cast<std::size_t>(level)]) continue;
+    index_of[static_cast<std::size_t>(level)] = static_cast<std::uint8_t>(palette.size());
+    const auto value = static_cast<png_byte>(level);
+    palette.push_back(png_color{value, value, value});
+  }
+  const int bit_depth = palette.size() <= 2 ? 1 : palette.size() <= 4 ? 2 : palette.size() <= 16 ? 4 : 8;
+  const std::size_t row_bytes =
+      (static_cast<std::size_t>(grey.cols) * static_cast<std::size_t>(bit_depth) + 7) / 8;
+  std::vector<png_byte> packed(row_bytes * static_cast<std::size_t>(grey.rows));
+  std::vector<png_bytep> rows(static_cast<std::size_t>(grey.rows));
+  for (int row = 0; row < grey.rows; ++row) {
+    png_byte* out = packed.data() + static_cast<std::size_t>(row) * row_bytes;
+    rows[static_cast<std::size_t>(row)] = out;
+    const std::uint8_t* pixels = grey.ptr<std::uint8_t>(row);
+    switch (bit_depth) {
+      case 1:
+        PackRow<1>(pixels, grey.cols, index_of, out);
+        break;
+      case 2:
+        PackRow<2>(pixels, grey.cols, index_of, out);
+        break;
+      case 4:
+        PackRow<4>(pixels, grey.cols, index_of, out);
+        break;
+      default:
+        PackRow<8>(pixels, grey.cols, index_of, out);
+    }
+  }
+  PngErrors errors;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &errors, OnPngError, OnPngWarning);
+  if (png == nullptr) throw InputError("PNG encoding failed (out of memory?)");
+  png_infop info = png_create_info_struct(png);
+  std::string encoded;
+  const bool written = info != nullptr && RunPngStep(png, [&] {
+    png_set_write_fn(png, &encoded, AppendToString, FlushNothing);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
+    png_set_compression_level(png, Z_BEST_SPEED);
+    png_set_compression_strategy(png, Z_RLE);
+    png_set_IHDR(png, info, static_cast<png_uint_32>(grey.cols), static_cast<png_uint_32>(grey.rows), bit_depth,
+                 PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_PLTE(png, info, palette.data(), static_cast<int>(palette.size()));
+    png_set_check_for_invalid_index(png, 0);  // every index is below the palette size by construction
+    png_write_info(png, info);
+    png_write_image(png, rows.data());
+    png_write_end(png, info);
+  });
+  png_destroy_write_struct(&png, &info);
+  if (!written) throw InputError("PNG encoding failed: " + errors.message);
+  return encoded;
 }
 
 }  // namespace slamsweep::evaluator

@@ -24,4 +24,12 @@ cv::Mat DecodePng(std::string_view bytes, const std::filesystem::path& source);
 /// run-length strategy, no interlacing. Throws InputError for other depths or channel counts.
 std::string EncodePngBytes(const cv::Mat& image);
 
+/// A CV_8UC1 image of few grey levels as a palette PNG: the levels in ascending order as the
+/// palette's grey colours, at the smallest bit depth that holds them (1, 2, 4 or 8 bits), filter
+/// None, zlib level 1, run-length strategy. It decodes (DecodePng, ReadGreyImageFile) to the same
+/// grey values as EncodePngBytes' 8-bit grey PNG, from a quarter of the bytes for a trinary map,
+/// which is what makes it quick to write. Not for map_server images: map_server reads the palette
+/// indices of a palette image, not its colours. Throws InputError for another image type.
+std::string EncodeGreyPalettePng(const cv::Mat& grey);
+
 }  // namespace slamsweep::evaluator

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <optional>
 
 #include "evaluator/core/input_error.h"
 
@@ -70,8 +72,20 @@ bool LooksLikePnm(std::string_view bytes) {
   return bytes.size() >= 2 && bytes[0] == 'P' && bytes[1] >= '1' && bytes[1] <= '7';
 }
 
-cv::Mat DecodePnm(std::string_view bytes, const std::filesystem::path& source) {
-  PnmReader reader(bytes, source);
+namespace {
+
+/// A PNM file's header, checked: what its pixel data holds and where it starts.
+struct PnmLayout {
+  bool ascii = false;
+  int channels = 1;
+  long long width = 0;
+  long long height = 0;
+  long long maxval = 0;
+  unsigned long long samples = 0;
+  std::string_view data;  // after the header
+};
+
+PnmLayout ReadPnmLayout(PnmReader& reader, std::string_view bytes) {
   if (!LooksLikePnm(bytes)) {
     reader.Fail("expected the magic number P2, P3, P5 or P6 at the start of the file");
   }
@@ -80,53 +94,79 @@ cv::Mat DecodePnm(std::string_view bytes, const std::filesystem::path& source) {
     reader.Fail("bitmap (PBM) files are not supported; expected an 8-bit PGM (P5) or PPM (P6)");
   }
   if (kind == '7') reader.Fail("PAM (P7) files are not supported; expected an 8-bit PGM (P5) or PPM (P6)");
-  const bool ascii = kind == '2' || kind == '3';
-  const int channels = (kind == '3' || kind == '6') ? 3 : 1;
+  PnmLayout layout;
+  layout.ascii = kind == '2' || kind == '3';
+  layout.channels = (kind == '3' || kind == '6') ? 3 : 1;
 
-  const long long width = reader.Number("width");
-  const long long height = reader.Number("height");
-  if (width <= 0 || height <= 0)
-    reader.Fail(fmt::format("image size {} x {}; expected a positive size", width, height));
-  const long long maxval = reader.Number("maxval");
-  if (maxval > 255) {
-    reader.Fail(
-        fmt::format("16-bit image (maxval {}); expected 8-bit samples (maxval <= 255), as map_server reads", maxval));
+  layout.width = reader.Number("width");
+  layout.height = reader.Number("height");
+  if (layout.width <= 0 || layout.height <= 0)
+    reader.Fail(fmt::format("image size {} x {}; expected a positive size", layout.width, layout.height));
+  layout.maxval = reader.Number("maxval");
+  if (layout.maxval > 255) {
+    reader.Fail(fmt::format("16-bit image (maxval {}); expected 8-bit samples (maxval <= 255), as map_server reads",
+                            layout.maxval));
   }
-  if (maxval <= 0) reader.Fail("maxval 0; expected 1..255");
+  if (layout.maxval <= 0) reader.Fail("maxval 0; expected 1..255");
 
-  const unsigned long long samples = static_cast<unsigned long long>(width) * static_cast<unsigned long long>(height) *
-                                     static_cast<unsigned long long>(channels);
-  if (samples > static_cast<unsigned long long>(std::numeric_limits<int>::max())) {
-    reader.Fail(fmt::format("image size {} x {} is too large", width, height));
+  layout.samples = static_cast<unsigned long long>(layout.width) * static_cast<unsigned long long>(layout.height) *
+                   static_cast<unsigned long long>(layout.channels);
+  if (layout.samples > static_cast<unsigned long long>(std::numeric_limits<int>::max())) {
+    reader.Fail(fmt::format("image size {} x {} is too large", layout.width, layout.height));
   }
-  if (!ascii) reader.HeaderEnd();
+  if (!layout.ascii) reader.HeaderEnd();
   // Every sample takes at least one byte, so a short file is reported before allocating for it.
-  if (reader.Rest().size() < samples) {
+  if (reader.Rest().size() < layout.samples) {
     reader.Fail(
         fmt::format("pixel data truncated: the header announces {} x {} pixels x {} channel(s) = {} samples, "
                     "the file holds {} bytes after the header",
-                    width, height, channels, samples, reader.Rest().size()));
+                    layout.width, layout.height, layout.channels, layout.samples, reader.Rest().size()));
   }
+  layout.data = reader.Rest();
+  return layout;
+}
 
-  cv::Mat image(static_cast<int>(height), static_cast<int>(width), channels == 1 ? CV_8UC1 : CV_8UC3);
+}  // namespace
+
+cv::Mat DecodePnm(std::string_view bytes, const std::filesystem::path& source) {
+  PnmReader reader(bytes, source);
+  const PnmLayout layout = ReadPnmLayout(reader, bytes);
+  const long long maxval = layout.maxval;
+  const int channels = layout.channels;
+  const unsigned long long samples = layout.samples;
+  cv::Mat image(static_cast<int>(layout.height), static_cast<int>(layout.width), channels == 1 ? CV_8UC1 : CV_8UC3);
   std::uint8_t* out = image.ptr<std::uint8_t>();  // freshly allocated, hence continuous
-  const std::string_view data = reader.Rest();
+  const std::string_view data = layout.data;
+  if (!layout.ascii && maxval == 255) {
+    // Every byte is a sample within maxval and is kept as it is.
+    std::memcpy(out, data.data(), samples);
+    return image;
+  }
   for (unsigned long long i = 0; i < samples; ++i) {
     long long value = 0;
-    if (ascii) {
+    if (layout.ascii) {
       value = reader.Number("pixel data");
     } else {
       value = static_cast<unsigned char>(data[i]);
     }
     if (value > maxval) {
       reader.Fail(fmt::format("sample {} (pixel row {}, column {}) is {}, above maxval {}", i + 1,
-                              i / channels / static_cast<unsigned long long>(width),
-                              i / channels % static_cast<unsigned long long>(width), value, maxval));
+                              i / channels / static_cast<unsigned long long>(layout.width),
+                              i / channels % static_cast<unsigned long long>(layout.width), value, maxval));
     }
     // SDL_image stretches a smaller range to 0..255 with integer arithmetic.
     out[i] = static_cast<std::uint8_t>(maxval < 255 ? value * 255 / maxval : value);
   }
   return image;
+}
+
+std::optional<cv::Mat> BinaryGreyPnmView(std::string_view bytes, const std::filesystem::path& source) {
+  if (bytes.size() < 2 || bytes[0] != 'P' || bytes[1] != '5') return std::nullopt;
+  PnmReader reader(bytes, source);
+  const PnmLayout layout = ReadPnmLayout(reader, bytes);
+  if (layout.maxval != 255) return std::nullopt;
+  return cv::Mat(static_cast<int>(layout.height), static_cast<int>(layout.width), CV_8UC1,
+                 const_cast<char*>(layout.data.data()));
 }
 
 std::string EncodePgm(const cv::Mat& grey, std::string_view comment) {

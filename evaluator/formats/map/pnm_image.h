@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <opencv2/core/mat.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -18,6 +19,11 @@ bool LooksLikePnm(std::string_view bytes);
 /// map_server would misread as near-black grey levels), samples above maxval, a bad header and
 /// pixel data shorter than width x height says (a truncated file).
 cv::Mat DecodePnm(std::string_view bytes, const std::filesystem::path& source);
+
+/// For a binary PGM (P5) with maxval 255, whose bytes are its pixels: DecodePnm's image as a
+/// CV_8UC1 header over `bytes` (valid while they are), without a copy; nothing for other files.
+/// Throws as DecodePnm does for a bad header or truncated data.
+std::optional<cv::Mat> BinaryGreyPnmView(std::string_view bytes, const std::filesystem::path& source);
 
 /// A binary PGM (P5) of a CV_8UC1 image with one `# comment` line in the header, the
 /// layout map_saver writes.

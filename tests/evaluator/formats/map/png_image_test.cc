@@ -179,10 +179,42 @@ TEST(PngImageTest, SixteenBitSamplesAreRefused) {
   EXPECT_THAT(InputErrorOf([&] { DecodePng(WritePng(deep), "deep.png"); }), HasSubstr("16-bit samples"));
 }
 
+TEST(PngImageTest, GreyPaletteDecodesToTheSameGreyLevelsAtTheSmallestDepth) {
+  std::mt19937 random(11);
+  // Two, three (a trinary stage map), sixteen and 200 levels; odd widths end rows mid-byte.
+  const std::vector<std::vector<std::uint8_t>> level_sets = {
+      {0, 254}, {0, 205, 254}, {0, 17, 34, 51, 68, 85, 102, 119, 136, 153, 170, 187, 204, 221, 238, 255}, {}};
+  const std::vector<int> expected_depths = {1, 2, 4, 8};
+  for (std::size_t set = 0; set < level_sets.size(); ++set) {
+    for (const cv::Size size : {cv::Size(1, 1), cv::Size(37, 19), cv::Size(803, 5)}) {
+      cv::Mat grey(size, CV_8UC1);
+      for (int row = 0; row < grey.rows; ++row) {
+        for (int col = 0; col < grey.cols; ++col) {
+          const std::vector<std::uint8_t>& levels = level_sets[set];
+          grey.at<std::uint8_t>(row, col) = levels.empty() ? static_cast<std::uint8_t>(random() % 200)
+                                                           : levels[random() % levels.size()];
+        }
+      }
+      const std::string bytes = EncodeGreyPalettePng(grey);
+      // OpenCV's reader, independent of this codec, gives the grey values back (as B = G = R).
+      cv::Mat read_back = OpenCvRgb(bytes);
+      ASSERT_EQ(read_back.type(), CV_8UC3);
+      cv::Mat channels[3];
+      cv::split(read_back, channels);
+      for (const cv::Mat& channel : channels) ExpectSamePixels(channel, grey);
+      ExpectSamePixels(DecodePng(bytes, "palette.png"), read_back);
+      if (size.area() > 256) {
+        EXPECT_EQ(static_cast<int>(bytes[24]), expected_depths[set]) << "IHDR bit depth";
+      }
+    }
+  }
+}
+
 TEST(PngImageTest, EncoderRefusesWhatPngCannotHold) {
   EXPECT_THROW(EncodePngBytes(cv::Mat(2, 2, CV_16UC1, cv::Scalar(1))), InputError);
   EXPECT_THROW(EncodePngBytes(cv::Mat(2, 2, CV_8UC2, cv::Scalar(1, 2))), InputError);
   EXPECT_THROW(EncodePngBytes(cv::Mat()), InputError);
+  EXPECT_THROW(EncodeGreyPalettePng(cv::Mat(2, 2, CV_8UC3, cv::Scalar(1, 2, 3))), InputError);
 }
 
 }  // namespace
