@@ -3,6 +3,7 @@
 #include <string>
 
 #include "cli/command.h"
+#include "cli/program.h"
 #include "orchestrator/worker/worker.h"
 
 namespace slamsweep::cli {
@@ -15,7 +16,10 @@ void RegisterWorkerCommand(CLI::App& app, const Streams& /*streams*/, int& exit_
   command->add_option("RUN_DIR", *run_dir, "run folder holding run.json")->required();
   // The worker's exit code is its whole interface to the supervisor (0 result written, 2 bad
   // run.json, 130 interrupted); RunWorker prints its own message on stderr.
-  command->callback([run_dir, &exit_code] { exit_code = orchestrator::RunWorker(*run_dir); });
+  command->callback([run_dir, &exit_code] {
+    ReuseFreedMemory();  // one run, then exit
+    exit_code = orchestrator::RunWorker(*run_dir);
+  });
 }
 
 }  // namespace slamsweep::cli

@@ -8,6 +8,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/map/image_file.h"
 #include "evaluator/formats/map/map_server_format.h"
+#include "evaluator/formats/map/png_image.h"
 #include "evaluator/formats/trajectory/output_file.h"
 #include "evaluator/formats/trajectory/tum_format.h"
 
@@ -35,7 +36,7 @@ nlohmann::json WriteRunOutputs(const RunPaths& paths, const CollectedOutputs& co
   for (std::size_t i = 0; i < collected.stages.size(); ++i) {
     char name[32];
     std::snprintf(name, sizeof(name), "stage_%04zu.png", i);
-    ev::WriteBinaryFile(paths.StagesDir() / name, ev::EncodePng(collected.stages[i]));
+    ev::WriteBinaryFile(paths.StagesDir() / name, ev::EncodeGreyPalettePng(collected.stages[i]));
     stages.push_back("stages/" + std::string(name));
   }
   outputs["stages"] = stages;
