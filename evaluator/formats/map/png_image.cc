@@ -3,6 +3,7 @@
 #include <png.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <array>
 #include <csetjmp>
 #include <cstdint>
@@ -11,6 +12,10 @@
 #include <vector>
 
 #include "evaluator/core/input_error.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace slamsweep::evaluator {
 namespace {
@@ -77,8 +82,8 @@ int ChannelsFor(png_structp png, png_infop info, int color_type) {
   }
 }
 
-/// Which grey levels `grey` holds. Maps are long runs of one level: eight pixels equal to the last
-/// level seen are passed over at once.
+/// Which grey levels `grey` holds. Maps are long runs of one level: sixteen pixels equal to the
+/// last level seen are passed over at once.
 std::array<bool, 256> GreyLevelsPresent(const cv::Mat& grey) {
   std::array<bool, 256> present{};
   for (int row = 0; row < grey.rows; ++row) {
@@ -86,17 +91,55 @@ std::array<bool, 256> GreyLevelsPresent(const cv::Mat& grey) {
     std::uint8_t last = pixels[0];
     present[last] = true;
     int col = 0;
-    for (; col + 8 <= grey.cols; col += 8) {
-      std::uint64_t eight = 0;
-      std::memcpy(&eight, pixels + col, sizeof(eight));
-      if (eight == last * 0x0101010101010101ull) continue;
-      for (int k = 0; k < 8; ++k) present[pixels[col + k]] = true;
-      last = pixels[col + 7];
+#if defined(__SSE2__)
+    for (; col + 16 <= grey.cols; col += 16) {
+      const __m128i sixteen = _mm_loadu_si128(reinterpret_cast<const __m128i*>(pixels + col));
+      if (_mm_movemask_epi8(_mm_cmpeq_epi8(sixteen, _mm_set1_epi8(static_cast<char>(last)))) == 0xFFFF) continue;
+      for (int k = 0; k < 16; ++k) present[pixels[col + k]] = true;
+      last = pixels[col + 15];
     }
+#endif
     for (; col < grey.cols; ++col) present[pixels[col]] = true;
   }
   return present;
 }
+
+#if defined(__SSE2__)
+/// PackRow<2> for up to four levels, sixty-four pixels per step: each pixel's index from three
+/// byte compares, then four indices per byte by shifts within each 32-bit lane.
+int PackTwoBitRowQuick(const std::uint8_t* pixels, int width, const std::vector<png_color>& palette, png_byte* out) {
+  // A palette of fewer than four levels compares the missing ones with a grey it does not hold.
+  int absent = 0;
+  while (std::any_of(palette.begin(), palette.end(), [&](const png_color& c) { return c.red == absent; })) ++absent;
+  const auto level = [&](std::size_t k) {
+    return _mm_set1_epi8(static_cast<char>(k < palette.size() ? palette[k].red : absent));
+  };
+  const __m128i level1 = level(1);
+  const __m128i level2 = level(2);
+  const __m128i level3 = level(3);
+  const __m128i two_bits = _mm_set1_epi32(0x03);
+  int col = 0;
+  for (; col + 64 <= width; col += 64) {
+    __m128i lanes[4];
+    for (int k = 0; k < 4; ++k) {
+      const __m128i p = _mm_loadu_si128(reinterpret_cast<const __m128i*>(pixels + col + 16 * k));
+      // The levels differ, so at most one compare holds: index 1, 2 or 3 (0 when none does).
+      const __m128i index = _mm_or_si128(_mm_or_si128(_mm_and_si128(_mm_cmpeq_epi8(p, level1), _mm_set1_epi8(1)),
+                                                      _mm_and_si128(_mm_cmpeq_epi8(p, level2), _mm_set1_epi8(2))),
+                                         _mm_and_si128(_mm_cmpeq_epi8(p, level3), _mm_set1_epi8(3)));
+      // Lane bytes b0 b1 b2 b3 (b0 lowest) -> b0 << 6 | b1 << 4 | b2 << 2 | b3.
+      lanes[k] = _mm_or_si128(
+          _mm_or_si128(_mm_slli_epi32(_mm_and_si128(index, two_bits), 6),
+                       _mm_slli_epi32(_mm_and_si128(_mm_srli_epi32(index, 8), two_bits), 4)),
+          _mm_or_si128(_mm_slli_epi32(_mm_and_si128(_mm_srli_epi32(index, 16), two_bits), 2),
+                       _mm_and_si128(_mm_srli_epi32(index, 24), two_bits)));
+    }
+    const __m128i bytes = _mm_packus_epi16(_mm_packs_epi32(lanes[0], lanes[1]), _mm_packs_epi32(lanes[2], lanes[3]));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + col / 4), bytes);
+  }
+  return col;
+}
+#endif
 
 /// One row of palette indices packed kBits to a pixel, the first pixel in the highest bits.
 template <int kBits>
@@ -234,9 +277,14 @@ std::string EncodeGreyPalettePng(const cv::Mat& grey) {
       case 1:
         PackRow<1>(pixels, grey.cols, index_of, out);
         break;
-      case 2:
-        PackRow<2>(pixels, grey.cols, index_of, out);
+      case 2: {
+        int done = 0;
+#if defined(__SSE2__)
+        done = PackTwoBitRowQuick(pixels, grey.cols, palette, out);
+#endif
+        PackRow<2>(pixels + done, grey.cols - done, index_of, out + done / 4);
         break;
+      }
       case 4:
         PackRow<4>(pixels, grey.cols, index_of, out);
         break;
