@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #if defined(__SSE2__)
@@ -109,13 +110,15 @@ CornerCount ComputeCornerCount(const OccupancyGrid& grid, const CornerCountOptio
   return ComputeCornerCount(ScorableGrid::Check(grid), options);
 }
 
-CornerCount ComputeCornerCount(const ScorableGrid& scorable, const CornerCountOptions& options) {
-  Validate(options);
-  CornerCount result;
+namespace {
 
-  LaplacianOfGaussianImage laplacian = LaplacianOfGaussian(
-      scorable.grid(),
-      {options.gaussian_kernel_cells, options.gaussian_sigma_cells, options.laplacian_kernel_cells});
+LaplacianOfGaussianOptions LaplacianOptions(const CornerCountOptions& options) {
+  return {options.gaussian_kernel_cells, options.gaussian_sigma_cells, options.laplacian_kernel_cells};
+}
+
+/// The count from the structure image (which it changes).
+CornerCount CountCorners(LaplacianOfGaussianImage& laplacian, const CornerCountOptions& options) {
+  CornerCount result;
   cv::Mat& log = laplacian.image;
   const float max_abs = laplacian.max_abs;
   result.max_abs_log = max_abs;
@@ -143,6 +146,21 @@ CornerCount ComputeCornerCount(const ScorableGrid& scorable, const CornerCountOp
                                       options.quality_level, options.min_distance_cells};
   result.corners = static_cast<std::int64_t>(FindHarrisCorners(log, harris, &mask).size());
   return result;
+}
+
+}  // namespace
+
+CornerCount ComputeCornerCount(const ScorableGrid& scorable, const CornerCountOptions& options) {
+  Validate(options);
+  LaplacianOfGaussianImage laplacian = LaplacianOfGaussian(scorable.grid(), LaplacianOptions(options));
+  return CountCorners(laplacian, options);
+}
+
+CornerCount ComputeCornerCount(ScorableGrid scorable, OccupancyGrid&& grid, const CornerCountOptions& options) {
+  if (&scorable.grid() != &grid) throw std::logic_error("ComputeCornerCount: the grid is not the one checked");
+  Validate(options);
+  LaplacianOfGaussianImage laplacian = LaplacianOfGaussian(std::move(grid), LaplacianOptions(options));
+  return CountCorners(laplacian, options);
 }
 
 void to_json(nlohmann::json& out, const CornerCountOptions& o) {

@@ -49,6 +49,9 @@ struct CornerCount {
 /// A map without structure (all free, for instance) has an all-zero LoG and zero corners.
 CornerCount ComputeCornerCount(const OccupancyGrid& grid, const CornerCountOptions& options = {});
 CornerCount ComputeCornerCount(const ScorableGrid& grid, const CornerCountOptions& options = {});
+/// The same, using up `grid` (the grid `scorable` checked): its cells hold the structure image
+/// instead of a new full-size one. The grid is left without cells.
+CornerCount ComputeCornerCount(ScorableGrid scorable, OccupancyGrid&& grid, const CornerCountOptions& options = {});
 
 void to_json(nlohmann::json& out, const CornerCountOptions& options);
 void to_json(nlohmann::json& out, const CornerCount& result);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "evaluator/core/occupancy_grid.h"
 
@@ -17,6 +18,8 @@ struct LaplacianOfGaussianImage {
   cv::Mat image;
   /// Largest |value| of `image`.
   float max_abs = 0.0f;
+  /// The memory `image` lies in when it reuses a grid's cells (empty otherwise).
+  std::vector<float> storage;
 };
 
 /// The corner count's structure image: the grid remapped (known cells 1 - p, unknown 0),
@@ -31,5 +34,10 @@ struct LaplacianOfGaussianImage {
 /// image's edges or lie beyond the kernels' reach; bands span whole rows, so every pixel sees
 /// the same inputs in the same order as in the whole-image call.
 LaplacianOfGaussianImage LaplacianOfGaussian(const OccupancyGrid& grid, const LaplacianOfGaussianOptions& options);
+
+/// The same image written over the cells of a grid that is no longer needed, instead of into a
+/// new full-size image: each band is written back only after the next band has copied the rows
+/// it reads, which the kernels' reach (less than a band) guarantees are the last ones it needs.
+LaplacianOfGaussianImage LaplacianOfGaussian(OccupancyGrid&& grid, const LaplacianOfGaussianOptions& options);
 
 }  // namespace slamsweep::evaluator

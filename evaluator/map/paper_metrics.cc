@@ -60,7 +60,11 @@ PaperMetrics ComputePaperMetrics(const OccupancyGrid& grid, const PaperMetricsOp
 PaperMetrics ComputePaperMetrics(OccupancyGrid&& grid, const PaperMetricsOptions& options) {
   PaperMetrics metrics = Frame(grid, options);
   if (Crops(metrics)) grid = CropGrid(std::move(grid), metrics.window);
-  Score(grid, metrics);
+  const ScorableGrid scorable = ScorableGrid::Check(grid);
+  metrics.occupied = ComputeOccupiedProportion(scorable, metrics.options.occupied);
+  metrics.enclosed = ComputeEnclosedAreas(scorable, metrics.options.enclosed);
+  // Last, as it uses the grid's cells for its structure image (the three scores are independent).
+  metrics.corners = ComputeCornerCount(scorable, std::move(grid), metrics.options.corners);
   return metrics;
 }
 

@@ -60,6 +60,14 @@ TEST(LaplacianOfGaussianTest, BandsEqualTheWholeImageFiltersBitForBit) {
         double expected_max = 0.0;
         cv::minMaxIdx(cv::abs(expected), nullptr, &expected_max);
         EXPECT_EQ(actual.max_abs, static_cast<float>(expected_max));
+        // Written over the cells of a copy of the grid, band after band: the same image.
+        OccupancyGrid consumed = grid;
+        const float* cells = consumed.cells.data();
+        const LaplacianOfGaussianImage in_place = LaplacianOfGaussian(std::move(consumed), options);
+        ASSERT_EQ(in_place.image.size(), expected.size());
+        EXPECT_EQ(in_place.image.ptr<float>(0), cells);  // no new full-size image
+        EXPECT_EQ(std::memcmp(in_place.image.ptr(0), expected.ptr(0), expected.total() * sizeof(float)), 0);
+        EXPECT_EQ(in_place.max_abs, actual.max_abs);
       }
     }
   }

@@ -94,6 +94,8 @@ void ExpectReferenceValues(const std::filesystem::path& json, const PaperMetrics
     ASSERT_EQ(grid.width, expected.at("width").get<int>());
     ASSERT_EQ(grid.height, expected.at("height").get<int>());
     const nlohmann::json j = ComputePaperMetrics(grid, options).ToJson();
+    // The overload that crops the grid in place and reuses its cells gives the same JSON.
+    EXPECT_EQ(ComputePaperMetrics(OccupancyGrid(grid), options).ToJson(), j);
     EXPECT_EQ(j.at("corners"), expected.at("corners"));
     EXPECT_EQ(j.at("enclosed_areas"), expected.at("enclosed_areas"));
     EXPECT_EQ(j.at("details").at("enclosed").at("at_unknown_value"), expected.at("at_unknown_value"));
