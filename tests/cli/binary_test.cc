@@ -4,8 +4,11 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <filesystem>
 #include <cstdio>
 #include <string>
+
+#include "tests/support/shared_data.h"
 
 namespace slamsweep {
 namespace {
@@ -15,10 +18,10 @@ struct ProcessResult {
   std::string out;
 };
 
-/// Runs `slamsweep ARGS` with `environment` ("NAME=value ..." or ""); stderr is kept when `with_stderr`.
-ProcessResult RunBinary(const std::string& args, const std::string& environment = "", bool with_stderr = false) {
-  const std::string command =
-      environment + " " + std::string(SLAMSWEEP_BINARY) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
+/// Runs `PROGRAM ARGS` with `environment` ("NAME=value ..." or ""); stderr is kept when `with_stderr`.
+ProcessResult RunProgram(const std::string& program, const std::string& args, const std::string& environment,
+                         bool with_stderr) {
+  const std::string command = environment + " " + program + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
   ProcessResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -27,6 +30,11 @@ ProcessResult RunBinary(const std::string& args, const std::string& environment 
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+/// `slamsweep ARGS`, the build's core program.
+ProcessResult RunBinary(const std::string& args, const std::string& environment = "", bool with_stderr = false) {
+  return RunProgram(SLAMSWEEP_BINARY, args, environment, with_stderr);
 }
 
 TEST(BinaryTest, HelpExitsZeroAndListsCommands) {
@@ -68,6 +76,26 @@ TEST(BinaryTest, HelperCommandsAreListedAndGetTheirHelp) {
   const ProcessResult map_help = RunBinary("eval map --help");
   EXPECT_EQ(map_help.exit_code, 0);
   EXPECT_THAT(map_help.out, ::testing::HasSubstr("--unknown-value"));  // slamsweep-maps' own help
+}
+
+/// A stand-in for a helper that says where it was found and what it was given.
+void WriteFakeHelper(const std::filesystem::path& path, const std::string& name) {
+  std::filesystem::create_directories(path.parent_path());
+  testing::WriteFile(path, "#!/bin/sh\necho \"" + name + " $*\"\n");
+  std::filesystem::permissions(path, std::filesystem::perms::owner_all);
+}
+
+TEST(BinaryTest, HelpersAreFoundNextToTheProgramThenInItsInstalledLibFolder) {
+  // A copy of the core in PREFIX/bin: a helper beside it wins, else PREFIX/lib/slamsweep's, both
+  // before the build tree's.
+  testing::TempDir prefix;
+  const std::filesystem::path core = prefix / "bin" / "slamsweep";
+  std::filesystem::create_directories(core.parent_path());
+  std::filesystem::copy_file(SLAMSWEEP_BINARY, core);
+  WriteFakeHelper(prefix / "lib" / "slamsweep" / "slamsweep-maps", "installed");
+  EXPECT_EQ(RunProgram(core.string(), "eval map a.yaml --json", "", true).out, "installed eval map a.yaml --json\n");
+  WriteFakeHelper(prefix / "bin" / "slamsweep-maps", "beside");
+  EXPECT_EQ(RunProgram(core.string(), "vectorize m.pgm", "", true).out, "beside vectorize m.pgm\n");
 }
 
 TEST(BinaryTest, AMissingHelperIsNamedWithWhereItWasLookedFor) {
