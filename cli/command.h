@@ -46,7 +46,9 @@ void RegisterReportCommand(CLI::App& app, const Streams& streams);
 /// Writes RESULT_DIR/report and prints where its index is (run and merge call it at the end).
 void WriteSweepReport(const std::filesystem::path& result_dir, const Streams& streams);
 
-/// Parses argv and runs the chosen command. Returns the process exit code:
+/// Parses argv and runs the chosen command, every command in this process (the tests' way; the
+/// programs run their own commands and start helpers for the others: program.h). Returns the
+/// process exit code:
 /// 0 success, 2 bad usage or input (message on `err`);
 /// run and worker set their own codes (1 failed runs, 130 interrupted).
 int RunCommandLine(int argc, const char* const* argv, const Streams& streams);

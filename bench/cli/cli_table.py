@@ -1,0 +1,75 @@
+#!/usr/bin/python3
+"""The table of bench/cli/cli_bench.sh: one row per case, per program the median wall time
+(hyperfine), the median peak RSS (GNU time), the exit status, and whether the targets are met.
+
+Usage: cli_table.py OUT_DIR RUNS NOTE LABEL...   (writes OUT_DIR/summary.json, prints markdown)
+"""
+import json
+import os
+import sys
+
+
+def read_text(path, default=""):
+    try:
+        with open(path) as handle:
+            return handle.read().strip()
+    except OSError:
+        return default
+
+
+def main():
+    out_dir, runs, note, labels = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
+    header = ["case", "target"]
+    for label in labels:
+        header += [f"{label} ms", f"{label} CPU ms", f"{label} MB"]
+    header.append("met")
+    rows = []
+    summary = {"runs": int(runs), "note": note, "cases": []}
+    with open(os.path.join(out_dir, "cases.txt")) as handle:
+        cases = [line.rstrip("\n").split("|", 3) for line in handle if line.strip()]
+    for name, target_ms, target_mb, arguments in cases:
+        with open(os.path.join(out_dir, f"{name}.json")) as handle:
+            results = {result["command"]: result for result in json.load(handle)["results"]}
+        time_target = {"-": "", "half": f"<= 1/2 of {labels[0]}"}.get(target_ms, f"<= {target_ms} ms")
+        target = " ".join(part for part in (time_target, f"<= {target_mb} MB" if target_mb != "-" else "") if part) or "-"
+        first_median_ms = results[labels[0]]["median"] * 1000.0
+        # "half" compares with the first program, so it needs two (e.g. before=... after=...).
+        limit_ms = {"-": None, "half": first_median_ms / 2.0 if len(labels) > 1 else None}.get(target_ms, None)
+        if limit_ms is None and target_ms not in ("-", "half"):
+            limit_ms = float(target_ms)
+        row = [f"`{name}`", target]
+        case_summary = {"case": name, "arguments": arguments, "target_ms": target_ms, "target_mb": target_mb,
+                        "programs": {}}
+        met = "-"
+        for label in labels:
+            result = results[label]
+            median_ms = result["median"] * 1000.0
+            rss_mb = int(read_text(os.path.join(out_dir, f"{name}.{label}.rss_kb"), "0")) / 1024.0
+            status = int(read_text(os.path.join(out_dir, f"{name}.{label}.status"), "-1"))
+            cell = f"{median_ms:.1f}" + ("" if status == 0 else f" (exit {status})")
+            cpu_ms = (result["user"] + result["system"]) * 1000.0
+            row += [cell, f"{cpu_ms:.1f}", f"{rss_mb:.1f}"]
+            case_summary["programs"][label] = {
+                "median_ms": median_ms, "min_ms": result["min"] * 1000.0, "max_ms": result["max"] * 1000.0,
+                "user_ms": result["user"] * 1000.0, "system_ms": result["system"] * 1000.0,
+                "peak_rss_mb": rss_mb, "exit_status": status}
+            if label == labels[-1] and (limit_ms is not None or target_mb != "-"):
+                ok = status == 0
+                ok = ok and (limit_ms is None or median_ms <= limit_ms)
+                ok = ok and (target_mb == "-" or rss_mb <= float(target_mb))
+                met = "yes" if ok else "NO"
+        row.append(met)
+        rows.append(row)
+        summary["cases"].append(case_summary)
+    with open(os.path.join(out_dir, "summary.json"), "w") as handle:
+        json.dump(summary, handle, indent=2)
+    print(f"Whole process, median of {runs} runs after 3 warm-up runs (hyperfine); CPU: mean user + system time (hyperfine); peak RSS: median of {runs} "
+          f"runs (GNU time). `met` is for the last program. {note}.\n")
+    print("| " + " | ".join(header) + " |")
+    print("|" + "---|" * len(header))
+    for row in rows:
+        print("| " + " | ".join(row) + " |")
+
+
+if __name__ == "__main__":
+    main()
