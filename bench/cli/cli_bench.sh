@@ -29,7 +29,7 @@ done
 for i in "${!programs[@]}"; do
   binary=${programs[$i]#*=}
   [[ -x "$binary" ]] || { echo "cli_bench.sh: $binary: not an executable" >&2; exit 2; }
-  programs[$i]="${programs[$i]%%=*}=$(realpath "$binary")"  # the cases run in the inputs folder
+  programs[i]="${programs[i]%%=*}=$(realpath "$binary")"  # the cases run in the inputs folder
 done
 command -v hyperfine >/dev/null || { echo "cli_bench.sh: hyperfine missing (apt install hyperfine)" >&2; exit 2; }
 
@@ -83,16 +83,17 @@ for entry in "${cases[@]}"; do
     binary=${program#*=}
     args=${arguments//\{root\}/$root}
     if [[ "$args" == *"{rundir}"* ]]; then args=${args//\{rundir\}/$(prepare_worker_run "$label" "$binary")}; fi
-    command_line="${pin[*]} $binary $args"
-    command_line=${command_line# }
+    read -r -a words <<<"$args"
+    argv=("${pin[@]}" "$binary" "${words[@]}")
     # The exit status and the peak RSS (median over the runs) of each program.
     status=0
-    (cd "$inputs" && $command_line >/dev/null 2>"$out/$name.$label.stderr") || status=$?
+    (cd "$inputs" && "${argv[@]}" >/dev/null 2>"$out/$name.$label.stderr") || status=$?
     echo "$status" >"$out/$name.$label.status"
     for ((i = 0; i < runs; ++i)); do
-      (cd "$inputs" && /usr/bin/time -f %M -o "$out/time.tmp" $command_line >/dev/null 2>&1) || true
+      (cd "$inputs" && /usr/bin/time -f %M -o "$out/time.tmp" "${argv[@]}" >/dev/null 2>&1) || true
       cat "$out/time.tmp"
     done | median >"$out/$name.$label.rss_kb"
+    command_line="${argv[*]}"
     hyperfine_commands+=(--command-name "$label" "$command_line")
   done
   (cd "$inputs" && hyperfine -N -i --warmup 3 --runs "$runs" --style none \
