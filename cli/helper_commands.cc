@@ -7,13 +7,15 @@ namespace slamsweep::cli {
 namespace {
 
 constexpr std::string_view kMaps = "slamsweep-maps";
+// A 2000 x 2000 map: 1 000 page faults instead of 7 000, a seventh less time (bench/cli).
+constexpr std::string_view kHugePages = "glibc.malloc.hugetlb=1";
 constexpr std::string_view kSweep = "slamsweep-sweep";
 
 // The descriptions repeat those of the commands themselves; cli_test checks that they agree.
 constexpr std::array<HelperCommand, 9> kHelperCommands = {{
-    {"eval", "map", "occupied proportion, corners and enclosed areas (paper profile)", kMaps},
-    {"eval", "map-compare", "an estimated map against a reference map: distances, F1, IoU", kMaps},
-    {"", "vectorize", "trace obstacle borders and export polygons", kMaps},
+    {"eval", "map", "occupied proportion, corners and enclosed areas (paper profile)", kMaps, false, kHugePages},
+    {"eval", "map-compare", "an estimated map against a reference map: distances, F1, IoU", kMaps, false, kHugePages},
+    {"", "vectorize", "trace obstacle borders and export polygons", kMaps, false, kHugePages},
     {"", "data", "inspect, convert, map and simulate sequences", kSweep},
     {"", "run", "run a sweep: every run in a worker process, results in OUTPUT", kSweep},
     {"", "merge", "combine result directories (shards of one sweep) into one", kSweep},

@@ -20,6 +20,23 @@ bool HasSubcommand(CLI::App& parent, std::string_view name) {
   return !parent.get_subcommands([name](CLI::App* command) { return command->get_name() == name; }).empty();
 }
 
+/// This process's environment, with `tunables` appended to GLIBC_TUNABLES (read by glibc when the
+/// helper starts; nothing the helper starts inherits it, as the map commands start nothing).
+std::vector<std::string> HelperEnvironment(std::string_view tunables) {
+  std::vector<std::string> environment;
+  bool merged = tunables.empty();
+  for (char** variable = environ; *variable != nullptr; ++variable) {
+    std::string entry(*variable);
+    if (!merged && entry.starts_with("GLIBC_TUNABLES=")) {
+      entry += (entry.size() > std::string_view("GLIBC_TUNABLES=").size() ? ":" : "") + std::string(tunables);
+      merged = true;
+    }
+    environment.push_back(std::move(entry));
+  }
+  if (!merged) environment.push_back("GLIBC_TUNABLES=" + std::string(tunables));
+  return environment;
+}
+
 /// Replaces this process with the helper that runs `command`, giving it the same arguments.
 [[noreturn]] void StartHelper(const HelperCommand& command, int argc, const char* const* argv,
                               const Streams& streams) {
@@ -33,9 +50,13 @@ bool HasSubcommand(CLI::App& parent, std::string_view name) {
   arguments.push_back(const_cast<char*>(program->c_str()));
   for (int i = 1; i < argc; ++i) arguments.push_back(const_cast<char*>(argv[i]));
   arguments.push_back(nullptr);
+  const std::vector<std::string> environment = HelperEnvironment(command.glibc_tunables);
+  std::vector<char*> variables;
+  for (const std::string& variable : environment) variables.push_back(const_cast<char*>(variable.c_str()));
+  variables.push_back(nullptr);
   streams.out.flush();
   streams.err.flush();
-  ::execv(program->c_str(), arguments.data());
+  ::execve(program->c_str(), arguments.data(), variables.data());
   throw std::runtime_error("cannot start the helper program " + program->string() + ": " + std::strerror(errno));
 }
 

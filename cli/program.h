@@ -51,6 +51,10 @@ struct HelperCommand {
   /// The helper's file name, found next to slamsweep (evaluator/core/installation.h).
   std::string_view program;
   bool hidden = false;
+  /// glibc tunables the helper is started with (added to $GLIBC_TUNABLES), e.g. malloc on
+  /// transparent huge pages for the map commands, whose large images then take 2 MB pages instead
+  /// of thousands of 4 kB page faults.
+  std::string_view glibc_tunables = {};
 };
 
 /// The commands of slamsweep-maps and slamsweep-sweep, as the core lists them.

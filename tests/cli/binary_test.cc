@@ -98,6 +98,24 @@ TEST(BinaryTest, HelpersAreFoundNextToTheProgramThenInItsInstalledLibFolder) {
   EXPECT_EQ(RunProgram(core.string(), "vectorize m.pgm", "", true).out, "beside vectorize m.pgm\n");
 }
 
+TEST(BinaryTest, MapCommandsStartWithMallocOnHugePagesAndNothingElseDoes) {
+  testing::TempDir prefix;
+  const std::filesystem::path core = prefix / "bin" / "slamsweep";
+  std::filesystem::create_directories(core.parent_path());
+  std::filesystem::copy_file(SLAMSWEEP_BINARY, core);
+  for (const char* helper : {"slamsweep-maps", "slamsweep-sweep"}) {
+    const std::filesystem::path path = prefix / "bin" / helper;
+    testing::WriteFile(path, "#!/bin/sh\necho \"tunables=$GLIBC_TUNABLES\"\n");
+    std::filesystem::permissions(path, std::filesystem::perms::owner_all);
+  }
+  EXPECT_EQ(RunProgram(core.string(), "eval map m.yaml", "", true).out, "tunables=glibc.malloc.hugetlb=1\n");
+  // Tunables already set are kept.
+  EXPECT_EQ(RunProgram(core.string(), "vectorize m.pgm", "GLIBC_TUNABLES=glibc.malloc.check=0", true).out,
+            "tunables=glibc.malloc.check=0:glibc.malloc.hugetlb=1\n");
+  // The sweep helper starts SLAM programs, which must not inherit a tuning of slamsweep's.
+  EXPECT_EQ(RunProgram(core.string(), "data info x.log", "", true).out, "tunables=\n");
+}
+
 TEST(BinaryTest, AMissingHelperIsNamedWithWhereItWasLookedFor) {
   const ProcessResult result = RunBinary("eval map map.yaml", "SLAMSWEEP_LIBEXEC_DIR=/nonexistent/libexec", true);
   EXPECT_EQ(result.exit_code, 1);
