@@ -12,6 +12,8 @@ packages=(
   # libraries (README "Dependencies" says why each is there)
   libeigen3-dev libopencv-dev nlohmann-json3-dev libyaml-cpp-dev libspdlog-dev libfmt-dev
   libcli11-dev zlib1g-dev libdeflate-dev libsqlite3-dev libboost-dev libboost-filesystem-dev libssl-dev
+  # `slamsweep serve` and `submit`: the HTTP server and client (cpp-httplib)
+  libcpp-httplib-dev
   # the report: plots (gnuplot), map GIFs (giflib); headless Chromium checks the report in tests
   gnuplot-nox libgif-dev chromium
   # MRPT: rawlog reading/writing (libmrpt-obs-dev), the real SLAM programs (mrpt-apps),
