@@ -23,6 +23,8 @@ packages=(
   librosbag-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev libgeometry-msgs-dev python3-rosbag python3-sensor-msgs python3-nav-msgs python3-tf2-msgs
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev shellcheck
+  # the service tests: /metrics parsed by the Prometheus project's own parser; wrk drives bench/service/load_test.sh
+  python3-prometheus-client wrk
   # the Slurm executor's test: a real one-node cluster on localhost (jobs/slurm/local-cluster.sh)
   slurm-wlm munge
 )

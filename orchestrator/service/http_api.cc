@@ -192,16 +192,20 @@ void RegisterWrites(httplib::Server& server, ApiContext& context) {
 }  // namespace
 
 void RegisterRoutes(httplib::Server& server, ApiContext& context) {
-  server.set_default_headers({{"Content-Security-Policy", kContentSecurityPolicy},
-                              {"X-Content-Type-Options", "nosniff"},
-                              {"Referrer-Policy", "no-referrer"}});
+  server.set_default_headers({{"X-Content-Type-Options", "nosniff"}, {"Referrer-Policy", "no-referrer"}});
+  server.set_post_routing_handler([](const httplib::Request& request, httplib::Response& response) {
+    static const std::regex kReportPath(R"(/sweeps/\d+/report/.*)");
+    response.set_header("Content-Security-Policy", std::regex_match(request.path, kReportPath)
+                                                       ? kReportContentSecurityPolicy
+                                                       : kPageContentSecurityPolicy);
+  });
   server.set_payload_max_length(context.options.limits.max_body_bytes);
   server.set_pre_routing_handler([&context](const httplib::Request& request, httplib::Response& response) {
     t_request_started = Clock::now();
     if (request.method == "GET" || request.method == "HEAD") return httplib::Server::HandlerResponse::Unhandled;
+    const std::string header = request.get_header_value("Authorization");  // owns the text the view below sees
     const std::optional<std::string_view> authorization =
-        request.has_header("Authorization") ? std::optional<std::string_view>(request.get_header_value("Authorization"))
-                                            : std::nullopt;
+        request.has_header("Authorization") ? std::optional<std::string_view>(header) : std::nullopt;
     const BearerAuth::Verdict verdict = context.auth.Check(authorization);
     if (verdict == BearerAuth::Verdict::kAllowed) return httplib::Server::HandlerResponse::Unhandled;
     const char* why = verdict == BearerAuth::Verdict::kMissing ? "missing bearer token" : "wrong bearer token";

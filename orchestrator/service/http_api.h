@@ -30,11 +30,19 @@ struct ApiContext {
 ///   summary.csv}, GET /api/sweeps/ID/report (the report's file list), GET / and /sweeps/ID (pages),
 ///   GET /sweeps/ID/report/... (the report's files), /static/service.css, /healthz, /metrics.
 /// Writes (POST) need the bearer token when one is configured (401 without it, logged without the
-/// token); reads are open. Every answer carries the report's Content-Security-Policy.
+/// token); reads are open. The report's files are served with the report's Content-Security-Policy,
+/// everything else with the page policy.
 void RegisterRoutes(httplib::Server& server, ApiContext& context);
 
-/// The Content-Security-Policy of every answer: Jenkins' default, which the report is built for.
-inline constexpr const char* kContentSecurityPolicy =
+/// The CSP of the report's files: Jenkins' default, which the report is built for.
+inline constexpr const char* kReportContentSecurityPolicy =
     "sandbox allow-same-origin; default-src 'none'; img-src 'self'; style-src 'self';";
+
+/// The CSP of the service's own pages and API answers: the report's rules (no script, no inline style,
+/// no data: URI, only this server's images and stylesheets) without `sandbox`, since a sandboxed page
+/// may not follow its <meta http-equiv="refresh"> and the page's live state is that refresh.
+inline constexpr const char* kPageContentSecurityPolicy =
+    "default-src 'none'; img-src 'self'; style-src 'self'; base-uri 'none'; form-action 'none'; "
+    "frame-ancestors 'none';";
 
 }  // namespace slamsweep::orchestrator::service

@@ -25,6 +25,12 @@ bool HasControlCharacters(std::string_view text) {
   return std::any_of(text.begin(), text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
 }
 
+bool IsPlainName(std::string_view text) {
+  return !text.empty() && text.size() <= 64 && text.front() != '.' &&
+         text.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-") ==
+             std::string_view::npos;
+}
+
 /// Who submitted, for the page: printable ASCII, at most 100 characters.
 std::string Submitter(const httplib::Request& request) {
   std::string submitter = request.get_header_value("X-Slamsweep-Submitter");
@@ -96,6 +102,19 @@ SubmissionAnswer Submit(ApiContext& context, const httplib::Request& request) {
     return Error(413, ReplaceAll(error.what(), anchored.string(), name));
   } catch (const evaluator::InputError& error) {
     return Error(400, ReplaceAll(error.what(), anchored.string(), name));
+  }
+  // Names become run ids, report file names, JUnit names and page text: a shared service takes only
+  // plain ones, so that no submitted name carries markup or shell syntax anywhere.
+  for (const RunSpec& run : planned.runs) {
+    for (const auto& [what, value] : {std::pair<const char*, const std::string&>{"algorithm", run.algorithm.name},
+                                      {"sequence", run.sequence.entry.name},
+                                      {"noise setting", run.noise.name}}) {
+      if (!IsPlainName(value)) {
+        return Error(400, fmt::format("{}: {} name '{}': expected letters, digits, '_', '.' or '-' (this server's rule "
+                                      "for names)",
+                                      name, what, value.substr(0, 80)));
+      }
+    }
   }
   QueuedSweep sweep;
   sweep.name = planned.name;
