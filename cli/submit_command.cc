@@ -58,6 +58,7 @@ class Api {
   Api(const std::string& server, std::optional<std::string> token) : client_(server), server_(server) {
     if (!client_.is_valid()) throw SubmitError("--server " + server + ": expected a URL such as http://127.0.0.1:8420");
     client_.set_connection_timeout(10);
+    client_.set_tcp_nodelay(true);
     client_.set_read_timeout(120);
     if (token) headers_.emplace("Authorization", "Bearer " + *token);
     headers_.emplace("X-Slamsweep-Submitter", Submitter());

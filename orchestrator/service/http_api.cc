@@ -200,6 +200,9 @@ void RegisterRoutes(httplib::Server& server, ApiContext& context) {
                                                        : kPageContentSecurityPolicy);
   });
   server.set_payload_max_length(context.options.limits.max_body_bytes);
+  // Headers and body go out in separate writes: without TCP_NODELAY, Nagle's algorithm and the client's
+  // delayed ACK hold the body back ~40 ms (measured: p99 of status reads 77 ms with it, see bench/service).
+  server.set_tcp_nodelay(true);
   server.set_pre_routing_handler([&context](const httplib::Request& request, httplib::Response& response) {
     t_request_started = Clock::now();
     if (request.method == "GET" || request.method == "HEAD") return httplib::Server::HandlerResponse::Unhandled;
