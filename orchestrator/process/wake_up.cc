@@ -26,10 +26,11 @@ bool TakeWakeUpRequest() { return g_wake_up_requested.exchange(false); }
 
 void SleepUnlessWoken(double seconds) {
   if (g_wake_up_requested.load()) return;
-  EnsureChildSignalHandler();
   sigset_t open_mask;
   pthread_sigmask(SIG_SETMASK, nullptr, &open_mask);
-  for (const int signal_number : {SIGCHLD, SIGINT, SIGTERM, SIGHUP}) sigdelset(&open_mask, signal_number);
+  // Not SIGCHLD: children are ProcessSet's business, and a SIGCHLD taken here (one of another thread's
+  // short commands, say) would wake this sleep for nothing.
+  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) sigdelset(&open_mask, signal_number);
   const auto ns = static_cast<long long>(std::clamp(seconds, 0.0, 1e6) * 1e9);
   timespec timeout = {static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
   pollfd wake = {SignalWakeupFd(), POLLIN, 0};

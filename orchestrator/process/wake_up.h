@@ -15,9 +15,9 @@ void RequestWakeUp();
 /// Consumes a pending request: true when there was one since the last call.
 bool TakeWakeUpRequest();
 
-/// Sleeps up to `seconds`, returning early for a wake-up request, a child's end or
-/// SIGINT/SIGTERM/SIGHUP (which the InterruptionGuard keeps blocked outside waits). Does not consume
-/// the request: the caller checks TakeWakeUpRequest() afterwards.
+/// Sleeps up to `seconds`, returning early for a wake-up request or SIGINT/SIGTERM/SIGHUP (which the
+/// InterruptionGuard keeps blocked outside waits). Does not consume the request: the caller checks
+/// TakeWakeUpRequest() afterwards.
 void SleepUnlessWoken(double seconds);
 
 }  // namespace slamsweep::orchestrator

@@ -7,7 +7,10 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <set>
 #include <thread>
+
+#include "orchestrator/slurm/slurm_command.h"
 
 namespace slamsweep::orchestrator::service {
 namespace {
@@ -96,6 +99,40 @@ std::size_t EndLeftoverProcesses(const fs::path& sweeps_root, double grace_s) {
     wait_until(give_up(5.0));
   }
   return leftovers.size();
+}
+
+namespace {
+
+/// Array job ids of the queued or running jobs whose batch script lies in `state_dir`.
+std::set<std::string> OurSlurmJobs(const fs::path& state_dir, bool& queried) {
+  const CommandOutput listed = RunSlurmCommand({"squeue", "--noheader", "--format=%F|%o"});
+  queried = listed.ok();
+  std::set<std::string> jobs;
+  const std::string prefix = fs::absolute(state_dir).lexically_normal().string() + "/";
+  std::istringstream lines(listed.output);
+  for (std::string line; std::getline(lines, line);) {
+    const auto bar = line.find('|');
+    if (bar == std::string::npos) continue;
+    const std::string job = line.substr(0, bar), command = line.substr(bar + 1);
+    if (!job.empty() && job.find_first_not_of("0123456789") == std::string::npos && command.rfind(prefix, 0) == 0) {
+      jobs.insert(job);
+    }
+  }
+  return jobs;
+}
+
+}  // namespace
+
+std::vector<std::string> EndLeftoverSlurmJobs(const fs::path& state_dir, double wait_s) {
+  bool queried = false;
+  const std::set<std::string> jobs = OurSlurmJobs(state_dir, queried);
+  for (const std::string& job : jobs) RunSlurmCommand({"scancel", job});
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(static_cast<long>(wait_s * 1000));
+  while (!jobs.empty() && std::chrono::steady_clock::now() < deadline) {
+    if (OurSlurmJobs(state_dir, queried).empty() && queried) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  }
+  return {jobs.begin(), jobs.end()};
 }
 
 }  // namespace slamsweep::orchestrator::service

@@ -18,4 +18,10 @@ std::vector<pid_t> FindLeftoverProcesses(const std::filesystem::path& sweeps_roo
 /// are gone (or 5 s after the SIGKILL). Normally the parent-death signal ended them already.
 std::size_t EndLeftoverProcesses(const std::filesystem::path& sweeps_root, double grace_s);
 
+/// The Slurm executor's equivalent: job arrays a killed server submitted (their batch scripts lie in
+/// `state_dir`, as squeue's command column shows) are cancelled with scancel, and this returns once
+/// squeue no longer lists them (or after `wait_s`). Other users' and other servers' jobs are left alone.
+/// Returns the job ids cancelled.
+std::vector<std::string> EndLeftoverSlurmJobs(const std::filesystem::path& state_dir, double wait_s);
+
 }  // namespace slamsweep::orchestrator::service

@@ -535,9 +535,9 @@ void Scheduler::WaitForWork(Executor& executor) {
   if (executor.Running() > 0) {
     std::vector<WorkerEnding> endings = executor.Wait();
     if (endings.empty()) {
-      // A wake-up, or an interruption (then Wait returns at once while workers drain): sleep until a
-      // child ends, a wake-up or a second, so the loop does not spin.
-      if (InterruptionGuard::Interrupted()) SleepUnlessWoken(0.5);
+      // A wake-up, or an interruption (then Wait returns at once while workers drain): sleep a little
+      // (up to a wake-up), so the loop does not spin; drained workers are reaped at the next turn.
+      if (InterruptionGuard::Interrupted()) SleepUnlessWoken(0.2);
       TakeWakeUpRequest();
     }
     for (const WorkerEnding& ending : endings) RecordEnding(ending);

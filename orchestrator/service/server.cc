@@ -93,6 +93,11 @@ int RunService(const ServiceOptions& options, const SweepPlanner& planner, const
   std::mutex queue_mutex;
   const std::size_t leftovers = EndLeftoverProcesses(options.data_dir / "sweeps", kLeftoverGraceS);
   if (leftovers > 0) spdlog::info("ended {} processes left by the previous server", leftovers);
+  if (options.executor == "slurm") {
+    for (const std::string& job : EndLeftoverSlurmJobs(options.data_dir / "slurm", 90.0)) {
+      spdlog::info("cancelled Slurm job {} left by the previous server", job);
+    }
+  }
 
   ServiceMetrics metrics;
   Scheduler scheduler(queue, queue_mutex, options.data_dir, options.scheduler, metrics);

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/support/child_process.h"
 #include "tests/support/shared_data.h"
 
 // Last: its <resolv.h> defines `_res`, which breaks Eigen headers included after it.
@@ -56,18 +57,7 @@ inline pid_t Spawn(const std::vector<std::string>& argv, const fs::path& log) {
   return pid;
 }
 
-/// Exit code of `pid` (128 + signal when killed), or -1 if it did not end within `limit` (then it is killed).
-inline int WaitExit(pid_t pid, std::chrono::seconds limit) {
-  const auto deadline = Clock::now() + limit;
-  while (Clock::now() < deadline) {
-    int status = 0;
-    if (waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  kill(pid, SIGKILL);
-  waitpid(pid, nullptr, 0);
-  return -1;
-}
+using testing::WaitExit;
 
 /// Runs the command to its end; returns its exit code (-1 after `limit`).
 inline int RunToEnd(const std::vector<std::string>& argv, const fs::path& log, std::chrono::seconds limit) {

@@ -9,6 +9,7 @@
 
 #include "orchestrator/config/input_policy.h"
 #include "orchestrator/service/auth.h"
+#include "orchestrator/service/leftover_workers.h"
 #include "orchestrator/service/queue_store.h"
 #include "orchestrator/service/service_metrics.h"
 #include "orchestrator/service/status_page.h"
@@ -159,6 +160,38 @@ TEST(QueueStoreTest, ARestartQueuesTheRunsLeftRunning) {
   EXPECT_EQ(queue.SweepsWithOkRun("a", 2), std::vector<std::int64_t>{1});
   EXPECT_TRUE(queue.SweepsWithOkRun("a", 1).empty());
   EXPECT_EQ(queue.AddSweep(sweep, {}, dir / "sweeps").id, 2);
+}
+
+}  // namespace
+}  // namespace slamsweep::orchestrator::service
+
+namespace slamsweep::orchestrator::service {
+namespace {
+
+// A killed server's Slurm arrays are cancelled on restart; everyone else's are left alone. Stand-in
+// squeue/scancel on PATH: squeue lists two jobs until scancel was called for ours.
+TEST(LeftoverSlurmJobsTest, OnlyTheArraysOfThisServersStateFolderAreCancelled) {
+  testing::TempDir dir;
+  const fs::path bin = dir / "bin", state = dir / "data" / "slurm";
+  fs::create_directories(bin);
+  fs::create_directories(state);
+  testing::WriteFile(bin / "squeue",
+                     "#!/bin/sh\n"
+                     "echo \"77|/home/other/job.sh\"\n"
+                     "if ! grep -qx 41 \"" + (dir / "cancelled").string() + "\" 2>/dev/null; then\n"
+                     "  echo \"41|" + state.string() + "/array-9-0.sh\"\nfi\n");
+  testing::WriteFile(bin / "scancel", "#!/bin/sh\necho \"$1\" >> \"" + (dir / "cancelled").string() + "\"\n");
+  fs::permissions(bin / "squeue", fs::perms::owner_all);
+  fs::permissions(bin / "scancel", fs::perms::owner_all);
+  const std::string saved_path = std::getenv("PATH");
+  setenv("PATH", (bin.string() + ":" + saved_path).c_str(), 1);
+  const std::vector<std::string> cancelled = EndLeftoverSlurmJobs(state, 10.0);
+  setenv("PATH", saved_path.c_str(), 1);
+  EXPECT_EQ(cancelled, std::vector<std::string>{"41"});
+  std::ifstream log(dir / "cancelled");
+  std::string line, all;
+  while (std::getline(log, line)) all += line + ";";
+  EXPECT_EQ(all, "41;");
 }
 
 }  // namespace
