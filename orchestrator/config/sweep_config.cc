@@ -142,7 +142,10 @@ evaluator::Catalog LoadCatalog(const std::filesystem::path& file, YamlFields& fi
                                std::filesystem::path& catalog_path) {
   const YAML::Node node = fields.Get("catalog");
   catalog_path = context.default_catalog;
-  if (node.IsDefined() && !node.IsNull()) catalog_path = Anchored(file, fields.Text("catalog", ""));
+  if (node.IsDefined() && !node.IsNull()) {
+    catalog_path = Anchored(file, fields.Text("catalog", ""));
+    RequireAllowedPath(context.policy, file, node, "catalog", "dataset catalog file", catalog_path);
+  }
   std::error_code error;
   if (!std::filesystem::is_regular_file(catalog_path, error)) {
     // Without `catalog:` the default only matters when a sequence names a catalog entry (LookUp says so).
@@ -221,7 +224,9 @@ SweepConfig ParseSweepConfig(std::string_view yaml_text, const std::filesystem::
   if (!algorithms.IsDefined()) FailAt(file, root, "algorithms: missing (required: a list of algorithms)");
   config.algorithms = ParseNamedList<AlgorithmConfig>(
       file, algorithms, "algorithms",
-      [&](const YAML::Node& node, const std::string& path) { return ParseAlgorithmConfig(file, node, path); },
+      [&](const YAML::Node& node, const std::string& path) {
+        return ParseAlgorithmConfig(file, node, path, context.policy);
+      },
       &AlgorithmName);
 
   const YAML::Node sequences = fields.Get("sequences");
@@ -230,7 +235,7 @@ SweepConfig ParseSweepConfig(std::string_view yaml_text, const std::filesystem::
   config.sequences = ParseNamedList<SequenceSpec>(
       file, sequences, "sequences",
       [&](const YAML::Node& node, const std::string& path) {
-        return ParseSequenceConfig(file, node, path, catalog, context.variables);
+        return ParseSequenceConfig(file, node, path, catalog, context.variables, context.policy);
       },
       &SequenceName);
 

@@ -66,6 +66,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evaluator/sequence/catalog.h"
+#include "orchestrator/config/input_policy.h"
 #include "orchestrator/matrix/run_spec.h"
 
 namespace slamsweep::orchestrator {
@@ -140,6 +141,8 @@ struct SweepConfigContext {
   std::filesystem::path default_catalog;
   /// ${NAME} values for catalog and inline sequence paths, e.g. {"SHARED", "/work/shared"}.
   evaluator::CatalogVariables variables;
+  /// What the file may read and run (everything, unless the file was submitted to the service).
+  InputPolicy policy;
 };
 
 /// Reads and validates a sweep file (format above). Everything is checked before anything runs:

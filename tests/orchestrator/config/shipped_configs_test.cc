@@ -40,7 +40,7 @@ std::vector<std::filesystem::path> SweepFiles() {
 }
 
 SweepConfigContext RepositoryContext() {
-  return {kConfigs / "datasets.yaml", {{"SHARED", testing::SharedRoot().string()}}};
+  return {kConfigs / "datasets.yaml", {{"SHARED", testing::SharedRoot().string()}}, {}};
 }
 
 TEST(ShippedConfigsTest, TheQuickstartAndNightlySweepsAreShipped) {
