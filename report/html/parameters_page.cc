@@ -10,14 +10,15 @@ Html E(std::string_view text) { return Html::Escape(text); }
 
 constexpr std::string_view kRoot = "../../";
 
-/// "a=1, b=fast": the drawn parameters' values of a row of the slice.
+/// The drawn parameters' values of a row of the slice: "0.5" for one parameter (its name heads the
+/// column), "a=1, b=fast" for two.
 std::string Coordinates(const ParameterSweep& sweep, const ParameterSlice& slice, std::size_t row) {
   for (std::size_t y = 0; y < slice.cells.size(); ++y) {
     for (std::size_t x = 0; x < slice.cells[y].size(); ++x) {
       if (slice.cells[y][x] != row) continue;
-      std::string text = sweep.axes[0].name + "=" + ParameterValueText(sweep.axes[0].values[x]);
-      if (sweep.axes.size() > 1) text += ", " + sweep.axes[1].name + "=" + ParameterValueText(sweep.axes[1].values[y]);
-      return text;
+      if (sweep.axes.size() == 1) return ParameterValueText(sweep.axes[0].values[x]);
+      return sweep.axes[0].name + "=" + ParameterValueText(sweep.axes[0].values[x]) + ", " + sweep.axes[1].name + "=" +
+             ParameterValueText(sweep.axes[1].values[y]);
     }
   }
   return "?";
@@ -31,8 +32,12 @@ std::string ValueText(const SequenceModel& sequence, std::size_t row, const Colu
 
 /// The best value of every metric among the rows of one slice: all other parameters are fixed there.
 Html BestTable(const SequenceModel& sequence, const ParameterSweep& sweep, const ParameterSlice& slice) {
+  const std::string values = sweep.axes.size() == 1 ? sweep.axes[0].name : "values";
   Html header;
-  for (const char* name : {"Metric", "Best value", "Its mean ± std", "Next best", "Note"}) header += Element("th", "", E(name));
+  for (const std::string& name : {std::string("Metric"), "Best " + values, std::string("Its mean ± std"),
+                                  "Next best " + values, std::string("Note")}) {
+    header += Element("th", "", E(name));
+  }
   Html rows;
   const std::vector<std::size_t> slice_rows = slice.Rows();
   for (const ColumnRef& column : TableColumns(sequence)) {
@@ -54,16 +59,18 @@ Html BestTable(const SequenceModel& sequence, const ParameterSweep& sweep, const
     if (!best.runner_up) {
       note = "the only value with a result";
     } else if (best.tie) {
-      note = "a tie: the next best has the same mean, so no value is best";
+      note = "tie: no value is best";
     } else if (!best.clear) {
-      note = "not clearly better: the next best is within one standard deviation (or a value has one run)";
+      note = "within noise";
     }
     line += Element("td", "", E(note));
     rows += Element("tr", "", line) + T("\n");
   }
   return T("<table>\n") +
-         Element("caption", "", E("Best value per metric: the lowest mean (every metric here is lower is better) among "
-                                  "these rows only; rows whose odometry is the reference are never best")) +
+         Element("caption", "",
+                 E("Best value per metric: the lowest mean (every metric here is lower is better) among these rows "
+                   "only; rows whose odometry is the reference are never best. \"within noise\": the next best mean is "
+                   "within one standard deviation of it, or a value has a single run; \"tie\": equal means.")) +
          T("\n<thead>") + Element("tr", "", header) + T("</thead>\n<tbody>\n") + rows + T("</tbody>\n</table>\n");
 }
 

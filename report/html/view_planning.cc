@@ -44,7 +44,8 @@ BoxplotFigure SegmentBoxplot(const SiteData& site, const SequenceModel& sequence
                              std::optional<BoxSummary> SegmentCell::* box, const std::string& what,
                              const std::string& unit) {
   BoxplotFigure figure;
-  figure.title = sequence.title + ": " + what + " per segment length, every segment of every run";
+  // Short titles: gnuplot centres them over the picture; the page's caption names the sequence.
+  figure.title = what + " of every segment, per segment length";
   figure.x_label = "segment length (chosen on the reference path)";
   figure.y_label = what + " (" + unit + ")";
   for (const double length : table.lengths_m) figure.categories.push_back(LengthLabel(length));
@@ -60,7 +61,7 @@ BoxplotFigure SegmentBoxplot(const SiteData& site, const SequenceModel& sequence
 
 LineFigure DriftLines(const SiteData& site, const SequenceModel& sequence, const SegmentTable& table) {
   LineFigure figure;
-  figure.title = sequence.title + ": drift against segment length, mean ± std over runs";
+  figure.title = "translation drift against segment length, mean ± std over runs";
   figure.x_label = "segment length (m)";
   figure.y_label = "translation drift (% of segment length)";
   for (const SegmentRow& row : table.rows) {
@@ -86,8 +87,7 @@ LineFigure ParameterCurve(const SiteData& site, const SequenceModel& sequence, c
   const MetricColumn& metric = ColumnOf(sequence, column);
   const ParameterAxis& axis = sweep.axes[0];
   LineFigure figure;
-  figure.title = sweep.algorithm + " on " + sequence.title + ": " + metric.title +
-                 (metric.spec.empty() ? "" : ", " + metric.spec) + " against " + axis.name;
+  figure.title = sweep.algorithm + ": " + metric.title + (metric.spec.empty() ? "" : ", " + metric.spec);
   figure.x_label = axis.name;
   figure.y_label = ColumnText(metric) + ", mean ± std";
   LineSeries series;
@@ -125,8 +125,8 @@ HeatmapFigure ParameterHeatmap(const SequenceModel& sequence, const ParameterSwe
   const MetricColumn& metric = ColumnOf(sequence, column);
   HeatmapFigure figure;
   const std::string slice_text = SliceText(sweep, slice);
-  figure.title = sweep.algorithm + " on " + sequence.title + ": " + metric.title +
-                 (metric.spec.empty() ? "" : ", " + metric.spec) + (slice_text.empty() ? "" : " (" + slice_text + ")");
+  figure.title = sweep.algorithm + ": " + metric.title + (metric.spec.empty() ? "" : ", " + metric.spec) +
+                 (slice_text.empty() ? "" : " (" + slice_text + ")");
   figure.x_label = sweep.axes[0].name;
   figure.y_label = sweep.axes[1].name;
   figure.value_label = ColumnText(metric) + ", mean";
@@ -267,8 +267,8 @@ std::string ViewStyleSheet() {
 ul.views { margin: 0.5em 0; }
 img.figure { max-width: 100%; height: auto; }
 figure.figure { max-width: 1400px; }
-figure.figure-small { max-width: 620px; }
-img.figure-small { max-width: 600px; width: 100%; height: auto; }
+figure.figure-small { max-width: 560px; }
+img.figure-small { max-width: 540px; width: 100%; height: auto; }
 td.missing { color: #888; }
 .legend-note { font-size: 0.9em; color: #333; }
 )";

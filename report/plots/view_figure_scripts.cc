@@ -30,6 +30,29 @@ std::string Head(const std::string& title, const std::string& x_label, const std
   return script;
 }
 
+/// Where the key goes, and how much taller the picture gets for it. Short labels: beside the plot;
+/// long ones (a row label with its parameter values) would squeeze the plot, so they go below it,
+/// in as many columns as fit, and the picture grows by their rows.
+struct KeyPlacement {
+  std::string command;
+  int extra_height_px = 0;
+};
+
+KeyPlacement PlaceKey(const std::vector<std::string>& labels, int width_px, int sample_length) {
+  std::size_t longest = 0;
+  for (const std::string& label : labels) longest = std::max(longest, label.size());
+  if (longest <= 28) {
+    return {fmt::format("set key outside right top vertical Left reverse noenhanced samplen {}\n", sample_length), 0};
+  }
+  // About 7 px per character at 10 pt, plus the sample and gaps.
+  const int column_px = 7 * static_cast<int>(longest) + 10 * sample_length + 30;
+  const int columns = std::max(1, width_px / column_px);
+  const int rows = (static_cast<int>(labels.size()) + columns - 1) / columns;
+  return {fmt::format("set key outside below center horizontal Left reverse noenhanced samplen {} maxcols {}\n",
+                      sample_length, columns),
+          18 * rows};
+}
+
 /// Gnuplot refuses an empty plot: one invisible point outside every range stands in.
 std::string EmptyPlot(std::size_t index) {
   return fmt::format("$empty_{0} << EOD\n-1e9 -1e9\nEOD\nplot $empty_{0} using 1:2 with points notitle\n", index);
@@ -101,12 +124,16 @@ std::string BoxplotScript(const BoxplotFigure& figure, const std::filesystem::pa
     for (const auto& box : series.boxes) outliers += box ? box->outliers : 0;
   }
   std::string title = figure.title;
-  if (outliers > 0) {
-    title += fmt::format(" ({} segment{} beyond the whiskers not drawn)", outliers, outliers == 1 ? "" : "s");
-  }
+  if (outliers > 0) title += fmt::format(" ({} beyond the whiskers, not drawn)", outliers);
   const int width = std::clamp(360 + static_cast<int>(categories * series_count) * 22, 800, 1400);
-  std::string script = Head(title, figure.x_label, figure.y_label, png, index, width, 500);
-  script += "set key outside right top vertical Left reverse noenhanced samplen 2\n";
+  std::vector<std::string> labels;
+  for (const BoxSeries& series : figure.series) {
+    const bool empty = std::none_of(series.boxes.begin(), series.boxes.end(), [](const auto& box) { return box.has_value(); });
+    labels.push_back(series.label + (empty ? " (no segments)" : ""));
+  }
+  const KeyPlacement key = PlaceKey(labels, width, 2);
+  std::string script = Head(title, figure.x_label, figure.y_label, png, index, width, 500 + key.extra_height_px);
+  script += key.command;
   script += "set grid ytics\nset border 3\nset ytics nomirror\nset yrange [0:*]\n";
   script += fmt::format("set xrange [0.5:{}]\n", Number(static_cast<double>(categories) + 0.5));
   std::string tics;
@@ -160,11 +187,17 @@ std::string BoxplotScript(const BoxplotFigure& figure, const std::filesystem::pa
 }
 
 std::string LineFigureScript(const LineFigure& figure, const std::filesystem::path& png, std::size_t index) {
-  // Many series: the key beside the plot; a few: inside, on a white box.
-  const bool key_outside = figure.series.size() > 3;
-  std::string script = Head(figure.title, figure.x_label, figure.y_label, png, index, key_outside ? 960 : 800, 480);
-  script += key_outside ? "set key outside right top vertical Left reverse noenhanced samplen 3\n"
-                        : "set key inside right top vertical Left reverse noenhanced samplen 3 box opaque\n";
+  // Many series: a wide picture with the key beside or below the plot; a few: small enough to be shown
+  // two by two without shrinking the text much, the key below the plot, where it hides no point.
+  const bool many = figure.series.size() > 3;
+  std::vector<std::string> labels;
+  for (const LineSeries& series : figure.series) labels.push_back(series.label);
+  if (figure.highlight) labels.push_back(figure.highlight->label);
+  KeyPlacement key = PlaceKey(labels, many ? 960 : 640, 3);
+  if (!many) key = {"set key below horizontal Left reverse noenhanced samplen 3\n", 0};
+  std::string script = Head(figure.title, figure.x_label, figure.y_label, png, index, many ? 960 : 640,
+                            (many ? 480 : 420) + key.extra_height_px);
+  script += key.command;
   script += "set grid xtics ytics\nset border 3\nset xtics nomirror\nset ytics nomirror\n";
   double x_min = std::numeric_limits<double>::infinity();
   double x_max = -std::numeric_limits<double>::infinity();

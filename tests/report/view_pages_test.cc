@@ -134,7 +134,8 @@ TEST_F(ViewPagesTest, TheParameterPageDrawsCurvesAndHeatmapsAndNamesTheBestValue
   EXPECT_THAT(heatmap.cells[0][1].text, HasSubstr("±"));
 
   const std::string page = ReadAll(dir_ / "report/sequences/intel-clean/parameters.html");
-  EXPECT_THAT(page, HasSubstr("ICP.maxIterations=40"));
+  EXPECT_THAT(page, HasSubstr("<th>Best ICP.maxIterations</th>"));
+  EXPECT_THAT(page, HasSubstr("<td class=\"best\">40</td>"));  // ATE: 40 iterations
   EXPECT_THAT(page, HasSubstr("particles=30, resample=0.5"));
   EXPECT_THAT(page, HasSubstr("The same in every row: ICP.thresholdDist=0.75"));
   EXPECT_THAT(page, HasSubstr("swatch palette-c"));

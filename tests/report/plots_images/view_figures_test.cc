@@ -76,7 +76,7 @@ TEST(ViewFigureScriptsTest, BoxesFollowTheSeriesOrderInTheirColoursAndCountOutli
   EXPECT_THAT(script, HasSubstr("'#0072B2'"));
   EXPECT_THAT(script, HasSubstr("'#009E73'"));
   EXPECT_THAT(script, HasSubstr("fill transparent pattern 4"));  // the second hector row is hatched
-  EXPECT_THAT(script, HasSubstr("(9 segments beyond the whiskers not drawn)"));
+  EXPECT_THAT(script, HasSubstr("(9 beyond the whiskers, not drawn)"));
   EXPECT_THAT(script, HasSubstr("print 'SLAMSWEEP_PLOT 4'"));
 }
 
