@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -10,12 +10,6 @@
 
 namespace slamsweep::evaluator {
 namespace {
-
-std::string FormatNumber(double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), "%.9g", value);
-  return buffer;
-}
 
 nlohmann::json OptionalStatistics(const std::optional<ErrorStatistics>& statistics) {
   return statistics ? nlohmann::json(*statistics) : nlohmann::json(nullptr);
@@ -47,13 +41,13 @@ std::vector<double> DefaultSegmentLengthsM(double path_length_m) {
 
 void ValidateSegmentLengths(const std::vector<double>& lengths_m) {
   for (std::size_t i = 0; i < lengths_m.size(); ++i) {
+    std::ostringstream length;
+    length << lengths_m[i];
     if (!std::isfinite(lengths_m[i]) || lengths_m[i] <= 0.0) {
-      throw InputError("segment lengths: expected finite lengths > 0 m, got " + FormatNumber(lengths_m[i]));
+      throw InputError("segment lengths: expected finite lengths > 0 m, got " + length.str());
     }
     for (std::size_t j = 0; j < i; ++j) {
-      if (lengths_m[j] == lengths_m[i]) {
-        throw InputError("segment lengths: " + FormatNumber(lengths_m[i]) + " m is listed twice");
-      }
+      if (lengths_m[j] == lengths_m[i]) throw InputError("segment lengths: " + length.str() + " m is listed twice");
     }
   }
 }

@@ -23,11 +23,6 @@ std::string TableFolder(const ReportLayout& layout, const std::string& table_key
   return page + "/";
 }
 
-std::optional<BoxStats> ToBoxStats(const std::optional<BoxSummary>& box) {
-  if (!box) return std::nullopt;
-  return BoxStats{box->whisker_low, box->q1, box->median, box->q3, box->whisker_high, box->mean, box->n, box->outliers};
-}
-
 /// Adds a figure: its artefact (not made until drawn) and its job.
 void AddFigure(TableViews& views, std::vector<FigureJob>& figures, const fs::path& out_dir, const std::string& id,
                const std::string& path, ViewFigure figure) {
@@ -53,7 +48,7 @@ BoxplotFigure SegmentBoxplot(const SiteData& site, const SequenceModel& sequence
     BoxSeries series;
     series.label = sequence.rows[row.row].algorithm;
     series.style = RowStyle(site, sequence, row.row);
-    for (const SegmentCell& cell : row.cells) series.boxes.push_back(ToBoxStats(cell.*box));
+    for (const SegmentCell& cell : row.cells) series.boxes.push_back(cell.*box);
     figure.series.push_back(std::move(series));
   }
   return figure;

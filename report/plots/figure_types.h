@@ -11,6 +11,8 @@
 #include <variant>
 #include <vector>
 
+#include "report/model/box_summary.h"
+
 namespace slamsweep::report {
 
 /// How one series is drawn: its algorithm's colour and marker (AlgorithmPalette), and `variant`
@@ -22,17 +24,8 @@ struct SeriesStyle {
   int variant = 0;
 };
 
-/// Box statistics as drawn (see report/model/box_summary.h).
-struct BoxStats {
-  double whisker_low = 0.0;
-  double q1 = 0.0;
-  double median = 0.0;
-  double q3 = 0.0;
-  double whisker_high = 0.0;
-  double mean = 0.0;
-  std::size_t n = 0;
-  std::size_t outliers = 0;
-};
+/// Box statistics as drawn: the report model's Tukey box.
+using BoxStats = BoxSummary;
 
 struct BoxSeries {
   std::string label;

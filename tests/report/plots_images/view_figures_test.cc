@@ -45,7 +45,16 @@ cv::Mat ReadAndKeep(const fs::path& png) {
 }
 
 BoxStats Box(double centre, std::size_t outliers = 0) {
-  return {centre * 0.4, centre * 0.8, centre, centre * 1.2, centre * 1.7, centre * 1.05, 60, outliers};
+  BoxStats box;
+  box.n = 60;
+  box.whisker_low = centre * 0.4;
+  box.q1 = centre * 0.8;
+  box.median = centre;
+  box.q3 = centre * 1.2;
+  box.whisker_high = centre * 1.7;
+  box.mean = centre * 1.05;
+  box.outliers = outliers;
+  return box;
 }
 
 BoxplotFigure ThreeRowsBoxplot() {
