@@ -56,7 +56,9 @@ class Artwork {
   /// Draws every plot (one call per report, so a gnuplot process can draw them all).
   virtual void Plots(const std::vector<PlotRequest>& plots) = 0;
   /// Draws the figures of the segment-length and parameter pages (report/html/view_pages.h), one call per report.
-  virtual void Figures(const std::vector<FigureJob>& figures) = 0;
+  /// The default draws none (the pages then say the figures are missing), so an image maker written before
+  /// these pages still builds.
+  virtual void Figures(const std::vector<FigureJob>& figures);
   /// An animated GIF of the stage maps, in order.
   virtual void StagesGif(const std::vector<std::filesystem::path>& stage_pngs, const std::filesystem::path& gif,
                          const GifSettings& settings) = 0;

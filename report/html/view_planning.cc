@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <stdexcept>
 #include <system_error>
 
 #include "evaluator/core/input_error.h"
+#include "report/html/artwork.h"
 #include "report/html/number_format.h"
 #include "report/html/view_pages.h"
 
@@ -150,6 +152,10 @@ HeatmapFigure ParameterHeatmap(const SequenceModel& sequence, const ParameterSwe
 }
 
 }  // namespace
+
+void Artwork::Figures(const std::vector<FigureJob>& figures) {
+  if (!figures.empty()) throw std::runtime_error("this image maker draws no figures of the segment-length and parameter pages");
+}
 
 std::string LengthLabel(double length_m) { return fmt::format("{} m", length_m); }
 
