@@ -207,7 +207,7 @@ TEST_F(ViewsBrowserTest, SegmentAndParameterPagesLoadUnderJenkinsCsp) {
     const fs::path screenshot = fs::path(SLAMSWEEP_ARTIFACT_DIR) / file;
     fs::remove(screenshot);
     // Tall windows: the screenshot shows the whole page, every figure of it.
-    CheckPage(page, screenshot, std::string(file).find("parameters") != std::string::npos ? 3400 : 3000);
+    CheckPage(page, screenshot, 3400);
     EXPECT_TRUE(fs::exists(screenshot)) << page;
     EXPECT_FALSE(testing::ImageSources(dir_ / "report" / page).empty()) << page;
     std::cout << "screenshot of " << page << ": " << screenshot.string() << "\n";
