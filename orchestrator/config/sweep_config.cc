@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <regex>
 #include <set>
 
 #include "evaluator/core/input_error.h"
@@ -58,6 +59,11 @@ EvaluationOptions ParseEvaluation(const std::filesystem::path& file, const YAML:
   if (!node.IsDefined() || node.IsNull()) return evaluation;
   YamlFields fields(file, node, "evaluation");
   ReadEvaluationFields(fields, evaluation);
+  if (const YAML::Node segments = fields.Get("rpe_segments_m"); segments.IsDefined() && !segments.IsNull()) {
+    LocatedCheck(file, segments, [&] {
+      evaluation.rpe_segments_m = ParseSegmentLengths(YamlToJson(segments), fields.PathOf("rpe_segments_m"));
+    });
+  }
   fields.Finish();
   LocatedCheck(file, node, [&] { ValidateEvaluationOptions(evaluation, "evaluation"); });
   return evaluation;
@@ -71,8 +77,11 @@ std::vector<Threshold> ParseThresholds(const std::filesystem::path& file, const 
     YamlFields fields(file, node[i], fmt::format("thresholds[{}]", i));
     Threshold threshold;
     threshold.metric = fields.RequiredText("metric");
-    if (!OneOf(threshold.metric, kMetrics)) {
-      FailExpected(file, fields.Get("metric"), fields.PathOf("metric"), "one of " + Choices(kMetrics));
+    // The segment RPE's metrics name their length (segment_drift_10m: orchestrator/worker/run_metrics.h).
+    static const std::regex kSegmentMetric("segment_(trans|drift|rot)_[0-9]+(p[0-9]+)?m");
+    if (!OneOf(threshold.metric, kMetrics) && !std::regex_match(threshold.metric, kSegmentMetric)) {
+      FailExpected(file, fields.Get("metric"), fields.PathOf("metric"),
+                   "one of " + Choices(kMetrics) + ", or segment_trans|drift|rot_<length>m");
     }
     threshold.statistic = fields.Text("statistic", threshold.statistic);
     if (!OneOf(threshold.statistic, kStatistics)) {

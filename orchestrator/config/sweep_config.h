@@ -15,6 +15,8 @@
 //   workers: 2                       # default --jobs (0 = number of cores)
 //   failure_budget: 0                # stop starting new runs after this many failures; 0 = never stop
 //   evaluation: {align: se2, rpe_delta_m: 1.0, t_max_diff_s: 0.01, stages: 24, map_resolution_m: 0.05}
+//                                    # rpe_segments_m: auto (default: 10-50 % of the reference path, rounded to 1 m,
+//                                    #   as KITTI/rpg) or a list such as [5, 10, 20]; [] = no segment RPE
 //   regression: {alpha: 0.05, min_effect: 0.2}   # `slamsweep history compare --config`: Mann-Whitney U
 //                                    #   significance level in (0, 1) and minimum |Cliff's delta| in [0, 1]
 //   thresholds:                      # JUnit failures

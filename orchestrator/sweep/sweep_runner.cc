@@ -101,8 +101,10 @@ bool RecordedRunIsReusable(const RunSpec& run, const std::string& recorded_statu
   stale = false;
   if (!IsDone(recorded_status, settings.rerun_failed)) return false;
   const auto build = recorded_spec.find("build");
+  const auto evaluation = recorded_spec.find("evaluation");
   nlohmann::json current = ToJson(run);
-  stale = build == recorded_spec.end() || *build != current["build"];
+  stale = build == recorded_spec.end() || *build != current["build"] || evaluation == recorded_spec.end() ||
+          !SameEvaluation(*evaluation, run.evaluation);
   return !stale || settings.reuse_stale;
 }
 

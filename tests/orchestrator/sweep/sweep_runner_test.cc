@@ -104,6 +104,31 @@ TEST(SweepRunner, ASecondSweepSkipsFinishedRunsAndRerunFailedRetriesOnlyThose) {
   EXPECT_EQ(retried.ExitCode(), 0);
 }
 
+// Runs scored under other evaluation options (say other segment lengths) would sit in one group with
+// the new ones but carry other numbers: a rerun redoes them, unless --reuse-stale.
+TEST(SweepRunner, ARunScoredUnderOtherEvaluationOptionsIsRunAgain) {
+  slamsweep::testing::TempDir dir;
+  std::vector<RunSpec> runs = Matrix(2);
+  RecordingStatus status;
+  FakeExecutor first([](const RunSpec&) { return "ok"; });
+  RunSweep(runs, Settings(dir.path()), first, status);
+
+  runs[1].evaluation.rpe_segments_m = std::vector<double>{5.0, 10.0};
+  FakeExecutor again([](const RunSpec&) { return "ok"; });
+  const SweepOutcome repeated = RunSweep(runs, Settings(dir.path()), again, status);
+  EXPECT_THAT(again.started, ElementsAre(runs[1].run_id));
+  EXPECT_EQ(repeated.stale, 1u);
+  EXPECT_EQ(repeated.already_done, 1u);
+
+  runs[1].evaluation.rpe_segments_m = std::vector<double>{20.0};
+  SweepSettings reuse = Settings(dir.path());
+  reuse.reuse_stale = true;
+  FakeExecutor kept([](const RunSpec&) { return "ok"; });
+  const SweepOutcome reused = RunSweep(runs, reuse, kept, status);
+  EXPECT_TRUE(kept.started.empty());
+  EXPECT_EQ(reused.stale, 1u);
+}
+
 TEST(SweepRunner, AdoptsAResultTheStoreNeverSawAndRedoesAHalfWrittenRun) {
   slamsweep::testing::TempDir dir;
   const auto runs = Matrix(3);

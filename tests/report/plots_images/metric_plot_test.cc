@@ -41,7 +41,8 @@ MetricPlot TwoAlgorithms() {
   MetricPlot plot;
   plot.title = "ATE rmse (se2), telecom";
   plot.y_label = "m";
-  plot.series = {{"icp-slam", {0.12, 0.15, 0.11, 0.2}}, {"rbpf-slam", {0.4, 0.35, 0.5}}};
+  // Each series in its algorithm's style (AlgorithmPalette): blue circles and vermillion squares.
+  plot.series = {{"icp-slam", {0.12, 0.15, 0.11, 0.2}, {0x0072B2, 7, 0}}, {"rbpf-slam", {0.4, 0.35, 0.5}, {0xD55E00, 5, 0}}};
   return plot;
 }
 
@@ -55,7 +56,7 @@ TEST(WriteMetricPlotsTest, WritesEveryPlotAsPngInOneCall) {
     const cv::Mat image = ReadPng(job.png);
     EXPECT_EQ(image.cols, 800);
     EXPECT_EQ(image.rows, 480);
-    // The two algorithms' colours (Okabe-Ito blue #0072B2 and vermillion #D55E00) are drawn.
+    // The two algorithms' colours (their styles: Okabe-Ito blue #0072B2 and vermillion #D55E00) are drawn.
     EXPECT_GT(CountColour(image, {0xB2, 0x72, 0x00}), 20);
     EXPECT_GT(CountColour(image, {0x00, 0x5E, 0xD5}), 20);
   }
@@ -83,7 +84,7 @@ TEST(WriteMetricPlotsTest, LogAxisWithZeroValuesDrawsThemAtTheFloor) {
   testing::TempDir dir;
   MetricPlot plot;
   plot.title = "enclosed areas";
-  plot.series = {{"a", {0.0, 0.0, 3.0}}, {"b", {0.0}}, {"c", {}}};
+  plot.series = {{"a", {0.0, 0.0, 3.0}}, {"b", {0.0}, {0xD55E00, 5, 0}}, {"c", {}}};
   const MetricPlotJob job{plot, dir / "zeros.png"};
   WriteMetricPlots({job});
   const cv::Mat image = ReadPng(job.png);
