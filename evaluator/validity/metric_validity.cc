@@ -147,7 +147,7 @@ ValidityStudy ComputeValidityStudy(std::vector<ValidityRun> runs, const Validity
   ValidityStudy study;
   study.options = options;
   std::set<std::string> sequences;
-  std::set<std::string> targets_present;
+  std::map<std::string_view, std::set<std::string>> sequences_of_target;
   for (const ValidityRun& run : runs) {
     if (run.ok && run.odometry_is_reference) ++study.runs_odometry_is_reference;
     if (!Usable(run)) continue;
@@ -155,15 +155,17 @@ ValidityStudy ComputeValidityStudy(std::vector<ValidityRun> runs, const Validity
     for (const ValidityQuantity& target : kTargets) {
       if (ValueOf(run, target.key)) {
         sequences.insert(run.sequence);
-        targets_present.insert(std::string(target.key));
+        sequences_of_target[target.key].insert(run.sequence);
       }
     }
   }
   study.sequences.assign(sequences.begin(), sequences.end());
-  std::vector<std::string> scopes = study.sequences;
-  if (scopes.size() >= 2) scopes.push_back("");  // all sequences, ranks never across sequences
   for (const ValidityQuantity& target : kTargets) {
-    if (targets_present.count(std::string(target.key)) == 0) continue;
+    const auto present = sequences_of_target.find(target.key);
+    if (present == sequences_of_target.end()) continue;
+    // The sequences with this error (relations exist for few), then all of them together.
+    std::vector<std::string> scopes(present->second.begin(), present->second.end());
+    if (scopes.size() >= 2) scopes.push_back("");
     for (const ValidityQuantity& candidate : kCandidates) {
       for (const std::string& sequence : scopes) {
         const std::vector<ValidityPoint> points = ValidityPoints(runs, candidate.key, target.key, sequence);

@@ -97,8 +97,9 @@ struct ValidityStudy {
   /// Runs used (ok, not odometry = reference) and left out because their odometry was the reference.
   std::size_t runs_used = 0;
   std::size_t runs_odometry_is_reference = 0;
-  /// For every target present, every candidate, every sequence and (with two sequences or more)
-  /// all sequences, both poolings; ordered by target, candidate, sequence ("" last), pooling.
+  /// For every target present, every candidate, every sequence that has the target and (with two
+  /// such sequences or more) all of them, both poolings; ordered by target, candidate, sequence
+  /// ("" last), pooling.
   std::vector<ValidityCorrelation> correlations;
 
   bool empty() const { return sequences.empty(); }

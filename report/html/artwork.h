@@ -22,6 +22,23 @@ struct PlotRequest {
   std::filesystem::path png;
 };
 
+/// One coloured set of points of a scatter plot (one noise setting of the validity study).
+struct ScatterSeriesValues {
+  std::string label;
+  std::vector<double> x;
+  std::vector<double> y;  ///< parallel to x
+};
+
+/// One scatter plot of the validity page (a ground-truth-free metric against a real error) to draw
+/// into `png`; series are graded settings, coloured in their order.
+struct ScatterRequest {
+  std::string title;
+  std::string x_label;
+  std::string y_label;
+  std::vector<ScatterSeriesValues> series;
+  std::filesystem::path png;
+};
+
 /// Limits of the per-run animation.
 struct GifSettings {
   int max_side_px = 480;
@@ -47,6 +64,8 @@ class Artwork {
   virtual ~Artwork() = default;
   /// Draws every plot (one call per report, so a gnuplot process can draw them all).
   virtual void Plots(const std::vector<PlotRequest>& plots) = 0;
+  /// Draws every scatter plot (one call per report, like Plots).
+  virtual void ScatterPlots(const std::vector<ScatterRequest>& plots) = 0;
   /// An animated GIF of the stage maps, in order.
   virtual void StagesGif(const std::vector<std::filesystem::path>& stage_pngs, const std::filesystem::path& gif,
                          const GifSettings& settings) = 0;

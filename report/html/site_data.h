@@ -46,12 +46,15 @@ struct SiteData {
   /// (row label, table key) with files/.../pose_log.tum
   std::set<std::pair<std::string, std::string>> pose_logs;
   Html history_section;  ///< the index's nightly-history section (SiteExtension), empty without one
+  bool has_validity_page = false;  ///< validity.html ("Which metrics can be trusted?") was written
 };
 
 /// The pages. `root` is the relative path back to the report root ("" or "../").
 std::string RenderIndexPage(const SiteData& site);
 std::string RenderSequencePage(const SiteData& site, const SequenceModel& sequence);
 std::string RenderRunPage(const SiteData& site, std::size_t run);
+/// A page of the site: `body` in the common frame (navigation, title, footer linking metrics.html).
+std::string RenderSitePage(std::string_view title, std::string_view root, const Html& body);
 /// style.css: the only styling of the site (no inline styles: Jenkins' CSP forbids them).
 std::string_view StyleSheet();
 

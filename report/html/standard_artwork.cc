@@ -4,6 +4,7 @@
 #include "report/images/thumbnail.h"
 #include "report/images/trajectory_overlay.h"
 #include "report/plots/metric_plot.h"
+#include "report/plots/scatter_plot.h"
 
 namespace slamsweep::report {
 
@@ -24,6 +25,17 @@ class StandardArtwork final : public Artwork {
       jobs.push_back(std::move(job));
     }
     WriteMetricPlots(jobs);
+  }
+
+  void ScatterPlots(const std::vector<ScatterRequest>& plots) override {
+    std::vector<ScatterPlotJob> jobs;
+    jobs.reserve(plots.size());
+    for (const ScatterRequest& request : plots) {
+      ScatterPlotJob job{{request.title, request.x_label, request.y_label, {}}, request.png};
+      for (const ScatterSeriesValues& series : request.series) job.plot.series.push_back({series.label, series.x, series.y});
+      jobs.push_back(std::move(job));
+    }
+    WriteScatterPlots(jobs);
   }
 
   void StagesGif(const std::vector<std::filesystem::path>& stage_pngs, const std::filesystem::path& gif,

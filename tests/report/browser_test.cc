@@ -139,6 +139,9 @@ class BrowserTest : public ::testing::Test {
     ReportOptions options;
     options.artwork = artwork_ ? artwork_.get() : &fake_;
     WriteReport(dir_ / "sweep", dir_ / "report", options);
+    // A second report inside the served folder: the validity page with numbers and scatter plots.
+    testing::WriteFixtureSweep(dir_ / "validity-sweep", testing::ValidityFixtureRuns());
+    WriteReport(dir_ / "validity-sweep", dir_ / "report/validity-study", options);
     server_ = std::make_unique<Child>(
         std::vector<std::string>{kPython, SLAMSWEEP_CSP_SERVER, (dir_ / "report").string(),
                                  (dir_ / "port").string(), (dir_ / "requests.log").string()},
@@ -152,8 +155,9 @@ class BrowserTest : public ::testing::Test {
     if (server_) server_->Stop();
   }
 
-  // Loads `page` and checks: no CSP violation, every image of the page requested with 200.
-  void CheckPage(const std::string& page, const fs::path& screenshot = {}) {
+  // Loads `page` and checks: no CSP violation, every image of the page requested with 200. `site` is
+  // the folder of the page's report inside the served one ("" or "validity-study/").
+  void CheckPage(const std::string& page, const fs::path& screenshot = {}, const std::string& site = "") {
     SCOPED_TRACE(page);
     const std::string name = "page" + std::to_string(++pages_);
     const BrowserRun run = LoadInChromium(base_url_ + page, dir_.path(), name, screenshot);
@@ -161,7 +165,7 @@ class BrowserTest : public ::testing::Test {
     EXPECT_TRUE(CspViolations(run.stderr_text).empty()) << ::testing::PrintToString(CspViolations(run.stderr_text));
     const std::string log = ReadAll(dir_ / "requests.log");
     EXPECT_NE(log.find("200 /" + page), std::string::npos) << log;
-    EXPECT_NE(log.find("200 /style.css"), std::string::npos) << log;
+    EXPECT_NE(log.find("200 /" + site + "style.css"), std::string::npos) << log;
     const fs::path page_dir = fs::path("/" + page).parent_path();
     const std::vector<std::string> images = testing::ImageSources(dir_ / "report" / page);
     for (const std::string& src : images) {
@@ -187,6 +191,15 @@ TEST_F(BrowserTest, PagesLoadUnderJenkinsCsp) {
   EXPECT_FALSE(testing::ImageSources(dir_ / "report/index.html").empty());
   CheckPage("sequences/intel-clean.html");
   CheckPage("runs/_script_alert_1___script_-intel-clean-i0-0000abcd.html");
+  CheckPage("metrics.html");
+  CheckPage("validity.html");
+}
+
+TEST_F(BrowserTest, TheValidityPageWithItsPlotsLoadsUnderJenkinsCsp) {
+  const fs::path screenshot = fs::path(SLAMSWEEP_ARTIFACT_DIR) / "report_validity_screenshot.png";
+  CheckPage("validity-study/validity.html", screenshot, "validity-study/");
+  EXPECT_EQ(testing::ImageSources(dir_ / "report/validity-study/validity.html").size(), 24u);
+  std::cout << "screenshot of the validity page: " << screenshot.string() << "\n";
 }
 
 // The detector itself: a page with an inline style must be reported, or a silent browser would

@@ -36,6 +36,11 @@ void FakeArtwork::Plots(const std::vector<PlotRequest>& requests) {
   for (const PlotRequest& request : requests) WritePng(request.png, 128);
 }
 
+void FakeArtwork::ScatterPlots(const std::vector<ScatterRequest>& requests) {
+  scatter_plots = requests;
+  for (const ScatterRequest& request : requests) WritePng(request.png, 64);
+}
+
 void FakeArtwork::StagesGif(const std::vector<fs::path>& stage_pngs, const fs::path& gif, const GifSettings&) {
   if (stage_pngs.empty()) throw std::runtime_error("no stages");
   {

@@ -40,7 +40,7 @@ class WriteReportTest : public ::testing::Test {
 TEST_F(WriteReportTest, WritesTheSite) {
   const ReportSummary summary = Write();
   EXPECT_EQ(summary.runs, 10u);
-  EXPECT_EQ(summary.pages, 1u + 2u + 10u);  // index, 2 sequences, 10 runs
+  EXPECT_EQ(summary.pages, 1u + 2u + 10u + 2u);  // index, 2 sequences, 10 runs, metrics.html, validity.html
   const fs::path out = dir_ / "report";
   for (const char* file : {"index.html", "style.css", "summary.csv", "runs.csv", "summary.json", "sequences/intel-clean.html",
                            "sequences/mit-no-ref-clean.html", "files/gmapping/intel-clean/rmse.txt",
@@ -235,6 +235,91 @@ TEST_F(WriteReportTest, StagePathsLeavingTheRunFolderAreIgnored) {
   EXPECT_EQ(artwork_.gifs, 9);
   EXPECT_EQ(artwork_.stages.size(), 9u * 3u - 1u);
   for (const fs::path& stage : artwork_.stages) EXPECT_EQ(stage.string().find(".."), std::string::npos) << stage;
+  EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
+}
+
+TEST_F(WriteReportTest, EveryPageLinksTheMetricSpecification) {
+  Write();
+  const std::string spec = ReadAll(dir_ / "report/metrics.html");
+  // Every metric a page shows is defined, the map-versus-reference scores included.
+  for (const char* metric : {"ape_trans", "rpe_trans", "relations_trans", "occupied_to_free_unknown", "corners",
+                             "enclosed_areas", "map_chamfer", "map_accuracy", "map_completeness", "map_f1",
+                             "map_iou_occupied", "map_iou_free", "wall_s", "peak_rss_kb", "spearman_rho"}) {
+    EXPECT_NE(spec.find("<code>" + std::string(metric) + "</code>"), std::string::npos) << metric;
+  }
+  for (const char* page : {"index.html", "sequences/intel-clean.html", "runs/gmapping-intel-clean-i1-0000abcd.html",
+                           "validity.html"}) {
+    const std::string root = std::string(page).find('/') == std::string::npos ? "" : "../";
+    EXPECT_NE(ReadAll(dir_ / "report" / page).find("<a href=\"" + root + "metrics.html\">metric specification</a>"),
+              std::string::npos)
+        << page;
+  }
+}
+
+TEST_F(WriteReportTest, FewRunsGiveNoCorrelation) {
+  // The standard sweep has 6 successful runs with an ATE on intel: below 8, no number.
+  Write();
+  const std::string page = ReadAll(dir_ / "report/validity.html");
+  EXPECT_NE(page.find("too few runs"), std::string::npos);
+  EXPECT_EQ(page.find("ρ ="), std::string::npos);
+  EXPECT_NE(ReadAll(dir_ / "report/index.html").find("href=\"validity.html\""), std::string::npos);
+}
+
+TEST_F(WriteReportTest, TheValidityPageShowsCorrelationsIntervalsAndPlots) {
+  fs::remove_all(dir_ / "sweep");
+  testing::WriteFixtureSweep(dir_ / "sweep", testing::ValidityFixtureRuns());
+  slamsweep::testing::WriteFile(dir_ / "sweep/validity.csv", "candidate,target\n");
+  Write();
+  const std::string page = ReadAll(dir_ / "report/validity.html");
+  EXPECT_NE(page.find("Which metrics can be trusted?"), std::string::npos);
+  // Corners rise exactly with the ATE on each sequence: +1 with a degenerate interval, all 9 runs.
+  EXPECT_NE(page.find("<td class=\"verdict-tracks\">ρ = +1.00 [+1.00, +1.00]<br><span class=\"n\">n=9, tracks error"),
+            std::string::npos);
+  // Over both sequences (never ranked together), still exactly +1 with all 18 runs.
+  EXPECT_NE(page.find("n=18, tracks error"), std::string::npos);
+  // The occupied ratio falls with it; enclosed areas never change.
+  EXPECT_NE(page.find("<td class=\"verdict-opposite\">ρ = -1.00 [-1.00, -1.00]"), std::string::npos);
+  EXPECT_NE(page.find("no variation"), std::string::npos);
+  EXPECT_NE(page.find("Against Map vs reference: Chamfer distance"), std::string::npos);
+  EXPECT_EQ(page.find("Against Relations"), std::string::npos);  // no relations in this sweep
+  EXPECT_NE(page.find("href=\"validity.csv\""), std::string::npos);
+  EXPECT_EQ(ReadAll(dir_ / "report/validity.csv"), "candidate,target\n");  // the sweep's own file, copied
+
+  // One scatter plot per real error x candidate with values x sequence: 2 x 6 x 2.
+  ASSERT_EQ(artwork_.scatter_plots.size(), 24u);
+  const ScatterRequest* corners = nullptr;
+  for (const ScatterRequest& plot : artwork_.scatter_plots) {
+    EXPECT_TRUE(fs::exists(plot.png)) << plot.png;
+    if (plot.title == "intel" && plot.x_label == "Corners (count)" && plot.y_label == "ATE translation RMSE (m)") {
+      corners = &plot;
+    }
+  }
+  ASSERT_NE(corners, nullptr);
+  EXPECT_NE(page.find("<figcaption>intel: Corners vs ATE translation RMSE</figcaption>"), std::string::npos);
+  // No run has the other occupied proportions: no rows for them.
+  EXPECT_EQ(page.find("Unknown / all cells"), std::string::npos);
+  // A series per noise setting, in natural order: odo-1, odo-2, odo-10.
+  std::string labels;
+  for (const ScatterSeriesValues& series : corners->series) labels += series.label + ";";
+  ASSERT_EQ(corners->series.size(), 3u) << labels;
+  EXPECT_EQ(corners->series[0].label, "noise odo-1");
+  EXPECT_EQ(corners->series[2].label, "noise odo-10");
+  EXPECT_EQ(corners->series[2].x, (std::vector<double>{100.0, 101.0, 102.0}));
+  EXPECT_EQ(testing::ImageSources(dir_ / "report/validity.html").size(), 24u);
+  EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty()) << ::testing::PrintToString(testing::BrokenLinks(dir_ / "report"));
+}
+
+TEST_F(WriteReportTest, WithoutReferenceDataThereIsNoValidityPage) {
+  Write();
+  ASSERT_TRUE(fs::exists(dir_ / "report/validity.html"));
+  testing::FixtureRun run = testing::MakeRun("x", "s", 0);
+  run.with_reference = false;
+  run.corners = 3.0;
+  fs::remove_all(dir_ / "sweep");
+  testing::WriteFixtureSweep(dir_ / "sweep", {run});
+  Write();
+  EXPECT_FALSE(fs::exists(dir_ / "report/validity.html"));  // the earlier report's page is gone
+  EXPECT_EQ(ReadAll(dir_ / "report/index.html").find("validity.html"), std::string::npos);
   EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
 }
 

@@ -98,6 +98,23 @@ TEST(MetricValidityTest, SequencesAreNeverRankedTogether) {
   EXPECT_EQ(study.sequences, (std::vector<std::string>{"floor", "intel"}));
 }
 
+TEST(MetricValidityTest, ATargetIsStudiedOnlyWhereItExists) {
+  // Relations exist on intel alone: no floor column and no "all sequences" column for them.
+  std::vector<ValidityRun> runs;
+  for (int i = 0; i < 8; ++i) {
+    ValidityRun intel = MakeRun("intel", "n1", i, 1.0 + i, 10.0 + i);
+    intel.values["relations_trans.mean"] = 0.5 + i;
+    runs.push_back(intel);
+    runs.push_back(MakeRun("floor", "n1", i, 0.1 + 0.01 * i, 100.0 + i));
+  }
+  const ValidityStudy study = ComputeValidityStudy(runs);
+  const std::string relations = "relations_trans.mean";
+  EXPECT_NE(study.Find("corners.value", relations, "intel", ValidityPooling::kAcrossNoise), nullptr);
+  EXPECT_EQ(study.Find("corners.value", relations, "floor", ValidityPooling::kAcrossNoise), nullptr);
+  EXPECT_EQ(study.Find("corners.value", relations, "", ValidityPooling::kAcrossNoise), nullptr);
+  EXPECT_NE(study.Find("corners.value", "ape_trans.rmse", "", ValidityPooling::kAcrossNoise), nullptr);
+}
+
 TEST(MetricValidityTest, WithinNoiseRanksOnlyRunsOfOneNoiseSetting) {
   // The noise level drives both the error and the corners up (across noise: tracks), but within
   // each noise level the run with more corners has the smaller error (within noise: opposite).
