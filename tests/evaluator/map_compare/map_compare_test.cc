@@ -227,6 +227,44 @@ TEST(MapResampleTest, FinerCellsSplitEachCell) {
   }
 }
 
+TEST(MapCompareTest, FarWallsAgreeWithABruteForceComputation) {
+  // A few scattered occupied cells: most distances exceed the 64-cell row scan, so the exact
+  // lower-envelope pass answers them.
+  std::mt19937 random(11);
+  std::uniform_int_distribution<int> row(0, 199), col(0, 299);
+  for (int trial = 0; trial < 3; ++trial) {
+    OccupancyGrid estimate(300, 200, 0.05, {}, 0.0f), reference(300, 200, 0.05, {}, 0.0f);
+    for (int i = 0; i < 6; ++i) estimate.at(row(random), col(random)) = 1.0f;
+    for (int i = 0; i < 4; ++i) reference.at(row(random), col(random)) = 1.0f;
+    const MapComparison result = CompareMaps(estimate, reference);
+    const BruteForce expected = BruteForceScores(estimate, reference, 2);
+    EXPECT_NEAR(result.estimate_to_reference_mean_m, expected.est_to_ref_mean, 1e-9) << trial;
+    EXPECT_NEAR(result.reference_to_estimate_mean_m, expected.ref_to_est_mean, 1e-9) << trial;
+    EXPECT_GT(result.estimate_to_reference_max_m, 64 * 0.05) << trial;
+  }
+}
+
+TEST(MapCompareTest, ARotatedCopyPlacedBackIsPerfect) {
+  // The floor turned by 90 degrees about the origin (cell (r, c) of the copy is cell (c, ...) of
+  // the original), with the transform that turns it back: every cell lands on its twin.
+  const OccupancyGrid floor = Floor(0.0, 0.0);
+  OccupancyGrid turned(floor.height, floor.width, floor.resolution_m, {-floor.height * floor.resolution_m, 0.0, 0.0});
+  for (int r = 0; r < floor.height; ++r) {
+    for (int c = 0; c < floor.width; ++c) {
+      // World (x, y) -> (-y, x): row from the bottom becomes the column counted from the right.
+      const int from_bottom = floor.height - 1 - r;
+      turned.at(turned.height - 1 - c, turned.width - 1 - from_bottom) = floor.at(r, c);
+    }
+  }
+  MapCompareOptions options;
+  options.transform.yaw_rad = -M_PI / 2;  // back from (-y, x) to (x, y)
+  const MapComparison result = CompareMaps(turned, floor, options);
+  EXPECT_NEAR(result.chamfer_m, 0.0, 1e-12);
+  EXPECT_DOUBLE_EQ(result.f1, 1.0);
+  EXPECT_DOUBLE_EQ(result.iou_free, 1.0);
+  EXPECT_EQ(result.estimate_occupied, result.reference_occupied);
+}
+
 TEST(MapCompareTest, RefusesMapsItCannotCompare) {
   OccupancyGrid coarse = Floor();
   coarse.resolution_m = 0.1;
