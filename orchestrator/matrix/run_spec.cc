@@ -457,6 +457,8 @@ json RunIdentity(const RunSpec& spec) {
   sequence.erase("citation");
   sequence.erase("licence");
   sequence.erase("download");
+  // Nor does what a run is scored against (like `evaluation`): the reference map is never the program's input.
+  sequence.erase("reference_map");
   const json algorithm = ToJson(spec.algorithm);
   json algorithm_identity = {{"name", algorithm["name"]},
                              {"adapter", algorithm["adapter"]},
