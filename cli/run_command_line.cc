@@ -21,6 +21,8 @@ int RunCommandLine(int argc, const char* const* argv, const Streams& streams) {
   RegisterAlgorithmsCommand(app, streams);
   RegisterWorkerCommand(app, streams, exit_code);
   RegisterHistoryCommands(app, streams, exit_code);
+  RegisterServeCommand(app, streams, exit_code);
+  RegisterSubmitCommand(app, streams, exit_code);
   try {
     app.parse(argc, argv);
     return exit_code;

@@ -12,6 +12,8 @@ packages=(
   # libraries (README "Dependencies" says why each is there)
   libeigen3-dev libopencv-dev nlohmann-json3-dev libyaml-cpp-dev libspdlog-dev libfmt-dev
   libcli11-dev zlib1g-dev libdeflate-dev libsqlite3-dev libboost-dev libboost-filesystem-dev libssl-dev
+  # `slamsweep serve` and `submit`: the HTTP server and client (cpp-httplib)
+  libcpp-httplib-dev
   # the report: plots (gnuplot), map GIFs (giflib); headless Chromium checks the report in tests
   gnuplot-nox libgif-dev chromium
   # MRPT: rawlog reading/writing (libmrpt-obs-dev), the real SLAM programs (mrpt-apps),
@@ -22,6 +24,8 @@ packages=(
   # tests and benchmarks; python3-scipy is the independent reference for the Spearman rank
   # correlation of the metric validity study (tests/evaluator/statistics)
   libgtest-dev libgmock-dev libbenchmark-dev shellcheck python3-scipy
+  # the service tests: /metrics parsed by the Prometheus project's own parser; wrk drives bench/service/load_test.sh
+  python3-prometheus-client wrk
   # the Slurm executor's test: a real one-node cluster on localhost (jobs/slurm/local-cluster.sh)
   slurm-wlm munge
 )

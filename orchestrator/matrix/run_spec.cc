@@ -177,6 +177,7 @@ NoiseSpec NoiseFromJson(const json& value, const std::string& path) {
 json ToJson(const EvaluationOptions& evaluation) {
   return json{{"align", evaluation.align},
               {"rpe_delta_m", evaluation.rpe_delta_m},
+              {"rpe_segments_m", SegmentLengthsJson(evaluation.rpe_segments_m)},
               {"t_max_diff_s", evaluation.t_max_diff_s},
               {"stages", evaluation.stages},
               {"map_resolution_m", evaluation.map_resolution_m},
@@ -184,10 +185,12 @@ json ToJson(const EvaluationOptions& evaluation) {
 }
 
 EvaluationOptions EvaluationFromJson(const json& value, const std::string& path) {
-  const json object = WithoutNulls(value, path);
+  json object = WithoutNulls(value, path);
+  const json segments = Take(object, "rpe_segments_m");
   JsonFields fields(object, path);
   EvaluationOptions evaluation;
   ReadEvaluationFields(fields, evaluation);
+  if (!segments.is_null()) evaluation.rpe_segments_m = ParseSegmentLengths(segments, Join(path, "rpe_segments_m"));
   fields.Finish();
   ValidateEvaluationOptions(evaluation, path);
   return evaluation;
@@ -251,6 +254,14 @@ json ToJson(const evaluator::CatalogEntry& entry) {
   // Only when set: the run ids of entries without one (every run before it existed) stay the same.
   if (!entry.reference_map_path.empty()) out["reference_map"] = entry.reference_map_path;
   return out;
+}
+
+bool SameEvaluation(const json& recorded_evaluation, const EvaluationOptions& current) {
+  try {
+    return EvaluationFromJson(recorded_evaluation, "evaluation") == current;
+  } catch (const InputError&) {
+    return false;
+  }
 }
 
 evaluator::CatalogEntry CatalogEntryFromJson(const json& value, const std::string& path) {

@@ -186,6 +186,15 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
     }
   }
   result.metrics = ComputeRunMetrics(spec.evaluation, metric_inputs);
+  if (result.metrics.segment_errors) {
+    // The report's boxplots need every segment; the metrics themselves are already in result.json.
+    try {
+      ev::WriteSegmentErrorsCsv(*result.metrics.segment_errors, paths.SegmentErrorsCsv());
+      result.outputs["rpe_segments"] = paths.SegmentErrorsCsv().filename().string();
+    } catch (const ev::InputError& error) {
+      result.warnings.push_back(std::string("segment_rpe: ") + error.what());
+    }
+  }
 }
 
 }  // namespace

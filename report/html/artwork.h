@@ -3,14 +3,23 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "report/plots/figure_types.h"
+#include "report/plots/scatter_plot.h"
 
 namespace slamsweep::report {
 
 /// One algorithm's values in a metric plot (one per successful iteration).
 struct PlotSeriesValues {
+  PlotSeriesValues() = default;
+  PlotSeriesValues(std::string algorithm_name, std::vector<double> series_values, SeriesStyle series_style = {})
+      : algorithm(std::move(algorithm_name)), values(std::move(series_values)), style(series_style) {}
+
   std::string algorithm;
   std::vector<double> values;
+  SeriesStyle style;  ///< the algorithm's colour and marker (AlgorithmPalette)
 };
 
 /// One metric plot of the paper's figures 3, 5, 6, 7 to draw into `png`.
@@ -19,23 +28,6 @@ struct PlotRequest {
   std::string y_label;
   bool log_scale = true;
   std::vector<PlotSeriesValues> series;
-  std::filesystem::path png;
-};
-
-/// One coloured set of points of a scatter plot (one noise setting of the validity study).
-struct ScatterSeriesValues {
-  std::string label;
-  std::vector<double> x;
-  std::vector<double> y;  ///< parallel to x
-};
-
-/// One scatter plot of the validity page (a ground-truth-free metric against a real error) to draw
-/// into `png`; series are graded settings, coloured in their order.
-struct ScatterRequest {
-  std::string title;
-  std::string x_label;
-  std::string y_label;
-  std::vector<ScatterSeriesValues> series;
   std::filesystem::path png;
 };
 
@@ -64,8 +56,12 @@ class Artwork {
   virtual ~Artwork() = default;
   /// Draws every plot (one call per report, so a gnuplot process can draw them all).
   virtual void Plots(const std::vector<PlotRequest>& plots) = 0;
-  /// Draws every scatter plot (one call per report, like Plots).
-  virtual void ScatterPlots(const std::vector<ScatterRequest>& plots) = 0;
+  /// Draws every scatter plot of validity.html (one call per report, like Plots).
+  virtual void ScatterPlots(const std::vector<ScatterPlotJob>& plots) = 0;
+  /// Draws the figures of the segment-length and parameter pages (report/html/view_pages.h), one call per report.
+  /// The default draws none (the pages then say the figures are missing), so an image maker written before
+  /// these pages still builds.
+  virtual void Figures(const std::vector<FigureJob>& figures);
   /// An animated GIF of the stage maps, in order.
   virtual void StagesGif(const std::vector<std::filesystem::path>& stage_pngs, const std::filesystem::path& gif,
                          const GifSettings& settings) = 0;

@@ -42,6 +42,19 @@ std::vector<Section> Sections() {
           "Relative pose error over consecutive pose pairs delta metres of travel apart (1 m by default): "
           "E = (P_ref_i^-1 P_ref_j)^-1 (P_est_i^-1 P_est_j), its translation part. No alignment is needed."},
          {"rpe_rot", "deg", "lower", "The rotation angle of the same E."},
+         {"segment_trans_<L>m", "m", "lower",
+          "Segment RPE (drift per segment length, as the KITTI odometry benchmark and rpg_trajectory_evaluation report "
+          "it): for each length L, every reference pose is paired with the later pose whose path along the REFERENCE "
+          "is nearest L (within 10 % of L), so every run of a sequence is scored on the same stretches whatever its own "
+          "errors; per segment |t(E)| of the same E as rpe_trans, no alignment. At each L it equals evo's rpe with "
+          "--delta L --delta_unit m --all_pairs --pairs_from_reference. The lengths (evaluation.rpe_segments_m) are "
+          "10, 20, 30, 40 and 50 % of the sequence's whole reference path rounded to 1 m by default, the same for every "
+          "run of a group, and part of the name (segment_trans_12m), so runs scored at other lengths never share a "
+          "column. Statistics over the segments: mean, median, std, min, max, n; the run's segments are in "
+          "rpe_segments.csv."},
+         {"segment_drift_<L>m", "%", "lower", "The same segments: 100 |t(E)| / L, the translation drift in % of the "
+                                                "segment length (the segment-length page's drift)."},
+         {"segment_rot_<L>m", "deg/m", "lower", "The same segments: the rotation angle of E divided by L."},
          {"relations_trans", "m", "lower",
           "Kuemmerle et al. (2009): for every relation (t1, t2, expected motion) of the sequence's relations file, the "
           "estimated poses at t1 and t2 are interpolated and the error (P1^-1 P2) ⊖ expected is taken; mean and std of "
@@ -149,7 +162,7 @@ std::string RenderMetricSpecPage(const SiteData& /*site*/) {
     body += T("<table class=\"definitions\">\n<thead>") + Element("tr", "", header) + T("</thead>\n<tbody>\n") + rows +
             T("</tbody>\n</table>\n");
   }
-  return RenderSitePage("Metric specification", "", body);
+  return RenderPage("Metric specification", "", body);
 }
 
 }  // namespace slamsweep::report

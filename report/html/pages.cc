@@ -28,13 +28,10 @@ constexpr std::string_view kPageTemplate = R"(<!DOCTYPE html>
 Html T(std::string_view markup) { return Html::Trusted(markup); }
 Html E(std::string_view text) { return Html::Escape(text); }
 
-std::string Page(std::string_view title, std::string_view root, const Html& body) {
-  return RenderTemplate(kPageTemplate, {{"title", E(title)}, {"root", E(root)}, {"body", body}}).str();
-}
+std::string Page(std::string_view title, std::string_view root, const Html& body) { return RenderPage(title, root, body); }
 
 Html Image(std::string_view src, std::string_view alt, std::string_view css_class) {
-  return T("<img class=\"" + EscapeHtml(css_class) + "\" src=\"" + EscapeHtml(src) + "\" alt=\"" + EscapeHtml(alt) +
-           "\">");
+  return ImageElement(src, alt, css_class);
 }
 
 std::string CountsText(const RunCounts& counts) {
@@ -81,6 +78,7 @@ Html MetricTableHtml(const SiteData& site, const SequenceModel& sequence, const 
   for (const AlgorithmRow& row : sequence.rows) {
     Html name = E(row.algorithm);
     if (row.median_run) name = Link(std::string(root) + site.layout->RunPage(*row.median_run), name);
+    name = AlgorithmSwatch(site, row.name) + name;
     name += RowNotes(row);
     Html line = Element("th", "", name) +
                 Element("td", row.counts.failed + row.counts.unfinished > 0 ? "failures" : "", E(CountsText(row.counts)));
@@ -166,6 +164,22 @@ Html RunList(const SiteData& site, const SequenceModel& sequence, std::string_vi
   return T("<table>\n<thead>") + Element("tr", "", header) + T("</thead>\n<tbody>\n") + rows + T("</tbody>\n</table>\n");
 }
 
+/// Links to the table's segment-length and parameter pages, when it has them.
+Html ViewLinks(const SiteData& site, const SequenceModel& sequence, std::string_view root) {
+  const auto views = site.views.find(sequence.key);
+  if (views == site.views.end()) return {};
+  Html links;
+  if (!views->second.segments_page.empty()) {
+    links += Element("li", "", Link(std::string(root) + views->second.segments_page,
+                                    E("Drift over segment lengths (segment RPE) on " + sequence.title)));
+  }
+  if (!views->second.parameters_page.empty()) {
+    links += Element("li", "", Link(std::string(root) + views->second.parameters_page,
+                                    E("Parameters: metrics against parameter values on " + sequence.title)));
+  }
+  return links.str().empty() ? Html() : Element("ul", "views", links);
+}
+
 Html KeyValueTable(const std::vector<std::pair<std::string, std::string>>& rows) {
   Html body;
   for (const auto& [key, value] : rows) body += Element("tr", "", Element("th", "", E(key)) + Element("td", "", E(value)));
@@ -173,10 +187,6 @@ Html KeyValueTable(const std::vector<std::pair<std::string, std::string>>& rows)
 }
 
 }  // namespace
-
-std::string RenderSitePage(std::string_view title, std::string_view root, const Html& body) {
-  return Page(title, root, body);
-}
 
 std::string RenderIndexPage(const SiteData& site) {
   const SweepModel& model = *site.model;
@@ -202,6 +212,7 @@ std::string RenderIndexPage(const SiteData& site) {
     section += Plots(site, sequence, "");
     section += Element("p", "", Link(site.layout->SequencePage(sequence.key),
                                      E("Map gallery and every run of " + sequence.title)));
+    section += ViewLinks(site, sequence, "");
     Html files;
     for (const AlgorithmRow& row : sequence.rows) {
       const std::string dir = site.layout->FilesDir(row.algorithm, sequence.key);
@@ -222,6 +233,7 @@ std::string RenderIndexPage(const SiteData& site) {
 std::string RenderSequencePage(const SiteData& site, const SequenceModel& sequence) {
   const std::string root = "../";
   Html body = SequenceTables(site, sequence, root);
+  body += ViewLinks(site, sequence, root);
   body += Element("h2", "", E("Metric plots"));
   body += Plots(site, sequence, root);
   body += Element("h2", "", E("Map gallery"));
@@ -325,6 +337,21 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
   body += Element("p", "", Link(root + site.layout->SequencePage(table_key),
                                 E("Sequence " + record.sequence + ", noise " + record.noise)));
   return Page("Run " + record.run_id, root, body);
+}
+
+std::string RenderPage(std::string_view title, std::string_view root, const Html& body) {
+  return RenderTemplate(kPageTemplate, {{"title", E(title)}, {"root", E(root)}, {"body", body}}).str();
+}
+
+Html ImageElement(std::string_view src, std::string_view alt, std::string_view css_class) {
+  return T("<img class=\"" + EscapeHtml(css_class) + "\" src=\"" + EscapeHtml(src) + "\" alt=\"" + EscapeHtml(alt) +
+           "\">");
+}
+
+Html AlgorithmSwatch(const SiteData& site, std::string_view algorithm) {
+  if (site.palette == nullptr) return {};
+  const AlgorithmStyle style = site.palette->StyleOf(algorithm);
+  return Element("span", "swatch " + style.CssClass(), E(style.glyph)) + T(" ");
 }
 
 std::string_view StyleSheet() {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <iterator>
 #include <map>
 #include <set>
 #include <system_error>
@@ -104,9 +105,60 @@ Html CorrelationCell(const ev::ValidityCorrelation* c) {
   return Element("td", VerdictClass(c->verdict), content);
 }
 
+/// More than one algorithm among the points: the key then names both the noise setting and the algorithm.
+bool SeveralAlgorithms(const std::vector<ev::ValidityPoint>& points) {
+  return std::any_of(points.begin(), points.end(),
+                     [&](const ev::ValidityPoint& p) { return p.algorithm != points.front().algorithm; });
+}
+
+/// The points' noise settings in the natural order of their names.
+std::set<std::string, decltype(&NaturalLess)> NoiseSettings(const std::vector<ev::ValidityPoint>& points) {
+  std::set<std::string, decltype(&NaturalLess)> noises(&NaturalLess);
+  for (const ev::ValidityPoint& point : points) noises.insert(point.noise);
+  return noises;
+}
+
+/// One series per noise setting and algorithm. With several noise settings the colour grades them in the
+/// natural order of their names (light first, dark last: what "all noise levels" ranks across) and the
+/// marker is the algorithm's; with one, colour and marker are the algorithm's, as in every other plot of
+/// the report.
+std::vector<ScatterSeries> ScatterSeriesOf(const std::vector<ev::ValidityPoint>& points, const AlgorithmPalette& palette) {
+  const auto noises = NoiseSettings(points);
+  const bool several_algorithms = SeveralAlgorithms(points);
+  std::map<std::pair<std::size_t, std::string>, ScatterSeries> by_noise_and_algorithm;
+  for (const ev::ValidityPoint& point : points) {
+    const auto noise = static_cast<std::size_t>(std::distance(noises.begin(), noises.find(point.noise)));
+    ScatterSeries& series = by_noise_and_algorithm[{noise, point.algorithm}];
+    if (series.x.empty()) {
+      const AlgorithmStyle style = palette.StyleOf(point.algorithm);
+      if (noises.size() > 1) {
+        series.label = several_algorithms ? point.noise + " · " + point.algorithm : point.noise;
+        series.style.rgb = GradedColour(noise, noises.size());
+      } else {
+        series.label = point.algorithm;
+        series.style.rgb = style.rgb;
+      }
+      series.style.point_type = style.point_type;
+    }
+    series.x.push_back(point.x);
+    series.y.push_back(point.y);
+  }
+  std::vector<ScatterSeries> series;
+  for (auto& [key, values] : by_noise_and_algorithm) series.push_back(std::move(values));
+  return series;
+}
+
+/// What the key's colours and markers stand for.
+std::string KeyTitle(const std::vector<ev::ValidityPoint>& points) {
+  const auto noises = NoiseSettings(points);
+  if (noises.size() == 1) return "algorithm (noise setting " + *noises.begin() + ")";
+  return SeveralAlgorithms(points) ? "colour: noise setting, marker: algorithm" : "colour: noise setting";
+}
+
 }  // namespace
 
-ValiditySite PlanValidity(const SweepModel& model, const fs::path& out_dir, std::vector<ScatterRequest>& requests) {
+ValiditySite PlanValidity(const SweepModel& model, const AlgorithmPalette& palette, const fs::path& out_dir,
+                          std::vector<ScatterPlotJob>& jobs) {
   ValiditySite site;
   const std::vector<ev::ValidityRun> runs = ToValidityRuns(model.runs);
   site.study = ev::ComputeValidityStudy(runs);
@@ -119,19 +171,13 @@ ValiditySite PlanValidity(const SweepModel& model, const fs::path& out_dir, std:
         const std::string& sequence = site.study.sequences[s];
         const std::vector<ev::ValidityPoint> points = ev::ValidityPoints(runs, candidate.key, target, sequence);
         if (points.size() < 2) continue;
-        std::map<std::string, ScatterSeriesValues, decltype(&NaturalLess)> by_noise(&NaturalLess);
-        for (const ev::ValidityPoint& point : points) {
-          ScatterSeriesValues& series = by_noise[point.noise];
-          series.label = "noise " + point.noise;
-          series.x.push_back(point.x);
-          series.y.push_back(point.y);
-        }
-        ScatterRequest request;
+        ScatterPlotJob job;
         // The picture's own title stays short (the axes say what is plotted); the caption has it all.
-        request.title = sequence;
-        request.x_label = AxisLabel(candidate.key);
-        request.y_label = AxisLabel(target);
-        for (auto& [noise, series] : by_noise) request.series.push_back(std::move(series));
+        job.plot.title = sequence;
+        job.plot.x_label = AxisLabel(candidate.key);
+        job.plot.y_label = AxisLabel(target);
+        job.plot.series = ScatterSeriesOf(points, palette);
+        job.plot.key_title = KeyTitle(points);
         ValidityPlot plot;
         plot.candidate = candidate.key;
         plot.target = target;
@@ -140,9 +186,9 @@ ValiditySite PlanValidity(const SweepModel& model, const fs::path& out_dir, std:
         // Sequence names are untrusted: its index keeps two names that sanitise alike apart.
         plot.path = fmt::format("plots/validity/{}-{}-{}-vs-{}.png", s, SafeFileName(sequence), candidate.key, target);
         plot.note = "no image maker configured";
-        request.png = out_dir / plot.path;
+        job.png = out_dir / plot.path;
         site.plots.push_back(std::move(plot));
-        requests.push_back(std::move(request));
+        jobs.push_back(std::move(job));
       }
     }
   }
@@ -233,9 +279,15 @@ std::string RenderValidityPage(const SiteData& /*site*/, const ValiditySite& val
                                : Element("p", "note", E("Plot not available: " + plot.note));
       figures += Element("figure", "plot", content + Element("figcaption", "", E(plot.title)));
     }
-    if (!figures.str().empty()) body += Element("div", "plots", figures);
+    if (!figures.str().empty()) {
+      body += Element("p", "note",
+                      E("Each point is one run. With several noise settings, colour: its noise setting, light to dark "
+                        "in the order of the settings' names (the key lists them), and marker: its algorithm's; with "
+                        "one, colour and marker are its algorithm's, as in every plot of this report."));
+      body += Element("div", "plots", figures);
+    }
   }
-  return RenderSitePage("Which metrics can be trusted?", "", body);
+  return RenderPage("Which metrics can be trusted?", "", body);
 }
 
 }  // namespace slamsweep::report

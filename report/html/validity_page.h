@@ -30,11 +30,13 @@ struct ValiditySite {
   bool has_csv = false;  ///< validity.csv was copied from the sweep
 };
 
-/// The study of the sweep's runs, and one scatter request per target present x candidate x sequence
-/// with at least two runs (points coloured by noise setting, in natural order of their names).
+/// The study of the sweep's runs, and one scatter plot per target present x candidate x sequence
+/// with at least two runs: a series per noise setting and algorithm. With several noise settings the
+/// colour grades them light to dark in the natural order of their names (GradedColour) and the marker
+/// is the algorithm's (`palette`); with one, colour and marker are the algorithm's. The key says which.
 /// Plots go to plots/validity/. An empty study (no reference data) plans nothing.
-ValiditySite PlanValidity(const SweepModel& model, const std::filesystem::path& out_dir,
-                          std::vector<ScatterRequest>& requests);
+ValiditySite PlanValidity(const SweepModel& model, const AlgorithmPalette& palette,
+                          const std::filesystem::path& out_dir, std::vector<ScatterPlotJob>& jobs);
 
 /// Marks the plots whose files exist and counts them into `summary` (missing ones only when drawing).
 void CountValidityPlots(const std::filesystem::path& out_dir, bool drawing, ValiditySite& validity,

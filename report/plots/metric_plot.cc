@@ -1,17 +1,17 @@
 #include "report/plots/metric_plot.h"
 
+#include "report/plots/gnuplot_batch.h"
 #include "report/plots/metric_plot_script.h"
-#include "report/plots/plot_batch.h"
 
 namespace slamsweep::report {
 
 void WriteMetricPlots(const std::vector<MetricPlotJob>& jobs) {
-  std::vector<PlotScript> scripts;
-  scripts.reserve(jobs.size());
+  std::vector<GnuplotBatchJob> batch;
+  batch.reserve(jobs.size());
   for (std::size_t i = 0; i < jobs.size(); ++i) {
-    scripts.push_back({jobs[i].plot.title, jobs[i].png, MetricPlotScript(jobs[i].plot, jobs[i].png, i)});
+    batch.push_back({MetricPlotScript(jobs[i].plot, jobs[i].png, i), jobs[i].png, jobs[i].plot.title});
   }
-  DrawPlotScripts(scripts);
+  RunGnuplotBatch(batch);
 }
 
 }  // namespace slamsweep::report

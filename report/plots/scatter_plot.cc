@@ -3,37 +3,21 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
+#include "report/plots/gnuplot_batch.h"
 #include "report/plots/gnuplot_string.h"
 #include "report/plots/metric_plot_script.h"
-#include "report/plots/plot_batch.h"
+#include "report/plots/view_figure_scripts.h"
 
 namespace slamsweep::report {
 namespace {
 
-/// Anchors of a light-to-dark ramp (viridis, reversed, its palest yellow darkened to show on white):
-/// graded settings read in order.
-constexpr std::array<std::array<double, 3>, 5> kRamp = {{{0.80, 0.72, 0.05},
-                                                         {0.37, 0.79, 0.38},
-                                                         {0.13, 0.57, 0.55},
-                                                         {0.23, 0.32, 0.55},
-                                                         {0.27, 0.00, 0.33}}};
-
-std::string RampColour(std::size_t index, std::size_t count) {
-  const double t = count < 2 ? 1.0 : static_cast<double>(index) / static_cast<double>(count - 1);
-  const double position = t * static_cast<double>(kRamp.size() - 1);
-  const std::size_t low = std::min(static_cast<std::size_t>(position), kRamp.size() - 2);
-  const double fraction = position - static_cast<double>(low);
-  std::array<int, 3> rgb{};
-  for (std::size_t c = 0; c < 3; ++c) {
-    const double value = kRamp[low][c] + fraction * (kRamp[low + 1][c] - kRamp[low][c]);
-    rgb[c] = static_cast<int>(std::lround(255.0 * value));
-  }
-  return fmt::format("#{:02x}{:02x}{:02x}", rgb[0], rgb[1], rgb[2]);
-}
+/// Where the graded colours start on the heatmap scale: its palest yellow is too faint for a point on white.
+constexpr double kLightestShade = 0.2;
+constexpr std::size_t kKeyColumns = 3;
+constexpr int kKeyRowPx = 14;
 
 struct AxisRange {
   double min = std::numeric_limits<double>::infinity();
@@ -45,6 +29,11 @@ struct AxisRange {
 bool Drawable(double x, double y) { return std::isfinite(x) && std::isfinite(y); }
 
 }  // namespace
+
+std::uint32_t GradedColour(std::size_t index, std::size_t count) {
+  const double t = count < 2 ? 1.0 : static_cast<double>(index) / static_cast<double>(count - 1);
+  return HeatmapColour(kLightestShade + (1.0 - kLightestShade) * t);
+}
 
 std::string ScatterPlotScript(const ScatterPlot& plot, const std::filesystem::path& png, std::size_t index) {
   AxisRange x_range, y_range;
@@ -60,15 +49,21 @@ std::string ScatterPlotScript(const ScatterPlot& plot, const std::filesystem::pa
       }
     }
   }
+  // The key goes below the plot, where long labels ("odo-10 · icp-slam") take no width from it; the
+  // picture grows by a line for every key row beyond two.
+  const std::size_t key_rows = (plot.series.size() + kKeyColumns - 1) / kKeyColumns;
+  const int height_px = 420 + kKeyRowPx * static_cast<int>(key_rows > 2 ? key_rows - 2 : 0);
   std::string script = "reset\n";
   script += fmt::format("print {}\n", GnuplotQuoted(PlotMarker(index)));
-  script += "set terminal pngcairo noenhanced size 560,420 font 'Sans,9'\n";
+  script += fmt::format("set terminal pngcairo noenhanced size 560,{} font 'Sans,9'\n", height_px);
   script += fmt::format("set output {}\n", GnuplotQuoted(png.string()));
   script += fmt::format("set title {} noenhanced\n",
                         GnuplotQuoted(fmt::format("{} ({} run{})", plot.title, points, points == 1 ? "" : "s")));
   script += fmt::format("set xlabel {} noenhanced\n", GnuplotQuoted(plot.x_label));
   script += fmt::format("set ylabel {} noenhanced\n", GnuplotQuoted(plot.y_label));
-  script += "set grid\nset key outside right top noenhanced\nset border 3\nset xtics nomirror\nset ytics nomirror\n";
+  script += fmt::format("set grid\nset key below center horizontal Left reverse noenhanced maxcols {}\n", kKeyColumns);
+  script += "set border 3\nset xtics nomirror\nset ytics nomirror\n";
+  if (!plot.key_title.empty()) script += fmt::format("set key title {} noenhanced\n", GnuplotQuoted(plot.key_title));
   if (x_range.Logarithmic()) script += "set logscale x\n";
   if (y_range.Logarithmic()) script += "set logscale y\n";
   std::string clauses;
@@ -81,8 +76,8 @@ std::string ScatterPlotScript(const ScatterPlot& plot, const std::filesystem::pa
     if (rows.empty()) continue;
     const std::string block = fmt::format("$scatter_{}_{}", index, s);
     script += block + " << EOD\n" + rows + "EOD\n";
-    clauses += fmt::format("{}{} using 1:2 with points pointtype 7 pointsize 0.9 linecolor rgb '{}' title {}",
-                           clauses.empty() ? "" : ", ", block, RampColour(s, plot.series.size()),
+    clauses += fmt::format("{}{} using 1:2 with points pointtype {} pointsize 0.9 linecolor rgb '#{:06X}' title {}",
+                           clauses.empty() ? "" : ", ", block, series.style.point_type, series.style.rgb,
                            GnuplotQuoted(series.label.empty() ? "(unnamed)" : series.label));
   }
   if (clauses.empty()) {
@@ -96,12 +91,12 @@ std::string ScatterPlotScript(const ScatterPlot& plot, const std::filesystem::pa
 }
 
 void WriteScatterPlots(const std::vector<ScatterPlotJob>& jobs) {
-  std::vector<PlotScript> scripts;
-  scripts.reserve(jobs.size());
+  std::vector<GnuplotBatchJob> batch;
+  batch.reserve(jobs.size());
   for (std::size_t i = 0; i < jobs.size(); ++i) {
-    scripts.push_back({jobs[i].plot.title, jobs[i].png, ScatterPlotScript(jobs[i].plot, jobs[i].png, i)});
+    batch.push_back({ScatterPlotScript(jobs[i].plot, jobs[i].png, i), jobs[i].png, jobs[i].plot.title});
   }
-  DrawPlotScripts(scripts);
+  RunGnuplotBatch(batch);
 }
 
 }  // namespace slamsweep::report

@@ -36,9 +36,14 @@ void FakeArtwork::Plots(const std::vector<PlotRequest>& requests) {
   for (const PlotRequest& request : requests) WritePng(request.png, 128);
 }
 
-void FakeArtwork::ScatterPlots(const std::vector<ScatterRequest>& requests) {
-  scatter_plots = requests;
-  for (const ScatterRequest& request : requests) WritePng(request.png, 64);
+void FakeArtwork::ScatterPlots(const std::vector<ScatterPlotJob>& jobs) {
+  scatter_plots = jobs;
+  for (const ScatterPlotJob& job : jobs) WritePng(job.png, 64);
+}
+
+void FakeArtwork::Figures(const std::vector<FigureJob>& jobs) {
+  figures = jobs;
+  for (const FigureJob& job : jobs) WritePng(job.png, 90);
 }
 
 void FakeArtwork::StagesGif(const std::vector<fs::path>& stage_pngs, const fs::path& gif, const GifSettings&) {

@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 
 #include "evaluator/core/input_error.h"
+#include "report/plots/algorithm_palette.h"
+#include "report/plots/scatter_plot.h"
 #include "tests/report/fake_artwork.h"
 #include "tests/report/fixture_sweep.h"
 #include "tests/support/shared_data.h"
@@ -287,9 +290,10 @@ TEST_F(WriteReportTest, TheValidityPageShowsCorrelationsIntervalsAndPlots) {
 
   // One scatter plot per real error x candidate with values x sequence: 2 x 6 x 2.
   ASSERT_EQ(artwork_.scatter_plots.size(), 24u);
-  const ScatterRequest* corners = nullptr;
-  for (const ScatterRequest& plot : artwork_.scatter_plots) {
-    EXPECT_TRUE(fs::exists(plot.png)) << plot.png;
+  const ScatterPlot* corners = nullptr;
+  for (const ScatterPlotJob& job : artwork_.scatter_plots) {
+    EXPECT_TRUE(fs::exists(job.png)) << job.png;
+    const ScatterPlot& plot = job.plot;
     if (plot.title == "intel" && plot.x_label == "Corners (count)" && plot.y_label == "ATE translation RMSE (m)") {
       corners = &plot;
     }
@@ -298,15 +302,77 @@ TEST_F(WriteReportTest, TheValidityPageShowsCorrelationsIntervalsAndPlots) {
   EXPECT_NE(page.find("<figcaption>intel: Corners vs ATE translation RMSE</figcaption>"), std::string::npos);
   // No run has the other occupied proportions: no rows for them.
   EXPECT_EQ(page.find("Unknown / all cells"), std::string::npos);
-  // A series per noise setting, in natural order: odo-1, odo-2, odo-10.
+  // A series per noise setting, in natural order: odo-1, odo-2, odo-10, graded light to dark, and the
+  // key says the colour is the noise setting; the marker is icp-slam's, as in every plot of the report.
   std::string labels;
-  for (const ScatterSeriesValues& series : corners->series) labels += series.label + ";";
+  for (const ScatterSeries& series : corners->series) labels += series.label + ";";
   ASSERT_EQ(corners->series.size(), 3u) << labels;
-  EXPECT_EQ(corners->series[0].label, "noise odo-1");
-  EXPECT_EQ(corners->series[2].label, "noise odo-10");
+  EXPECT_EQ(corners->series[0].label, "odo-1");
+  EXPECT_EQ(corners->series[2].label, "odo-10");
   EXPECT_EQ(corners->series[2].x, (std::vector<double>{100.0, 101.0, 102.0}));
+  EXPECT_EQ(corners->key_title, "colour: noise setting");
+  EXPECT_EQ(corners->series[0].style.rgb, GradedColour(0, 3));
+  EXPECT_EQ(corners->series[2].style.rgb, GradedColour(2, 3));
+  const int icp_marker = AlgorithmPalette({"icp-slam"}).StyleOf("icp-slam").point_type;
+  for (const ScatterSeries& series : corners->series) EXPECT_EQ(series.style.point_type, icp_marker) << series.label;
+  EXPECT_NE(page.find("colour: its noise setting"), std::string::npos);
   EXPECT_EQ(testing::ImageSources(dir_ / "report/validity.html").size(), 24u);
   EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty()) << ::testing::PrintToString(testing::BrokenLinks(dir_ / "report"));
+}
+
+/// The report of `runs` (icp-slam and gmapping on the validity fixture) and its first scatter plot
+/// (intel's, "Occupied proportion" against the ATE).
+class ValidityPlotTest : public WriteReportTest {
+ protected:
+  const ScatterPlot& FirstValidityPlot(const std::vector<testing::FixtureRun>& runs) {
+    fs::remove_all(dir_ / "sweep");
+    testing::WriteFixtureSweep(dir_ / "sweep", runs);
+    Write();
+    if (artwork_.scatter_plots.empty()) throw std::runtime_error("no scatter plot was planned");
+    return artwork_.scatter_plots.front().plot;
+  }
+};
+
+TEST_F(ValidityPlotTest, ValidityPlotsOfSeveralAlgorithmsMarkEachWithItsPaletteMarker) {
+  std::vector<testing::FixtureRun> runs = testing::ValidityFixtureRuns();
+  for (testing::FixtureRun run : testing::ValidityFixtureRuns()) {
+    run.algorithm = "gmapping";
+    runs.push_back(run);
+  }
+  const ScatterPlot& plot = FirstValidityPlot(runs);
+  const AlgorithmPalette palette({"icp-slam", "gmapping"});
+  EXPECT_EQ(plot.key_title, "colour: noise setting, marker: algorithm");
+  std::string labels;
+  for (const ScatterSeries& series : plot.series) labels += series.label + ";";
+  // Noise settings in natural order, the algorithms by name within each; colour by setting, marker by algorithm.
+  EXPECT_EQ(labels, "odo-1 · gmapping;odo-1 · icp-slam;odo-2 · gmapping;odo-2 · icp-slam;odo-10 · gmapping;"
+                    "odo-10 · icp-slam;");
+  ASSERT_EQ(plot.series.size(), 6u);
+  EXPECT_EQ(plot.series[0].style.rgb, plot.series[1].style.rgb);
+  EXPECT_EQ(plot.series[4].style.rgb, GradedColour(2, 3));
+  EXPECT_EQ(plot.series[0].style.point_type, palette.StyleOf("gmapping").point_type);
+  EXPECT_EQ(plot.series[1].style.point_type, palette.StyleOf("icp-slam").point_type);
+  EXPECT_NE(plot.series[0].style.point_type, plot.series[1].style.point_type);
+}
+
+TEST_F(ValidityPlotTest, ValidityPlotsOfOneNoiseSettingColourEachAlgorithmAsEverywhere) {
+  std::vector<testing::FixtureRun> runs;
+  for (testing::FixtureRun run : testing::ValidityFixtureRuns()) {
+    if (run.noise != "odo-2") continue;
+    runs.push_back(run);
+    run.algorithm = "gmapping";
+    run.corners = *run.corners + 1.0;
+    runs.push_back(run);
+  }
+  const ScatterPlot& plot = FirstValidityPlot(runs);
+  const AlgorithmPalette palette({"icp-slam", "gmapping"});
+  EXPECT_EQ(plot.key_title, "algorithm (noise setting odo-2)");
+  ASSERT_EQ(plot.series.size(), 2u);
+  EXPECT_EQ(plot.series[0].label, "gmapping");
+  EXPECT_EQ(plot.series[0].style.rgb, palette.StyleOf("gmapping").rgb);
+  EXPECT_EQ(plot.series[0].style.point_type, palette.StyleOf("gmapping").point_type);
+  EXPECT_EQ(plot.series[1].label, "icp-slam");
+  EXPECT_EQ(plot.series[1].style.rgb, palette.StyleOf("icp-slam").rgb);
 }
 
 TEST_F(WriteReportTest, WithoutReferenceDataThereIsNoValidityPage) {

@@ -15,6 +15,7 @@
 
 #include "evaluator/formats/map/image_file.h"
 #include "evaluator/formats/map/map_server_format.h"
+#include "evaluator/formats/trajectory/segment_errors_csv.h"
 #include "evaluator/formats/trajectory/tum_format.h"
 #include "orchestrator/adapters/run_inputs.h"
 #include "tests/orchestrator/worker/run_spec_fixture.h"
@@ -121,6 +122,17 @@ TEST_F(WorkerTest, AProgramThatWritesItsOutputsGivesAnOkRunWithMetrics) {
   EXPECT_EQ(ReadText(run_dir_ / "command.txt"), (dir_ / "program.sh").string() + "\n" + (run_dir_ / "raw").string() + "\n");
   EXPECT_EQ(ev::ReadMapServer(run_dir_ / "map.yaml").width, kMapSide);
   EXPECT_FALSE(fs::exists(run_dir_ / "result.json.tmp"));
+
+  // Every segment of the segment RPE, beside its statistics (the report's boxplots pool them).
+  ASSERT_EQ(outputs["rpe_segments"], "rpe_segments.csv");
+  const std::vector<ev::SegmentErrorRecord> segments = ev::ReadSegmentErrorsCsv(run_dir_ / "rpe_segments.csv");
+  std::size_t listed = 0;
+  for (const nlohmann::json& length : result["metric_details"]["segment_rpe"]["lengths"]) {
+    listed += length["n"].get<std::size_t>();
+  }
+  EXPECT_GT(segments.size(), 0u);
+  EXPECT_EQ(segments.size(), listed);
+  for (const ev::SegmentErrorRecord& segment : segments) EXPECT_NEAR(segment.translation_m, 0.0, 1e-9);  // a shift only
 }
 
 TEST_F(WorkerTest, WithoutADeclaredMapTheMapIsRenderedAndStageMapsComeFromTheGlob) {

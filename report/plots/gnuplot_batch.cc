@@ -1,4 +1,4 @@
-#include "report/plots/plot_batch.h"
+#include "report/plots/gnuplot_batch.h"
 
 #include <fmt/format.h>
 
@@ -46,30 +46,30 @@ std::string Trimmed(std::string text) {
 
 }  // namespace
 
-void DrawPlotScripts(const std::vector<PlotScript>& plots) {
-  if (plots.empty()) return;
+void RunGnuplotBatch(const std::vector<GnuplotBatchJob>& jobs) {
+  if (jobs.empty()) return;
   std::string script;
-  for (const PlotScript& plot : plots) {
+  for (const GnuplotBatchJob& job : jobs) {
     // A stale PNG from an earlier report must not pass for this one if gnuplot fails.
     std::error_code ignored;
-    std::filesystem::remove(plot.png, ignored);
-    script += plot.script;
+    std::filesystem::remove(job.png, ignored);
+    script += job.script;
   }
   script += fmt::format("print '{}'\n", kDoneMarker);
 
   const GnuplotOutcome outcome = RunGnuplot(script);
   const bool finished = outcome.stderr_text.find(std::string(kDoneMarker) + "\n") != std::string::npos;
-  for (std::size_t i = 0; i < plots.size(); ++i) {
-    const std::string section = SectionOf(outcome.stderr_text, i, plots.size());
-    if (HasError(section) || !NonEmptyFile(plots[i].png)) {
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    const std::string section = SectionOf(outcome.stderr_text, i, jobs.size());
+    if (HasError(section) || !NonEmptyFile(jobs[i].png)) {
       throw std::runtime_error(fmt::format("gnuplot could not draw the plot '{}' ({}), exit code {}: {}",
-                                           plots[i].title, plots[i].png.string(), outcome.exit_code,
+                                           jobs[i].title, jobs[i].png.string(), outcome.exit_code,
                                            Trimmed(section.empty() ? outcome.stderr_text : section)));
     }
   }
   if (!finished || outcome.exit_code != 0) {
     throw std::runtime_error(fmt::format("gnuplot ended with exit code {} while drawing {} plots: {}",
-                                         outcome.exit_code, plots.size(), Trimmed(outcome.stderr_text)));
+                                         outcome.exit_code, jobs.size(), Trimmed(outcome.stderr_text)));
   }
 }
 
