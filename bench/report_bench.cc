@@ -28,6 +28,9 @@ class TimedArtwork final : public slamsweep::report::Artwork {
   void Plots(const std::vector<slamsweep::report::PlotRequest>& plots) override {
     Timed(plots_us, [&] { inner_->Plots(plots); });
   }
+  void ScatterPlots(const std::vector<slamsweep::report::ScatterPlotJob>& plots) override {
+    Timed(plots_us, [&] { inner_->ScatterPlots(plots); });
+  }
   void Figures(const std::vector<slamsweep::report::FigureJob>& figures) override {
     Timed(plots_us, [&] { inner_->Figures(figures); });
   }

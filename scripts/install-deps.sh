@@ -21,8 +21,9 @@ packages=(
   libmrpt-obs-dev mrpt-apps mrpt-common
   # ROS1 bags (evaluator/formats/rosbag): librosbag and message headers; python3-* write the test bags
   librosbag-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev libgeometry-msgs-dev python3-rosbag python3-sensor-msgs python3-nav-msgs python3-tf2-msgs
-  # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev shellcheck
+  # tests and benchmarks; python3-scipy is the independent reference for the Spearman rank
+  # correlation of the metric validity study (tests/evaluator/statistics)
+  libgtest-dev libgmock-dev libbenchmark-dev shellcheck python3-scipy
   # the service tests: /metrics parsed by the Prometheus project's own parser; wrk drives bench/service/load_test.sh
   python3-prometheus-client wrk
   # the Slurm executor's test: a real one-node cluster on localhost (jobs/slurm/local-cluster.sh)

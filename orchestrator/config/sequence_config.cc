@@ -96,6 +96,10 @@ SequenceSpec ParseSequenceConfig(const std::filesystem::path& file, YAML::Node n
         ResolveExisting(file, node, path, spec.entry, "relations file", spec.entry.relations_path, base, variables,
                         policy);
   }
+  if (!spec.entry.reference_map_path.empty()) {
+    spec.entry.reference_map_path = ResolveExisting(file, node, path, spec.entry, "reference map",
+                                                    spec.entry.reference_map_path, base, variables, policy);
+  }
   return spec;
 }
 

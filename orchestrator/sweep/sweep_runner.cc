@@ -103,8 +103,13 @@ bool RecordedRunIsReusable(const RunSpec& run, const std::string& recorded_statu
   const auto build = recorded_spec.find("build");
   const auto evaluation = recorded_spec.find("evaluation");
   nlohmann::json current = ToJson(run);
+  // The reference map is scoring like `evaluation` (left out of the run id): another one changes the map scores.
+  const auto sequence = recorded_spec.find("sequence");
+  const std::string recorded_reference_map =
+      sequence != recorded_spec.end() && sequence->is_object() ? sequence->value("reference_map", "") : "";
   stale = build == recorded_spec.end() || *build != current["build"] || evaluation == recorded_spec.end() ||
-          !SameEvaluation(*evaluation, run.evaluation);
+          !SameEvaluation(*evaluation, run.evaluation) ||
+          recorded_reference_map != run.sequence.entry.reference_map_path;
   return !stale || settings.reuse_stale;
 }
 

@@ -9,6 +9,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/map/paper_metrics.h"
 #include "evaluator/map_compare/map_compare.h"
+#include "evaluator/map_compare/map_resample.h"
 #include "evaluator/trajectory/ape.h"
 #include "evaluator/trajectory/relations_metric.h"
 #include "evaluator/trajectory/rpe.h"
@@ -176,15 +177,19 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
       out.details["paper_map"] = paper.ToJson();
     });
   }
-  if (inputs.map && inputs.reference_map && inputs.estimate) {
+  if (inputs.map && inputs.reference_map) {
     Attempt(out, "map_compare", [&] {
       ev::MapCompareOptions options;
       if (ape_alignment) {
         const Eigen::Matrix3d& rotation = ape_alignment->rotation;
         options.transform = {ape_alignment->translation.x(), ape_alignment->translation.y(),
                              std::atan2(rotation(1, 0), rotation(0, 0))};
+      } else {
+        // No trajectory alignment (no reference trajectory, only a reference map file): search it.
+        options.refine_with_icp = true;
       }
-      const ev::MapComparison compared = ev::CompareMaps(*inputs.map, *inputs.reference_map, options);
+      const ev::OccupancyGrid estimate = ev::ResampleToResolution(*inputs.map, inputs.reference_map->resolution_m, options);
+      const ev::MapComparison compared = ev::CompareMaps(estimate, *inputs.reference_map, options);
       out.metrics.push_back({"map_chamfer", "value", compared.chamfer_m, "m"});
       out.metrics.push_back({"map_f1", "value", compared.f1, "ratio"});
       out.metrics.push_back({"map_accuracy", "value", compared.accuracy, "ratio"});
@@ -192,6 +197,11 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
       out.metrics.push_back({"map_iou_occupied", "value", compared.iou_occupied, "ratio"});
       out.metrics.push_back({"map_iou_free", "value", compared.iou_free, "ratio"});
       out.details["map_compare"] = compared.ToJson(options);
+      out.details["map_compare"]["placement"] = ape_alignment ? "ATE alignment" : "ICP from identity";
+      if (estimate.resolution_m != inputs.map->resolution_m) {
+        out.details["map_compare"]["resampled_from_m"] = inputs.map->resolution_m;
+      }
+      if (!inputs.reference_map_record.is_null()) out.details["map_compare"]["reference_map"] = inputs.reference_map_record;
     });
   }
   return out;

@@ -41,9 +41,12 @@ struct MetricInputs {
   const evaluator::Trajectory* estimate = nullptr;    ///< null: trajectory metrics are skipped
   const evaluator::Trajectory* reference = nullptr;   ///< null: APE and RPE are skipped
   const evaluator::Relations* relations = nullptr;    ///< null: the relations metric is skipped
-  /// The map rendered from the reference poses and the run's scans at the map's cell size, the way
-  /// the odometry baseline renders its map; null: the map-versus-reference scores are skipped.
+  /// The reference map at the evaluation's cell size (orchestrator/reference_map); null: the
+  /// map-versus-reference scores are skipped. The run's map is resampled to its cell size when
+  /// they differ, and placed on it by the ATE's alignment, or by ICP from identity without one.
   const evaluator::OccupancyGrid* reference_map = nullptr;
+  /// Where the reference map came from (ReferenceMap::ToJson), kept in the map_compare details.
+  nlohmann::json reference_map_record;
 };
 
 /// Computes what the inputs allow: ape_trans/ape_rot (evaluation.align, t_max_diff_s),

@@ -29,7 +29,7 @@ constexpr std::string_view kPageTemplate = R"(<!DOCTYPE html>
 <main>
 {{body}}
 </main>
-<footer>Made by slamsweep report from the nightly history database. Lower is better for every metric.</footer>
+<footer>Made by slamsweep report from the nightly history database. Lower is better for every metric. Metric definitions: <a href="../metrics.html">metric specification</a>.</footer>
 </body>
 </html>
 )";

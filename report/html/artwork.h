@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "report/plots/figure_types.h"
+#include "report/plots/scatter_plot.h"
 
 namespace slamsweep::report {
 
@@ -55,6 +56,8 @@ class Artwork {
   virtual ~Artwork() = default;
   /// Draws every plot (one call per report, so a gnuplot process can draw them all).
   virtual void Plots(const std::vector<PlotRequest>& plots) = 0;
+  /// Draws every scatter plot of validity.html (one call per report, like Plots).
+  virtual void ScatterPlots(const std::vector<ScatterPlotJob>& plots) = 0;
   /// Draws the figures of the segment-length and parameter pages (report/html/view_pages.h), one call per report.
   /// The default draws none (the pages then say the figures are missing), so an image maker written before
   /// these pages still builds.

@@ -20,7 +20,7 @@ constexpr std::string_view kPageTemplate = R"(<!DOCTYPE html>
 <main>
 {{body}}
 </main>
-<footer>Made by slamsweep report. Metric definitions: spec/metrics.md. Lower is better for every metric shown.</footer>
+<footer>Made by slamsweep report. Metric definitions: <a href="{{root}}metrics.html">metric specification</a>. Lower is better for every metric in the tables; the specification says which direction is better for each metric.</footer>
 </body>
 </html>
 )";
@@ -200,6 +200,11 @@ std::string RenderIndexPage(const SiteData& site) {
   }
   if (site.has_runs_csv) downloads += Element("li", "", Link("runs.csv", E("runs.csv")) + E(" (one line per run)"));
   if (site.has_summary_json) downloads += Element("li", "", Link("summary.json", E("summary.json")));
+  downloads += Element("li", "", Link("metrics.html", E("Metric specification")) + E(" (every metric's definition)"));
+  if (site.has_validity_page) {
+    downloads += Element("li", "", Link("validity.html", E("Which metrics can be trusted?")) +
+                                       E(" (each ground-truth-free metric against the real error)"));
+  }
   body += Element("ul", "downloads", downloads);
   for (const SequenceModel& sequence : model.sequences) {
     Html section = Element("h2", "", Link(site.layout->SequencePage(sequence.key), E("Sequence " + sequence.title)));
@@ -374,6 +379,11 @@ img.thumbnail, img.animation { width: 400px; height: auto; image-rendering: pixe
 pre { background: #f6f6f6; padding: 0.5em; overflow-x: auto; max-height: 40em; white-space: pre-wrap;
       overflow-wrap: anywhere; }
 footer { margin-top: 2em; font-size: 0.8em; color: #666; }
+td.verdict-tracks { background: #d8f0d8; }
+td.verdict-opposite { background: #f6d6d0; }
+td.verdict-unclear { background: #f4f0dc; }
+td.verdict-none { color: #555; }
+table.definitions td:last-child { max-width: 60em; }
 )";
 }
 

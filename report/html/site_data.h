@@ -61,6 +61,7 @@ struct SiteData {
   /// (row label, table key) with files/.../pose_log.tum
   std::set<std::pair<std::string, std::string>> pose_logs;
   Html history_section;  ///< the index's nightly-history section (SiteExtension), empty without one
+  bool has_validity_page = false;  ///< validity.html ("Which metrics can be trusted?") was written
   /// One colour and marker per algorithm in every plot and table of the report.
   const AlgorithmPalette* palette = nullptr;
   std::map<std::string, TableViews> views;  ///< by table key (SequenceModel::key)
@@ -73,7 +74,8 @@ std::string RenderRunPage(const SiteData& site, std::size_t run);
 /// style.css: the only styling of the site (no inline styles: Jenkins' CSP forbids them).
 std::string_view StyleSheet();
 
-/// The frame every page shares (title, style sheet, navigation); `root` leads back to the report root.
+/// The frame every page shares (title, style sheet, navigation, a footer linking metrics.html); `root`
+/// leads back to the report root ("" or "../").
 std::string RenderPage(std::string_view title, std::string_view root, const Html& body);
 /// `<img class="..." src="..." alt="...">`, every value escaped.
 Html ImageElement(std::string_view src, std::string_view alt, std::string_view css_class);

@@ -4,6 +4,7 @@
 #include "report/images/thumbnail.h"
 #include "report/images/trajectory_overlay.h"
 #include "report/plots/metric_plot.h"
+#include "report/plots/scatter_plot.h"
 #include "report/plots/view_figures.h"
 
 namespace slamsweep::report {
@@ -28,6 +29,8 @@ class StandardArtwork final : public Artwork {
     }
     WriteMetricPlots(jobs);
   }
+
+  void ScatterPlots(const std::vector<ScatterPlotJob>& plots) override { WriteScatterPlots(plots); }
 
   void Figures(const std::vector<FigureJob>& figures) override { WriteViewFigures(figures); }
 

@@ -11,9 +11,11 @@
 #include <thread>
 
 #include "evaluator/core/input_error.h"
+#include "report/html/metric_spec_page.h"
 #include "report/html/report_layout.h"
 #include "report/html/site_data.h"
 #include "report/html/text_outputs.h"
+#include "report/html/validity_page.h"
 #include "report/html/view_pages.h"
 #include "report/model/load_runs.h"
 #include "report/model/sweep_model.h"
@@ -373,6 +375,8 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   });
 
   std::vector<PlotRequest> plots = PlanPlots(model, layout, out_dir, site);
+  std::vector<ScatterPlotJob> scatter_plots;
+  ValiditySite validity = PlanValidity(model, *site.palette, out_dir, scatter_plots);
   std::vector<FigureJob> figures;
   PlanViewPages(out_dir, site, figures);
   std::string figures_error;
@@ -388,6 +392,13 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
                         }
                       }});
     }
+    if (!scatter_plots.empty()) {
+      Artwork* artwork = options.artwork;
+      jobs.push_back({[artwork, &scatter_plots] { artwork->ScatterPlots(scatter_plots); },
+                      [&validity](const std::string& error) {
+                        for (ValidityPlot& plot : validity.plots) plot.note = error.empty() ? "the plot file is missing" : error;
+                      }});
+    }
     if (!figures.empty()) {
       Artwork* artwork = options.artwork;
       jobs.push_back({[artwork, &figures] { artwork->Figures(figures); },
@@ -397,6 +408,7 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   }
   RunImageJobs(jobs, options.jobs);
   ReportSummary summary = CountImages(out_dir, options.artwork != nullptr, site);
+  CountValidityPlots(out_dir, options.artwork != nullptr, validity, summary);
   const auto [figures_made, figures_missing] = MarkViewFigures(out_dir, options.artwork != nullptr, figures_error, site);
   summary.images += figures_made;
   summary.images_missing += figures_missing;
@@ -408,8 +420,18 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   WriteTextFile(out_dir / "style.css", std::string(StyleSheet()) + ViewStyleSheet());
   WritePaperFiles(model, layout, out_dir, site);
   if (options.history != nullptr) site.history_section = options.history->Write(out_dir, summary);
+  validity.has_csv = CopyResultFile(result_dir, out_dir, "validity.csv");
+  site.has_validity_page = !validity.study.empty();
+  if (site.has_validity_page) {
+    WriteTextFile(out_dir / "validity.html", RenderValidityPage(site, validity));
+    ++summary.pages;
+  } else {
+    std::error_code ignored;
+    fs::remove(out_dir / "validity.html", ignored);  // none left from an earlier report in this folder
+  }
+  WriteTextFile(out_dir / "metrics.html", RenderMetricSpecPage(site));
   WriteTextFile(out_dir / "index.html", RenderIndexPage(site));
-  summary.pages += 1;
+  summary.pages += 2;
   for (const SequenceModel& sequence : model.sequences) {
     WriteTextFile(out_dir / layout.SequencePage(sequence.key), RenderSequencePage(site, sequence));
     ++summary.pages;

@@ -189,6 +189,27 @@ TEST_F(BrowserTest, PagesLoadUnderJenkinsCsp) {
   EXPECT_FALSE(testing::ImageSources(dir_ / "report/index.html").empty());
   CheckPage("sequences/intel-clean.html");
   CheckPage("runs/_script_alert_1___script_-intel-clean-i0-0000abcd.html");
+  CheckPage("validity.html");
+  const fs::path metrics_screenshot = fs::path(SLAMSWEEP_ARTIFACT_DIR) / "report_metrics_screenshot.png";
+  CheckPage("metrics.html", metrics_screenshot, 3400);
+  EXPECT_TRUE(fs::exists(metrics_screenshot));
+  std::cout << "screenshot of the metric specification: " << metrics_screenshot.string() << "\n";
+}
+
+// The validity page (report/html/validity_page.h) with numbers and its scatter plots, on a sweep of
+// graded noise settings; its screenshot is kept as an artifact.
+class ValidityBrowserTest : public BrowserTest {
+ protected:
+  std::vector<testing::FixtureRun> Runs() const override { return testing::ValidityFixtureRuns(); }
+};
+
+TEST_F(ValidityBrowserTest, TheValidityPageWithItsPlotsLoadsUnderJenkinsCsp) {
+  const fs::path screenshot = fs::path(SLAMSWEEP_ARTIFACT_DIR) / "report_validity_screenshot.png";
+  fs::remove(screenshot);
+  CheckPage("validity.html", screenshot, 3400);
+  EXPECT_TRUE(fs::exists(screenshot));
+  EXPECT_EQ(testing::ImageSources(dir_ / "report/validity.html").size(), 24u);
+  std::cout << "screenshot of the validity page: " << screenshot.string() << "\n";
 }
 
 // The segment-length and parameter pages (report/html/view_pages.h) on a sweep that has both; their

@@ -15,6 +15,7 @@ namespace slamsweep::report::testing {
 class FakeArtwork : public Artwork {
  public:
   void Plots(const std::vector<PlotRequest>& plots) override;
+  void ScatterPlots(const std::vector<ScatterPlotJob>& plots) override;
   void Figures(const std::vector<FigureJob>& figures) override;
   void StagesGif(const std::vector<std::filesystem::path>& stage_pngs, const std::filesystem::path& gif,
                  const GifSettings& settings) override;
@@ -25,6 +26,7 @@ class FakeArtwork : public Artwork {
 
   bool fail_thumbnails = false;
   std::vector<PlotRequest> plots;  ///< written by Plots (called once, from one thread)
+  std::vector<ScatterPlotJob> scatter_plots;  ///< written by ScatterPlots (called once, from one thread)
   std::vector<FigureJob> figures;  ///< written by Figures (called once, from one thread)
   std::atomic<int> gifs{0};
   std::mutex stages_mutex;

@@ -115,7 +115,7 @@ FixtureRun MakeRun(std::string algorithm, std::string sequence, int iteration) {
 std::string FixtureRunId(const FixtureRun& run) {
   if (!run.run_id.empty()) return run.run_id;
   const std::string parameters = run.parameters.empty() ? "" : "-" + Readable(ParametersTextOf(run.parameters));
-  return Readable(run.algorithm) + parameters + "-" + Readable(run.sequence) + "-clean-i" +
+  return Readable(run.algorithm) + parameters + "-" + Readable(run.sequence) + "-" + Readable(run.noise) + "-i" +
          std::to_string(run.iteration) + "-0000abcd";
 }
 
@@ -131,10 +131,10 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
         {"algorithm", {{"name", run.algorithm}, {"adapter", "generic"}, {"parameters", run.parameters},
                        {"timeout_s", 300}, {"memory_limit_mb", 4096}, {"command", nullptr}}},
         {"group", {{"sequence", run.sequence}, {"algorithm", run.algorithm}, {"parameters", ParametersTextOf(run.parameters)},
-                   {"noise", "clean"}}},
+                   {"noise", run.noise}}},
         {"sequence", {{"name", run.sequence}, {"format", "carmen"}, {"path", "/data/" + run.sequence + ".clf"},
                       {"ground_truth", run.with_reference ? "reference.tum" : "none"}}},
-        {"noise", {{"name", "clean"}, {"odometry", nullptr}, {"range", nullptr}}},
+        {"noise", {{"name", run.noise}, {"odometry", nullptr}, {"range", nullptr}}},
         {"iteration", run.iteration},
         {"seed", 1000 + run.iteration},
         {"evaluation", {{"align", "se2"}, {"rpe_delta_m", 1.0}, {"t_max_diff_s", 0.01}, {"stages", run.stages}}},
@@ -195,6 +195,10 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
         outputs["rpe_segments"] = "rpe_segments.csv";
       }
       if (run.enclosed_areas) metrics.push_back(Metric("enclosed_areas", "value", *run.enclosed_areas, "count"));
+      if (run.map_chamfer_m) {
+        metrics.push_back(Metric("map_chamfer", "value", *run.map_chamfer_m, "m"));
+        metrics.push_back(Metric("map_f1", "value", 1.0 / (1.0 + *run.map_chamfer_m), "ratio"));
+      }
     }
     result["outputs"] = outputs;
     result["metrics"] = metrics;
@@ -240,6 +244,28 @@ std::vector<FixtureRun> StandardFixtureRuns() {
   single.corners = 12.0;
   single.enclosed_areas = 1.0;
   runs.push_back(single);
+  return runs;
+}
+
+std::vector<FixtureRun> ValidityFixtureRuns() {
+  std::vector<FixtureRun> runs;
+  const std::pair<const char*, double> levels[] = {{"odo-1", 1.0}, {"odo-2", 2.0}, {"odo-10", 10.0}};
+  for (const char* sequence : {"intel", "floor"}) {
+    const double scale = std::string(sequence) == "intel" ? 1.0 : 0.1;
+    for (const auto& [noise, level] : levels) {
+      for (int i = 0; i < 3; ++i) {
+        FixtureRun run = MakeRun("icp-slam", sequence, i);
+        run.noise = noise;
+        const double ate = scale * (0.1 * level + 0.01 * i);
+        run.ape_rmse_m = ate;
+        run.map_chamfer_m = 0.5 * ate;
+        run.corners = 100.0 * ate / scale;
+        run.occupied_ratio = 0.5 - ate / scale / 5.0;
+        run.enclosed_areas = 2.0;
+        runs.push_back(run);
+      }
+    }
+  }
   return runs;
 }
 

@@ -14,6 +14,7 @@ namespace slamsweep::report::testing {
 struct FixtureRun {
   std::string algorithm = "icp-slam";
   std::string sequence = "intel";
+  std::string noise = "clean";
   int iteration = 0;
   bool ok = true;
   std::string failure_kind = "exit_code";  ///< used when !ok
@@ -23,6 +24,7 @@ struct FixtureRun {
   std::optional<double> occupied_ratio;
   std::optional<double> corners;
   std::optional<double> enclosed_areas;
+  std::optional<double> map_chamfer_m;  ///< map versus reference (written with the other map_compare scores)
   std::string log = "scan 1\nscan 2\n";
   int stages = 3;
   /// Folder name; empty -> made from algorithm, sequence, parameters and iteration like the orchestrator does.
@@ -52,6 +54,12 @@ void WriteFixtureSweep(const std::filesystem::path& dir, const std::vector<Fixtu
 /// (without: no ATE), one failed run, an algorithm "single" with one iteration, and a log that
 /// contains HTML.
 std::vector<FixtureRun> StandardFixtureRuns();
+
+/// A sweep for the validity page: "icp-slam" on "intel" and "floor", noise settings "odo-1",
+/// "odo-2", "odo-10" (natural order) x 3 iterations. ATE and Chamfer rise with the noise level
+/// and the iteration; corners rise exactly with the ATE on both sequences (rho = +1 everywhere),
+/// the occupied ratio falls exactly with it (rho = -1), enclosed areas are constant (no variation).
+std::vector<FixtureRun> ValidityFixtureRuns();
 
 /// A sweep for the segment-length and parameter pages on "intel" (reference) and "mit-no-ref": gmapping
 /// and hector with segment RPE at 10, 20 and 30 m (hector drifting twice as much), "icp-slam" swept

@@ -75,6 +75,24 @@ TEST_F(ViewPagesTest, EveryTableWithSegmentsOrParameterSweepsGetsItsPagesLinkedF
   EXPECT_EQ(testing::ImageSources(report / "sequences/intel-clean/segments.html").size(), 3u);
 }
 
+TEST_F(ViewPagesTest, TheIndexLinksEveryExtraPageAndTheSpecificationDefinesTheSegmentMetrics) {
+  Write(&fake_);
+  const fs::path report = dir_ / "report";
+  const std::string index = ReadAll(report / "index.html");
+  for (const char* link : {"href=\"metrics.html\"", "href=\"validity.html\"", "href=\"sequences/intel-clean/segments.html\"",
+                           "href=\"sequences/intel-clean/parameters.html\""}) {
+    EXPECT_THAT(index, HasSubstr(link));
+  }
+  for (const char* page : {"sequences/intel-clean/segments.html", "sequences/intel-clean/parameters.html"}) {
+    EXPECT_THAT(ReadAll(report / page), HasSubstr("<a href=\"../../metrics.html\">metric specification</a>")) << page;
+  }
+  // The segment columns (segment_drift_10m, ...) are defined under their name pattern.
+  const std::string spec = ReadAll(report / "metrics.html");
+  for (const char* metric : {"segment_trans", "segment_drift", "segment_rot"}) {
+    EXPECT_THAT(spec, HasSubstr("<code>" + std::string(metric) + "_&lt;L&gt;m</code>")) << metric;
+  }
+}
+
 TEST_F(ViewPagesTest, EachAlgorithmKeepsItsColourAndMarkerInEveryPlotAndLegendsFollowTheTable) {
   Write(&fake_);
   const AlgorithmPalette palette({"gmapping", "hector", "icp-slam", "rbpf-slam", "<b>odd & name</b>"});

@@ -331,6 +331,23 @@ sequences:
               HasSubstr("sweep.yaml:4: format: expected carmen, rawlog, rosbag or simulated, got 'bag'"));
 }
 
+TEST_F(SweepConfigTest, AReferenceMapIsResolvedAndMustExist) {
+  testing::WriteFile(dir_ / "data/lab-map.yaml", "image: lab-map.pgm\n");
+  const SweepConfig config = Parse(R"(name: x
+algorithms: [{name: odo, adapter: odometry}]
+sequences:
+  - {name: here, format: carmen, path: data/log.carmen, ground_truth: none, reference_map: data/lab-map.yaml}
+)");
+  EXPECT_EQ(config.sequences[0].entry.reference_map_path, (dir_.path() / "data/lab-map.yaml").string());
+  EXPECT_THAT(ErrorOf(R"(name: x
+algorithms: [{name: odo, adapter: odometry}]
+sequences:
+  - {name: here, format: carmen, path: data/log.carmen, ground_truth: none, reference_map: data/none.yaml}
+)"),
+              HasSubstr(Located(4, 5) + "sequences[0]: sequence 'here': expected its reference map " +
+                        (dir_.path() / "data/none.yaml").string() + ", got no such file"));
+}
+
 TEST_F(SweepConfigTest, AdaptersAndCommandDeclarationsAreChecked) {
   EXPECT_THAT(ErrorOf("name: x\nalgorithms:\n  - {name: a, adapter: gfs_nogui}\nsequences: [lab]\n"),
               HasSubstr(Located(3, 24) +

@@ -234,8 +234,20 @@ TEST(RunSpecTest, IdentityHoldsWhatDecidesTheResultAndNothingElse) {
   other.algorithm.timeout_s = 999;
   other.run_id = "renamed";
   EXPECT_EQ(RunIdentity(other), identity);
+  // The reference map is scoring, not input: naming one changes no run id.
+  other.sequence.entry.reference_map_path = "/data/intel-reference.yaml";
+  EXPECT_EQ(RunIdentity(other), identity);
   other.sequence.max_scans = 301;
   EXPECT_NE(RunIdentity(other), identity);
+}
+
+TEST(RunSpecTest, AReferenceMapIsWrittenOnlyWhenSet) {
+  RunSpec spec = FullSpec();
+  EXPECT_FALSE(ToJson(spec)["sequence"].contains("reference_map"));  // run.json of every earlier sweep stays the same
+  spec.sequence.entry.reference_map_path = "/data/intel-reference.yaml";
+  const json out = ToJson(spec);
+  EXPECT_EQ(out["sequence"]["reference_map"], "/data/intel-reference.yaml");
+  EXPECT_EQ(RunSpecFromJson(out).sequence.entry.reference_map_path, "/data/intel-reference.yaml");
 }
 
 }  // namespace

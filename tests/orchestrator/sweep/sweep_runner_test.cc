@@ -129,6 +129,27 @@ TEST(SweepRunner, ARunScoredUnderOtherEvaluationOptionsIsRunAgain) {
   EXPECT_EQ(reused.stale, 1u);
 }
 
+// The reference map is scoring too (not part of the run id): naming another one makes the map scores
+// of the finished runs stale, so they are redone.
+TEST(SweepRunner, ARunScoredAgainstAnotherReferenceMapIsRunAgain) {
+  slamsweep::testing::TempDir dir;
+  std::vector<RunSpec> runs = Matrix(2);
+  RecordingStatus status;
+  FakeExecutor first([](const RunSpec&) { return "ok"; });
+  RunSweep(runs, Settings(dir.path()), first, status);
+
+  runs[0].sequence.entry.reference_map_path = "/maps/intel.yaml";
+  FakeExecutor again([](const RunSpec&) { return "ok"; });
+  const SweepOutcome repeated = RunSweep(runs, Settings(dir.path()), again, status);
+  EXPECT_THAT(again.started, ElementsAre(runs[0].run_id));
+  EXPECT_EQ(repeated.stale, 1u);
+
+  FakeExecutor same([](const RunSpec&) { return "ok"; });
+  const SweepOutcome unchanged = RunSweep(runs, Settings(dir.path()), same, status);
+  EXPECT_TRUE(same.started.empty());
+  EXPECT_EQ(unchanged.stale, 0u);
+}
+
 TEST(SweepRunner, AdoptsAResultTheStoreNeverSawAndRedoesAHalfWrittenRun) {
   slamsweep::testing::TempDir dir;
   const auto runs = Matrix(3);

@@ -303,6 +303,41 @@ TEST_F(WorkerTest, EveryRunWithAReferenceIsScoredAgainstTheReferenceMap) {
   EXPECT_LT(Metric(noisy, "map_iou_occupied", "value"), Metric(clean, "map_iou_occupied", "value"));
 }
 
+// The reference map is truth: while the program runs it must not exist anywhere the program is
+// pointed at (input/, raw/, its environment), nor already be rendered into the sweep folder.
+// The program records what it can see; the map it is later scored against must not be in there.
+TEST_F(WorkerTest, TheReferenceMapIsOutOfTheProgramsReachUntilItHasExited) {
+  UseProgram("{ ls -la \"$1/../input\" \"$1\" \"$1/..\"; env; "
+             "[ -e '" + (dir_ / "reference_maps").string() + "' ] && echo CACHE-EXISTS; "
+             "cat \"$1\"/../input/* \"$1\"/* 2>/dev/null | cksum; } > seen.txt 2>&1; " +
+             std::string(kWriteOutputs));
+  const nlohmann::json result = Run();
+  ASSERT_EQ(result["status"], "ok") << result.dump(2);
+  EXPECT_FALSE(std::isnan(Metric(result, "map_chamfer", "value"))) << result["warnings"];
+  const nlohmann::json& reference_map = result["metric_details"]["map_compare"]["reference_map"];
+  ASSERT_EQ(reference_map["source"], "rendered") << reference_map;
+  const fs::path yaml = reference_map["file"].get<std::string>();
+  fs::path pgm = yaml;
+  pgm.replace_extension(".pgm");
+  // Rendered after the program, outside the run folder.
+  EXPECT_TRUE(fs::exists(pgm));
+  EXPECT_TRUE(yaml.lexically_relative(run_dir_).string().starts_with("..")) << yaml << " is inside the run folder";
+  const std::string seen = ReadText(dir_ / "seen.txt");
+  EXPECT_EQ(seen.find("CACHE-EXISTS"), std::string::npos) << "the reference map existed while the program ran";
+  EXPECT_EQ(seen.find("reference_map"), std::string::npos) << seen;
+  EXPECT_EQ(seen.find(yaml.stem().string()), std::string::npos) << seen;
+  EXPECT_EQ(seen.find("reference.tum"), std::string::npos) << seen;
+  // No file the program could read holds the map's bytes.
+  const std::string map_bytes = ReadText(pgm);
+  for (const fs::path& folder : {run_dir_ / "input", run_dir_ / "raw"}) {
+    for (const auto& item : fs::recursive_directory_iterator(folder)) {
+      if (item.is_regular_file()) {
+        EXPECT_NE(ReadText(item.path()), map_bytes) << item.path();
+      }
+    }
+  }
+}
+
 TEST_F(WorkerTest, InterruptionStopsTheProgramAndLeavesNoResult) {
   UseProgram("exec sleep 30");
   testing::WriteRunJson(run_dir_, spec_);

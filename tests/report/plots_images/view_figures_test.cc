@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "report/plots/view_figure_scripts.h"
+#include "tests/report/plots_images/plot_pixels.h"
 #include "tests/support/shared_data.h"
 
 namespace slamsweep::report {
@@ -19,20 +20,7 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-#define REQUIRE_GNUPLOT()                                                                        \
-  if (!fs::exists("/usr/bin/gnuplot")) {                                                         \
-    if (::slamsweep::testing::RunningInCi()) FAIL() << "/usr/bin/gnuplot missing (gnuplot-nox)"; \
-    GTEST_SKIP() << "/usr/bin/gnuplot missing: install gnuplot-nox";                             \
-  }
-
-int CountColour(const cv::Mat& bgr, std::uint32_t rgb) {
-  const cv::Vec3b wanted(rgb & 0xFF, (rgb >> 8) & 0xFF, (rgb >> 16) & 0xFF);
-  int count = 0;
-  for (int r = 0; r < bgr.rows; ++r) {
-    for (int c = 0; c < bgr.cols; ++c) count += bgr.at<cv::Vec3b>(r, c) == wanted ? 1 : 0;
-  }
-  return count;
-}
+using slamsweep::testing::CountColour;
 
 /// Reads the PNG and keeps a copy as a test artefact (build/tests/report/plots_images/figures/).
 cv::Mat ReadAndKeep(const fs::path& png) {
