@@ -28,6 +28,12 @@ class TimedArtwork final : public slamsweep::report::Artwork {
   void Plots(const std::vector<slamsweep::report::PlotRequest>& plots) override {
     Timed(plots_us, [&] { inner_->Plots(plots); });
   }
+  void ScatterPlots(const std::vector<slamsweep::report::ScatterPlotJob>& plots) override {
+    Timed(plots_us, [&] { inner_->ScatterPlots(plots); });
+  }
+  void Figures(const std::vector<slamsweep::report::FigureJob>& figures) override {
+    Timed(plots_us, [&] { inner_->Figures(figures); });
+  }
   void StagesGif(const std::vector<fs::path>& stages, const fs::path& gif,
                  const slamsweep::report::GifSettings& settings) override {
     Timed(gifs_us, [&] { inner_->StagesGif(stages, gif, settings); });

@@ -42,6 +42,10 @@ void RegisterHistoryCommands(CLI::App& app, const Streams& streams, int& exit_co
 void RegisterAlgorithmsCommand(CLI::App& app, const Streams& streams);
 /// `report RESULT_DIR [-o DIR]`.
 void RegisterReportCommand(CLI::App& app, const Streams& streams);
+/// `serve --data DIR`: the service (queue, shared worker pool, HTTP API, page). Sets `exit_code`.
+void RegisterServeCommand(CLI::App& app, const Streams& streams, int& exit_code);
+/// `submit CONFIG --server URL [--wait]`: a sweep through the service. Sets `exit_code` (like `run`).
+void RegisterSubmitCommand(CLI::App& app, const Streams& streams, int& exit_code);
 
 /// Writes RESULT_DIR/report and prints where its index is (run and merge call it at the end).
 void WriteSweepReport(const std::filesystem::path& result_dir, const Streams& streams);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/command.h"
+#include "cli/segment_rpe_output.h"
 #include "cli/text_table.h"
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/trajectory/relations_format.h"
@@ -123,13 +124,38 @@ void RegisterRpe(CLI::App& eval, const Streams& streams) {
   auto delta = std::make_shared<double>(1.0);
   auto delta_unit = std::make_shared<std::string>("f");
   auto all_pairs = std::make_shared<bool>(false);
+  auto pairs_from_reference = std::make_shared<bool>(false);
+  auto segments = std::make_shared<std::string>();
   CLI::App* command = eval.add_subcommand("rpe", "relative pose error (evo_rpe)");
   AddPairOptions(*command, *options);
-  command->add_option("--delta", *delta, "distance between the poses of a pair")->required();
-  command->add_option("--delta-unit", *delta_unit, "f (frames), m (metres), s (seconds), d (degrees)")->required();
+  CLI::Option* delta_option = command->add_option("--delta", *delta, "distance between the poses of a pair");
+  CLI::Option* unit_option =
+      command->add_option("--delta-unit", *delta_unit, "f (frames), m (metres), s (seconds), d (degrees)");
   command->add_flag("--all-pairs", *all_pairs, "use all pairs at distance delta, not only consecutive ones");
-  command->callback([options, delta, delta_unit, all_pairs, streams] {
+  command->add_flag("--pairs-from-reference", *pairs_from_reference, "choose the pairs on the reference, not the estimate");
+  command
+      ->add_option("--segments", *segments,
+                   "segment RPE instead: lengths in metres (5,10,20) or auto (10-50 % of the reference path), "
+                   "each as --delta L --delta-unit m --all-pairs --pairs-from-reference; reports m, % and deg/m")
+      ->excludes(delta_option)
+      ->excludes(unit_option);
+  command->callback([options, delta, delta_unit, all_pairs, pairs_from_reference, segments, command, streams] {
+    if (command->count("--segments") > 0) {
+      if (options->align != "none" || command->count("--pose-relation") > 0 || *all_pairs || *pairs_from_reference) {
+        throw ev::InputError("--segments: give no --align, --pose-relation, --all-pairs or --pairs-from-reference; "
+                             "segments are chosen on the reference and report translation and rotation");
+      }
+      const ev::Trajectory reference = ReadForCommand(options->reference_path, options->reference_format, streams);
+      const ev::Trajectory estimate = ReadForCommand(options->estimate_path, options->estimate_format, streams);
+      PrintSegmentRpe(reference, estimate, ParseSegmentsOption(*segments), ToAssociation(*options), options->json,
+                      streams.out);
+      return;
+    }
+    if (command->count("--delta") == 0 || command->count("--delta-unit") == 0) {
+      throw ev::InputError("rpe: --delta and --delta-unit are required (or --segments for the segment RPE)");
+    }
     ev::RpeOptions rpe_options;
+    rpe_options.pairs_from_reference = *pairs_from_reference;
     rpe_options.pose_relation = ev::ParsePoseRelation(options->pose_relation);
     rpe_options.delta = *delta;
     rpe_options.delta_unit = ev::ParseDeltaUnit(*delta_unit);

@@ -12,7 +12,7 @@ constexpr std::string_view kHugePages = "glibc.malloc.hugetlb=1";
 constexpr std::string_view kSweep = "slamsweep-sweep";
 
 // The descriptions repeat those of the commands themselves; cli_test checks that they agree.
-constexpr std::array<HelperCommand, 9> kHelperCommands = {{
+constexpr std::array<HelperCommand, 11> kHelperCommands = {{
     {"eval", "map", "occupied proportion, corners and enclosed areas (paper profile)", kMaps, false, kHugePages},
     {"eval", "map-compare", "an estimated map against a reference map: distances, F1, IoU", kMaps, false, kHugePages},
     {"", "vectorize", "trace obstacle borders and export polygons", kMaps, false, kHugePages},
@@ -22,6 +22,9 @@ constexpr std::array<HelperCommand, 9> kHelperCommands = {{
     {"", "report", "turn a sweep's output directory into a static HTML report", kSweep},
     {"", "history", "nightly history: record sweeps, compare them for regressions", kSweep},
     {"", "worker", "run one prepared run folder (started by `slamsweep run`)", kSweep, true},
+    {"", "serve", "run submitted sweeps from one queue on a shared worker pool, with an HTTP API and a status page",
+     kSweep},
+    {"", "submit", "submit a sweep to `slamsweep serve`; --wait follows it like `run`", kSweep},
 }};
 
 }  // namespace

@@ -4,8 +4,9 @@
 //   slamsweep        the core: light commands (trajectory metrics, plan, algorithms); it starts
 //                    the helpers for the other commands, passing the command line on unchanged;
 //   slamsweep-maps   map commands: eval map, eval map-compare, vectorize (OpenCV, libpng);
-//   slamsweep-sweep  sweeps and data: run, merge, report, history, data, worker (SQLite, the report,
-//                    and the MRPT/ROS format modules when a rawlog or bag is read).
+//   slamsweep-sweep  sweeps and data: run, merge, report, history, data, worker, serve, submit
+//                    (SQLite, the report, cpp-httplib, and the MRPT/ROS format modules when a rawlog
+//                    or bag is read).
 // Each program's commands are listed in one function (core_commands.cc, maps_commands.cc,
 // sweep_commands.cc): a command moves between programs by moving its line there and in
 // kHelperCommands (helper_commands.cc).

@@ -1,5 +1,6 @@
-// The commands of `slamsweep-sweep`: sweeps, their results and report, and sequence data (SQLite,
-// the report's libraries; MRPT and ROS as format modules when a rawlog or bag is read).
+// The commands of `slamsweep-sweep`: sweeps, their results and report, sequence data, and the service
+// and its client (SQLite, the report's libraries, cpp-httplib; MRPT and ROS as format modules when a
+// rawlog or bag is read).
 #include "cli/program.h"
 
 namespace slamsweep::cli {
@@ -11,6 +12,8 @@ void RegisterSweepCommands(CommandLine& line) {
   RegisterReportCommand(line.app, line.streams);
   RegisterWorkerCommand(line.app, line.streams, line.exit_code);
   RegisterHistoryCommands(line.app, line.streams, line.exit_code);
+  RegisterServeCommand(line.app, line.streams, line.exit_code);
+  RegisterSubmitCommand(line.app, line.streams, line.exit_code);
 }
 
 }  // namespace slamsweep::cli

@@ -47,20 +47,28 @@ void AddMatrixSelectionOptions(CLI::App& command, MatrixSelection& selection) {
 }
 
 LoadedSweep LoadSweep(const std::string& config_file, const MatrixSelection& selection) {
+  return LoadSweepText(evaluator::ReadTextFile(config_file), config_file, selection, {});
+}
+
+LoadedSweep LoadSweepText(std::string_view text, const std::string& config_file, const MatrixSelection& selection,
+                          const SweepLimits& limits) {
   const CatalogLocation location = FindCatalog("");
   orchestrator::SweepConfigContext context;
   context.default_catalog = location.catalog;
   context.variables = {{"SHARED", location.shared_root.string()}};
+  context.policy = limits.policy;
   LoadedSweep sweep;
-  sweep.config = orchestrator::ReadSweepConfig(config_file, context);
-  sweep.config_hash = fmt::format("{:016x}", orchestrator::Fnv1a64(evaluator::ReadTextFile(config_file)));
+  sweep.config = orchestrator::ParseSweepConfig(text, config_file, context);
+  sweep.config_hash = fmt::format("{:016x}", orchestrator::Fnv1a64(text));
   std::vector<std::string> algorithms, sequences;
   for (const auto& algorithm : sweep.config.algorithms) algorithms.push_back(algorithm.name);
   for (const auto& sequence : sweep.config.sequences) sequences.push_back(sequence.entry.name);
   RequireKnown(selection.algorithms, algorithms, "--only-algorithms");
   RequireKnown(selection.sequences, sequences, "--only-sequences");
   if (selection.iterations > 0) sweep.config.iterations = selection.iterations;
-  std::vector<orchestrator::RunSpec> runs = orchestrator::ExpandMatrix(sweep.config);
+  std::vector<orchestrator::RunSpec> runs = limits.max_runs > 0
+                                               ? orchestrator::ExpandMatrix(sweep.config, limits.max_runs)
+                                               : orchestrator::ExpandMatrix(sweep.config);
   for (orchestrator::RunSpec& run : runs) {
     if (Selected(selection.algorithms, run.algorithm.name) && Selected(selection.sequences, run.sequence.entry.name)) {
       sweep.runs.push_back(std::move(run));

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -39,6 +41,18 @@ void AddMatrixSelectionOptions(CLI::App& command, MatrixSelection& selection);
 /// selected runs. Throws InputError (file:line:column) for a bad config, and naming the option and
 /// the config's names for an unknown algorithm or sequence.
 LoadedSweep LoadSweep(const std::string& config_file, const MatrixSelection& selection);
+
+/// What a sweep from someone the operator does not fully trust may ask for (`slamsweep serve`).
+struct SweepLimits {
+  /// Readable roots and whether `adapter: command` is allowed (PolicyError otherwise).
+  orchestrator::InputPolicy policy;
+  /// Most runs accepted (MatrixTooLargeError beyond); 0 = the matrix's own limit.
+  std::uint64_t max_runs = 0;
+};
+
+/// LoadSweep of a sweep file's text: `config_file` names it in messages and anchors its relative paths.
+LoadedSweep LoadSweepText(std::string_view text, const std::string& config_file, const MatrixSelection& selection,
+                          const SweepLimits& limits);
 
 /// Runs at once: `configured` when > 0, else the number of cores.
 std::size_t DefaultJobs(std::size_t configured);

@@ -14,6 +14,8 @@ packages=(
   libcli11-dev zlib1g-dev libdeflate-dev libsqlite3-dev libboost-dev libboost-filesystem-dev libssl-dev
   # PNG maps without OpenCV's imgcodecs (libpng-dev); numbers of trajectory files (libfast-float-dev)
   libpng-dev libfast-float-dev
+  # `slamsweep serve` and `submit`: the HTTP server and client (cpp-httplib)
+  libcpp-httplib-dev
   # the report: plots (gnuplot), map GIFs (giflib); headless Chromium checks the report in tests
   gnuplot-nox libgif-dev chromium
   # MRPT: rawlog reading/writing (libmrpt-obs-dev), the real SLAM programs (mrpt-apps),
@@ -21,8 +23,12 @@ packages=(
   libmrpt-obs-dev mrpt-apps mrpt-common
   # ROS1 bags (evaluator/formats/rosbag): librosbag and message headers; python3-* write the test bags
   librosbag-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev libgeometry-msgs-dev python3-rosbag python3-sensor-msgs python3-nav-msgs python3-tf2-msgs
-  # tests and benchmarks (hyperfine: bench/cli, whole-process times)
-  libgtest-dev libgmock-dev libbenchmark-dev shellcheck hyperfine
+  # tests and benchmarks (hyperfine: bench/cli, whole-process times); python3-scipy is the
+  # independent reference for the Spearman rank correlation of the metric validity study
+  # (tests/evaluator/statistics)
+  libgtest-dev libgmock-dev libbenchmark-dev shellcheck hyperfine python3-scipy
+  # the service tests: /metrics parsed by the Prometheus project's own parser; wrk drives bench/service/load_test.sh
+  python3-prometheus-client wrk
   # the Slurm executor's test: a real one-node cluster on localhost (jobs/slurm/local-cluster.sh)
   slurm-wlm munge
 )

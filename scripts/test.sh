@@ -12,6 +12,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 # BreezySLAM is only the independent tinySLAM that tests/slam/tinyslam cross-checks against.
 read -r -a roster <<< "${SLAMSWEEP_ROSTER:-gmapping slam-constructor hector breezyslam}"
 "$root/scripts/install-slam.sh" "${roster[@]}"
+# The Jenkinsfiles' linter (npm-groovy-lint with Debian's Java runtime) for tests/jobs.
+"$root/scripts/install-groovy-lint.sh" >/dev/null
 "$root/scripts/build.sh"
 cd "${SLAMSWEEP_BUILD_DIR:-$root/build}"
 ctest --output-on-failure -j "$(nproc)" --timeout 900

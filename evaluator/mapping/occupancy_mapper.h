@@ -31,6 +31,11 @@ struct MapStage {
 };
 using MapStageVisitor = std::function<void(const MapStage& stage)>;
 
+/// The mapper's revision: raise it whenever Build gives another map for the same scans, poses and
+/// options (a changed beam model, rounding, extent rule). Maps cached on disk (the reference maps of
+/// orchestrator/reference_map) carry it in their key, so a changed mapper renders them again.
+inline constexpr int kOccupancyMapperRevision = 1;
+
 /// Renders occupancy grids from laser scans and the poses they were taken from, so that an
 /// algorithm that outputs only a trajectory can be scored with map metrics. Const and
 /// thread-safe: each call works on its own state.

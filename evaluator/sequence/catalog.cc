@@ -105,6 +105,8 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
       has_ground_truth = true;
     } else if (key == "relations") {
       entry.relations_path = Scalar(source, value, key);
+    } else if (key == "reference_map") {
+      entry.reference_map_path = Scalar(source, value, key);
     } else if (key == "relations_offset_s") {
       entry.relations_offset_s = Number(source, value, key);
     } else if (key == "max_range_m") {
@@ -134,7 +136,7 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
     } else {
       Fail(source, item.first,
            fmt::format("unknown key '{}' (expected name, format, path, ground_truth, relations, relations_offset_s, "
-                       "max_range_m, stamp_policy, citation, licence, download, simulation)",
+                       "max_range_m, stamp_policy, citation, licence, download, simulation, reference_map)",
                        key));
     }
   }

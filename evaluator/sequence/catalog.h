@@ -50,6 +50,10 @@ struct CatalogEntry {
   std::string download_hint;
   /// Simulated sequences: SimulationOptions as JSON (validated when the catalog is read).
   nlohmann::json simulation;
+  /// A reference map file (map_server YAML + image) to score maps against instead of the map
+  /// rendered from the reference poses; empty: rendered (orchestrator/reference_map). Truth:
+  /// only the worker reads it, after the program has exited.
+  std::string reference_map_path;
   /// Line of the entry in the catalog file (from 1), for messages.
   std::size_t line = 0;
 };
@@ -65,7 +69,7 @@ using CatalogVariables = std::map<std::string, std::string, std::less<>>;
 /// Parses the YAML text of a catalog: a top-level map with `sequences` (and `x-...` keys, ignored, that
 /// hold YAML anchors shared by entries), a list of maps with the
 /// fields of CatalogEntry (name, format, path, ground_truth, relations, relations_offset_s,
-/// max_range_m, stamp_policy, citation, licence, download, simulation). An unknown key, a missing
+/// max_range_m, stamp_policy, citation, licence, download, simulation, reference_map). An unknown key, a missing
 /// name/format/ground_truth, a duplicate name or a value of the wrong kind is an InputError
 /// "FILE:LINE: ..." at the offending node.
 Catalog ParseCatalog(std::string_view yaml_text, const std::filesystem::path& source);

@@ -158,7 +158,7 @@ void ValidatePairSelectionOptions(const PairSelectionOptions& options) {
   }
 }
 
-std::vector<IndexPair> SelectPairs(const Trajectory& trajectory, const PairSelectionOptions& options) {
+std::vector<IndexPair> FindPairs(const Trajectory& trajectory, const PairSelectionOptions& options) {
   ValidatePairSelectionOptions(options);
   const std::vector<Pose>& poses = trajectory.poses();
   const std::vector<double>& stamps = trajectory.stamps_s();
@@ -187,7 +187,13 @@ std::vector<IndexPair> SelectPairs(const Trajectory& trajectory, const PairSelec
       pairs = PairsByAngle(poses, options.delta, tolerance, options.all_pairs);
       break;
   }
+  return pairs;
+}
+
+std::vector<IndexPair> SelectPairs(const Trajectory& trajectory, const PairSelectionOptions& options) {
+  std::vector<IndexPair> pairs = FindPairs(trajectory, options);
   if (pairs.empty()) {
+    const std::size_t count = trajectory.size();
     throw InputError("RPE: delta = " + FormatNumber(options.delta) + " (" + std::string(DeltaUnitName(options.unit)) +
                      (options.all_pairs ? ", all pairs" : ", consecutive pairs") + ") selects no pose pairs among " +
                      std::to_string(count) + " associated poses; try a smaller --delta or another --delta-unit");

@@ -53,4 +53,8 @@ void ValidatePairSelectionOptions(const PairSelectionOptions& options);
 /// and give evo's argmin result. Throws InputError when no pair is found, naming delta and unit.
 std::vector<IndexPair> SelectPairs(const Trajectory& trajectory, const PairSelectionOptions& options);
 
+/// SelectPairs without the "no pair" error: empty when delta selects nothing (a segment length
+/// longer than the path). Still throws InputError for invalid options.
+std::vector<IndexPair> FindPairs(const Trajectory& trajectory, const PairSelectionOptions& options);
+
 }  // namespace slamsweep::evaluator

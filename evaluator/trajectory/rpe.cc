@@ -24,7 +24,7 @@ nlohmann::json Rpe::Specification() const {
   specification["delta_unit"] = std::string(DeltaUnitName(options_.delta_unit));
   specification["all_pairs"] = options_.all_pairs;
   specification["delta_tolerance"] = kRpeDeltaTolerance;
-  specification["pairs_from"] = "estimate";
+  specification["pairs_from"] = options_.pairs_from_reference ? "reference" : "estimate";
   return specification;
 }
 
@@ -36,7 +36,8 @@ MetricResult Rpe::Compute(const Trajectory& reference, const Trajectory& estimat
                                               : std::move(association.estimate);
 
   // evo takes the pairs from the (aligned) estimate unless told otherwise.
-  const std::vector<IndexPair> pairs = SelectPairs(aligned, Selection());
+  const std::vector<IndexPair> pairs =
+      SelectPairs(options_.pairs_from_reference ? association.reference : aligned, Selection());
   const std::vector<Pose>& q = association.reference.poses();
   const std::vector<Pose>& p = aligned.poses();
   result.errors.resize(pairs.size());

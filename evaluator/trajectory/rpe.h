@@ -14,6 +14,9 @@ struct RpeOptions {
   double delta = 1;
   DeltaUnit delta_unit = DeltaUnit::kFrames;
   bool all_pairs = false;
+  /// Choose the pairs on the reference instead of the aligned estimate (evo's
+  /// --pairs_from_reference): every estimate is then scored on the same stretches of the path.
+  bool pairs_from_reference = false;
   AssociationOptions association;
   AlignmentOptions alignment;
 };
@@ -22,7 +25,7 @@ struct RpeOptions {
 inline constexpr double kRpeDeltaTolerance = 0.1;
 
 /// Relative pose error, as evo_rpe: associate, align (optional), choose index pairs (i, j) on the
-/// aligned estimate (evo's default; see SelectPairs), then per pair
+/// aligned estimate (evo's default; see SelectPairs) or on the reference, then per pair
 /// E = (Q_i^-1 Q_j)^-1 (P_i^-1 P_j) with Q the reference and P the estimate, reporting |t(E)| (m)
 /// or the angle of R(E) (deg). Compute is const and thread-safe.
 class Rpe {
@@ -36,7 +39,7 @@ class Rpe {
 
   const RpeOptions& options() const { return options_; }
   /// pose_relation, alignment, n_to_align, t_max_diff_s, t_offset_s, delta, delta_unit,
-  /// all_pairs, delta_tolerance and pairs_from ("estimate").
+  /// all_pairs, delta_tolerance and pairs_from ("estimate" or "reference").
   nlohmann::json Specification() const;
 
  private:

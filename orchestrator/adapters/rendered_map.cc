@@ -8,12 +8,16 @@ namespace slamsweep::orchestrator {
 
 namespace ev = slamsweep::evaluator;
 
+ev::OccupancyMapperOptions RenderMapperOptions(const EvaluationOptions& evaluation) {
+  ev::OccupancyMapperOptions options;
+  options.resolution_m = evaluation.map_resolution_m;
+  return options;
+}
+
 RenderedMap RenderMapFromTrajectory(std::span<const ev::LaserScan> scans, const ev::Trajectory& trajectory,
                                     const EvaluationOptions& evaluation) {
   const ev::ScanPlacement placement = ev::PlaceScans(scans, trajectory);
-  ev::OccupancyMapperOptions options;
-  options.resolution_m = evaluation.map_resolution_m;
-  const ev::OccupancyMapper mapper(options);
+  const ev::OccupancyMapper mapper(RenderMapperOptions(evaluation));
 
   RenderedMap rendered;
   rendered.scans_used = placement.placed.size();

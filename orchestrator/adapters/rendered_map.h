@@ -9,6 +9,7 @@
 #include "evaluator/core/laser_scan.h"
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/core/trajectory.h"
+#include "evaluator/mapping/occupancy_mapper_options.h"
 #include "orchestrator/matrix/run_spec.h"
 
 namespace slamsweep::orchestrator {
@@ -22,6 +23,10 @@ struct RenderedMap {
   std::size_t scans_used = 0;
   std::size_t scans_outside_trajectory = 0;
 };
+
+/// The occupancy mapping of every map rendered from a trajectory (the odometry baseline's, the
+/// reference map's): the mapper's defaults at evaluation.map_resolution_m.
+evaluator::OccupancyMapperOptions RenderMapperOptions(const EvaluationOptions& evaluation);
 
 /// Places each scan at the trajectory's pose at its stamp and renders the map at
 /// evaluation.map_resolution_m, with evaluation.stages stages (none when 0). Throws InputError when

@@ -24,6 +24,8 @@ struct RunPaths {
   std::filesystem::path TrajectoryTum() const { return root / "trajectory.tum"; }
   std::filesystem::path ReferenceTum() const { return root / "reference.tum"; }
   std::filesystem::path GeoJson() const { return root / "map.geojson"; }
+  /// Every segment of the segment RPE (evaluator/formats/trajectory/segment_errors_csv.h).
+  std::filesystem::path SegmentErrorsCsv() const { return root / "rpe_segments.csv"; }
   std::filesystem::path ResultJson() const { return root / "result.json"; }
 };
 

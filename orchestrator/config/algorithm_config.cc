@@ -140,13 +140,20 @@ CommandDeclaration ParseCommand(const std::filesystem::path& file, const YAML::N
 }  // namespace
 
 AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YAML::Node& node,
-                                     const std::string& path) {
+                                     const std::string& path, const InputPolicy& policy) {
   YamlFields fields(file, node, path);
   AlgorithmConfig algorithm;
   algorithm.name = fields.RequiredText("name");
   algorithm.adapter = fields.RequiredText("adapter");
   if (!OneOf(algorithm.adapter, kAdapters)) {
     FailExpected(file, fields.Get("adapter"), fields.PathOf("adapter"), Choices(kAdapters));
+  }
+  if (algorithm.adapter == "command" && !policy.allow_commands) {
+    // Before the command is looked at: its program is not even searched for.
+    throw PolicyError(LocatedAt(file, fields.Get("adapter"),
+                                fmt::format("{}: the command adapter runs any program and this server does not allow "
+                                            "it (start it with --allow-commands), got adapter: command",
+                                            fields.PathOf("adapter"))));
   }
   algorithm.timeout_s = fields.Number("timeout_s", algorithm.timeout_s);
   if (!(algorithm.timeout_s > 0.0)) {

@@ -32,6 +32,26 @@ void ValidateEvaluationOptions(const EvaluationOptions& evaluation, const std::s
   }
 }
 
+std::optional<std::vector<double>> ParseSegmentLengths(const nlohmann::json& value, const std::string& path) {
+  constexpr std::string_view kExpected = "expected auto or a list of distinct segment lengths > 0 m such as [5, 10, 20]";
+  if (value.is_string() && value.get<std::string>() == "auto") return std::nullopt;
+  if (!value.is_array()) throw InputError(path + ": " + std::string(kExpected) + ", got " + value.dump());
+  std::vector<double> lengths;
+  for (const nlohmann::json& item : value) {
+    if (!item.is_number() || !std::isfinite(item.get<double>()) || item.get<double>() <= 0.0 ||
+        std::find(lengths.begin(), lengths.end(), item.get<double>()) != lengths.end()) {
+      throw InputError(path + ": " + std::string(kExpected) + ", got " + value.dump());
+    }
+    lengths.push_back(item.get<double>());
+  }
+  std::sort(lengths.begin(), lengths.end());
+  return lengths;
+}
+
+nlohmann::json SegmentLengthsJson(const std::optional<std::vector<double>>& lengths_m) {
+  return lengths_m ? nlohmann::json(*lengths_m) : nlohmann::json("auto");
+}
+
 void ValidateThreshold(const Threshold& threshold, const std::string& path) {
   if (threshold.metric.empty()) throw InputError(Field(path, "metric") + ": expected a metric name such as ape_trans");
   if (threshold.statistic.empty()) throw InputError(Field(path, "statistic") + ": expected a statistic such as rmse");

@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <cstddef>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "orchestrator/matrix/run_spec.h"
 
@@ -15,6 +19,12 @@ namespace slamsweep::orchestrator {
 /// (the caller adds it).
 void ValidateEvaluationOptions(const EvaluationOptions& evaluation, const std::string& path);
 void ValidateThreshold(const Threshold& threshold, const std::string& path);
+
+/// `evaluation.rpe_segments_m` as written (YAML converted to JSON, or run.json): "auto" (nullopt) or a
+/// list of distinct lengths > 0 m, returned ascending. InputError naming `path` otherwise.
+std::optional<std::vector<double>> ParseSegmentLengths(const nlohmann::json& value, const std::string& path);
+/// "auto" or the list, as ParseSegmentLengths reads it back.
+nlohmann::json SegmentLengthsJson(const std::optional<std::vector<double>>& lengths_m);
 
 /// The fields of an `evaluation:` block, read through either reader of strict fields (YAML in the
 /// sweep file, JSON in run.json): both offer Text, Number and Unsigned with a fallback.

@@ -29,7 +29,8 @@ const evaluator::CatalogEntry& LookUp(const std::filesystem::path& file, const Y
 /// A path of `entry` with variables replaced, made absolute against `base`, and required to exist.
 std::string ResolveExisting(const std::filesystem::path& file, const YAML::Node& node, const std::string& path,
                             const evaluator::CatalogEntry& entry, std::string_view what, const std::string& text,
-                            const std::filesystem::path& base, const evaluator::CatalogVariables& variables) {
+                            const std::filesystem::path& base, const evaluator::CatalogVariables& variables,
+                            const InputPolicy& policy) {
   std::filesystem::path resolved;
   try {
     resolved = evaluator::ResolveCatalogPath(text, variables);
@@ -38,6 +39,7 @@ std::string ResolveExisting(const std::filesystem::path& file, const YAML::Node&
   }
   if (resolved.is_relative()) resolved = base / resolved;
   resolved = resolved.lexically_normal();
+  RequireAllowedPath(policy, file, node, path, fmt::format("sequence {}", what), resolved);
   std::error_code error;
   if (!std::filesystem::is_regular_file(resolved, error)) {
     FailAt(file, node,
@@ -59,7 +61,8 @@ std::optional<std::size_t> MaxScans(const std::filesystem::path& file, const YAM
 }  // namespace
 
 SequenceSpec ParseSequenceConfig(const std::filesystem::path& file, YAML::Node node, const std::string& path,
-                                 const evaluator::Catalog& catalog, const evaluator::CatalogVariables& variables) {
+                                 const evaluator::Catalog& catalog, const evaluator::CatalogVariables& variables,
+                                 const InputPolicy& policy) {
   SequenceSpec spec;
   std::filesystem::path base;
   const YAML::Node& view = node;  // const lookups never insert keys
@@ -86,11 +89,16 @@ SequenceSpec ParseSequenceConfig(const std::filesystem::path& file, YAML::Node n
     FailExpected(file, node, path, "a catalog name, {catalog: NAME, ...} or an inline sequence entry");
   }
   if (spec.entry.format != "simulated") {
-    spec.entry.path = ResolveExisting(file, node, path, spec.entry, "file", spec.entry.path, base, variables);
+    spec.entry.path = ResolveExisting(file, node, path, spec.entry, "file", spec.entry.path, base, variables, policy);
   }
   if (!spec.entry.relations_path.empty()) {
     spec.entry.relations_path =
-        ResolveExisting(file, node, path, spec.entry, "relations file", spec.entry.relations_path, base, variables);
+        ResolveExisting(file, node, path, spec.entry, "relations file", spec.entry.relations_path, base, variables,
+                        policy);
+  }
+  if (!spec.entry.reference_map_path.empty()) {
+    spec.entry.reference_map_path = ResolveExisting(file, node, path, spec.entry, "reference map",
+                                                    spec.entry.reference_map_path, base, variables, policy);
   }
   return spec;
 }

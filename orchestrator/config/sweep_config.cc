@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <regex>
 #include <set>
 
 #include "evaluator/core/input_error.h"
@@ -58,6 +59,11 @@ EvaluationOptions ParseEvaluation(const std::filesystem::path& file, const YAML:
   if (!node.IsDefined() || node.IsNull()) return evaluation;
   YamlFields fields(file, node, "evaluation");
   ReadEvaluationFields(fields, evaluation);
+  if (const YAML::Node segments = fields.Get("rpe_segments_m"); segments.IsDefined() && !segments.IsNull()) {
+    LocatedCheck(file, segments, [&] {
+      evaluation.rpe_segments_m = ParseSegmentLengths(YamlToJson(segments), fields.PathOf("rpe_segments_m"));
+    });
+  }
   fields.Finish();
   LocatedCheck(file, node, [&] { ValidateEvaluationOptions(evaluation, "evaluation"); });
   return evaluation;
@@ -71,8 +77,11 @@ std::vector<Threshold> ParseThresholds(const std::filesystem::path& file, const 
     YamlFields fields(file, node[i], fmt::format("thresholds[{}]", i));
     Threshold threshold;
     threshold.metric = fields.RequiredText("metric");
-    if (!OneOf(threshold.metric, kMetrics)) {
-      FailExpected(file, fields.Get("metric"), fields.PathOf("metric"), "one of " + Choices(kMetrics));
+    // The segment RPE's metrics name their length (segment_drift_10m: orchestrator/worker/run_metrics.h).
+    static const std::regex kSegmentMetric("segment_(trans|drift|rot)_[0-9]+(p[0-9]+)?m");
+    if (!OneOf(threshold.metric, kMetrics) && !std::regex_match(threshold.metric, kSegmentMetric)) {
+      FailExpected(file, fields.Get("metric"), fields.PathOf("metric"),
+                   "one of " + Choices(kMetrics) + ", or segment_trans|drift|rot_<length>m");
     }
     threshold.statistic = fields.Text("statistic", threshold.statistic);
     if (!OneOf(threshold.statistic, kStatistics)) {
@@ -142,7 +151,10 @@ evaluator::Catalog LoadCatalog(const std::filesystem::path& file, YamlFields& fi
                                std::filesystem::path& catalog_path) {
   const YAML::Node node = fields.Get("catalog");
   catalog_path = context.default_catalog;
-  if (node.IsDefined() && !node.IsNull()) catalog_path = Anchored(file, fields.Text("catalog", ""));
+  if (node.IsDefined() && !node.IsNull()) {
+    catalog_path = Anchored(file, fields.Text("catalog", ""));
+    RequireAllowedPath(context.policy, file, node, "catalog", "dataset catalog file", catalog_path);
+  }
   std::error_code error;
   if (!std::filesystem::is_regular_file(catalog_path, error)) {
     // Without `catalog:` the default only matters when a sequence names a catalog entry (LookUp says so).
@@ -221,7 +233,9 @@ SweepConfig ParseSweepConfig(std::string_view yaml_text, const std::filesystem::
   if (!algorithms.IsDefined()) FailAt(file, root, "algorithms: missing (required: a list of algorithms)");
   config.algorithms = ParseNamedList<AlgorithmConfig>(
       file, algorithms, "algorithms",
-      [&](const YAML::Node& node, const std::string& path) { return ParseAlgorithmConfig(file, node, path); },
+      [&](const YAML::Node& node, const std::string& path) {
+        return ParseAlgorithmConfig(file, node, path, context.policy);
+      },
       &AlgorithmName);
 
   const YAML::Node sequences = fields.Get("sequences");
@@ -230,7 +244,7 @@ SweepConfig ParseSweepConfig(std::string_view yaml_text, const std::filesystem::
   config.sequences = ParseNamedList<SequenceSpec>(
       file, sequences, "sequences",
       [&](const YAML::Node& node, const std::string& path) {
-        return ParseSequenceConfig(file, node, path, catalog, context.variables);
+        return ParseSequenceConfig(file, node, path, catalog, context.variables, context.policy);
       },
       &SequenceName);
 

@@ -15,6 +15,8 @@
 //   workers: 2                       # default --jobs (0 = number of cores)
 //   failure_budget: 0                # stop starting new runs after this many failures; 0 = never stop
 //   evaluation: {align: se2, rpe_delta_m: 1.0, t_max_diff_s: 0.01, stages: 24, map_resolution_m: 0.05}
+//                                    # rpe_segments_m: auto (default: 10-50 % of the reference path, rounded to 1 m,
+//                                    #   as KITTI/rpg) or a list such as [5, 10, 20]; [] = no segment RPE
 //   regression: {alpha: 0.05, min_effect: 0.2}   # `slamsweep history compare --config`: Mann-Whitney U
 //                                    #   significance level in (0, 1) and minimum |Cliff's delta| in [0, 1]
 //   thresholds:                      # JUnit failures
@@ -66,6 +68,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evaluator/sequence/catalog.h"
+#include "orchestrator/config/input_policy.h"
 #include "orchestrator/matrix/run_spec.h"
 
 namespace slamsweep::orchestrator {
@@ -140,6 +143,8 @@ struct SweepConfigContext {
   std::filesystem::path default_catalog;
   /// ${NAME} values for catalog and inline sequence paths, e.g. {"SHARED", "/work/shared"}.
   evaluator::CatalogVariables variables;
+  /// What the file may read and run (everything, unless the file was submitted to the service).
+  InputPolicy policy;
 };
 
 /// Reads and validates a sweep file (format above). Everything is checked before anything runs:

@@ -76,8 +76,8 @@ const Item& Named(const std::vector<Item>& items, const std::string& name, const
 const std::string& AlgorithmName(const AlgorithmConfig& algorithm) { return algorithm.name; }
 const std::string& SequenceName(const SequenceSpec& sequence) { return sequence.entry.name; }
 
-/// A few long parameter lists multiply quickly; refuse before allocating millions of runs.
-void CheckSize(const SweepConfig& config) {
+/// Runs of the product before exclusions and inclusions, saturated at kMaxRuns + 1.
+std::uint64_t ProductRuns(const SweepConfig& config) {
   const auto saturating = [](std::uint64_t a, std::uint64_t b) {
     return (a != 0 && b > kMaxRuns / a + 1) ? kMaxRuns + 1 : std::min<std::uint64_t>(a * b, kMaxRuns + 1);
   };
@@ -89,8 +89,12 @@ void CheckSize(const SweepConfig& config) {
   }
   product_runs = saturating(product_runs, config.sequences.size());
   product_runs = saturating(product_runs, config.noise.size());
-  product_runs = saturating(product_runs, static_cast<std::uint64_t>(std::max(config.iterations, 0)));
-  if (product_runs > kMaxRuns) {
+  return saturating(product_runs, static_cast<std::uint64_t>(std::max(config.iterations, 0)));
+}
+
+/// A few long parameter lists multiply quickly; refuse before allocating millions of runs.
+void CheckSize(const SweepConfig& config) {
+  if (ProductRuns(config) > kMaxRuns) {
     throw evaluator::InputError(fmt::format(
         "{}: the sweep expands to more than {} runs (algorithms x parameter combinations x sequences x noise x "
         "iterations); split it or shorten the parameter lists",
@@ -180,6 +184,22 @@ std::vector<RunSpec> ExpandMatrix(const SweepConfig& config) {
     }
   }
   return runs.Take();
+}
+
+std::vector<RunSpec> ExpandMatrix(const SweepConfig& config, std::uint64_t max_runs) {
+  const std::uint64_t product_runs = ProductRuns(config);
+  if (max_runs < kMaxRuns / 16 && product_runs > 16 * max_runs) {
+    throw MatrixTooLargeError(fmt::format("{}: the sweep expands to {}{} runs before exclusions; at most {} are "
+                                          "accepted here: split it or shorten the parameter lists",
+                                          config.source.string(), product_runs > kMaxRuns ? "more than " : "",
+                                          std::min(product_runs, kMaxRuns), max_runs));
+  }
+  std::vector<RunSpec> runs = ExpandMatrix(config);
+  if (runs.size() > max_runs) {
+    throw MatrixTooLargeError(fmt::format("{}: the sweep has {} runs; at most {} are accepted here: split it",
+                                          config.source.string(), runs.size(), max_runs));
+  }
+  return runs;
 }
 
 }  // namespace slamsweep::orchestrator

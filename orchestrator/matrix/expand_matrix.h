@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "evaluator/core/input_error.h"
 #include "orchestrator/config/sweep_config.h"
 #include "orchestrator/matrix/run_spec.h"
 
@@ -16,6 +17,17 @@ namespace slamsweep::orchestrator {
 /// per SeedForRun. Throws InputError when the product exceeds 1,000,000 runs, and on a run id collision
 /// (two different runs, one id).
 std::vector<RunSpec> ExpandMatrix(const SweepConfig& config);
+
+/// A sweep with more runs than its reader accepts (the service's runs-per-sweep limit; HTTP 413).
+class MatrixTooLargeError : public evaluator::InputError {
+ public:
+  using evaluator::InputError::InputError;
+};
+
+/// ExpandMatrix for a reader that accepts at most `max_runs` runs: throws MatrixTooLargeError, without
+/// building the runs, when the product before exclusions exceeds 16 x max_runs (a hostile "iterations:
+/// 1000000" costs nothing), and after building them when more than `max_runs` remain.
+std::vector<RunSpec> ExpandMatrix(const SweepConfig& config, std::uint64_t max_runs);
 
 /// The seed of a run under `policy` (see sweep_config.h); `spec` must hold everything but seed and id.
 std::uint64_t SeedForRun(const RunSpec& spec, std::uint64_t base_seed, SeedPolicy policy);

@@ -177,6 +177,7 @@ NoiseSpec NoiseFromJson(const json& value, const std::string& path) {
 json ToJson(const EvaluationOptions& evaluation) {
   return json{{"align", evaluation.align},
               {"rpe_delta_m", evaluation.rpe_delta_m},
+              {"rpe_segments_m", SegmentLengthsJson(evaluation.rpe_segments_m)},
               {"t_max_diff_s", evaluation.t_max_diff_s},
               {"stages", evaluation.stages},
               {"map_resolution_m", evaluation.map_resolution_m},
@@ -184,10 +185,12 @@ json ToJson(const EvaluationOptions& evaluation) {
 }
 
 EvaluationOptions EvaluationFromJson(const json& value, const std::string& path) {
-  const json object = WithoutNulls(value, path);
+  json object = WithoutNulls(value, path);
+  const json segments = Take(object, "rpe_segments_m");
   JsonFields fields(object, path);
   EvaluationOptions evaluation;
   ReadEvaluationFields(fields, evaluation);
+  if (!segments.is_null()) evaluation.rpe_segments_m = ParseSegmentLengths(segments, Join(path, "rpe_segments_m"));
   fields.Finish();
   ValidateEvaluationOptions(evaluation, path);
   return evaluation;
@@ -236,18 +239,29 @@ SequenceSpec SequenceFromJson(const json& value, const std::string& path) {
 }  // namespace
 
 json ToJson(const evaluator::CatalogEntry& entry) {
-  return json{{"name", entry.name},
-              {"format", entry.format},
-              {"path", entry.path},
-              {"ground_truth", std::string(evaluator::GroundTruthKindName(entry.ground_truth))},
-              {"relations", entry.relations_path},
-              {"relations_offset_s", entry.relations_offset_s},
-              {"max_range_m", OptionalNumber(entry.max_range_m)},
-              {"stamp_policy", entry.stamp_policy},
-              {"simulation", entry.simulation.is_null() ? json(nullptr) : entry.simulation},
-              {"citation", entry.citation},
-              {"licence", entry.licence_note},
-              {"download", entry.download_hint}};
+  json out{{"name", entry.name},
+           {"format", entry.format},
+           {"path", entry.path},
+           {"ground_truth", std::string(evaluator::GroundTruthKindName(entry.ground_truth))},
+           {"relations", entry.relations_path},
+           {"relations_offset_s", entry.relations_offset_s},
+           {"max_range_m", OptionalNumber(entry.max_range_m)},
+           {"stamp_policy", entry.stamp_policy},
+           {"simulation", entry.simulation.is_null() ? json(nullptr) : entry.simulation},
+           {"citation", entry.citation},
+           {"licence", entry.licence_note},
+           {"download", entry.download_hint}};
+  // Only when set: the run ids of entries without one (every run before it existed) stay the same.
+  if (!entry.reference_map_path.empty()) out["reference_map"] = entry.reference_map_path;
+  return out;
+}
+
+bool SameEvaluation(const json& recorded_evaluation, const EvaluationOptions& current) {
+  try {
+    return EvaluationFromJson(recorded_evaluation, "evaluation") == current;
+  } catch (const InputError&) {
+    return false;
+  }
 }
 
 evaluator::CatalogEntry CatalogEntryFromJson(const json& value, const std::string& path) {
@@ -266,6 +280,7 @@ evaluator::CatalogEntry CatalogEntryFromJson(const json& value, const std::strin
   entry.citation = fields.Text("citation", "");
   entry.licence_note = fields.Text("licence", "");
   entry.download_hint = fields.Text("download", "");
+  entry.reference_map_path = fields.Text("reference_map", "");
   fields.Finish();
 
   if (entry.name.empty()) throw InputError(Join(path, "name") + ": expected a non-empty name");
@@ -453,6 +468,8 @@ json RunIdentity(const RunSpec& spec) {
   sequence.erase("citation");
   sequence.erase("licence");
   sequence.erase("download");
+  // Nor does what a run is scored against (like `evaluation`): the reference map is never the program's input.
+  sequence.erase("reference_map");
   const json algorithm = ToJson(spec.algorithm);
   json algorithm_identity = {{"name", algorithm["name"]},
                              {"adapter", algorithm["adapter"]},

@@ -82,6 +82,11 @@ struct EvaluationOptions {
   /// The canvas rule of the map metrics (spec/metrics.md): crop to the known cells first. false gives
   /// the raw-grid profile, which depends on each program's canvas size.
   bool crop = true;
+  /// Segment lengths of the segment RPE (evaluator SegmentRpe), ascending. Absent ("auto"): 10, 20,
+  /// 30, 40 and 50 % of the sequence's whole reference path rounded to 1 m, the same for every run
+  /// of a sequence, so the runs of a group are scored on the same segments. Empty: no segment RPE.
+  std::optional<std::vector<double>> rpe_segments_m;
+  bool operator==(const EvaluationOptions&) const = default;
 };
 
 /// A metric limit: a run whose metric statistic exceeds `max` (or falls below `min`) fails in JUnit.
@@ -167,6 +172,12 @@ RunSpec RunSpecFromJson(const nlohmann::json& json);
 
 nlohmann::json ToJson(const evaluator::CatalogEntry& entry);
 evaluator::CatalogEntry CatalogEntryFromJson(const nlohmann::json& json, const std::string& path = "sequence");
+
+/// Whether run.json's recorded `evaluation` block scores a run as `current` does (fields a run.json
+/// leaves out take their defaults, so one written before a field existed matches the default). An
+/// unreadable block is not the same. A finished run scored otherwise is not reused: its numbers would
+/// not be comparable with the new runs of its group (say, segment RPE at other lengths).
+bool SameEvaluation(const nlohmann::json& recorded_evaluation, const EvaluationOptions& current);
 
 /// The revision of a built-in adapter's own settings (1 for adapters that never changed them, and
 /// for unknown names). Part of the run identity from 2 on: results of an adapter whose defaults

@@ -14,6 +14,7 @@
 #include "orchestrator/process/outcome_reason.h"
 #include "orchestrator/process/signal_wakeup.h"
 #include "orchestrator/process/spawn.h"
+#include "orchestrator/process/wake_up.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -263,9 +264,14 @@ std::vector<std::pair<ProcessSet::Id, ProcessOutcome>> ProcessSet::WaitForAny() 
     ended.insert(ended.end(), std::make_move_iterator(pending_.begin()), std::make_move_iterator(pending_.end()));
     pending_.clear();
     ReapEnded(ended);
-    if (!ended.empty() || children_.empty() || InterruptionPending()) return ended;
+    if (!ended.empty() || children_.empty() || InterruptionPending() || TakeWakeUpRequest()) return ended;
     Poll(EnforceLimits(Clock::now()));
   }
+}
+
+void ProcessSet::Stop(Id id) {
+  const auto found = children_.find(id);
+  if (found != children_.end()) Terminate(found->second, StopCause::kInterrupt, Clock::now());
 }
 
 std::vector<std::pair<ProcessSet::Id, ProcessOutcome>> ProcessSet::TerminateAll() {

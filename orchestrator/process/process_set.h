@@ -42,8 +42,14 @@ class ProcessSet {
   /// Blocks until >= 1 child ended (or an interruption arrived); returns the ended ones. Wakes up for
   /// timeouts and memory polls (every ~200 ms while a memory limit is set). Empty set: returns at once.
   /// After an interruption (InterruptionPending()) it returns at once (possibly with an empty list); the
-  /// caller then calls TerminateAll().
+  /// caller then calls TerminateAll(). It also returns, possibly empty, when another thread called
+  /// RequestWakeUp() (orchestrator/process/wake_up.h).
   std::vector<std::pair<Id, ProcessOutcome>> WaitForAny();
+
+  /// Ends one child the way TerminateAll ends them all (SIGTERM to its group, its grace, SIGKILL),
+  /// without waiting: its outcome (kInterrupted, reason "stopped by the supervisor ...") comes from a
+  /// later WaitForAny(). A child that already ended keeps its own outcome; unknown ids are ignored.
+  void Stop(Id id);
 
   /// SIGTERM to every group, wait grace_s (each child's own), SIGKILL the rest; returns their
   /// outcomes (kInterrupted). Children that had already ended by themselves keep their real outcome.

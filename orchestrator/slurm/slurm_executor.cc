@@ -1,8 +1,5 @@
 #include "orchestrator/slurm/slurm_executor.h"
 
-#include <poll.h>
-#include <pthread.h>
-#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -11,10 +8,12 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <set>
 #include <thread>
 #include <utility>
 
 #include "orchestrator/process/interruption.h"
+#include "orchestrator/process/wake_up.h"
 #include "orchestrator/slurm/array_job.h"
 #include "orchestrator/slurm/slurm_command.h"
 #include "orchestrator/slurm/slurm_states.h"
@@ -44,19 +43,10 @@ struct SubmittedJob {
   /// Task id -> run id, for tasks whose ending was not returned yet.
   std::map<int, std::string> tasks;
   std::map<int, int> missing_polls;
+  /// Tasks ended by Stop(): their CANCELLED state is an interruption, not a failure.
+  std::set<int> cancelled_tasks;
   int failed_queries = 0;
 };
-
-/// Sleeps up to `seconds`, waking early for SIGINT/SIGTERM/SIGHUP. The InterruptionGuard keeps those
-/// blocked outside waits (so none is lost between a check and the wait); they open only in here.
-void InterruptibleSleep(double seconds) {
-  sigset_t open_mask;
-  pthread_sigmask(SIG_SETMASK, nullptr, &open_mask);
-  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) sigdelset(&open_mask, signal_number);
-  const auto ns = static_cast<long long>(std::max(0.0, seconds) * 1e9);
-  timespec timeout = {static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
-  ::ppoll(nullptr, 0, &timeout, &open_mask);
-}
 
 class SlurmExecutor final : public Executor {
  public:
@@ -75,7 +65,28 @@ class SlurmExecutor final : public Executor {
       if (TasksLeft() == 0 || Interrupted()) return {};
       for (SubmittedJob& job : jobs_) Poll(job);
       if (!ready_.empty()) return std::exchange(ready_, {});
-      InterruptibleSleep(options_.poll_interval_s);
+      // Woken by a signal (the InterruptionGuard keeps them blocked outside this wait, so none is lost
+      // between the check above and the sleep) or by another thread's RequestWakeUp().
+      SleepUnlessWoken(options_.poll_interval_s);
+      if (TakeWakeUpRequest()) return std::exchange(ready_, {});
+    }
+  }
+
+  void Stop(const std::string& run_id) override {
+    for (auto it = queued_.begin(); it != queued_.end(); ++it) {
+      if (it->run_id != run_id) continue;
+      ready_.push_back({run_id, true, "never submitted to Slurm (stopped by the supervisor)"});
+      queued_.erase(it);
+      return;
+    }
+    for (SubmittedJob& job : jobs_) {
+      for (const auto& [task_id, task_run_id] : job.tasks) {
+        if (task_run_id != run_id) continue;
+        // Its final state (CANCELLED) is picked up by the next Poll and reported as interrupted.
+        job.cancelled_tasks.insert(task_id);
+        RunSlurmCommand({"scancel", job.job_id + "_" + std::to_string(task_id)});
+        return;
+      }
     }
   }
 
@@ -208,7 +219,7 @@ class SlurmExecutor final : public Executor {
       if (found == by_task.end()) {
         // No accounting and the record expired (or the controller lost the job): the state is gone.
         if (++job.missing_polls[it->first] >= kMaxMissingPolls) {
-          ready_.push_back({it->second, cancelled_by_us_,
+          ready_.push_back({it->second, cancelled_by_us_ || job.cancelled_tasks.count(it->first) > 0,
                             "Slurm no longer lists task " + job.job_id + "_" + std::to_string(it->first) +
                                 " (its record expired; final state unknown)"});
           it = job.tasks.erase(it);
@@ -222,7 +233,8 @@ class SlurmExecutor final : public Executor {
         ++it;
         continue;
       }
-      const SlurmTaskEnding ending = EndingForState(*found->second, cancelled_by_us_);
+      const SlurmTaskEnding ending =
+          EndingForState(*found->second, cancelled_by_us_ || job.cancelled_tasks.count(it->first) > 0);
       ready_.push_back({it->second, ending.interrupted, ending.reason});
       it = job.tasks.erase(it);
     }

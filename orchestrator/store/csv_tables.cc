@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "orchestrator/files/atomic_file.h"
+#include "orchestrator/store/validity_table.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -130,9 +131,28 @@ std::string RunsCsv(const std::vector<StoredRun>& runs) {
   return out;
 }
 
+std::string ValidityCsv(const evaluator::ValidityStudy& study) {
+  std::string out = Row({"candidate", "target", "sequence", "pooling", "runs", "strata", "spearman_rho", "ci_low",
+                         "ci_high", "resamples_defined", "verdict"});
+  for (const evaluator::ValidityCorrelation& c : study.correlations) {
+    out += Row({c.candidate, c.target, c.sequence, std::string(evaluator::ValidityPoolingName(c.pooling)),
+                std::to_string(c.runs), std::to_string(c.strata), Number(c.rho),
+                Number(c.interval ? std::optional(c.interval->low) : std::nullopt),
+                Number(c.interval ? std::optional(c.interval->high) : std::nullopt),
+                c.interval ? std::to_string(c.interval->defined) : "", std::string(evaluator::ValidityVerdictName(c.verdict))});
+  }
+  return out;
+}
+
 void WriteCsvTables(const std::vector<StoredRun>& runs, const std::filesystem::path& output_dir) {
   WriteFileAtomically(output_dir / "summary.csv", GroupsCsv(SummarizeGroups(runs)));
   WriteFileAtomically(output_dir / "runs.csv", RunsCsv(runs));
+  if (const evaluator::ValidityStudy study = ValidityStudyOf(runs); !study.empty()) {
+    WriteFileAtomically(output_dir / "validity.csv", ValidityCsv(study));
+  } else {
+    std::error_code ignored;
+    std::filesystem::remove(output_dir / "validity.csv", ignored);  // none left from an earlier sweep
+  }
 }
 
 }  // namespace slamsweep::orchestrator

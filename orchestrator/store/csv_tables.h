@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "orchestrator/store/group_summary.h"
+#include "evaluator/validity/metric_validity.h"
 #include "orchestrator/store/results_store.h"
 
 namespace slamsweep::orchestrator {
@@ -21,7 +22,13 @@ std::string GroupsCsv(const std::vector<GroupSummary>& groups);
 /// then one column per flat metric "<metric>.<statistic>" that any run has.
 std::string RunsCsv(const std::vector<StoredRun>& runs);
 
-/// Writes OUTPUT_DIR/summary.csv and OUTPUT_DIR/runs.csv atomically.
+/// validity.csv: summary.json's "validity" table, one row per correlation: candidate, target,
+/// sequence (empty = all sequences), pooling, runs, strata, spearman_rho, ci_low, ci_high,
+/// resamples_defined, verdict (empty numbers where the verdict is "too few runs" or "no variation").
+std::string ValidityCsv(const evaluator::ValidityStudy& study);
+
+/// Writes OUTPUT_DIR/summary.csv, OUTPUT_DIR/runs.csv and, for a sweep with reference data,
+/// OUTPUT_DIR/validity.csv atomically.
 void WriteCsvTables(const std::vector<StoredRun>& runs, const std::filesystem::path& output_dir);
 
 }  // namespace slamsweep::orchestrator

@@ -1,14 +1,40 @@
 #include "orchestrator/store/group_summary.h"
 
+#include <algorithm>
+#include <iterator>
 #include <map>
+#include <optional>
 #include <utility>
 
 namespace slamsweep::orchestrator {
+namespace {
+
+/// result.json's metric_details.segment_rpe.specification.lengths_m; nullopt when the run has none.
+std::optional<std::vector<double>> SegmentLengthsOf(const nlohmann::json& result) {
+  const nlohmann::json::json_pointer pointer("/metric_details/segment_rpe/specification/lengths_m");
+  if (!result.is_object() || !result.contains(pointer) || !result.at(pointer).is_array()) return std::nullopt;
+  std::vector<double> lengths;
+  for (const nlohmann::json& length : result.at(pointer)) {
+    if (length.is_number()) lengths.push_back(length.get<double>());
+  }
+  return lengths;
+}
+
+void NoteSegmentLengths(GroupSummary& summary, const std::vector<double>& lengths, bool first) {
+  if (!first && lengths != summary.segment_lengths_m) summary.segment_lengths_consistent = false;
+  std::vector<double> merged;
+  std::set_union(summary.segment_lengths_m.begin(), summary.segment_lengths_m.end(), lengths.begin(), lengths.end(),
+                 std::back_inserter(merged));
+  summary.segment_lengths_m = std::move(merged);
+}
+
+}  // namespace
 
 std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs) {
   struct Collected {
     GroupSummary summary;
     std::map<std::pair<std::string, std::string>, std::pair<std::string, std::vector<double>>> values;
+    bool has_segments = false;
   };
   // Sequence and noise first: the rows that may be compared with each other end up next to each other.
   std::map<std::tuple<std::string, std::string, std::string, std::string>, Collected> groups;
@@ -28,6 +54,10 @@ std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs) {
       continue;
     }
     ++summary.ok;
+    if (const std::optional<std::vector<double>> lengths = SegmentLengthsOf(run.result)) {
+      NoteSegmentLengths(summary, *lengths, !collected.has_segments);
+      collected.has_segments = true;
+    }
     for (const StoredMetric& metric : run.metrics) {
       if (!metric.value) continue;
       auto& [unit, values] = collected.values[{metric.metric, metric.statistic}];
@@ -66,11 +96,13 @@ nlohmann::json ToJson(const GroupSummary& group) {
           {"n_failed", group.failed},
           {"odometry_is_reference", group.odometry_is_reference},
           {"seeding", group.seeding},
-          {"metrics", std::move(metrics)}};
+          {"metrics", std::move(metrics)},
+          {"rpe_segments_m", group.segment_lengths_m},
+          {"rpe_segments_consistent", group.segment_lengths_consistent}};
 }
 
 bool IsHeadlineStatistic(const std::string& metric, const std::string& statistic) {
-  if (metric.starts_with("relations_")) return statistic == "mean";
+  if (metric.starts_with("relations_") || metric.starts_with("segment_")) return statistic == "mean";
   return statistic == "rmse" || statistic == "value";
 }
 

@@ -33,17 +33,23 @@ struct GroupSummary {
   std::string seeding;
   /// Sorted by metric, then statistic; only metrics some ok run has.
   std::vector<MetricAggregate> metrics;
+  /// The segment lengths of the ok runs' segment RPE (ascending union), and whether every such run
+  /// used exactly these: runs scored at other lengths (a --reuse-stale rerun) never share a
+  /// segment_*_<L>m aggregate, whose name holds the length, but the group says so.
+  std::vector<double> segment_lengths_m;
+  bool segment_lengths_consistent = true;
 };
 
 /// The groups of `runs`, sorted by sequence, noise, algorithm, parameters.
 std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs);
 
 /// {"sequence", "algorithm", "parameters", "noise", "n_runs", "n_ok", "n_failed", "odometry_is_reference",
-///  "seeding", "metrics": {metric: {statistic: {"n", "mean", "std", "min", "max", "unit"}}}}
+///  "seeding", "metrics": {metric: {statistic: {"n", "mean", "std", "min", "max", "unit"}}},
+///  "rpe_segments_m": [...], "rpe_segments_consistent": bool}
 nlohmann::json ToJson(const GroupSummary& group);
 
 /// Whether a flat metric is the one a table shows for it: rmse of APE/RPE, mean of the relations
-/// metric, value of the map metrics (summary.csv's columns).
+/// metric and of the segment RPE, value of the map metrics (summary.csv's columns).
 bool IsHeadlineStatistic(const std::string& metric, const std::string& statistic);
 
 }  // namespace slamsweep::orchestrator

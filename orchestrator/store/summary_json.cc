@@ -2,6 +2,7 @@
 
 #include "orchestrator/files/atomic_file.h"
 #include "orchestrator/store/group_summary.h"
+#include "orchestrator/store/validity_table.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -71,10 +72,13 @@ json BuildSummaryJson(const std::vector<StoredRun>& runs, const std::string& gen
   }
   json groups = json::array();
   for (const GroupSummary& group : SummarizeGroups(runs)) groups.push_back(ToJson(group));
-  return json{{"generated_at", generated_at},
-              {"groups", std::move(groups)},
-              {"runs", std::move(listed)},
-              {"counts", {{"total", runs.size()}, {"ok", ok}, {"failed", runs.size() - ok}}}};
+  json summary{{"generated_at", generated_at},
+               {"groups", std::move(groups)},
+               {"runs", std::move(listed)},
+               {"counts", {{"total", runs.size()}, {"ok", ok}, {"failed", runs.size() - ok}}}};
+  // Which ground-truth-free metrics track real error (evaluator/validity); only with reference data.
+  if (const evaluator::ValidityStudy study = ValidityStudyOf(runs); !study.empty()) summary["validity"] = ToJson(study);
+  return summary;
 }
 
 void WriteSummaryJson(const std::vector<StoredRun>& runs, const std::filesystem::path& file) {

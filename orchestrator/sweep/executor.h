@@ -27,8 +27,11 @@ class Executor {
   /// Starts `slamsweep worker RUN_DIR` for a run whose run.json is already written.
   virtual void Start(const RunSpec& run, const std::filesystem::path& run_dir) = 0;
   /// Blocks until at least one started run ended or an interruption arrived; returns the ended ones
-  /// (empty when interrupted with nothing finished).
+  /// (empty when interrupted with nothing finished, or when another thread called RequestWakeUp()).
   virtual std::vector<WorkerEnding> Wait() = 0;
+  /// Ends one started run (a cancelled sweep's) without waiting: its ending comes from a later
+  /// Wait(), marked interrupted unless it had ended by itself. Unknown or ended runs are ignored.
+  virtual void Stop(const std::string& run_id) = 0;
   /// Ends every running worker (SIGTERM, grace, SIGKILL); returns them as interrupted.
   virtual std::vector<WorkerEnding> TerminateAll() = 0;
   virtual std::size_t Running() const = 0;

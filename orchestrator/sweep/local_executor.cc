@@ -42,6 +42,12 @@ std::vector<WorkerEnding> LocalExecutor::Wait() { return Endings(processes_.Wait
 
 std::vector<WorkerEnding> LocalExecutor::TerminateAll() { return Endings(processes_.TerminateAll()); }
 
+void LocalExecutor::Stop(const std::string& run_id) {
+  for (const auto& [id, running_id] : run_ids_) {
+    if (running_id == run_id) processes_.Stop(id);
+  }
+}
+
 bool LocalExecutor::Interrupted() const { return InterruptionGuard::Interrupted(); }
 
 std::filesystem::path WorkerProgram() {

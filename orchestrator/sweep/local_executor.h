@@ -20,6 +20,7 @@ class LocalExecutor final : public Executor {
   void Start(const RunSpec& run, const std::filesystem::path& run_dir) override;
   std::vector<WorkerEnding> Wait() override;
   std::vector<WorkerEnding> TerminateAll() override;
+  void Stop(const std::string& run_id) override;
   std::size_t Running() const override { return processes_.running(); }
   bool Interrupted() const override;
 

@@ -4,16 +4,13 @@
 #include <deque>
 #include <optional>
 #include <set>
-#include <unistd.h>
 
 #include <fmt/format.h>
 
 #include "orchestrator/store/results_store.h"
-#include "orchestrator/store/csv_tables.h"
-#include "orchestrator/store/summary_json.h"
-#include "orchestrator/store/junit_xml.h"
 #include "orchestrator/sweep/output_lock.h"
 #include "orchestrator/sweep/run_folder.h"
+#include "orchestrator/sweep/sweep_steps.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -63,10 +60,7 @@ class SweepLoop {
            !executor_.Interrupted()) {
       const RunSpec& run = *queue_.front();
       queue_.pop_front();
-      const std::filesystem::path run_dir = RunFolder(settings_.output_dir, run.run_id);
-      RemovePartialRun(run_dir);
-      std::filesystem::create_directories(run_dir);
-      WriteJsonAtomically(run_dir / "run.json", ToJson(run));
+      const std::filesystem::path run_dir = PrepareRunFolder(settings_.output_dir, run);
       executor_.Start(run, run_dir);
       status_.Started(run.run_id);
     }
@@ -75,34 +69,19 @@ class SweepLoop {
   void Finish(const WorkerEnding& ending, SweepOutcome& outcome) {
     const auto found = by_id_.find(ending.run_id);
     if (found == by_id_.end()) return;
-    const RunSpec& run = *found->second;
-    const std::filesystem::path run_dir = RunFolder(settings_.output_dir, run.run_id);
-    StoredResult stored = ReadRunResult(run_dir);
-    if (!stored.result && ending.interrupted) {
-      // Interrupted before its result existed: nothing half-done may look like a result.
-      RemovePartialRun(run_dir);
+    const std::optional<FinishedRun> finished =
+        RecordWorkerEnding(*found->second, ending, settings_.output_dir, store_, sweep_id_);
+    if (!finished) {
       ++outcome.not_started;
       return;
     }
-    nlohmann::json result = stored.result ? std::move(*stored.result)
-                                          : MissingResult(run, ending.reason + " (" + stored.problem + ")", false);
-    if (!stored.result) WriteJsonAtomically(run_dir / "result.json", result);
-    store_.RecordRun(sweep_id_, ToJson(run), result, std::filesystem::path("runs") / run.run_id);
-    const bool ok = result.value("status", "failed") == "ok";
-    if (ok) {
+    if (finished->ok) {
       ++outcome.ok;
     } else {
       ++outcome.failed;
       ++failures_;
     }
-    FinishedRun finished;
-    finished.run_id = run.run_id;
-    finished.ok = ok;
-    if (!ok) {
-      finished.reason = result.value("failure_kind", std::string("failed")) + ": " + result.value("reason", "");
-    }
-    if (result.contains("wall_s") && result["wall_s"].is_number()) finished.wall_s = result["wall_s"].get<double>();
-    status_.Finished(finished);
+    status_.Finished(*finished);
   }
 
   const SweepSettings& settings_;
@@ -115,12 +94,6 @@ class SweepLoop {
   std::size_t failures_ = 0;
 };
 
-std::string HostName() {
-  char name[256] = {};
-  if (::gethostname(name, sizeof name - 1) != 0) return "unknown";
-  return name;
-}
-
 }  // namespace
 
 bool RecordedRunIsReusable(const RunSpec& run, const std::string& recorded_status, const nlohmann::json& recorded_spec,
@@ -128,8 +101,15 @@ bool RecordedRunIsReusable(const RunSpec& run, const std::string& recorded_statu
   stale = false;
   if (!IsDone(recorded_status, settings.rerun_failed)) return false;
   const auto build = recorded_spec.find("build");
+  const auto evaluation = recorded_spec.find("evaluation");
   nlohmann::json current = ToJson(run);
-  stale = build == recorded_spec.end() || *build != current["build"];
+  // The reference map is scoring like `evaluation` (left out of the run id): another one changes the map scores.
+  const auto sequence = recorded_spec.find("sequence");
+  const std::string recorded_reference_map =
+      sequence != recorded_spec.end() && sequence->is_object() ? sequence->value("reference_map", "") : "";
+  stale = build == recorded_spec.end() || *build != current["build"] || evaluation == recorded_spec.end() ||
+          !SameEvaluation(*evaluation, run.evaluation) ||
+          recorded_reference_map != run.sequence.entry.reference_map_path;
   return !stale || settings.reuse_stale;
 }
 
@@ -160,45 +140,8 @@ SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& set
 
   SweepOutcome outcome;
   outcome.total = runs.size();
-  std::vector<const RunSpec*> to_run;
-  std::set<std::string> matrix_ids;
-  SweepInfo info;
-  info.name = settings.name;
-  info.config_path = settings.config_path;
-  info.config_sha = settings.config_sha;
-  info.slamsweep_version = SLAMSWEEP_VERSION;
-  info.host = HostName();
-  info.command_line = settings.command_line;
-  const std::int64_t sweep_id = store.BeginSweep(info);
-
-  for (const RunSpec& run : runs) {
-    matrix_ids.insert(run.run_id);
-    bool stale = false;
-    const std::optional<StoredRun> recorded = store.FindRun(run.run_id);
-    if (recorded) {
-      const bool reusable = RecordedRunIsReusable(run, recorded->status, recorded->spec, settings, stale);
-      outcome.stale += stale ? 1 : 0;
-      if (reusable) {
-        ++outcome.already_done;
-        continue;
-      }
-    } else {
-      // A result.json the store never saw: the orchestrator died between the worker's rename and
-      // the store's commit. Adopting it keeps "kill -9, run again" from repeating finished work.
-      const std::filesystem::path run_dir = RunFolder(settings.output_dir, run.run_id);
-      StoredResult stored = ReadRunResult(run_dir);
-      std::optional<nlohmann::json> stored_spec = stored.result ? ReadRunSpecJson(run_dir) : std::nullopt;
-      if (stored.result && stored_spec && stored.result->value("run_id", "") == run.run_id &&
-          RecordedRunIsReusable(run, stored.result->value("status", "failed"), *stored_spec, settings, stale)) {
-        outcome.stale += stale ? 1 : 0;
-        store.RecordRun(sweep_id, *stored_spec, *stored.result, std::filesystem::path("runs") / run.run_id);
-        ++outcome.already_done;
-        continue;
-      }
-      outcome.stale += stale ? 1 : 0;
-    }
-    to_run.push_back(&run);
-  }
+  const std::int64_t sweep_id = store.BeginSweep(SweepInfoFor(settings));
+  const std::vector<const RunSpec*> to_run = RunsStillToDo(runs, settings, store, sweep_id, outcome);
   status.Planned(to_run.size(), outcome.already_done);
 
   SweepLoop loop(settings, executor, status, store, sweep_id);
@@ -207,18 +150,12 @@ SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& set
   status.Done();
 
   // The whole matrix, including runs finished by earlier sweeps, decides the summary and the exit code.
-  std::vector<StoredRun> stored_runs;
-  for (StoredRun& stored : store.Runs()) {
-    if (matrix_ids.count(stored.run_id) > 0) stored_runs.push_back(std::move(stored));
-  }
-  std::size_t failed_in_store = 0;
-  for (const StoredRun& stored : stored_runs) failed_in_store += stored.status == "ok" ? 0 : 1;
+  std::set<std::string> matrix_ids;
+  for (const RunSpec& run : runs) matrix_ids.insert(run.run_id);
+  const std::size_t failed_in_store = WriteSweepOutputs(store, matrix_ids, settings.output_dir);
   outcome.failed = std::max(outcome.failed, failed_in_store);
   store.FinishSweep(sweep_id, outcome.interrupted ? "interrupted" : (outcome.ExitCode() == 0 ? "ok" : "failed"),
                     static_cast<std::int64_t>(outcome.ok + outcome.failed));
-  WriteSummaryJson(stored_runs, settings.output_dir / "summary.json");
-  WriteCsvTables(stored_runs, settings.output_dir);
-  WriteJUnit(stored_runs, settings.output_dir / "junit.xml");
   return outcome;
 }
 

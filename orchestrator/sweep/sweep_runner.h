@@ -37,7 +37,7 @@ struct SweepOutcome {
   std::size_t failed = 0;
   /// Finished by an earlier sweep and not run again.
   std::size_t already_done = 0;
-  /// Finished by an earlier sweep under another build identity: run again (or, with reuse_stale,
+  /// Finished by an earlier sweep under another build identity or evaluation: run again (or, with reuse_stale,
   /// counted in already_done too).
   std::size_t stale = 0;
   /// Never started: the failure budget ran out or the sweep was interrupted.
@@ -60,8 +60,9 @@ SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& set
                       Status& status);
 
 /// Whether a recorded run (its run.json as recorded) may stand for `run`: it finished ("ok", or
-/// "failed" unless rerun_failed) and was computed under the same build identity, or reuse_stale.
-/// `stale` is set when only the build identity stood in the way (or was waived by reuse_stale).
+/// "failed" unless rerun_failed) and was computed under the same build identity and scored under
+/// the same evaluation options (SameEvaluation), or reuse_stale. `stale` is set when only the build
+/// identity or the evaluation options stood in the way (or were waived by reuse_stale).
 bool RecordedRunIsReusable(const RunSpec& run, const std::string& recorded_status, const nlohmann::json& recorded_spec,
                            const SweepSettings& settings, bool& stale);
 

@@ -1,5 +1,7 @@
 #include "orchestrator/worker/run_metrics.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -7,9 +9,11 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/map/paper_metrics.h"
 #include "evaluator/map_compare/map_compare.h"
+#include "evaluator/map_compare/map_resample.h"
 #include "evaluator/trajectory/ape.h"
 #include "evaluator/trajectory/relations_metric.h"
 #include "evaluator/trajectory/rpe.h"
+#include "evaluator/trajectory/segment_rpe.h"
 
 namespace slamsweep::orchestrator {
 
@@ -32,6 +36,62 @@ void AddStatistics(RunMetrics& out, const std::string& name, const ev::MetricRes
   out.details[name] = result.ToJson();
 }
 
+void AddSegmentStatistics(RunMetrics& out, const std::string& name, const std::optional<ev::ErrorStatistics>& statistics,
+                          const char* unit) {
+  if (!statistics) return;
+  const ev::ErrorStatistics& s = *statistics;
+  // The mean is the headline (KITTI's drift); no rmse, whose square weighs the worst segments.
+  for (const auto& [statistic, value] : {std::pair<const char*, double>{"mean", s.mean},
+                                         {"median", s.median},
+                                         {"std", s.std},
+                                         {"min", s.min},
+                                         {"max", s.max},
+                                         {"n", static_cast<double>(s.n)}}) {
+    out.metrics.push_back({name, statistic, value, statistic == std::string("n") ? "count" : unit});
+  }
+}
+
+/// The segment RPE at the configured lengths, or at 10-50 % of the reference path: the whole
+/// reference of the sequence, never the part this run's estimate covers, so every run of a
+/// sequence gets the same lengths.
+void AddSegmentRpe(RunMetrics& out, const EvaluationOptions& evaluation, const ev::AssociationOptions& association,
+                   const ev::Trajectory& reference, const ev::Trajectory& estimate) {
+  const double path_m = ev::PathLengthM(reference);
+  const std::vector<double> lengths =
+      evaluation.rpe_segments_m ? *evaluation.rpe_segments_m : ev::DefaultSegmentLengthsM(path_m);
+  if (lengths.empty()) {
+    if (!evaluation.rpe_segments_m) {
+      out.warnings.push_back(fmt::format("segment_rpe: the reference path ({} m) is too short for segments of 1 m", path_m));
+    }
+    return;
+  }
+  ev::SegmentRpeOptions options;
+  options.lengths_m = lengths;
+  options.association = association;
+  options.relative_tolerance = ev::kRpeDeltaTolerance;
+  const ev::SegmentRpeResult result = ev::SegmentRpe(options).Compute(reference, estimate);
+  std::vector<ev::SegmentErrorRecord> records;
+  for (const ev::SegmentLengthResult& segments : result.lengths) {
+    if (segments.pairs.empty()) {
+      out.warnings.push_back(
+          fmt::format("segment_rpe: no segment of {} m fits in the part of the reference the estimate covers", segments.length_m));
+    }
+    AddSegmentStatistics(out, SegmentRpeMetricName("trans", segments.length_m), segments.translation_m_statistics, "m");
+    AddSegmentStatistics(out, SegmentRpeMetricName("drift", segments.length_m), segments.translation_pct_statistics, "%");
+    AddSegmentStatistics(out, SegmentRpeMetricName("rot", segments.length_m), segments.rotation_deg_per_m_statistics,
+                         "deg/m");
+    for (std::size_t k = 0; k < segments.pairs.size(); ++k) {
+      records.push_back({segments.length_m, segments.start_s[k], segments.end_s[k], segments.translation_m[k],
+                         segments.translation_pct[k], segments.rotation_deg_per_m[k]});
+    }
+  }
+  nlohmann::json details = result.ToJson();
+  details["specification"]["lengths_from"] = evaluation.rpe_segments_m ? "evaluation.rpe_segments_m" : "reference path";
+  details["specification"]["reference_path_m"] = path_m;
+  out.details["segment_rpe"] = std::move(details);
+  out.segment_errors = std::move(records);
+}
+
 /// Runs one metric; an InputError (no pairs, degenerate alignment, empty map) becomes a warning
 /// naming the metric, so one metric that cannot be computed does not hide the others.
 void Attempt(RunMetrics& out, const std::string& name, const std::function<void()>& compute) {
@@ -43,6 +103,14 @@ void Attempt(RunMetrics& out, const std::string& name, const std::function<void(
 }
 
 }  // namespace
+
+std::string SegmentRpeMetricName(std::string_view kind, double length_m) {
+  std::string length = fmt::format("{}", length_m);
+  for (char& c : length) {
+    if (c == '.') c = 'p';
+  }
+  return fmt::format("segment_{}_{}m", kind, length);
+}
 
 nlohmann::json ToJson(const FlatMetric& metric) {
   return {{"metric", metric.metric}, {"statistic", metric.statistic}, {"value", metric.value}, {"unit", metric.unit}};
@@ -78,6 +146,10 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
         AddStatistics(out, name, ev::Rpe(options).Compute(*inputs.reference, *inputs.estimate));
       });
     }
+    if (!evaluation.rpe_segments_m || !evaluation.rpe_segments_m->empty()) {
+      Attempt(out, "segment_rpe",
+              [&] { AddSegmentRpe(out, evaluation, association, *inputs.reference, *inputs.estimate); });
+    }
   }
   if (inputs.estimate && inputs.relations) {
     Attempt(out, "relations", [&] {
@@ -105,15 +177,19 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
       out.details["paper_map"] = paper.ToJson();
     });
   }
-  if (inputs.map && inputs.reference_map && inputs.estimate) {
+  if (inputs.map && inputs.reference_map) {
     Attempt(out, "map_compare", [&] {
       ev::MapCompareOptions options;
       if (ape_alignment) {
         const Eigen::Matrix3d& rotation = ape_alignment->rotation;
         options.transform = {ape_alignment->translation.x(), ape_alignment->translation.y(),
                              std::atan2(rotation(1, 0), rotation(0, 0))};
+      } else {
+        // No trajectory alignment (no reference trajectory, only a reference map file): search it.
+        options.refine_with_icp = true;
       }
-      const ev::MapComparison compared = ev::CompareMaps(*inputs.map, *inputs.reference_map, options);
+      const ev::OccupancyGrid estimate = ev::ResampleToResolution(*inputs.map, inputs.reference_map->resolution_m, options);
+      const ev::MapComparison compared = ev::CompareMaps(estimate, *inputs.reference_map, options);
       out.metrics.push_back({"map_chamfer", "value", compared.chamfer_m, "m"});
       out.metrics.push_back({"map_f1", "value", compared.f1, "ratio"});
       out.metrics.push_back({"map_accuracy", "value", compared.accuracy, "ratio"});
@@ -121,6 +197,11 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
       out.metrics.push_back({"map_iou_occupied", "value", compared.iou_occupied, "ratio"});
       out.metrics.push_back({"map_iou_free", "value", compared.iou_free, "ratio"});
       out.details["map_compare"] = compared.ToJson(options);
+      out.details["map_compare"]["placement"] = ape_alignment ? "ATE alignment" : "ICP from identity";
+      if (estimate.resolution_m != inputs.map->resolution_m) {
+        out.details["map_compare"]["resampled_from_m"] = inputs.map->resolution_m;
+      }
+      if (!inputs.reference_map_record.is_null()) out.details["map_compare"]["reference_map"] = inputs.reference_map_record;
     });
   }
   return out;

@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -9,6 +10,7 @@
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/core/relation.h"
 #include "evaluator/core/trajectory.h"
+#include "evaluator/formats/trajectory/segment_errors_csv.h"
 #include "orchestrator/matrix/run_spec.h"
 
 namespace slamsweep::orchestrator {
@@ -28,6 +30,9 @@ struct RunMetrics {
   nlohmann::json details = nlohmann::json::object();
   /// One sentence per metric that could not be computed ("ape_trans: no matching timestamps ...").
   std::vector<std::string> warnings;
+  /// Every segment of the segment RPE, for the run folder's rpe_segments.csv; absent when it was
+  /// not computed.
+  std::optional<std::vector<evaluator::SegmentErrorRecord>> segment_errors;
 };
 
 /// What the metrics are computed from: the run's estimate and the truth it is compared with.
@@ -36,18 +41,28 @@ struct MetricInputs {
   const evaluator::Trajectory* estimate = nullptr;    ///< null: trajectory metrics are skipped
   const evaluator::Trajectory* reference = nullptr;   ///< null: APE and RPE are skipped
   const evaluator::Relations* relations = nullptr;    ///< null: the relations metric is skipped
-  /// The map rendered from the reference poses and the run's scans at the map's cell size, the way
-  /// the odometry baseline renders its map; null: the map-versus-reference scores are skipped.
+  /// The reference map at the evaluation's cell size (orchestrator/reference_map); null: the
+  /// map-versus-reference scores are skipped. The run's map is resampled to its cell size when
+  /// they differ, and placed on it by the ATE's alignment, or by ICP from identity without one.
   const evaluator::OccupancyGrid* reference_map = nullptr;
+  /// Where the reference map came from (ReferenceMap::ToJson), kept in the map_compare details.
+  nlohmann::json reference_map_record;
 };
 
 /// Computes what the inputs allow: ape_trans/ape_rot (evaluation.align, t_max_diff_s),
 /// rpe_trans/rpe_rot (delta evaluation.rpe_delta_m metres, consecutive pairs, no alignment: a
-/// rigid alignment does not change relative errors), relations_trans/rot (Kuemmerle et al.), and
+/// rigid alignment does not change relative errors), the segment RPE at evaluation.rpe_segments_m
+/// (SegmentRpeMetricName; its lengths, and how they were chosen, in details["segment_rpe"]),
+/// relations_trans/rot (Kuemmerle et al.), and
 /// always the paper map metrics. A metric that cannot be computed becomes a warning, never an
 /// exception: the others still count. An invalid evaluation option (unknown alignment) is an
 /// InputError naming it.
 RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricInputs& inputs);
+
+/// The flat metric of the segment RPE at one length: "segment_trans_10m" (translation error, m),
+/// "segment_drift_10m" (translation error in % of the length), "segment_rot_10m" (deg/m); a
+/// fractional length is written with p for the point ("segment_drift_2p5m"). `kind` is trans, drift or rot.
+std::string SegmentRpeMetricName(std::string_view kind, double length_m);
 
 /// {"metric", "statistic", "value", "unit"}.
 nlohmann::json ToJson(const FlatMetric& metric);

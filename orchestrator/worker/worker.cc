@@ -20,7 +20,7 @@
 #include "orchestrator/matrix/run_spec.h"
 #include "orchestrator/process/interruption.h"
 #include "orchestrator/process/process_set.h"
-#include "orchestrator/adapters/rendered_map.h"
+#include "orchestrator/reference_map/reference_map.h"
 #include "orchestrator/worker/run_metrics.h"
 #include "orchestrator/worker/run_outputs.h"
 #include "orchestrator/worker/run_result.h"
@@ -169,21 +169,32 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   metric_inputs.estimate = collected.trajectory ? &*collected.trajectory : nullptr;
   metric_inputs.reference = reference;
   metric_inputs.relations = inputs.truth.relations ? &*inputs.truth.relations : nullptr;
-  // The reference map: the run's scans placed at the reference poses and rendered as the odometry
-  // baseline renders its map, at the cell size of the run's map so the two compare cell by cell.
-  std::optional<ev::OccupancyGrid> reference_map;
-  if (reference != nullptr && collected.trajectory) {
-    try {
-      EvaluationOptions at_map_resolution = spec.evaluation;
-      at_map_resolution.map_resolution_m = collected.map.resolution_m;
-      at_map_resolution.stages = 0;
-      reference_map = RenderMapFromTrajectory(inputs.robot.scans, *reference, at_map_resolution).grid;
-      metric_inputs.reference_map = &*reference_map;
-    } catch (const ev::InputError& error) {
-      result.warnings.push_back(std::string("map_compare: no reference map: ") + error.what());
+  // The reference map is truth: read or rendered only now, after the program has exited, and
+  // never into the run folder (orchestrator/reference_map: the catalog's file, or the clean scans
+  // at the reference poses, cached per sequence beside runs/).
+  std::optional<ReferenceMap> reference_map;
+  try {
+    reference_map = LoadReferenceMap(spec, reference != nullptr, ReferenceMapCacheDir(paths.root));
+  } catch (const ev::InputError& error) {
+    result.warnings.push_back(std::string("map_compare: no reference map: ") + error.what());
+  }
+  if (reference_map) {
+    metric_inputs.reference_map = &reference_map->grid;
+    metric_inputs.reference_map_record = reference_map->ToJson();
+    if (!reference_map->cache_problem.empty()) {
+      result.warnings.push_back("reference map not cached: " + reference_map->cache_problem);
     }
   }
   result.metrics = ComputeRunMetrics(spec.evaluation, metric_inputs);
+  if (result.metrics.segment_errors) {
+    // The report's boxplots need every segment; the metrics themselves are already in result.json.
+    try {
+      ev::WriteSegmentErrorsCsv(*result.metrics.segment_errors, paths.SegmentErrorsCsv());
+      result.outputs["rpe_segments"] = paths.SegmentErrorsCsv().filename().string();
+    } catch (const ev::InputError& error) {
+      result.warnings.push_back(std::string("segment_rpe: ") + error.what());
+    }
+  }
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "report/html/number_format.h"
 #include "report/html/safe_name.h"
+#include "report/plots/algorithm_palette.h"
 #include "report/plots/gnuplot_string.h"
 
 namespace slamsweep::report {
@@ -28,7 +29,7 @@ constexpr std::string_view kPageTemplate = R"(<!DOCTYPE html>
 <main>
 {{body}}
 </main>
-<footer>Made by slamsweep report from the nightly history database. Lower is better for every metric.</footer>
+<footer>Made by slamsweep report from the nightly history database. Lower is better for every metric. Metric definitions: <a href="../metrics.html">metric specification</a>.</footer>
 </body>
 </html>
 )";
@@ -207,9 +208,12 @@ std::string HistoryPlotScript(const HistorySeriesPage& page, const std::filesyst
     script += "$d << EOD\n-10 1 1 1\nEOD\nplot $d using 1:2 with points notitle\n";
   } else {
     script += "$d << EOD\n" + rows + "EOD\n";
-    script +=
-        "plot $d using 1:3:4 with filledcurves fillcolor rgb '#cfe2f3' title 'min-max', "
-        "$d using 1:2 with linespoints pointtype 7 linecolor rgb '#0072B2' linewidth 2 title 'mean'\n";
+    // The algorithm's colour and marker, as in the report's other plots (its preferred palette slot).
+    const AlgorithmStyle style = StyleOfSlot(PreferredSlot(page.key.algorithm));
+    script += fmt::format(
+        "plot $d using 1:3:4 with filledcurves fillcolor rgb '#E3E3E3' title 'min-max', "
+        "$d using 1:2 with linespoints pointtype {} linecolor rgb '{}' linewidth 2 title 'mean'\n",
+        style.point_type, style.Hex());
   }
   script += "unset output\n";
   return script;

@@ -3,14 +3,23 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "report/plots/figure_types.h"
+#include "report/plots/scatter_plot.h"
 
 namespace slamsweep::report {
 
 /// One algorithm's values in a metric plot (one per successful iteration).
 struct PlotSeriesValues {
+  PlotSeriesValues() = default;
+  PlotSeriesValues(std::string algorithm_name, std::vector<double> series_values, SeriesStyle series_style = {})
+      : algorithm(std::move(algorithm_name)), values(std::move(series_values)), style(series_style) {}
+
   std::string algorithm;
   std::vector<double> values;
+  SeriesStyle style;  ///< the algorithm's colour and marker (AlgorithmPalette)
 };
 
 /// One metric plot of the paper's figures 3, 5, 6, 7 to draw into `png`.
@@ -47,6 +56,12 @@ class Artwork {
   virtual ~Artwork() = default;
   /// Draws every plot (one call per report, so a gnuplot process can draw them all).
   virtual void Plots(const std::vector<PlotRequest>& plots) = 0;
+  /// Draws every scatter plot of validity.html (one call per report, like Plots).
+  virtual void ScatterPlots(const std::vector<ScatterPlotJob>& plots) = 0;
+  /// Draws the figures of the segment-length and parameter pages (report/html/view_pages.h), one call per report.
+  /// The default draws none (the pages then say the figures are missing), so an image maker written before
+  /// these pages still builds.
+  virtual void Figures(const std::vector<FigureJob>& figures);
   /// An animated GIF of the stage maps, in order.
   virtual void StagesGif(const std::vector<std::filesystem::path>& stage_pngs, const std::filesystem::path& gif,
                          const GifSettings& settings) = 0;

@@ -20,7 +20,7 @@ constexpr std::string_view kPageTemplate = R"(<!DOCTYPE html>
 <main>
 {{body}}
 </main>
-<footer>Made by slamsweep report. Metric definitions: spec/metrics.md. Lower is better for every metric shown.</footer>
+<footer>Made by slamsweep report. Metric definitions: <a href="{{root}}metrics.html">metric specification</a>. Lower is better for every metric in the tables; the specification says which direction is better for each metric.</footer>
 </body>
 </html>
 )";
@@ -28,13 +28,10 @@ constexpr std::string_view kPageTemplate = R"(<!DOCTYPE html>
 Html T(std::string_view markup) { return Html::Trusted(markup); }
 Html E(std::string_view text) { return Html::Escape(text); }
 
-std::string Page(std::string_view title, std::string_view root, const Html& body) {
-  return RenderTemplate(kPageTemplate, {{"title", E(title)}, {"root", E(root)}, {"body", body}}).str();
-}
+std::string Page(std::string_view title, std::string_view root, const Html& body) { return RenderPage(title, root, body); }
 
 Html Image(std::string_view src, std::string_view alt, std::string_view css_class) {
-  return T("<img class=\"" + EscapeHtml(css_class) + "\" src=\"" + EscapeHtml(src) + "\" alt=\"" + EscapeHtml(alt) +
-           "\">");
+  return ImageElement(src, alt, css_class);
 }
 
 std::string CountsText(const RunCounts& counts) {
@@ -81,6 +78,7 @@ Html MetricTableHtml(const SiteData& site, const SequenceModel& sequence, const 
   for (const AlgorithmRow& row : sequence.rows) {
     Html name = E(row.algorithm);
     if (row.median_run) name = Link(std::string(root) + site.layout->RunPage(*row.median_run), name);
+    name = AlgorithmSwatch(site, row.name) + name;
     name += RowNotes(row);
     Html line = Element("th", "", name) +
                 Element("td", row.counts.failed + row.counts.unfinished > 0 ? "failures" : "", E(CountsText(row.counts)));
@@ -166,6 +164,22 @@ Html RunList(const SiteData& site, const SequenceModel& sequence, std::string_vi
   return T("<table>\n<thead>") + Element("tr", "", header) + T("</thead>\n<tbody>\n") + rows + T("</tbody>\n</table>\n");
 }
 
+/// Links to the table's segment-length and parameter pages, when it has them.
+Html ViewLinks(const SiteData& site, const SequenceModel& sequence, std::string_view root) {
+  const auto views = site.views.find(sequence.key);
+  if (views == site.views.end()) return {};
+  Html links;
+  if (!views->second.segments_page.empty()) {
+    links += Element("li", "", Link(std::string(root) + views->second.segments_page,
+                                    E("Drift over segment lengths (segment RPE) on " + sequence.title)));
+  }
+  if (!views->second.parameters_page.empty()) {
+    links += Element("li", "", Link(std::string(root) + views->second.parameters_page,
+                                    E("Parameters: metrics against parameter values on " + sequence.title)));
+  }
+  return links.str().empty() ? Html() : Element("ul", "views", links);
+}
+
 Html KeyValueTable(const std::vector<std::pair<std::string, std::string>>& rows) {
   Html body;
   for (const auto& [key, value] : rows) body += Element("tr", "", Element("th", "", E(key)) + Element("td", "", E(value)));
@@ -186,6 +200,11 @@ std::string RenderIndexPage(const SiteData& site) {
   }
   if (site.has_runs_csv) downloads += Element("li", "", Link("runs.csv", E("runs.csv")) + E(" (one line per run)"));
   if (site.has_summary_json) downloads += Element("li", "", Link("summary.json", E("summary.json")));
+  downloads += Element("li", "", Link("metrics.html", E("Metric specification")) + E(" (every metric's definition)"));
+  if (site.has_validity_page) {
+    downloads += Element("li", "", Link("validity.html", E("Which metrics can be trusted?")) +
+                                       E(" (each ground-truth-free metric against the real error)"));
+  }
   body += Element("ul", "downloads", downloads);
   for (const SequenceModel& sequence : model.sequences) {
     Html section = Element("h2", "", Link(site.layout->SequencePage(sequence.key), E("Sequence " + sequence.title)));
@@ -193,6 +212,7 @@ std::string RenderIndexPage(const SiteData& site) {
     section += Plots(site, sequence, "");
     section += Element("p", "", Link(site.layout->SequencePage(sequence.key),
                                      E("Map gallery and every run of " + sequence.title)));
+    section += ViewLinks(site, sequence, "");
     Html files;
     for (const AlgorithmRow& row : sequence.rows) {
       const std::string dir = site.layout->FilesDir(row.algorithm, sequence.key);
@@ -213,6 +233,7 @@ std::string RenderIndexPage(const SiteData& site) {
 std::string RenderSequencePage(const SiteData& site, const SequenceModel& sequence) {
   const std::string root = "../";
   Html body = SequenceTables(site, sequence, root);
+  body += ViewLinks(site, sequence, root);
   body += Element("h2", "", E("Metric plots"));
   body += Plots(site, sequence, root);
   body += Element("h2", "", E("Map gallery"));
@@ -318,6 +339,21 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
   return Page("Run " + record.run_id, root, body);
 }
 
+std::string RenderPage(std::string_view title, std::string_view root, const Html& body) {
+  return RenderTemplate(kPageTemplate, {{"title", E(title)}, {"root", E(root)}, {"body", body}}).str();
+}
+
+Html ImageElement(std::string_view src, std::string_view alt, std::string_view css_class) {
+  return T("<img class=\"" + EscapeHtml(css_class) + "\" src=\"" + EscapeHtml(src) + "\" alt=\"" + EscapeHtml(alt) +
+           "\">");
+}
+
+Html AlgorithmSwatch(const SiteData& site, std::string_view algorithm) {
+  if (site.palette == nullptr) return {};
+  const AlgorithmStyle style = site.palette->StyleOf(algorithm);
+  return Element("span", "swatch " + style.CssClass(), E(style.glyph)) + T(" ");
+}
+
 std::string_view StyleSheet() {
   return R"(body { font-family: sans-serif; margin: 1em 2em; color: #111; background: #fff; }
 header nav { font-size: 0.9em; }
@@ -343,6 +379,11 @@ img.thumbnail, img.animation { width: 400px; height: auto; image-rendering: pixe
 pre { background: #f6f6f6; padding: 0.5em; overflow-x: auto; max-height: 40em; white-space: pre-wrap;
       overflow-wrap: anywhere; }
 footer { margin-top: 2em; font-size: 0.8em; color: #666; }
+td.verdict-tracks { background: #d8f0d8; }
+td.verdict-opposite { background: #f6d6d0; }
+td.verdict-unclear { background: #f4f0dc; }
+td.verdict-none { color: #555; }
+table.definitions td:last-child { max-width: 60em; }
 )";
 }
 

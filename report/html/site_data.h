@@ -1,6 +1,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <set>
 #include <utility>
 #include <string>
@@ -8,7 +9,10 @@
 
 #include "report/html/html.h"
 #include "report/html/report_layout.h"
+#include "report/model/parameter_model.h"
+#include "report/model/segment_model.h"
 #include "report/model/sweep_model.h"
+#include "report/plots/algorithm_palette.h"
 
 namespace slamsweep::report {
 
@@ -32,6 +36,17 @@ struct PlotArtifact {
   std::string note;  ///< why it is missing
 };
 
+/// The extra pages of one table (report/html/view_pages.h): drift over segment lengths and
+/// parameter sweeps. A page path is empty when the table has no such page.
+struct TableViews {
+  std::optional<SegmentTable> segments;
+  std::string segments_page;
+  std::optional<ParameterTable> parameters;
+  std::string parameters_page;
+  /// The figures of both pages, by figure id (ViewFigureId).
+  std::map<std::string, PlotArtifact> figures;
+};
+
 /// Everything the page renderers read. Pages are pure functions of it.
 struct SiteData {
   const SweepModel* model = nullptr;
@@ -46,6 +61,10 @@ struct SiteData {
   /// (row label, table key) with files/.../pose_log.tum
   std::set<std::pair<std::string, std::string>> pose_logs;
   Html history_section;  ///< the index's nightly-history section (SiteExtension), empty without one
+  bool has_validity_page = false;  ///< validity.html ("Which metrics can be trusted?") was written
+  /// One colour and marker per algorithm in every plot and table of the report.
+  const AlgorithmPalette* palette = nullptr;
+  std::map<std::string, TableViews> views;  ///< by table key (SequenceModel::key)
 };
 
 /// The pages. `root` is the relative path back to the report root ("" or "../").
@@ -54,5 +73,14 @@ std::string RenderSequencePage(const SiteData& site, const SequenceModel& sequen
 std::string RenderRunPage(const SiteData& site, std::size_t run);
 /// style.css: the only styling of the site (no inline styles: Jenkins' CSP forbids them).
 std::string_view StyleSheet();
+
+/// The frame every page shares (title, style sheet, navigation, a footer linking metrics.html); `root`
+/// leads back to the report root ("" or "../").
+std::string RenderPage(std::string_view title, std::string_view root, const Html& body);
+/// `<img class="..." src="..." alt="...">`, every value escaped.
+Html ImageElement(std::string_view src, std::string_view alt, std::string_view css_class);
+/// The algorithm's marker in its colour (a style sheet class), before its name in tables and legends;
+/// empty without a palette.
+Html AlgorithmSwatch(const SiteData& site, std::string_view algorithm);
 
 }  // namespace slamsweep::report

@@ -4,6 +4,8 @@
 #include "report/images/thumbnail.h"
 #include "report/images/trajectory_overlay.h"
 #include "report/plots/metric_plot.h"
+#include "report/plots/scatter_plot.h"
+#include "report/plots/view_figures.h"
 
 namespace slamsweep::report {
 
@@ -19,12 +21,18 @@ class StandardArtwork final : public Artwork {
       job.plot.title = request.title;
       job.plot.y_label = request.y_label;
       job.plot.log_scale = request.log_scale;
-      for (const PlotSeriesValues& series : request.series) job.plot.series.push_back({series.algorithm, series.values});
+      for (const PlotSeriesValues& series : request.series) {
+        job.plot.series.push_back({series.algorithm, series.values, series.style});
+      }
       job.png = request.png;
       jobs.push_back(std::move(job));
     }
     WriteMetricPlots(jobs);
   }
+
+  void ScatterPlots(const std::vector<ScatterPlotJob>& plots) override { WriteScatterPlots(plots); }
+
+  void Figures(const std::vector<FigureJob>& figures) override { WriteViewFigures(figures); }
 
   void StagesGif(const std::vector<std::filesystem::path>& stage_pngs, const std::filesystem::path& gif,
                  const GifSettings& settings) override {

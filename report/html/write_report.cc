@@ -11,9 +11,12 @@
 #include <thread>
 
 #include "evaluator/core/input_error.h"
+#include "report/html/metric_spec_page.h"
 #include "report/html/report_layout.h"
 #include "report/html/site_data.h"
 #include "report/html/text_outputs.h"
+#include "report/html/validity_page.h"
+#include "report/html/view_pages.h"
 #include "report/model/load_runs.h"
 #include "report/model/sweep_model.h"
 
@@ -31,7 +34,7 @@ constexpr const char* kMarker = ".slamsweep-report";
 // Files of a run folder (orchestrator/DESIGN.md) offered for download, in display order. Fixed
 // names only: paths named inside result.json are not trusted to stay inside the run folder.
 constexpr const char* kDownloads[] = {"map.pgm",   "map.yaml",    "trajectory.tum", "reference.tum", "map.geojson",
-                                      "log.txt",   "command.txt", "run.json",       "result.json"};
+                                      "log.txt",   "command.txt", "run.json",       "result.json", "rpe_segments.csv"};
 
 void WriteTextFile(const fs::path& path, std::string_view content) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
@@ -182,13 +185,15 @@ std::vector<PlotRequest> PlanPlots(const SweepModel& model, const ReportLayout& 
     for (std::size_t c = 0; c < sequence.map_columns.size(); ++c) specs.push_back({&sequence.map_columns[c], c, false});
     for (const PlotSpec& spec : specs) {
       const MetricColumn& column = *spec.column;
+      std::size_t row_index = 0;
       PlotRequest request;
       request.title = sequence.title + ": " + column.title + (column.spec.empty() ? "" : ", " + column.spec);
       request.y_label = column.title + (column.unit.empty() ? "" : " (" + column.unit + ")");
       request.log_scale = true;
       for (const AlgorithmRow& row : sequence.rows) {
         const MetricCell& cell = spec.trajectory ? row.trajectory_cells[spec.index] : row.map_cells[spec.index];
-        if (!cell.values.empty()) request.series.push_back({row.algorithm, cell.values});
+        if (!cell.values.empty()) request.series.push_back({row.algorithm, cell.values, RowStyle(site, sequence, row_index)});
+        ++row_index;
       }
       if (request.series.empty()) continue;
       PlotArtifact artifact;
@@ -352,6 +357,8 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   SiteData site;
   site.model = &model;
   site.layout = &layout;
+  const AlgorithmPalette palette(model.algorithms);
+  site.palette = &palette;
   fs::path normal = fs::absolute(result_dir).lexically_normal();
   if (normal.filename().empty()) normal = normal.parent_path();  // "out/" -> "out"
   site.title = model.sweep_name.empty() ? "slamsweep report — " + normal.filename().string() : model.sweep_name;
@@ -368,6 +375,11 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   });
 
   std::vector<PlotRequest> plots = PlanPlots(model, layout, out_dir, site);
+  std::vector<ScatterPlotJob> scatter_plots;
+  ValiditySite validity = PlanValidity(model, *site.palette, out_dir, scatter_plots);
+  std::vector<FigureJob> figures;
+  PlanViewPages(out_dir, site, figures);
+  std::string figures_error;
   std::vector<ImageJob> jobs;
   if (options.artwork != nullptr) {
     if (!plots.empty()) {
@@ -380,24 +392,51 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
                         }
                       }});
     }
+    if (!scatter_plots.empty()) {
+      Artwork* artwork = options.artwork;
+      jobs.push_back({[artwork, &scatter_plots] { artwork->ScatterPlots(scatter_plots); },
+                      [&validity](const std::string& error) {
+                        for (ValidityPlot& plot : validity.plots) plot.note = error.empty() ? "the plot file is missing" : error;
+                      }});
+    }
+    if (!figures.empty()) {
+      Artwork* artwork = options.artwork;
+      jobs.push_back({[artwork, &figures] { artwork->Figures(figures); },
+                      [&figures_error](const std::string& error) { figures_error = error; }});
+    }
     PlanRunImages(model, layout, out_dir, options, site, jobs);
   }
   RunImageJobs(jobs, options.jobs);
   ReportSummary summary = CountImages(out_dir, options.artwork != nullptr, site);
+  CountValidityPlots(out_dir, options.artwork != nullptr, validity, summary);
+  const auto [figures_made, figures_missing] = MarkViewFigures(out_dir, options.artwork != nullptr, figures_error, site);
+  summary.images += figures_made;
+  summary.images_missing += figures_missing;
 
   // The sweep's own tables, as the orchestrator wrote them: one computation of every aggregate.
   site.has_summary_json = CopyResultFile(result_dir, out_dir, "summary.json");
   site.has_summary_csv = CopyResultFile(result_dir, out_dir, "summary.csv");
   site.has_runs_csv = CopyResultFile(result_dir, out_dir, "runs.csv");
-  WriteTextFile(out_dir / "style.css", StyleSheet());
+  WriteTextFile(out_dir / "style.css", std::string(StyleSheet()) + ViewStyleSheet());
   WritePaperFiles(model, layout, out_dir, site);
   if (options.history != nullptr) site.history_section = options.history->Write(out_dir, summary);
+  validity.has_csv = CopyResultFile(result_dir, out_dir, "validity.csv");
+  site.has_validity_page = !validity.study.empty();
+  if (site.has_validity_page) {
+    WriteTextFile(out_dir / "validity.html", RenderValidityPage(site, validity));
+    ++summary.pages;
+  } else {
+    std::error_code ignored;
+    fs::remove(out_dir / "validity.html", ignored);  // none left from an earlier report in this folder
+  }
+  WriteTextFile(out_dir / "metrics.html", RenderMetricSpecPage(site));
   WriteTextFile(out_dir / "index.html", RenderIndexPage(site));
-  summary.pages += 1;
+  summary.pages += 2;
   for (const SequenceModel& sequence : model.sequences) {
     WriteTextFile(out_dir / layout.SequencePage(sequence.key), RenderSequencePage(site, sequence));
     ++summary.pages;
   }
+  summary.pages += WriteViewPages(site, out_dir);
   ParallelFor(model.runs.size(), options.jobs,
               [&](std::size_t i) { WriteTextFile(out_dir / layout.RunPage(i), RenderRunPage(site, i)); });
   summary.pages += model.runs.size();

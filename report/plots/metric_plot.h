@@ -2,15 +2,24 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "report/plots/figure_types.h"
 
 namespace slamsweep::report {
 
 /// One algorithm's values of a metric on one sequence, one value per iteration (failed runs
 /// are left out by the caller: they have no value, and the tables count them).
 struct MetricSeries {
+  MetricSeries() = default;
+  MetricSeries(std::string algorithm_name, std::vector<double> series_values, SeriesStyle series_style = {})
+      : algorithm(std::move(algorithm_name)), values(std::move(series_values)), style(series_style) {}
+
   std::string algorithm;
   std::vector<double> values;
+  /// The algorithm's colour and marker in every plot of the report (AlgorithmPalette).
+  SeriesStyle style;
 };
 
 /// The paper's figures 3, 5, 6, 7: algorithms side by side on a categorical x axis, every

@@ -13,9 +13,6 @@
 namespace slamsweep::report {
 namespace {
 
-/// Okabe-Ito colours: distinguishable with the common colour-vision deficiencies.
-constexpr std::array<std::uint32_t, 8> kPalette = {0x0072B2, 0xD55E00, 0x009E73, 0xCC79A7,
-                                                   0xE69F00, 0x56B4E9, 0x000000, 0xF0E442};
 /// Half the width of the band the points of one algorithm are spread over, in x units.
 constexpr double kJitterHalfWidth = 0.15;
 constexpr double kMeanBarHalfWidth = 0.3;
@@ -86,13 +83,14 @@ std::string MetricPlotScript(const MetricPlot& plot, const std::filesystem::path
   for (std::size_t s = 0; s < plot.series.size(); ++s) {
     const MetricSeries& series = plot.series[s];
     const double x = static_cast<double>(s + 1);
-    const std::uint32_t colour = kPalette[s % kPalette.size()];
+    const std::uint32_t colour = series.style.rgb;
     const SeriesSpread spread = ComputeSpread(series.values);
     std::size_t drawn_index = 0;
     for (const double v : series.values) {
       if (!std::isfinite(v)) continue;
       if (plot.log_scale && v <= 0.0) ++numbers.at_floor;
-      points += fmt::format("{} {} {}\n", Number(x + JitterOffset(drawn_index++, spread.n)), Number(drawn(v)), colour);
+      points += fmt::format("{} {} {} {}\n", Number(x + JitterOffset(drawn_index++, spread.n)), Number(drawn(v)), colour,
+                            series.style.point_type);
     }
     if (spread.n > 0) {
       any_point = true;
@@ -160,7 +158,8 @@ std::string MetricPlotScript(const MetricPlot& plot, const std::filesystem::path
             fmt::format("using ($1-{0}):2:({1}):(0):3 with vectors nohead linewidth 2.5 linecolor rgb variable",
                         Number(kMeanBarHalfWidth), Number(2 * kMeanBarHalfWidth)));
   add_block(e, bars, "using 1:2:3:4:5 with yerrorbars pointtype -1 linewidth 1.2 linecolor rgb variable");
-  add_block(p, points, "using 1:2:3 with points pointtype 7 pointsize 0.8 linecolor rgb variable");
+  // Each algorithm's own marker (column 4), so that two algorithms of one colour stay apart.
+  add_block(p, points, "using 1:2:4:3 with points pointtype variable pointsize 0.8 linecolor rgb variable");
   if (clauses.empty()) {
     // Nothing to draw: gnuplot refuses an empty plot, so it gets one point outside the x range.
     script += p + " << EOD\n-10 1\nEOD\n";

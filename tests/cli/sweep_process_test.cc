@@ -15,12 +15,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/child_process.h"
 #include "tests/support/shared_data.h"
 
 namespace slamsweep {
 namespace {
 
 using ::testing::HasSubstr;
+using testing::WaitExit;
 using Clock = std::chrono::steady_clock;
 
 std::string ReadAll(const std::filesystem::path& file) {
@@ -74,19 +76,6 @@ class SweepProcessTest : public ::testing::Test {
       _exit(127);
     }
     return pid;
-  }
-
-  /// Exit code of `pid`, or -1 if it did not end within `limit` (then it is killed).
-  static int WaitExit(pid_t pid, std::chrono::seconds limit) {
-    const auto deadline = Clock::now() + limit;
-    while (Clock::now() < deadline) {
-      int status = 0;
-      if (waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    kill(pid, SIGKILL);
-    waitpid(pid, nullptr, 0);
-    return -1;
   }
 
   /// Waits until both fast runs have results and both slow programs are running.

@@ -212,7 +212,7 @@ TEST(TrustTest, AChangedProgramIsRunAgainUnlessStaleResultsAreAllowed) {
   testing::WriteFile(program, ReadText(program) + "# edited\n");
   const auto reused = RunCli({"run", file.string(), "--no-report", "--reuse-stale"});
   EXPECT_THAT(reused.out, HasSubstr("0 ok, 0 failed, 1 done earlier"));
-  EXPECT_THAT(reused.out, HasSubstr("1 earlier result computed by another slamsweep revision or program build was reused"));
+  EXPECT_THAT(reused.out, HasSubstr("1 earlier result computed by another slamsweep revision, program build or evaluation setting was reused"));
   const auto rerun = RunCli({"run", file.string(), "--no-report"});
   EXPECT_THAT(rerun.out, HasSubstr("1 ok, 0 failed, 0 done earlier"));
   EXPECT_THAT(rerun.out, HasSubstr("was run again"));

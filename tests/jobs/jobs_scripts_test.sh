@@ -6,7 +6,9 @@
 #   CASE: static (Jenkinsfiles, Dockerfile, bad arguments), shard_merge (shards 1/2 + 2/2 merged equal a
 #   single sweep; nightly-compare), nightly (three nights of shards + merge + history: a re-run is no
 #   regression, noisier odometry is one; exit 77 = skipped while slamsweep has no `history` command),
-#   quickstart (jobs/run-sweep.sh on configs/quickstart.yaml).
+#   quickstart (jobs/run-sweep.sh on configs/quickstart.yaml), service (jobs/submit-sweep.sh against a real
+#   `slamsweep serve`), groovy_lint (npm-groovy-lint on every Jenkinsfile; exit 77 = skipped when the linter
+#   is not installed, a failure under CI=true).
 set -euo pipefail
 
 case_name=${1:?usage: jobs_scripts_test.sh CASE SLAMSWEEP_BINARY}
@@ -356,6 +358,78 @@ check_nightly() {
     "$jobs_dir/nightly-compare.sh" night-3
 }
 
+# --- service: the service job's script against a real `slamsweep serve` ------------------------------------
+
+check_service() {
+  cd "$work"
+  local server_pid port
+  "$SLAMSWEEP_BIN" serve --data service-data --listen 127.0.0.1:0 --port-file service.port --jobs 2 \
+    >service.log 2>&1 &
+  server_pid=$!
+  for _ in $(seq 1 200); do [[ -s service.port ]] && break; sleep 0.1; done
+  [[ -s service.port ]] || { fail "slamsweep serve did not start:"; cat service.log >&2; kill "$server_pid"; return; }
+  port=$(cat service.port)
+  export SLAMSWEEP_SERVER=http://127.0.0.1:$port
+  expect_status 0 "submit-sweep.sh through the service" "$jobs_dir/submit-sweep.sh" \
+    "$root/tests/jobs/service_sweep.yaml" service-out
+  expect_log '\[4/4\] ok' "submit-sweep.sh streams a line per finished run"
+  [[ $(grep -c '<testcase ' service-out/junit.xml) == 4 ]] && pass "the downloaded junit.xml has 4 testcases" ||
+    fail "service-out/junit.xml lacks the 4 testcases"
+  [[ -s service-out/report/index.html ]] && pass "the report was downloaded" || fail "no service-out/report/index.html"
+  # The same sweep again: every run is reused from the first, and the job is green.
+  expect_status 0 "the same sweep a second time" "$jobs_dir/submit-sweep.sh" \
+    "$root/tests/jobs/service_sweep.yaml" service-out
+  expect_log 'reused' "the second sweep reuses the first one's runs"
+  printf 'name: broken\nalgorithms: 3\n' >broken-service.yaml
+  expect_status 2 "a refused sweep exits 2" "$jobs_dir/submit-sweep.sh" broken-service.yaml service-out
+  expect_log 'broken-service.yaml:2' "the refusal names the file and line"
+  expect_status 2 "an unreachable service exits 2" env SLAMSWEEP_SERVER=http://127.0.0.1:1 \
+    "$jobs_dir/submit-sweep.sh" "$root/tests/jobs/service_sweep.yaml" service-out
+  kill -TERM "$server_pid"
+  local server_status=0
+  wait "$server_pid" || server_status=$?
+  ((server_status == 0)) && pass "the server drains and exits 0 on SIGTERM" ||
+    { fail "the server exited $server_status on SIGTERM"; cat service.log >&2; }
+}
+
+# --- groovy_lint: npm-groovy-lint on the Jenkinsfiles ------------------------------------------------------
+
+check_groovy_lint() {
+  local linter
+  if ! linter=$("$root/scripts/install-groovy-lint.sh" --check); then
+    if [[ "${CI:-}" == true ]]; then
+      fail "npm-groovy-lint is not installed (scripts/install-groovy-lint.sh; scripts/test.sh runs it)"
+      return
+    fi
+    echo "skipped: npm-groovy-lint is not installed (scripts/install-groovy-lint.sh)"
+    exit 77
+  fi
+  # JSON, because the linter exits 0 when its CodeNarc server fails: count what it linted and found.
+  (cd "$jobs_dir" && "$linter" --failon warning --output json Jenkinsfile Jenkinsfile.nightly Jenkinsfile.service) \
+    >"$work/lint.json" 2>"$work/lint.err" || true
+  if python3 - "$work/lint.json" <<'EOF'
+import json, sys
+try:
+    result = json.load(open(sys.argv[1]))
+except ValueError as error:
+    sys.exit(f"no JSON from npm-groovy-lint: {error}")
+summary = result["summary"]
+for path, found in result["files"].items():
+    for error in found.get("errors", []):
+        if error["severity"] in ("error", "warning"):
+            print(f"{path}:{error['line']}: {error['rule']}: {error['msg']}")
+if summary["totalFilesLinted"] != 3:
+    sys.exit(f"linted {summary['totalFilesLinted']} files, expected the 3 Jenkinsfiles")
+sys.exit(1 if summary["totalFoundErrorNumber"] + summary["totalFoundWarningNumber"] > 0 else 0)
+EOF
+  then
+    pass "npm-groovy-lint: no error or warning in the 3 Jenkinsfiles (jobs/.groovylintrc.json)"
+  else
+    fail "npm-groovy-lint found problems:"
+    head -c 3000 "$work/lint.err" >&2
+  fi
+}
+
 # --- quickstart: the parameterised job's sweep on the real quick-start config --------------------------------
 
 check_quickstart() {
@@ -395,6 +469,9 @@ case $case_name in
       "reportDir: 'out/report'" "keepAll: true" "name: 'ALGORITHMS'" "name: 'SEQUENCES'" "name: 'ITERATIONS'"
     check_jenkinsfile "$jobs_dir/Jenkinsfile.nightly" 4 "cron(" "jobs/run-shard.sh" "jobs/merge-shards.sh" \
       "jobs/nightly-compare.sh" "unstable(" "error(" "publishHTML" "junit testResults"
+    check_jenkinsfile "$jobs_dir/Jenkinsfile.service" 2 "stage('Setup')" "stage('Sweep')" "stage('Publish')" \
+      "jobs/submit-sweep.sh" "withCredentials" "junit testResults: 'out/junit.xml', allowEmptyResults: false" \
+      "publishHTML" "name: 'SLAMSWEEP_SERVER'" "name: 'PRIORITY'"
     check_dockerfile
     check_bad_arguments
     check_nightly_compare_mapping
@@ -408,6 +485,8 @@ case $case_name in
   shard_merge) check_shard_merge ;;
   nightly) check_nightly ;;
   quickstart) check_quickstart ;;
+  service) check_service ;;
+  groovy_lint) check_groovy_lint ;;
   *)
     echo "unknown case $case_name" >&2
     exit 2

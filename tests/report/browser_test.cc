@@ -95,11 +95,11 @@ struct BrowserRun {
 };
 
 BrowserRun LoadInChromium(const std::string& url, const fs::path& work, const std::string& name,
-                          const fs::path& screenshot) {
+                          const fs::path& screenshot, int window_height_px = 2000) {
   std::vector<std::string> argv = {kChromium, "--headless=new", "--no-sandbox", "--disable-gpu",
                                    "--no-first-run", "--enable-logging=stderr", "--v=0",
                                    "--user-data-dir=" + (work / ("profile-" + name)).string(),
-                                   "--window-size=1280,2000"};
+                                   "--window-size=1280," + std::to_string(window_height_px)};
   if (screenshot.empty()) {
     argv.push_back("--dump-dom");
   } else {
@@ -134,7 +134,7 @@ class BrowserTest : public ::testing::Test {
       if (slamsweep::testing::RunningInCi()) FAIL() << why;
       GTEST_SKIP() << why;
     }
-    testing::WriteFixtureSweep(dir_ / "sweep", testing::StandardFixtureRuns());
+    testing::WriteFixtureSweep(dir_ / "sweep", Runs());
     artwork_ = MakeStandardArtwork();
     ReportOptions options;
     options.artwork = artwork_ ? artwork_.get() : &fake_;
@@ -152,11 +152,13 @@ class BrowserTest : public ::testing::Test {
     if (server_) server_->Stop();
   }
 
+  virtual std::vector<testing::FixtureRun> Runs() const { return testing::StandardFixtureRuns(); }
+
   // Loads `page` and checks: no CSP violation, every image of the page requested with 200.
-  void CheckPage(const std::string& page, const fs::path& screenshot = {}) {
+  void CheckPage(const std::string& page, const fs::path& screenshot = {}, int window_height_px = 2000) {
     SCOPED_TRACE(page);
     const std::string name = "page" + std::to_string(++pages_);
-    const BrowserRun run = LoadInChromium(base_url_ + page, dir_.path(), name, screenshot);
+    const BrowserRun run = LoadInChromium(base_url_ + page, dir_.path(), name, screenshot, window_height_px);
     EXPECT_TRUE(run.finished) << "chromium did not finish in 40 s";
     EXPECT_TRUE(CspViolations(run.stderr_text).empty()) << ::testing::PrintToString(CspViolations(run.stderr_text));
     const std::string log = ReadAll(dir_ / "requests.log");
@@ -187,6 +189,52 @@ TEST_F(BrowserTest, PagesLoadUnderJenkinsCsp) {
   EXPECT_FALSE(testing::ImageSources(dir_ / "report/index.html").empty());
   CheckPage("sequences/intel-clean.html");
   CheckPage("runs/_script_alert_1___script_-intel-clean-i0-0000abcd.html");
+  CheckPage("validity.html");
+  const fs::path metrics_screenshot = fs::path(SLAMSWEEP_ARTIFACT_DIR) / "report_metrics_screenshot.png";
+  CheckPage("metrics.html", metrics_screenshot, 3400);
+  EXPECT_TRUE(fs::exists(metrics_screenshot));
+  std::cout << "screenshot of the metric specification: " << metrics_screenshot.string() << "\n";
+}
+
+// The validity page (report/html/validity_page.h) with numbers and its scatter plots, on a sweep of
+// graded noise settings; its screenshot is kept as an artifact.
+class ValidityBrowserTest : public BrowserTest {
+ protected:
+  std::vector<testing::FixtureRun> Runs() const override { return testing::ValidityFixtureRuns(); }
+};
+
+TEST_F(ValidityBrowserTest, TheValidityPageWithItsPlotsLoadsUnderJenkinsCsp) {
+  const fs::path screenshot = fs::path(SLAMSWEEP_ARTIFACT_DIR) / "report_validity_screenshot.png";
+  fs::remove(screenshot);
+  CheckPage("validity.html", screenshot, 3400);
+  EXPECT_TRUE(fs::exists(screenshot));
+  EXPECT_EQ(testing::ImageSources(dir_ / "report/validity.html").size(), 24u);
+  std::cout << "screenshot of the validity page: " << screenshot.string() << "\n";
+}
+
+// The segment-length and parameter pages (report/html/view_pages.h) on a sweep that has both; their
+// screenshots, and the sequence page's with its palette swatches, are kept as artifacts.
+class ViewsBrowserTest : public BrowserTest {
+ protected:
+  std::vector<testing::FixtureRun> Runs() const override { return testing::ViewsFixtureRuns(); }
+};
+
+TEST_F(ViewsBrowserTest, SegmentAndParameterPagesLoadUnderJenkinsCsp) {
+  const std::pair<const char*, const char*> pages[] = {
+      {"sequences/intel-clean/segments.html", "report_segments_screenshot.png"},
+      {"sequences/intel-clean/parameters.html", "report_parameters_screenshot.png"},
+      {"sequences/intel-clean.html", "report_sequence_screenshot.png"}};
+  for (const auto& [page, file] : pages) {
+    const fs::path screenshot = fs::path(SLAMSWEEP_ARTIFACT_DIR) / file;
+    fs::remove(screenshot);
+    // Tall windows: the screenshot shows the whole page, every figure of it.
+    CheckPage(page, screenshot, 3400);
+    EXPECT_TRUE(fs::exists(screenshot)) << page;
+    EXPECT_FALSE(testing::ImageSources(dir_ / "report" / page).empty()) << page;
+    std::cout << "screenshot of " << page << ": " << screenshot.string() << "\n";
+    RecordProperty(std::string("screenshot ") + page, screenshot.string());
+  }
+  EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
 }
 
 // The detector itself: a page with an inline style must be reported, or a silent browser would

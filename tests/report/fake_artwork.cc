@@ -36,6 +36,16 @@ void FakeArtwork::Plots(const std::vector<PlotRequest>& requests) {
   for (const PlotRequest& request : requests) WritePng(request.png, 128);
 }
 
+void FakeArtwork::ScatterPlots(const std::vector<ScatterPlotJob>& jobs) {
+  scatter_plots = jobs;
+  for (const ScatterPlotJob& job : jobs) WritePng(job.png, 64);
+}
+
+void FakeArtwork::Figures(const std::vector<FigureJob>& jobs) {
+  figures = jobs;
+  for (const FigureJob& job : jobs) WritePng(job.png, 90);
+}
+
 void FakeArtwork::StagesGif(const std::vector<fs::path>& stage_pngs, const fs::path& gif, const GifSettings&) {
   if (stage_pngs.empty()) throw std::runtime_error("no stages");
   {

@@ -15,6 +15,8 @@ namespace slamsweep::report::testing {
 class FakeArtwork : public Artwork {
  public:
   void Plots(const std::vector<PlotRequest>& plots) override;
+  void ScatterPlots(const std::vector<ScatterPlotJob>& plots) override;
+  void Figures(const std::vector<FigureJob>& figures) override;
   void StagesGif(const std::vector<std::filesystem::path>& stage_pngs, const std::filesystem::path& gif,
                  const GifSettings& settings) override;
   void Thumbnail(const std::filesystem::path& map_image, const std::filesystem::path& png, int max_side_px) override;
@@ -24,6 +26,8 @@ class FakeArtwork : public Artwork {
 
   bool fail_thumbnails = false;
   std::vector<PlotRequest> plots;  ///< written by Plots (called once, from one thread)
+  std::vector<ScatterPlotJob> scatter_plots;  ///< written by ScatterPlots (called once, from one thread)
+  std::vector<FigureJob> figures;  ///< written by Figures (called once, from one thread)
   std::atomic<int> gifs{0};
   std::mutex stages_mutex;
   std::vector<std::filesystem::path> stages;  ///< every stage image given to StagesGif

@@ -1,5 +1,7 @@
 #include "tests/report/fixture_sweep.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -59,8 +61,45 @@ ev::Trajectory Circle(double radius_m, double noise_m) {
   return trajectory;
 }
 
-json Metric(const char* name, const char* statistic, double value, const char* unit) {
+json Metric(const std::string& name, const char* statistic, double value, const char* unit) {
   return {{"metric", name}, {"statistic", statistic}, {"value", value}, {"unit", unit}};
+}
+
+/// The segment RPE a worker would record (orchestrator/worker/run_metrics.cc): details, the flat mean
+/// drift per length and rpe_segments.csv with 20 segments spread evenly over +-50 % of the drift.
+void WriteSegments(const FixtureRun& run, const fs::path& run_dir, json& metrics, json& details) {
+  json lengths = json::array();
+  std::string csv = "length_m,start_s,end_s,translation_m,translation_pct,rotation_deg_per_m\n";
+  for (const double length : run.segment_lengths_m) {
+    const double drift = run.segment_drift_pct * (1.0 + 0.01 * length) + 0.05 * run.iteration;
+    for (int k = 0; k < 20; ++k) {
+      const double pct = drift * (0.5 + k / 19.0);
+      csv += fmt::format("{},{},{},{},{},{}\n", length, 100 + k, 110 + k, pct * length / 100.0, pct, 0.02 * pct);
+    }
+    lengths.push_back({{"length_m", length},
+                       {"n", 20},
+                       {"translation_m", {{"mean", drift * length / 100.0}}},
+                       {"translation_pct", {{"mean", drift}}},
+                       {"rotation_deg_per_m", {{"mean", 0.02 * drift}}}});
+    metrics.push_back(Metric(fmt::format("segment_drift_{}m", length), "mean", drift, "%"));
+  }
+  details["segment_rpe"] = {{"specification",
+                             {{"lengths_m", run.segment_lengths_m},
+                              {"lengths_from", "reference path"},
+                              {"reference_path_m", 100.0},
+                              {"pairs_from", "reference"}}},
+                            {"lengths", lengths}};
+  Write(run_dir / "rpe_segments.csv", csv);
+}
+
+/// "k=v;..." as orchestrator/matrix ParametersText writes it (sorted by name: nlohmann's order).
+std::string ParametersTextOf(const json& parameters) {
+  std::string text;
+  for (const auto& [name, value] : parameters.items()) {
+    if (!text.empty()) text += ';';
+    text += name + "=" + (value.is_string() ? value.get<std::string>() : value.dump());
+  }
+  return text;
 }
 
 }  // namespace
@@ -75,8 +114,9 @@ FixtureRun MakeRun(std::string algorithm, std::string sequence, int iteration) {
 
 std::string FixtureRunId(const FixtureRun& run) {
   if (!run.run_id.empty()) return run.run_id;
-  return Readable(run.algorithm) + "-" + Readable(run.sequence) + "-clean-i" + std::to_string(run.iteration) +
-         "-0000abcd";
+  const std::string parameters = run.parameters.empty() ? "" : "-" + Readable(ParametersTextOf(run.parameters));
+  return Readable(run.algorithm) + parameters + "-" + Readable(run.sequence) + "-" + Readable(run.noise) + "-i" +
+         std::to_string(run.iteration) + "-0000abcd";
 }
 
 void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs) {
@@ -88,11 +128,13 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
     const json spec = {
         {"run_id", id},
         {"sweep", "fixture"},
-        {"algorithm", {{"name", run.algorithm}, {"adapter", "generic"}, {"parameters", json::object()},
+        {"algorithm", {{"name", run.algorithm}, {"adapter", "generic"}, {"parameters", run.parameters},
                        {"timeout_s", 300}, {"memory_limit_mb", 4096}, {"command", nullptr}}},
+        {"group", {{"sequence", run.sequence}, {"algorithm", run.algorithm}, {"parameters", ParametersTextOf(run.parameters)},
+                   {"noise", run.noise}}},
         {"sequence", {{"name", run.sequence}, {"format", "carmen"}, {"path", "/data/" + run.sequence + ".clf"},
                       {"ground_truth", run.with_reference ? "reference.tum" : "none"}}},
-        {"noise", {{"name", "clean"}, {"odometry", nullptr}, {"range", nullptr}}},
+        {"noise", {{"name", run.noise}, {"odometry", nullptr}, {"range", nullptr}}},
         {"iteration", run.iteration},
         {"seed", 1000 + run.iteration},
         {"evaluation", {{"align", "se2"}, {"rpe_delta_m", 1.0}, {"t_max_diff_s", 0.01}, {"stages", run.stages}}},
@@ -148,7 +190,15 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
       }
       if (run.occupied_ratio) metrics.push_back(Metric("occupied_to_free_unknown", "value", *run.occupied_ratio, "ratio"));
       if (run.corners) metrics.push_back(Metric("corners", "value", *run.corners, "count"));
+      if (run.with_reference && !run.segment_lengths_m.empty()) {
+        WriteSegments(run, run_dir, metrics, details);
+        outputs["rpe_segments"] = "rpe_segments.csv";
+      }
       if (run.enclosed_areas) metrics.push_back(Metric("enclosed_areas", "value", *run.enclosed_areas, "count"));
+      if (run.map_chamfer_m) {
+        metrics.push_back(Metric("map_chamfer", "value", *run.map_chamfer_m, "m"));
+        metrics.push_back(Metric("map_f1", "value", 1.0 / (1.0 + *run.map_chamfer_m), "ratio"));
+      }
     }
     result["outputs"] = outputs;
     result["metrics"] = metrics;
@@ -194,6 +244,64 @@ std::vector<FixtureRun> StandardFixtureRuns() {
   single.corners = 12.0;
   single.enclosed_areas = 1.0;
   runs.push_back(single);
+  return runs;
+}
+
+std::vector<FixtureRun> ValidityFixtureRuns() {
+  std::vector<FixtureRun> runs;
+  const std::pair<const char*, double> levels[] = {{"odo-1", 1.0}, {"odo-2", 2.0}, {"odo-10", 10.0}};
+  for (const char* sequence : {"intel", "floor"}) {
+    const double scale = std::string(sequence) == "intel" ? 1.0 : 0.1;
+    for (const auto& [noise, level] : levels) {
+      for (int i = 0; i < 3; ++i) {
+        FixtureRun run = MakeRun("icp-slam", sequence, i);
+        run.noise = noise;
+        const double ate = scale * (0.1 * level + 0.01 * i);
+        run.ape_rmse_m = ate;
+        run.map_chamfer_m = 0.5 * ate;
+        run.corners = 100.0 * ate / scale;
+        run.occupied_ratio = 0.5 - ate / scale / 5.0;
+        run.enclosed_areas = 2.0;
+        runs.push_back(run);
+      }
+    }
+  }
+  return runs;
+}
+
+std::vector<FixtureRun> ViewsFixtureRuns() {
+  std::vector<FixtureRun> runs;
+  const auto add = [&](const std::string& algorithm, const json& parameters, int iterations, double ape_m,
+                       double drift_pct) {
+    for (int i = 0; i < iterations; ++i) {
+      FixtureRun run = MakeRun(algorithm, "intel", i);
+      run.parameters = parameters;
+      run.ape_rmse_m = ape_m + 0.01 * i;
+      run.occupied_ratio = 0.05 + 0.001 * i;
+      run.corners = 10.0 + i + 10.0 * ape_m;
+      run.enclosed_areas = 1.0;
+      run.segment_lengths_m = {10, 20, 30};
+      run.segment_drift_pct = drift_pct;
+      runs.push_back(run);
+    }
+  };
+  add("gmapping", json::object(), 3, 0.10, 1.5);
+  add("hector", json::object(), 3, 0.30, 3.0);
+  add("<b>odd & name</b>", json::object(), 2, 0.25, 2.0);
+  for (const auto& [iterations, ape] : {std::pair<int, double>{20, 0.40}, {40, 0.12}, {80, 0.20}}) {
+    add("icp-slam", json{{"ICP.maxIterations", iterations}, {"ICP.thresholdDist", 0.75}}, 2, ape, 1.0 + ape * 5);
+  }
+  for (const int particles : {10, 30}) {
+    for (const double resample : {0.5, 1.0}) {
+      add("rbpf-slam", json{{"particles", particles}, {"resample", resample}}, 2,
+          0.5 / particles + 0.1 * resample, 2.0 + resample);
+    }
+  }
+  FixtureRun no_reference = MakeRun("gmapping", "mit-no-ref", 0);
+  no_reference.with_reference = false;
+  no_reference.corners = 30.0;
+  no_reference.occupied_ratio = 0.07;
+  runs.push_back(no_reference);
   return runs;
 }
 

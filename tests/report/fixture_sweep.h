@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace slamsweep::report::testing {
 
 /// One run of a synthetic sweep. Metrics left empty are not written (as for a sequence without
@@ -12,6 +14,7 @@ namespace slamsweep::report::testing {
 struct FixtureRun {
   std::string algorithm = "icp-slam";
   std::string sequence = "intel";
+  std::string noise = "clean";
   int iteration = 0;
   bool ok = true;
   std::string failure_kind = "exit_code";  ///< used when !ok
@@ -21,10 +24,17 @@ struct FixtureRun {
   std::optional<double> occupied_ratio;
   std::optional<double> corners;
   std::optional<double> enclosed_areas;
+  std::optional<double> map_chamfer_m;  ///< map versus reference (written with the other map_compare scores)
   std::string log = "scan 1\nscan 2\n";
   int stages = 3;
-  /// Folder name; empty -> made from algorithm, sequence and iteration like the orchestrator does.
+  /// Folder name; empty -> made from algorithm, sequence, parameters and iteration like the orchestrator does.
   std::string run_id;
+  /// run.json's algorithm.parameters (and group.parameters as "k=v;..."): rows of one algorithm differ in them.
+  nlohmann::json parameters = nlohmann::json::object();
+  /// Segment RPE at these lengths (ok runs with a reference): metric_details.segment_rpe, the flat
+  /// segment_drift_<L>m mean and rpe_segments.csv with 20 segments per length around `segment_drift_pct`.
+  std::vector<double> segment_lengths_m;
+  double segment_drift_pct = 1.0;
 };
 
 /// A successful run of `algorithm` on `sequence` with no metric yet.
@@ -44,5 +54,17 @@ void WriteFixtureSweep(const std::filesystem::path& dir, const std::vector<Fixtu
 /// (without: no ATE), one failed run, an algorithm "single" with one iteration, and a log that
 /// contains HTML.
 std::vector<FixtureRun> StandardFixtureRuns();
+
+/// A sweep for the validity page: "icp-slam" on "intel" and "floor", noise settings "odo-1",
+/// "odo-2", "odo-10" (natural order) x 3 iterations. ATE and Chamfer rise with the noise level
+/// and the iteration; corners rise exactly with the ATE on both sequences (rho = +1 everywhere),
+/// the occupied ratio falls exactly with it (rho = -1), enclosed areas are constant (no variation).
+std::vector<FixtureRun> ValidityFixtureRuns();
+
+/// A sweep for the segment-length and parameter pages on "intel" (reference) and "mit-no-ref": gmapping
+/// and hector with segment RPE at 10, 20 and 30 m (hector drifting twice as much), "icp-slam" swept
+/// over ICP.maxIterations (20, 40, 80; 40 is best), "rbpf-slam" over particles x resample (2 x 2), 2-3
+/// iterations each, and a hostile algorithm name.
+std::vector<FixtureRun> ViewsFixtureRuns();
 
 }  // namespace slamsweep::report::testing

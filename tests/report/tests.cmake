@@ -6,11 +6,14 @@ if(TARGET report_html)
   target_include_directories(report_test_fixture PUBLIC ${PROJECT_SOURCE_DIR})
   target_link_libraries(report_test_fixture
     PUBLIC report_html evaluator_core nlohmann_json::nlohmann_json
-    PRIVATE evaluator_map_formats evaluator_trajectory_formats opencv_core opencv_imgproc opencv_imgcodecs)
+    PRIVATE evaluator_map_formats evaluator_trajectory_formats opencv_core opencv_imgproc opencv_imgcodecs fmt::fmt)
 
   slamsweep_add_test(report_model_test SOURCES model_test.cc LIBS report_model report_test_fixture)
   slamsweep_add_test(report_html_test SOURCES html_test.cc LIBS report_html)
   slamsweep_add_test(report_write_test SOURCES write_report_test.cc LIBS report_html report_test_fixture)
+  # The segment-length and parameter pages: their models, figures as planned, pages.
+  slamsweep_add_test(report_views_test SOURCES views_model_test.cc view_pages_test.cc
+                     LIBS report_html report_test_fixture)
 endif()
 if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/plots_images/CMakeLists.txt)
   add_subdirectory(plots_images)

@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 
 #include "evaluator/core/input_error.h"
+#include "report/plots/algorithm_palette.h"
+#include "report/plots/scatter_plot.h"
 #include "tests/report/fake_artwork.h"
 #include "tests/report/fixture_sweep.h"
 #include "tests/support/shared_data.h"
@@ -40,7 +43,7 @@ class WriteReportTest : public ::testing::Test {
 TEST_F(WriteReportTest, WritesTheSite) {
   const ReportSummary summary = Write();
   EXPECT_EQ(summary.runs, 10u);
-  EXPECT_EQ(summary.pages, 1u + 2u + 10u);  // index, 2 sequences, 10 runs
+  EXPECT_EQ(summary.pages, 1u + 2u + 10u + 2u);  // index, 2 sequences, 10 runs, metrics.html, validity.html
   const fs::path out = dir_ / "report";
   for (const char* file : {"index.html", "style.css", "summary.csv", "runs.csv", "summary.json", "sequences/intel-clean.html",
                            "sequences/mit-no-ref-clean.html", "files/gmapping/intel-clean/rmse.txt",
@@ -235,6 +238,154 @@ TEST_F(WriteReportTest, StagePathsLeavingTheRunFolderAreIgnored) {
   EXPECT_EQ(artwork_.gifs, 9);
   EXPECT_EQ(artwork_.stages.size(), 9u * 3u - 1u);
   for (const fs::path& stage : artwork_.stages) EXPECT_EQ(stage.string().find(".."), std::string::npos) << stage;
+  EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
+}
+
+TEST_F(WriteReportTest, EveryPageLinksTheMetricSpecification) {
+  Write();
+  const std::string spec = ReadAll(dir_ / "report/metrics.html");
+  // Every metric a page shows is defined, the map-versus-reference scores included.
+  for (const char* metric : {"ape_trans", "rpe_trans", "relations_trans", "occupied_to_free_unknown", "corners",
+                             "enclosed_areas", "map_chamfer", "map_accuracy", "map_completeness", "map_f1",
+                             "map_iou_occupied", "map_iou_free", "wall_s", "peak_rss_kb", "spearman_rho"}) {
+    EXPECT_NE(spec.find("<code>" + std::string(metric) + "</code>"), std::string::npos) << metric;
+  }
+  for (const char* page : {"index.html", "sequences/intel-clean.html", "runs/gmapping-intel-clean-i1-0000abcd.html",
+                           "validity.html"}) {
+    const std::string root = std::string(page).find('/') == std::string::npos ? "" : "../";
+    EXPECT_NE(ReadAll(dir_ / "report" / page).find("<a href=\"" + root + "metrics.html\">metric specification</a>"),
+              std::string::npos)
+        << page;
+  }
+}
+
+TEST_F(WriteReportTest, FewRunsGiveNoCorrelation) {
+  // The standard sweep has 6 successful runs with an ATE on intel: below 8, no number.
+  Write();
+  const std::string page = ReadAll(dir_ / "report/validity.html");
+  EXPECT_NE(page.find("too few runs"), std::string::npos);
+  EXPECT_EQ(page.find("ρ ="), std::string::npos);
+  EXPECT_NE(ReadAll(dir_ / "report/index.html").find("href=\"validity.html\""), std::string::npos);
+}
+
+TEST_F(WriteReportTest, TheValidityPageShowsCorrelationsIntervalsAndPlots) {
+  fs::remove_all(dir_ / "sweep");
+  testing::WriteFixtureSweep(dir_ / "sweep", testing::ValidityFixtureRuns());
+  slamsweep::testing::WriteFile(dir_ / "sweep/validity.csv", "candidate,target\n");
+  Write();
+  const std::string page = ReadAll(dir_ / "report/validity.html");
+  EXPECT_NE(page.find("Which metrics can be trusted?"), std::string::npos);
+  // Corners rise exactly with the ATE on each sequence: +1 with a degenerate interval, all 9 runs.
+  EXPECT_NE(page.find("<td class=\"verdict-tracks\">ρ = +1.00 [+1.00, +1.00]<br><span class=\"n\">n=9, tracks error"),
+            std::string::npos);
+  // Over both sequences (never ranked together), still exactly +1 with all 18 runs.
+  EXPECT_NE(page.find("n=18, tracks error"), std::string::npos);
+  // The occupied ratio falls with it; enclosed areas never change.
+  EXPECT_NE(page.find("<td class=\"verdict-opposite\">ρ = -1.00 [-1.00, -1.00]"), std::string::npos);
+  EXPECT_NE(page.find("no variation"), std::string::npos);
+  EXPECT_NE(page.find("Against Map vs reference: Chamfer distance"), std::string::npos);
+  EXPECT_EQ(page.find("Against Relations"), std::string::npos);  // no relations in this sweep
+  EXPECT_NE(page.find("href=\"validity.csv\""), std::string::npos);
+  EXPECT_EQ(ReadAll(dir_ / "report/validity.csv"), "candidate,target\n");  // the sweep's own file, copied
+
+  // One scatter plot per real error x candidate with values x sequence: 2 x 6 x 2.
+  ASSERT_EQ(artwork_.scatter_plots.size(), 24u);
+  const ScatterPlot* corners = nullptr;
+  for (const ScatterPlotJob& job : artwork_.scatter_plots) {
+    EXPECT_TRUE(fs::exists(job.png)) << job.png;
+    const ScatterPlot& plot = job.plot;
+    if (plot.title == "intel" && plot.x_label == "Corners (count)" && plot.y_label == "ATE translation RMSE (m)") {
+      corners = &plot;
+    }
+  }
+  ASSERT_NE(corners, nullptr);
+  EXPECT_NE(page.find("<figcaption>intel: Corners vs ATE translation RMSE</figcaption>"), std::string::npos);
+  // No run has the other occupied proportions: no rows for them.
+  EXPECT_EQ(page.find("Unknown / all cells"), std::string::npos);
+  // A series per noise setting, in natural order: odo-1, odo-2, odo-10, graded light to dark, and the
+  // key says the colour is the noise setting; the marker is icp-slam's, as in every plot of the report.
+  std::string labels;
+  for (const ScatterSeries& series : corners->series) labels += series.label + ";";
+  ASSERT_EQ(corners->series.size(), 3u) << labels;
+  EXPECT_EQ(corners->series[0].label, "odo-1");
+  EXPECT_EQ(corners->series[2].label, "odo-10");
+  EXPECT_EQ(corners->series[2].x, (std::vector<double>{100.0, 101.0, 102.0}));
+  EXPECT_EQ(corners->key_title, "colour: noise setting");
+  EXPECT_EQ(corners->series[0].style.rgb, GradedColour(0, 3));
+  EXPECT_EQ(corners->series[2].style.rgb, GradedColour(2, 3));
+  const int icp_marker = AlgorithmPalette({"icp-slam"}).StyleOf("icp-slam").point_type;
+  for (const ScatterSeries& series : corners->series) EXPECT_EQ(series.style.point_type, icp_marker) << series.label;
+  EXPECT_NE(page.find("colour: its noise setting"), std::string::npos);
+  EXPECT_EQ(testing::ImageSources(dir_ / "report/validity.html").size(), 24u);
+  EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty()) << ::testing::PrintToString(testing::BrokenLinks(dir_ / "report"));
+}
+
+/// The report of `runs` (icp-slam and gmapping on the validity fixture) and its first scatter plot
+/// (intel's, "Occupied proportion" against the ATE).
+class ValidityPlotTest : public WriteReportTest {
+ protected:
+  const ScatterPlot& FirstValidityPlot(const std::vector<testing::FixtureRun>& runs) {
+    fs::remove_all(dir_ / "sweep");
+    testing::WriteFixtureSweep(dir_ / "sweep", runs);
+    Write();
+    if (artwork_.scatter_plots.empty()) throw std::runtime_error("no scatter plot was planned");
+    return artwork_.scatter_plots.front().plot;
+  }
+};
+
+TEST_F(ValidityPlotTest, ValidityPlotsOfSeveralAlgorithmsMarkEachWithItsPaletteMarker) {
+  std::vector<testing::FixtureRun> runs = testing::ValidityFixtureRuns();
+  for (testing::FixtureRun run : testing::ValidityFixtureRuns()) {
+    run.algorithm = "gmapping";
+    runs.push_back(run);
+  }
+  const ScatterPlot& plot = FirstValidityPlot(runs);
+  const AlgorithmPalette palette({"icp-slam", "gmapping"});
+  EXPECT_EQ(plot.key_title, "colour: noise setting, marker: algorithm");
+  std::string labels;
+  for (const ScatterSeries& series : plot.series) labels += series.label + ";";
+  // Noise settings in natural order, the algorithms by name within each; colour by setting, marker by algorithm.
+  EXPECT_EQ(labels, "odo-1 · gmapping;odo-1 · icp-slam;odo-2 · gmapping;odo-2 · icp-slam;odo-10 · gmapping;"
+                    "odo-10 · icp-slam;");
+  ASSERT_EQ(plot.series.size(), 6u);
+  EXPECT_EQ(plot.series[0].style.rgb, plot.series[1].style.rgb);
+  EXPECT_EQ(plot.series[4].style.rgb, GradedColour(2, 3));
+  EXPECT_EQ(plot.series[0].style.point_type, palette.StyleOf("gmapping").point_type);
+  EXPECT_EQ(plot.series[1].style.point_type, palette.StyleOf("icp-slam").point_type);
+  EXPECT_NE(plot.series[0].style.point_type, plot.series[1].style.point_type);
+}
+
+TEST_F(ValidityPlotTest, ValidityPlotsOfOneNoiseSettingColourEachAlgorithmAsEverywhere) {
+  std::vector<testing::FixtureRun> runs;
+  for (testing::FixtureRun run : testing::ValidityFixtureRuns()) {
+    if (run.noise != "odo-2") continue;
+    runs.push_back(run);
+    run.algorithm = "gmapping";
+    run.corners = *run.corners + 1.0;
+    runs.push_back(run);
+  }
+  const ScatterPlot& plot = FirstValidityPlot(runs);
+  const AlgorithmPalette palette({"icp-slam", "gmapping"});
+  EXPECT_EQ(plot.key_title, "algorithm (noise setting odo-2)");
+  ASSERT_EQ(plot.series.size(), 2u);
+  EXPECT_EQ(plot.series[0].label, "gmapping");
+  EXPECT_EQ(plot.series[0].style.rgb, palette.StyleOf("gmapping").rgb);
+  EXPECT_EQ(plot.series[0].style.point_type, palette.StyleOf("gmapping").point_type);
+  EXPECT_EQ(plot.series[1].label, "icp-slam");
+  EXPECT_EQ(plot.series[1].style.rgb, palette.StyleOf("icp-slam").rgb);
+}
+
+TEST_F(WriteReportTest, WithoutReferenceDataThereIsNoValidityPage) {
+  Write();
+  ASSERT_TRUE(fs::exists(dir_ / "report/validity.html"));
+  testing::FixtureRun run = testing::MakeRun("x", "s", 0);
+  run.with_reference = false;
+  run.corners = 3.0;
+  fs::remove_all(dir_ / "sweep");
+  testing::WriteFixtureSweep(dir_ / "sweep", {run});
+  Write();
+  EXPECT_FALSE(fs::exists(dir_ / "report/validity.html"));  // the earlier report's page is gone
+  EXPECT_EQ(ReadAll(dir_ / "report/index.html").find("validity.html"), std::string::npos);
   EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
 }
 

@@ -62,16 +62,18 @@ TEST(RosterSweepTest, EveryBuiltAlgorithmBeatsNoisyOdometryOnIntel) {
   if (built.empty()) GTEST_SKIP() << "no roster driver built: scripts/install-slam.sh && scripts/build.sh";
   slamsweep::testing::TempDir dir;
   std::string config =
-      "name: roster\noutput: out\niterations: 1\nseed: 7\nworkers: 2\n"
+      // Three noise draws: one draw decides little (on intel's first 300 scans the baseline's ATE
+      // ranges 1.7 to 4.6 m over these seeds), the mean over three is what is compared.
+      "name: roster\noutput: out\niterations: 3\nseed: 7\nworkers: 2\n"
       "evaluation: {align: se2, stages: 3}\n"
       "algorithms:\n  - name: odometry\n    adapter: odometry\n"
       "  - name: gmapping-misspelt\n    adapter: gmapping\n    parameters: {particels: 30}\n";
   for (const std::string& name : built) config += "  - name: " + name + "\n    adapter: " + name + "\n    timeout_s: 600\n";
   config +=
       "sequences:\n  - {catalog: intel, name: intel-300, max_scans: 300}\n"
-      // 2 % odometry noise: enough to make the odometry drift metres on 300 scans; at 5 % every
-      // algorithm here fails on some noise draws of this sparse log (issue 14's note).
-      "noise:\n  - name: noisy\n    odometry: {alpha1: 0.02, alpha2: 0.001, alpha3: 0.02, alpha4: 0.001}\n";
+      // configs/paper.yaml's noise: 5 % standard deviation on turns and distances, a heading random
+      // walk of 1.1 deg per sqrt(m). It makes the odometry drift metres on 300 scans.
+      "noise:\n  - name: noisy\n    odometry: {alpha1: 0.0025, alpha2: 0.0004, alpha3: 0.0025, alpha4: 0.0001}\n";
   const auto file = slamsweep::testing::WriteFile(dir / "roster.yaml", config);
   const auto run = RunCli({"run", file.string(), "--no-report", "-k"});
   ASSERT_LE(run.exit_code, 1) << run.out << run.err;
@@ -84,14 +86,15 @@ TEST(RosterSweepTest, EveryBuiltAlgorithmBeatsNoisyOdometryOnIntel) {
   for (const std::string& name : built) {
     const nlohmann::json* group = GroupOf(summary, name);
     ASSERT_NE(group, nullptr) << name;
-    ASSERT_EQ(group->at("n_ok").get<int>(), 1) << name << " failed:\n" << summary.dump(1);
+    ASSERT_EQ(group->at("n_ok").get<int>(), 3) << name << " failed:\n" << summary.dump(1);
     const auto& metrics = group->at("metrics");
     const double ate = metrics.at("ape_trans").at("rmse").at("mean").get<double>();
     std::cout << "[ roster ] " << name << " ATE rmse " << ate << " m (odometry " << baseline << " m)\n";
-    if (name == "tinyslam" || name == "vinyslam") {
-      // slam-constructor's Monte-Carlo scan matcher does not beat this odometry on intel's sparse
-      // corrected log (scans about 1 m apart; measured over seeds: 0.7x to 1.4x the odometry's ATE,
-      // issue 14's note). It must still track the robot, not diverge.
+    if (name == "vinyslam") {
+      // slam-constructor's vinySLAM with its upstream properties does not beat this odometry on
+      // intel's sparse corrected log (scans about 1 m apart): measured over these three draws,
+      // 1.4x the odometry's mean ATE (0.4x to 4x per draw), and a wider Monte-Carlo search makes it
+      // worse (issue 14's note). It must still track the robot, not diverge.
       EXPECT_LT(ate, 2.0 * baseline) << name;
     } else {
       EXPECT_LT(ate, baseline) << name;

@@ -154,6 +154,12 @@ TEST(CatalogTest, UnknownKeysAndBadValuesNameFileAndLine) {
   EXPECT_THAT(ErrorOf([] { ParseCatalog("sequences: [\n", "c.yaml"); }), HasSubstr("c.yaml:"));
 }
 
+TEST(CatalogTest, AnEntryMayNameAReferenceMap) {
+  const Catalog catalog = ParseCatalog(std::string(kMinimal) + "    reference_map: ${SHARED}/maps/a.yaml\n", "c.yaml");
+  EXPECT_EQ(catalog.entries.at(0).reference_map_path, "${SHARED}/maps/a.yaml");
+  EXPECT_TRUE(ParseCatalog(kMinimal, "c.yaml").entries.at(0).reference_map_path.empty());
+}
+
 TEST(CatalogTest, MissingFileNamesEntryPathAndWhereToGetIt) {
   const Catalog catalog = ParseCatalog(kMinimal, "c.yaml");
   const std::string error = ErrorOf([&] { LoadCatalogSequence(catalog.entries[0], {{"ROOT", "/nowhere"}}); });

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -40,7 +41,7 @@ std::vector<std::filesystem::path> SweepFiles() {
 }
 
 SweepConfigContext RepositoryContext() {
-  return {kConfigs / "datasets.yaml", {{"SHARED", testing::SharedRoot().string()}}};
+  return {kConfigs / "datasets.yaml", {{"SHARED", testing::SharedRoot().string()}}, {}};
 }
 
 TEST(ShippedConfigsTest, TheQuickstartAndNightlySweepsAreShipped) {
@@ -82,6 +83,24 @@ TEST(ShippedConfigsTest, QuickstartIsTheDocumentedSmallMatrix) {
   for (const AlgorithmConfig& algorithm : config.algorithms) EXPECT_LE(algorithm.timeout_s, 120.0);
   ASSERT_EQ(config.noise.size(), 1u);
   EXPECT_TRUE(config.noise[0].odometry.has_value()) << "iterations must differ";
+}
+
+// The parameter-sweep example (configs/examples/, beside the sweeps above): one algorithm varying one
+// parameter (the Parameters page's curves), one varying two (its heatmaps), all rows comparable.
+TEST(ShippedConfigsTest, TheParameterSweepExampleVariesOneAndTwoParameters) {
+  SLAMSWEEP_REQUIRE_SHARED(shared_intel, "datasets/intel/intel-corrected.log.gz");
+  const SweepConfig config = ReadSweepConfig(kConfigs / "examples/parameter-sweep.yaml", RepositoryContext());
+  std::map<std::string, std::size_t> varying;
+  for (const AlgorithmConfig& algorithm : config.algorithms) {
+    for (const ParameterAxis& axis : algorithm.parameters) varying[algorithm.name] += axis.values.size() > 1 ? 1 : 0;
+  }
+  EXPECT_EQ(varying["icp-slam"], 1u);
+  EXPECT_EQ(varying["icp-slam-grid"], 2u);
+  // (4 + 2 x 2 + 1 odometry) groups x 3 iterations, on one sequence and one noise setting.
+  EXPECT_EQ(ExpandMatrix(config).size(), 27u);
+  ASSERT_EQ(config.noise.size(), 1u);
+  EXPECT_TRUE(config.noise[0].odometry.has_value()) << "intel is corrected: without noise its odometry is the reference";
+  EXPECT_FALSE(config.evaluation.rpe_segments_m) << "segment lengths from the reference path";
 }
 
 }  // namespace

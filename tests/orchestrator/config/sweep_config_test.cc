@@ -331,6 +331,23 @@ sequences:
               HasSubstr("sweep.yaml:4: format: expected carmen, rawlog, rosbag or simulated, got 'bag'"));
 }
 
+TEST_F(SweepConfigTest, AReferenceMapIsResolvedAndMustExist) {
+  testing::WriteFile(dir_ / "data/lab-map.yaml", "image: lab-map.pgm\n");
+  const SweepConfig config = Parse(R"(name: x
+algorithms: [{name: odo, adapter: odometry}]
+sequences:
+  - {name: here, format: carmen, path: data/log.carmen, ground_truth: none, reference_map: data/lab-map.yaml}
+)");
+  EXPECT_EQ(config.sequences[0].entry.reference_map_path, (dir_.path() / "data/lab-map.yaml").string());
+  EXPECT_THAT(ErrorOf(R"(name: x
+algorithms: [{name: odo, adapter: odometry}]
+sequences:
+  - {name: here, format: carmen, path: data/log.carmen, ground_truth: none, reference_map: data/none.yaml}
+)"),
+              HasSubstr(Located(4, 5) + "sequences[0]: sequence 'here': expected its reference map " +
+                        (dir_.path() / "data/none.yaml").string() + ", got no such file"));
+}
+
 TEST_F(SweepConfigTest, AdaptersAndCommandDeclarationsAreChecked) {
   EXPECT_THAT(ErrorOf("name: x\nalgorithms:\n  - {name: a, adapter: gfs_nogui}\nsequences: [lab]\n"),
               HasSubstr(Located(3, 24) +
@@ -479,6 +496,28 @@ TEST_F(SweepConfigTest, NeverFailsOtherwiseOnMalformedInput) {
       ADD_FAILURE() << "'" << text << "': " << typeid(error).name() << ": " << error.what();
     }
   }
+}
+
+TEST_F(SweepConfigTest, SegmentLengthsAreAutoAListOrNone) {
+  EXPECT_FALSE(Parse(kMinimal).evaluation.rpe_segments_m) << "default: 10-50 % of the reference path";
+  EXPECT_FALSE(Parse(std::string(kMinimal) + "evaluation: {rpe_segments_m: auto}\n").evaluation.rpe_segments_m);
+  const SweepConfig listed = Parse(std::string(kMinimal) + "evaluation: {rpe_segments_m: [20, 5, 2.5]}\n");
+  ASSERT_TRUE(listed.evaluation.rpe_segments_m);
+  EXPECT_EQ(*listed.evaluation.rpe_segments_m, (std::vector<double>{2.5, 5, 20}));  // ascending
+  const SweepConfig none = Parse(std::string(kMinimal) + "evaluation: {rpe_segments_m: []}\n");
+  ASSERT_TRUE(none.evaluation.rpe_segments_m);
+  EXPECT_TRUE(none.evaluation.rpe_segments_m->empty());
+  for (const char* bad : {"[5, 5]", "[0]", "[-1, 4]", "[ten]", "sometimes", "{a: 1}"}) {
+    EXPECT_THAT(ErrorOf(std::string(kMinimal) + "evaluation: {rpe_segments_m: " + bad + "}\n"),
+                HasSubstr(Located(6, 30) + "evaluation.rpe_segments_m: expected auto or a list of distinct segment lengths"))
+        << bad;
+  }
+  // Thresholds may name a segment metric by its length.
+  const SweepConfig judged =
+      Parse(std::string(kMinimal) + "thresholds:\n  - {metric: segment_drift_10m, statistic: mean, max: 2}\n");
+  EXPECT_EQ(judged.thresholds.at(0).metric, "segment_drift_10m");
+  EXPECT_THAT(ErrorOf(std::string(kMinimal) + "thresholds:\n  - {metric: segment_drift, max: 2}\n"),
+              HasSubstr("segment_trans|drift|rot_<length>m"));
 }
 
 TEST_F(SweepConfigTest, RegressionBlockIsOptionalStrictAndRangeChecked) {

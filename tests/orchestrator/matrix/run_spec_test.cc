@@ -87,7 +87,7 @@ RunSpec FullSpec() {
   spec.noise.range = evaluator::RangeNoise{0.02, 0.01, 0.005};
   spec.iteration = 2;
   spec.seed = 18446744073709551615ULL;
-  spec.evaluation = EvaluationOptions{"sim3", 2.0, 0.05, 8, 0.1};
+  spec.evaluation = EvaluationOptions{"sim3", 2.0, 0.05, 8, 0.1, true, std::nullopt};
   spec.thresholds = {Threshold{"ape_trans", "rmse", 1.0, std::nullopt}, Threshold{"corners", "value", 50.0, 2.0}};
   return spec;
 }
@@ -112,6 +112,35 @@ TEST(RunSpecTest, RoundTripsEveryFieldThroughText) {
   EXPECT_EQ(back.thresholds[1].min, 2.0);
   // And nothing is lost on the way: writing it again gives the same document.
   EXPECT_EQ(ToJson(back), ToJson(spec));
+}
+
+TEST(RunSpecTest, SegmentLengthsRoundTripAsAutoOrAList) {
+  RunSpec spec = FullSpec();
+  EXPECT_EQ(ToJson(spec)["evaluation"]["rpe_segments_m"], "auto");
+  EXPECT_FALSE(RunSpecFromJson(ToJson(spec)).evaluation.rpe_segments_m);
+  spec.evaluation.rpe_segments_m = std::vector<double>{5.0, 12.5};
+  const json written = ToJson(spec);
+  EXPECT_EQ(written["evaluation"]["rpe_segments_m"], json::array({5.0, 12.5}));
+  EXPECT_EQ(RunSpecFromJson(written).evaluation.rpe_segments_m, spec.evaluation.rpe_segments_m);
+  json bad = written;
+  bad["evaluation"]["rpe_segments_m"] = json::array({5.0, -1.0});
+  EXPECT_THROW(RunSpecFromJson(bad), evaluator::InputError);
+}
+
+// A run scored under other evaluation options is not the same result: a rerun redoes it
+// (sweep/RecordedRunIsReusable). A run.json from before a field existed matches its default.
+TEST(RunSpecTest, SameEvaluationComparesTheScoringOptions) {
+  const RunSpec spec = FullSpec();
+  const json recorded = ToJson(spec)["evaluation"];
+  EXPECT_TRUE(SameEvaluation(recorded, spec.evaluation));
+  EvaluationOptions other = spec.evaluation;
+  other.rpe_segments_m = std::vector<double>{10.0};
+  EXPECT_FALSE(SameEvaluation(recorded, other));
+  json older = recorded;
+  older.erase("rpe_segments_m");
+  EXPECT_TRUE(SameEvaluation(older, spec.evaluation));
+  EXPECT_FALSE(SameEvaluation(older, other));
+  EXPECT_FALSE(SameEvaluation(json("garbage"), spec.evaluation));
 }
 
 TEST(RunSpecTest, WritesTheDesignDocumentFieldNames) {
@@ -205,8 +234,20 @@ TEST(RunSpecTest, IdentityHoldsWhatDecidesTheResultAndNothingElse) {
   other.algorithm.timeout_s = 999;
   other.run_id = "renamed";
   EXPECT_EQ(RunIdentity(other), identity);
+  // The reference map is scoring, not input: naming one changes no run id.
+  other.sequence.entry.reference_map_path = "/data/intel-reference.yaml";
+  EXPECT_EQ(RunIdentity(other), identity);
   other.sequence.max_scans = 301;
   EXPECT_NE(RunIdentity(other), identity);
+}
+
+TEST(RunSpecTest, AReferenceMapIsWrittenOnlyWhenSet) {
+  RunSpec spec = FullSpec();
+  EXPECT_FALSE(ToJson(spec)["sequence"].contains("reference_map"));  // run.json of every earlier sweep stays the same
+  spec.sequence.entry.reference_map_path = "/data/intel-reference.yaml";
+  const json out = ToJson(spec);
+  EXPECT_EQ(out["sequence"]["reference_map"], "/data/intel-reference.yaml");
+  EXPECT_EQ(RunSpecFromJson(out).sequence.entry.reference_map_path, "/data/intel-reference.yaml");
 }
 
 }  // namespace

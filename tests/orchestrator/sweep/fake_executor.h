@@ -26,7 +26,8 @@ class FakeExecutor final : public Executor {
     max_running = std::max(max_running, running_.size());
   }
   std::vector<WorkerEnding> Wait() override {
-    std::vector<WorkerEnding> ended;
+    std::vector<WorkerEnding> ended = std::move(stopped_endings_);
+    stopped_endings_.clear();
     std::vector<Pending> still;
     for (Pending& pending : running_) {
       const std::string what = outcome_(pending.run);
@@ -51,15 +52,26 @@ class FakeExecutor final : public Executor {
     return ended;
   }
   std::vector<WorkerEnding> TerminateAll() override {
-    std::vector<WorkerEnding> ended;
+    std::vector<WorkerEnding> ended = std::move(stopped_endings_);
+    stopped_endings_.clear();
     for (const Pending& pending : running_) ended.push_back({pending.run.run_id, true, "worker: interrupted"});
     running_.clear();
     return ended;
   }
-  std::size_t Running() const override { return running_.size(); }
+  void Stop(const std::string& run_id) override {
+    for (auto it = running_.begin(); it != running_.end(); ++it) {
+      if (it->run.run_id != run_id) continue;
+      stopped.push_back(run_id);
+      running_.erase(it);
+      stopped_endings_.push_back({run_id, true, "worker: stopped by the supervisor"});
+      return;
+    }
+  }
+  std::size_t Running() const override { return running_.size() + stopped_endings_.size(); }
   bool Interrupted() const override { return interrupted_; }
 
   std::vector<std::string> started;
+  std::vector<std::string> stopped;
   std::size_t max_running = 0;
 
  private:
@@ -69,6 +81,7 @@ class FakeExecutor final : public Executor {
   };
   Outcome outcome_;
   std::vector<Pending> running_;
+  std::vector<WorkerEnding> stopped_endings_;
   bool interrupted_ = false;
 };
 

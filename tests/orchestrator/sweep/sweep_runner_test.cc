@@ -104,6 +104,52 @@ TEST(SweepRunner, ASecondSweepSkipsFinishedRunsAndRerunFailedRetriesOnlyThose) {
   EXPECT_EQ(retried.ExitCode(), 0);
 }
 
+// Runs scored under other evaluation options (say other segment lengths) would sit in one group with
+// the new ones but carry other numbers: a rerun redoes them, unless --reuse-stale.
+TEST(SweepRunner, ARunScoredUnderOtherEvaluationOptionsIsRunAgain) {
+  slamsweep::testing::TempDir dir;
+  std::vector<RunSpec> runs = Matrix(2);
+  RecordingStatus status;
+  FakeExecutor first([](const RunSpec&) { return "ok"; });
+  RunSweep(runs, Settings(dir.path()), first, status);
+
+  runs[1].evaluation.rpe_segments_m = std::vector<double>{5.0, 10.0};
+  FakeExecutor again([](const RunSpec&) { return "ok"; });
+  const SweepOutcome repeated = RunSweep(runs, Settings(dir.path()), again, status);
+  EXPECT_THAT(again.started, ElementsAre(runs[1].run_id));
+  EXPECT_EQ(repeated.stale, 1u);
+  EXPECT_EQ(repeated.already_done, 1u);
+
+  runs[1].evaluation.rpe_segments_m = std::vector<double>{20.0};
+  SweepSettings reuse = Settings(dir.path());
+  reuse.reuse_stale = true;
+  FakeExecutor kept([](const RunSpec&) { return "ok"; });
+  const SweepOutcome reused = RunSweep(runs, reuse, kept, status);
+  EXPECT_TRUE(kept.started.empty());
+  EXPECT_EQ(reused.stale, 1u);
+}
+
+// The reference map is scoring too (not part of the run id): naming another one makes the map scores
+// of the finished runs stale, so they are redone.
+TEST(SweepRunner, ARunScoredAgainstAnotherReferenceMapIsRunAgain) {
+  slamsweep::testing::TempDir dir;
+  std::vector<RunSpec> runs = Matrix(2);
+  RecordingStatus status;
+  FakeExecutor first([](const RunSpec&) { return "ok"; });
+  RunSweep(runs, Settings(dir.path()), first, status);
+
+  runs[0].sequence.entry.reference_map_path = "/maps/intel.yaml";
+  FakeExecutor again([](const RunSpec&) { return "ok"; });
+  const SweepOutcome repeated = RunSweep(runs, Settings(dir.path()), again, status);
+  EXPECT_THAT(again.started, ElementsAre(runs[0].run_id));
+  EXPECT_EQ(repeated.stale, 1u);
+
+  FakeExecutor same([](const RunSpec&) { return "ok"; });
+  const SweepOutcome unchanged = RunSweep(runs, Settings(dir.path()), same, status);
+  EXPECT_TRUE(same.started.empty());
+  EXPECT_EQ(unchanged.stale, 0u);
+}
+
 TEST(SweepRunner, AdoptsAResultTheStoreNeverSawAndRedoesAHalfWrittenRun) {
   slamsweep::testing::TempDir dir;
   const auto runs = Matrix(3);

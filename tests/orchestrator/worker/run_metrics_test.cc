@@ -63,6 +63,7 @@ TEST(RunMetricsTest, ApeAndRpeCarryTheirUnitsAndSpecification) {
   EXPECT_EQ(*Find(metrics, "ape_trans", "n"), 11.0);
   EXPECT_NEAR(*Find(metrics, "rpe_trans", "max"), 0.0, 1e-12);
   for (const FlatMetric& metric : metrics.metrics) {
+    if (metric.metric.starts_with("segment_")) continue;  // their units: SegmentRpeAtTenToFiftyPercent below
     if (metric.statistic == "n") {
       EXPECT_EQ(metric.unit, "count");
     } else {
@@ -86,7 +87,7 @@ TEST(RunMetricsTest, AMetricThatCannotBeComputedIsAWarningAndTheOthersStillCount
   inputs.map = &unknown;
   RunMetrics metrics = ComputeRunMetrics({}, inputs);
   EXPECT_TRUE(metrics.metrics.empty());
-  ASSERT_EQ(metrics.warnings.size(), 5u);  // ape x2, rpe x2, paper map
+  ASSERT_EQ(metrics.warnings.size(), 6u);  // ape x2, rpe x2, segment rpe, paper map
   EXPECT_TRUE(metrics.warnings.front().starts_with("ape_trans: ")) << metrics.warnings.front();
   EXPECT_TRUE(metrics.warnings.back().starts_with("paper_map: ")) << metrics.warnings.back();
 
@@ -94,6 +95,86 @@ TEST(RunMetricsTest, AMetricThatCannotBeComputedIsAWarningAndTheOthersStillCount
   metrics = ComputeRunMetrics({}, inputs);
   EXPECT_NEAR(*Find(metrics, "occupied_to_all", "value"), 0.01, 1e-12);
   EXPECT_EQ(*Find(metrics, "unknown_to_all", "value"), 0.0);
+}
+
+/// The estimate `scale` times as far along x as the reference, poses 0 .. last.
+ev::Trajectory Stretched(double scale, int last = 10) {
+  ev::Trajectory line;
+  for (int i = 0; i <= last; ++i) line.Add(i, At(scale * i));
+  return line;
+}
+
+TEST(RunMetricsTest, SegmentRpeAtTenToFiftyPercentOfTheReferencePath) {
+  const ev::Trajectory reference = Line();  // 10 m: segments of 1, 2, 3, 4 and 5 m
+  const ev::Trajectory estimate = Stretched(1.1);
+  MetricInputs inputs;
+  inputs.estimate = &estimate;
+  inputs.reference = &reference;
+  const RunMetrics metrics = ComputeRunMetrics({}, inputs);
+  for (const int length : {1, 2, 3, 4, 5}) {
+    const std::string suffix = "_" + std::to_string(length) + "m";
+    EXPECT_NEAR(*Find(metrics, "segment_drift" + suffix, "mean"), 10.0, 1e-9) << suffix;  // 10 % too long
+    EXPECT_NEAR(*Find(metrics, "segment_trans" + suffix, "max"), 0.1 * length, 1e-9);
+    EXPECT_NEAR(*Find(metrics, "segment_rot" + suffix, "mean"), 0.0, 1e-12);
+    EXPECT_EQ(*Find(metrics, "segment_drift" + suffix, "n"), 11.0 - length);
+    EXPECT_FALSE(Find(metrics, "segment_drift" + suffix, "rmse"));
+  }
+  for (const FlatMetric& metric : metrics.metrics) {
+    if (!metric.metric.starts_with("segment_") || metric.statistic == "n") continue;
+    EXPECT_EQ(metric.unit, metric.metric.starts_with("segment_drift") ? "%"
+                           : metric.metric.starts_with("segment_rot") ? "deg/m"
+                                                                       : "m")
+        << metric.metric;
+  }
+  const nlohmann::json& specification = metrics.details.at("segment_rpe").at("specification");
+  EXPECT_EQ(specification.at("lengths_m"), nlohmann::json::array({1.0, 2.0, 3.0, 4.0, 5.0}));
+  EXPECT_EQ(specification.at("lengths_from"), "reference path");
+  EXPECT_EQ(specification.at("reference_path_m"), 10.0);
+  EXPECT_EQ(specification.at("pairs_from"), "reference");
+  ASSERT_TRUE(metrics.segment_errors);
+  EXPECT_EQ(metrics.segment_errors->size(), 10u + 9u + 8u + 7u + 6u);
+  EXPECT_TRUE(metrics.warnings.empty());
+}
+
+// The lengths come from the whole reference, never from the part an estimate covers: a run that
+// stopped early is scored at the same lengths as the others of its group, and lacks the longest.
+TEST(RunMetricsTest, SegmentLengthsDoNotDependOnTheEstimate) {
+  const ev::Trajectory reference = Line();
+  const ev::Trajectory short_estimate = Stretched(1.0, 4);
+  MetricInputs inputs;
+  inputs.estimate = &short_estimate;
+  inputs.reference = &reference;
+  const RunMetrics metrics = ComputeRunMetrics({}, inputs);
+  EXPECT_EQ(metrics.details.at("segment_rpe").at("specification").at("lengths_m"),
+            nlohmann::json::array({1.0, 2.0, 3.0, 4.0, 5.0}));
+  EXPECT_TRUE(Find(metrics, "segment_drift_4m", "mean"));
+  EXPECT_FALSE(Find(metrics, "segment_drift_5m", "mean"));
+  ASSERT_EQ(metrics.warnings.size(), 1u);
+  EXPECT_NE(metrics.warnings[0].find("no segment of 5 m"), std::string::npos) << metrics.warnings[0];
+}
+
+TEST(RunMetricsTest, ConfiguredSegmentLengthsOrNone) {
+  ev::Trajectory reference;  // 0.5 m steps, so that a 2.5 m segment fits exactly
+  ev::Trajectory estimate;
+  for (int i = 0; i <= 20; ++i) {
+    reference.Add(i, At(0.5 * i));
+    estimate.Add(i, At(1.02 * 0.5 * i));
+  }
+  MetricInputs inputs;
+  inputs.estimate = &estimate;
+  inputs.reference = &reference;
+  EvaluationOptions evaluation;
+  evaluation.rpe_segments_m = std::vector<double>{2.5};
+  RunMetrics metrics = ComputeRunMetrics(evaluation, inputs);
+  ASSERT_TRUE(Find(metrics, "segment_drift_2p5m", "median"));
+  EXPECT_NEAR(*Find(metrics, "segment_drift_2p5m", "median"), 2.0, 1e-9);
+  EXPECT_EQ(metrics.details.at("segment_rpe").at("specification").at("lengths_from"), "evaluation.rpe_segments_m");
+  evaluation.rpe_segments_m = std::vector<double>{};
+  metrics = ComputeRunMetrics(evaluation, inputs);
+  EXPECT_FALSE(metrics.details.contains("segment_rpe"));
+  EXPECT_FALSE(metrics.segment_errors);
+  EXPECT_EQ(SegmentRpeMetricName("drift", 12.0), "segment_drift_12m");
+  EXPECT_EQ(SegmentRpeMetricName("rot", 0.25), "segment_rot_0p25m");
 }
 
 TEST(RunMetricsTest, AnUnknownAlignmentIsAnInputError) {

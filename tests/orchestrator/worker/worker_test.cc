@@ -15,6 +15,7 @@
 
 #include "evaluator/formats/map/image_file.h"
 #include "evaluator/formats/map/map_server_format.h"
+#include "evaluator/formats/trajectory/segment_errors_csv.h"
 #include "evaluator/formats/trajectory/tum_format.h"
 #include "orchestrator/adapters/run_inputs.h"
 #include "tests/orchestrator/worker/run_spec_fixture.h"
@@ -121,6 +122,17 @@ TEST_F(WorkerTest, AProgramThatWritesItsOutputsGivesAnOkRunWithMetrics) {
   EXPECT_EQ(ReadText(run_dir_ / "command.txt"), (dir_ / "program.sh").string() + "\n" + (run_dir_ / "raw").string() + "\n");
   EXPECT_EQ(ev::ReadMapServer(run_dir_ / "map.yaml").width, kMapSide);
   EXPECT_FALSE(fs::exists(run_dir_ / "result.json.tmp"));
+
+  // Every segment of the segment RPE, beside its statistics (the report's boxplots pool them).
+  ASSERT_EQ(outputs["rpe_segments"], "rpe_segments.csv");
+  const std::vector<ev::SegmentErrorRecord> segments = ev::ReadSegmentErrorsCsv(run_dir_ / "rpe_segments.csv");
+  std::size_t listed = 0;
+  for (const nlohmann::json& length : result["metric_details"]["segment_rpe"]["lengths"]) {
+    listed += length["n"].get<std::size_t>();
+  }
+  EXPECT_GT(segments.size(), 0u);
+  EXPECT_EQ(segments.size(), listed);
+  for (const ev::SegmentErrorRecord& segment : segments) EXPECT_NEAR(segment.translation_m, 0.0, 1e-9);  // a shift only
 }
 
 TEST_F(WorkerTest, WithoutADeclaredMapTheMapIsRenderedAndStageMapsComeFromTheGlob) {
@@ -289,6 +301,41 @@ TEST_F(WorkerTest, EveryRunWithAReferenceIsScoredAgainstTheReferenceMap) {
   EXPECT_GT(Metric(noisy, "map_chamfer", "value"), clean_chamfer);
   EXPECT_LT(Metric(noisy, "map_f1", "value"), clean_f1);
   EXPECT_LT(Metric(noisy, "map_iou_occupied", "value"), Metric(clean, "map_iou_occupied", "value"));
+}
+
+// The reference map is truth: while the program runs it must not exist anywhere the program is
+// pointed at (input/, raw/, its environment), nor already be rendered into the sweep folder.
+// The program records what it can see; the map it is later scored against must not be in there.
+TEST_F(WorkerTest, TheReferenceMapIsOutOfTheProgramsReachUntilItHasExited) {
+  UseProgram("{ ls -la \"$1/../input\" \"$1\" \"$1/..\"; env; "
+             "[ -e '" + (dir_ / "reference_maps").string() + "' ] && echo CACHE-EXISTS; "
+             "cat \"$1\"/../input/* \"$1\"/* 2>/dev/null | cksum; } > seen.txt 2>&1; " +
+             std::string(kWriteOutputs));
+  const nlohmann::json result = Run();
+  ASSERT_EQ(result["status"], "ok") << result.dump(2);
+  EXPECT_FALSE(std::isnan(Metric(result, "map_chamfer", "value"))) << result["warnings"];
+  const nlohmann::json& reference_map = result["metric_details"]["map_compare"]["reference_map"];
+  ASSERT_EQ(reference_map["source"], "rendered") << reference_map;
+  const fs::path yaml = reference_map["file"].get<std::string>();
+  fs::path pgm = yaml;
+  pgm.replace_extension(".pgm");
+  // Rendered after the program, outside the run folder.
+  EXPECT_TRUE(fs::exists(pgm));
+  EXPECT_TRUE(yaml.lexically_relative(run_dir_).string().starts_with("..")) << yaml << " is inside the run folder";
+  const std::string seen = ReadText(dir_ / "seen.txt");
+  EXPECT_EQ(seen.find("CACHE-EXISTS"), std::string::npos) << "the reference map existed while the program ran";
+  EXPECT_EQ(seen.find("reference_map"), std::string::npos) << seen;
+  EXPECT_EQ(seen.find(yaml.stem().string()), std::string::npos) << seen;
+  EXPECT_EQ(seen.find("reference.tum"), std::string::npos) << seen;
+  // No file the program could read holds the map's bytes.
+  const std::string map_bytes = ReadText(pgm);
+  for (const fs::path& folder : {run_dir_ / "input", run_dir_ / "raw"}) {
+    for (const auto& item : fs::recursive_directory_iterator(folder)) {
+      if (item.is_regular_file()) {
+        EXPECT_NE(ReadText(item.path()), map_bytes) << item.path();
+      }
+    }
+  }
 }
 
 TEST_F(WorkerTest, InterruptionStopsTheProgramAndLeavesNoResult) {

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "report/plots/gnuplot_process.h"
+#include "tests/report/plots_images/plot_pixels.h"
 #include "tests/support/shared_data.h"
 
 namespace slamsweep::report {
@@ -15,21 +16,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-/// Skips the test when gnuplot is not installed (fails under CI, where it must be), naming it.
-#define REQUIRE_GNUPLOT()                                                                        \
-  if (!std::filesystem::exists("/usr/bin/gnuplot")) {                                            \
-    if (::slamsweep::testing::RunningInCi()) FAIL() << "/usr/bin/gnuplot missing (gnuplot-nox)"; \
-    GTEST_SKIP() << "/usr/bin/gnuplot missing: install gnuplot-nox";                             \
-  }
-
-/// Pixels of exactly this colour (B, G, R) in the image.
-int CountColour(const cv::Mat& bgr, cv::Vec3b colour) {
-  int count = 0;
-  for (int r = 0; r < bgr.rows; ++r) {
-    for (int c = 0; c < bgr.cols; ++c) count += bgr.at<cv::Vec3b>(r, c) == colour ? 1 : 0;
-  }
-  return count;
-}
+using slamsweep::testing::CountColour;
 
 cv::Mat ReadPng(const std::filesystem::path& path) {
   const cv::Mat image = cv::imread(path.string(), cv::IMREAD_COLOR);
@@ -41,7 +28,8 @@ MetricPlot TwoAlgorithms() {
   MetricPlot plot;
   plot.title = "ATE rmse (se2), telecom";
   plot.y_label = "m";
-  plot.series = {{"icp-slam", {0.12, 0.15, 0.11, 0.2}}, {"rbpf-slam", {0.4, 0.35, 0.5}}};
+  // Each series in its algorithm's style (AlgorithmPalette): blue circles and vermillion squares.
+  plot.series = {{"icp-slam", {0.12, 0.15, 0.11, 0.2}, {0x0072B2, 7, 0}}, {"rbpf-slam", {0.4, 0.35, 0.5}, {0xD55E00, 5, 0}}};
   return plot;
 }
 
@@ -55,9 +43,9 @@ TEST(WriteMetricPlotsTest, WritesEveryPlotAsPngInOneCall) {
     const cv::Mat image = ReadPng(job.png);
     EXPECT_EQ(image.cols, 800);
     EXPECT_EQ(image.rows, 480);
-    // The two algorithms' colours (Okabe-Ito blue #0072B2 and vermillion #D55E00) are drawn.
-    EXPECT_GT(CountColour(image, {0xB2, 0x72, 0x00}), 20);
-    EXPECT_GT(CountColour(image, {0x00, 0x5E, 0xD5}), 20);
+    // The two algorithms' colours (their styles: Okabe-Ito blue #0072B2 and vermillion #D55E00) are drawn.
+    EXPECT_GT(CountColour(image, 0x0072B2), 20);
+    EXPECT_GT(CountColour(image, 0xD55E00), 20);
   }
 }
 
@@ -83,12 +71,12 @@ TEST(WriteMetricPlotsTest, LogAxisWithZeroValuesDrawsThemAtTheFloor) {
   testing::TempDir dir;
   MetricPlot plot;
   plot.title = "enclosed areas";
-  plot.series = {{"a", {0.0, 0.0, 3.0}}, {"b", {0.0}}, {"c", {}}};
+  plot.series = {{"a", {0.0, 0.0, 3.0}}, {"b", {0.0}, {0xD55E00, 5, 0}}, {"c", {}}};
   const MetricPlotJob job{plot, dir / "zeros.png"};
   WriteMetricPlots({job});
   const cv::Mat image = ReadPng(job.png);
   // Series b (vermillion #D55E00) has a single zero: its point and mean bar are drawn at the floor.
-  EXPECT_GT(CountColour(image, {0x00, 0x5E, 0xD5}), 20);
+  EXPECT_GT(CountColour(image, 0xD55E00), 20);
 }
 
 TEST(WriteMetricPlotsTest, AllZeroOrEmptyPlotsStillRender) {

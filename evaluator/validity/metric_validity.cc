@@ -1,0 +1,219 @@
+#include "evaluator/validity/metric_validity.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+#include <tuple>
+
+namespace slamsweep::evaluator {
+namespace {
+
+constexpr std::array<ValidityQuantity, 8> kCandidates = {{
+    {"occupied_to_free_unknown.value", "Occupied proportion (occupied / free+unknown)", "ratio", "paper map metric"},
+    {"occupied_to_all.value", "Occupied / all cells", "ratio", "paper map metric"},
+    {"unknown_to_all.value", "Unknown / all cells", "ratio", "paper map metric"},
+    {"corners.value", "Corners", "count", "paper map metric"},
+    {"enclosed_areas.value", "Enclosed areas", "count", "paper map metric"},
+    {"wall_s", "Wall time", "s", "run resource"},
+    {"cpu_s", "CPU time", "s", "run resource"},
+    {"peak_rss_kb", "Peak memory (RSS)", "kB", "run resource"},
+}};
+
+constexpr std::array<ValidityQuantity, 3> kTargets = {{
+    {"ape_trans.rmse", "ATE translation RMSE", "m", "error against the reference"},
+    {"relations_trans.mean", "Relations translation error (mean)", "m", "error against the reference"},
+    {"map_chamfer.value", "Map vs reference: Chamfer distance", "m", "error against the reference"},
+}};
+
+std::optional<double> ValueOf(const ValidityRun& run, std::string_view key) {
+  const auto it = run.values.find(std::string(key));
+  if (it == run.values.end() || !std::isfinite(it->second)) return std::nullopt;
+  return it->second;
+}
+
+bool Usable(const ValidityRun& run) { return run.ok && !run.odometry_is_reference; }
+
+ValidityVerdict VerdictOf(const ValidityCorrelation& correlation) {
+  if (!correlation.rho) return ValidityVerdict::kNoVariation;
+  if (!correlation.interval) return ValidityVerdict::kUnclear;
+  if (correlation.interval->low > 0.0) return ValidityVerdict::kTracksError;
+  if (correlation.interval->high < 0.0) return ValidityVerdict::kOpposite;
+  return ValidityVerdict::kUnclear;
+}
+
+/// The correlation of one pair over `points` (all of one scope), ranked within strata.
+ValidityCorrelation Correlate(const std::vector<ValidityPoint>& points, ValidityPooling pooling, bool all_sequences,
+                              const ValidityOptions& options) {
+  // Strata: the sequence (over all sequences, across noise), the sequence x noise (within noise),
+  // or nothing (one sequence, across noise). Ids follow the sorted stratum names.
+  std::map<std::pair<std::string, std::string>, std::size_t> stratum_ids;
+  const auto key_of = [&](const ValidityPoint& point) {
+    return std::pair{all_sequences || pooling == ValidityPooling::kWithinNoise ? point.sequence : std::string(),
+                     pooling == ValidityPooling::kWithinNoise ? point.noise : std::string()};
+  };
+  for (const ValidityPoint& point : points) stratum_ids.emplace(key_of(point), 0);
+  std::size_t next = 0;
+  for (auto& [key, id] : stratum_ids) id = next++;
+  std::vector<PairedStratum> strata(stratum_ids.size());
+  for (const ValidityPoint& point : points) {
+    PairedStratum& stratum = strata[stratum_ids.at(key_of(point))];
+    stratum.x.push_back(point.x);
+    stratum.y.push_back(point.y);
+  }
+  ValidityCorrelation correlation;
+  correlation.pooling = pooling;
+  for (const PairedStratum& stratum : strata) {
+    if (stratum.x.size() < 2) continue;
+    correlation.runs += stratum.x.size();
+    ++correlation.strata;
+  }
+  if (correlation.runs < options.min_runs) {
+    correlation.verdict = ValidityVerdict::kTooFewRuns;
+    return correlation;
+  }
+  correlation.rho = PooledRankCorrelation(strata);
+  if (correlation.rho) correlation.interval = BootstrapPooledRankCorrelation(strata, options.bootstrap);
+  correlation.verdict = VerdictOf(correlation);
+  return correlation;
+}
+
+nlohmann::json OptionalNumber(const std::optional<double>& value) { return value ? nlohmann::json(*value) : nlohmann::json(); }
+
+nlohmann::json QuantitiesJson(std::span<const ValidityQuantity> quantities) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const ValidityQuantity& q : quantities) {
+    out.push_back({{"key", q.key}, {"title", q.title}, {"unit", q.unit}, {"kind", q.kind}});
+  }
+  return out;
+}
+
+}  // namespace
+
+std::span<const ValidityQuantity> ValidityCandidates() { return kCandidates; }
+std::span<const ValidityQuantity> ValidityTargets() { return kTargets; }
+
+const ValidityQuantity* FindValidityQuantity(std::string_view key) {
+  for (std::span<const ValidityQuantity> list : {ValidityCandidates(), ValidityTargets()}) {
+    for (const ValidityQuantity& quantity : list) {
+      if (quantity.key == key) return &quantity;
+    }
+  }
+  return nullptr;
+}
+
+std::string_view ValidityPoolingName(ValidityPooling pooling) {
+  return pooling == ValidityPooling::kAcrossNoise ? "across_noise" : "within_noise";
+}
+
+std::string_view ValidityVerdictName(ValidityVerdict verdict) {
+  switch (verdict) {
+    case ValidityVerdict::kTooFewRuns:
+      return "too few runs";
+    case ValidityVerdict::kNoVariation:
+      return "no variation";
+    case ValidityVerdict::kTracksError:
+      return "tracks error";
+    case ValidityVerdict::kOpposite:
+      return "opposite";
+    case ValidityVerdict::kUnclear:
+      return "unclear";
+  }
+  return "unclear";
+}
+
+const ValidityCorrelation* ValidityStudy::Find(std::string_view candidate, std::string_view target,
+                                               std::string_view sequence, ValidityPooling pooling) const {
+  for (const ValidityCorrelation& c : correlations) {
+    if (c.candidate == candidate && c.target == target && c.sequence == sequence && c.pooling == pooling) return &c;
+  }
+  return nullptr;
+}
+
+std::vector<ValidityPoint> ValidityPoints(std::span<const ValidityRun> runs, std::string_view candidate,
+                                          std::string_view target, std::string_view sequence) {
+  std::vector<ValidityPoint> points;
+  for (const ValidityRun& run : runs) {
+    if (!Usable(run) || (!sequence.empty() && run.sequence != sequence)) continue;
+    const std::optional<double> x = ValueOf(run, candidate), y = ValueOf(run, target);
+    if (x && y) points.push_back({*x, *y, run.run_id, run.sequence, run.noise, run.algorithm});
+  }
+  std::sort(points.begin(), points.end(), [](const ValidityPoint& a, const ValidityPoint& b) { return a.run_id < b.run_id; });
+  return points;
+}
+
+ValidityStudy ComputeValidityStudy(std::vector<ValidityRun> runs, const ValidityOptions& options) {
+  std::sort(runs.begin(), runs.end(), [](const ValidityRun& a, const ValidityRun& b) { return a.run_id < b.run_id; });
+  ValidityStudy study;
+  study.options = options;
+  std::set<std::string> sequences;
+  std::map<std::string_view, std::set<std::string>> sequences_of_target;
+  for (const ValidityRun& run : runs) {
+    if (run.ok && run.odometry_is_reference) ++study.runs_odometry_is_reference;
+    if (!Usable(run)) continue;
+    ++study.runs_used;
+    for (const ValidityQuantity& target : kTargets) {
+      if (ValueOf(run, target.key)) {
+        sequences.insert(run.sequence);
+        sequences_of_target[target.key].insert(run.sequence);
+      }
+    }
+  }
+  study.sequences.assign(sequences.begin(), sequences.end());
+  for (const ValidityQuantity& target : kTargets) {
+    const auto present = sequences_of_target.find(target.key);
+    if (present == sequences_of_target.end()) continue;
+    // The sequences with this error (relations exist for few), then all of them together.
+    std::vector<std::string> scopes(present->second.begin(), present->second.end());
+    if (scopes.size() >= 2) scopes.push_back("");
+    for (const ValidityQuantity& candidate : kCandidates) {
+      for (const std::string& sequence : scopes) {
+        const std::vector<ValidityPoint> points = ValidityPoints(runs, candidate.key, target.key, sequence);
+        for (ValidityPooling pooling : {ValidityPooling::kAcrossNoise, ValidityPooling::kWithinNoise}) {
+          ValidityCorrelation correlation = Correlate(points, pooling, sequence.empty(), options);
+          correlation.candidate = candidate.key;
+          correlation.target = target.key;
+          correlation.sequence = sequence;
+          study.correlations.push_back(std::move(correlation));
+        }
+      }
+    }
+  }
+  return study;
+}
+
+nlohmann::json ToJson(const ValidityStudy& study) {
+  nlohmann::json correlations = nlohmann::json::array();
+  for (const ValidityCorrelation& c : study.correlations) {
+    correlations.push_back({{"candidate", c.candidate},
+                            {"target", c.target},
+                            {"sequence", c.sequence.empty() ? nlohmann::json() : nlohmann::json(c.sequence)},
+                            {"pooling", ValidityPoolingName(c.pooling)},
+                            {"runs", c.runs},
+                            {"strata", c.strata},
+                            {"spearman_rho", OptionalNumber(c.rho)},
+                            {"ci_low", c.interval ? nlohmann::json(c.interval->low) : nlohmann::json()},
+                            {"ci_high", c.interval ? nlohmann::json(c.interval->high) : nlohmann::json()},
+                            {"resamples_defined", c.interval ? nlohmann::json(c.interval->defined) : nlohmann::json()},
+                            {"verdict", ValidityVerdictName(c.verdict)}});
+  }
+  return {{"method",
+           {{"statistic", "Spearman's rank correlation (average ranks for ties); over several strata, the Pearson "
+                          "correlation of within-stratum ranks centred on the stratum's mean rank and divided by its size"},
+            {"interval", "percentile bootstrap, resampling runs with replacement within each stratum"},
+            {"confidence", study.options.bootstrap.confidence},
+            {"resamples", study.options.bootstrap.resamples},
+            {"seed", study.options.bootstrap.seed},
+            {"min_runs", study.options.min_runs},
+            {"runs", "successful runs whose odometry was not the reference"},
+            {"across_noise", "strata: none for one sequence, the sequence for all sequences"},
+            {"within_noise", "strata: sequence x noise setting"}}},
+          {"candidates", QuantitiesJson(ValidityCandidates())},
+          {"targets", QuantitiesJson(ValidityTargets())},
+          {"sequences", study.sequences},
+          {"runs_used", study.runs_used},
+          {"runs_odometry_is_reference", study.runs_odometry_is_reference},
+          {"correlations", std::move(correlations)}};
+}
+
+}  // namespace slamsweep::evaluator

@@ -1,0 +1,92 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "orchestrator/store/sqlite_db.h"
+
+namespace slamsweep::orchestrator::service {
+
+/// A run's place in the service's queue. "queued" and "running" are unfinished; "ok" and "failed"
+/// were run for this sweep; "reused" took another sweep's identical ok run (or this sweep's own
+/// result directory's); "cancelled" never ran because its sweep was cancelled.
+inline constexpr const char* kRunStates[] = {"queued", "running", "ok", "failed", "reused", "cancelled"};
+
+/// A sweep as submitted and as it stands. States: "queued" (nothing started yet), "running",
+/// "ok" / "failed" (every run finished; failed when one failed), "cancelled".
+struct QueuedSweep {
+  std::int64_t id = 0;
+  std::string name;
+  /// The file name the submitter gave (messages name it) and the submitted YAML text.
+  std::string config_name;
+  std::string config_text;
+  std::string submitter;
+  int priority = 0;
+  std::string state = "queued";
+  /// The sweep's result directory (the layout of `slamsweep run`'s output directory).
+  std::filesystem::path result_dir;
+  std::string submitted_at, started_at, finished_at;
+  bool cancel_requested = false;
+  /// Why a sweep could not go on (its result directory could not be opened, ...); empty normally.
+  std::string message;
+};
+
+/// One run of a queued sweep.
+struct QueuedRun {
+  std::int64_t sweep_id = 0;
+  std::string run_id;
+  /// Position in the sweep's start order.
+  std::int64_t position = 0;
+  std::string state = "queued";
+  /// How many times a worker was started for it.
+  int attempt = 0;
+  /// The sweep whose identical ok run this one reuses (reused runs only).
+  std::optional<std::int64_t> reused_from;
+  std::optional<double> wall_s;
+  std::string reason;
+  /// run.json as planned at submission (RunSpec).
+  nlohmann::json spec;
+};
+
+/// DATA/queue.sqlite: every submitted sweep (its YAML text, submitter, priority, state) and every run
+/// (state, attempt). The durable half of the service: after a kill -9 the server rebuilds its queue
+/// from here (runs found "running" are queued again). WAL journal, one immediate transaction per
+/// change, so a kill at any moment leaves the old or the new state. Not thread-safe: one user at a time.
+class QueueStore {
+ public:
+  static QueueStore Open(const std::filesystem::path& file);
+
+  /// Adds a sweep and its runs (state queued) in one transaction and returns it with its new id and
+  /// its result directory `sweeps_root`/<id>. `runs` are run.json objects in start order.
+  QueuedSweep AddSweep(QueuedSweep sweep, const std::vector<nlohmann::json>& runs,
+                       const std::filesystem::path& sweeps_root);
+
+  std::vector<QueuedSweep> Sweeps() const;
+  std::optional<QueuedSweep> Sweep(std::int64_t id) const;
+  std::vector<QueuedRun> Runs(std::int64_t sweep_id) const;
+
+  void SetSweepState(std::int64_t id, const std::string& state, const std::string& message = {});
+  void RequestCancel(std::int64_t id);
+
+  /// Records a run's new state; `attempt_started` counts one more attempt (a worker was started).
+  void SetRunState(std::int64_t sweep_id, const std::string& run_id, const std::string& state,
+                   bool attempt_started = false, std::optional<double> wall_s = std::nullopt,
+                   const std::string& reason = {}, std::optional<std::int64_t> reused_from = std::nullopt);
+
+  /// After a restart: every run left "running" by a server that died is queued again. Returns how many.
+  std::size_t RequeueRunning();
+
+  /// Sweeps (other than `except_sweep`) holding `run_id` as ok or reused, newest first.
+  std::vector<std::int64_t> SweepsWithOkRun(const std::string& run_id, std::int64_t except_sweep) const;
+
+ private:
+  explicit QueueStore(SqliteDb db) : db_(std::move(db)) {}
+  SqliteDb db_;
+};
+
+}  // namespace slamsweep::orchestrator::service

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "orchestrator/matrix/run_spec.h"
+
+namespace slamsweep::orchestrator::service {
+
+/// The result.json of `run`'s folder in another sweep's result directory when it may stand for `run`:
+/// the result is ok, and its run.json has the same run id (the same inputs, seed and algorithm), the
+/// same build identity (slamsweep revision and program digests: the rerun-skip check's rule) and the
+/// same evaluation options (which are not part of the run id but change the scores). nullopt otherwise.
+std::optional<nlohmann::json> ReusableResult(const RunSpec& run, const std::filesystem::path& source_result_dir);
+
+/// Makes `run`'s folder in `target_result_dir` a copy of its folder in `source_result_dir`: every file
+/// hard-linked (copied when the file systems differ), then run.json written anew for `run` (its sweep
+/// name and thresholds are the target sweep's). Results written later replace files, never edit them
+/// in place, so the two sweeps' folders stay independent. A partial copy is removed on failure.
+void LinkRunFolder(const RunSpec& run, const std::filesystem::path& source_result_dir,
+                   const std::filesystem::path& target_result_dir);
+
+}  // namespace slamsweep::orchestrator::service

@@ -1,0 +1,111 @@
+#include "orchestrator/sweep/sweep_steps.h"
+
+#include <unistd.h>
+
+#include "orchestrator/store/csv_tables.h"
+#include "orchestrator/store/junit_xml.h"
+#include "orchestrator/store/summary_json.h"
+#include "orchestrator/sweep/run_folder.h"
+
+namespace slamsweep::orchestrator {
+namespace {
+
+std::string HostName() {
+  char name[256] = {};
+  if (::gethostname(name, sizeof name - 1) != 0) return "unknown";
+  return name;
+}
+
+}  // namespace
+
+std::vector<const RunSpec*> RunsStillToDo(const std::vector<RunSpec>& runs, const SweepSettings& settings,
+                                          ResultsStore& store, std::int64_t sweep_id, SweepOutcome& outcome) {
+  std::vector<const RunSpec*> to_run;
+  for (const RunSpec& run : runs) {
+    bool stale = false;
+    const std::optional<StoredRun> recorded = store.FindRun(run.run_id);
+    if (recorded) {
+      const bool reusable = RecordedRunIsReusable(run, recorded->status, recorded->spec, settings, stale);
+      outcome.stale += stale ? 1 : 0;
+      if (reusable) {
+        ++outcome.already_done;
+        continue;
+      }
+    } else {
+      // A result.json the store never saw: the orchestrator died between the worker's rename and
+      // the store's commit. Adopting it keeps "kill -9, run again" from repeating finished work.
+      const std::filesystem::path run_dir = RunFolder(settings.output_dir, run.run_id);
+      StoredResult stored = ReadRunResult(run_dir);
+      std::optional<nlohmann::json> stored_spec = stored.result ? ReadRunSpecJson(run_dir) : std::nullopt;
+      if (stored.result && stored_spec && stored.result->value("run_id", "") == run.run_id &&
+          RecordedRunIsReusable(run, stored.result->value("status", "failed"), *stored_spec, settings, stale)) {
+        outcome.stale += stale ? 1 : 0;
+        store.RecordRun(sweep_id, *stored_spec, *stored.result, std::filesystem::path("runs") / run.run_id);
+        ++outcome.already_done;
+        continue;
+      }
+      outcome.stale += stale ? 1 : 0;
+    }
+    to_run.push_back(&run);
+  }
+  return to_run;
+}
+
+std::filesystem::path PrepareRunFolder(const std::filesystem::path& output_dir, const RunSpec& run) {
+  const std::filesystem::path run_dir = RunFolder(output_dir, run.run_id);
+  RemovePartialRun(run_dir);
+  std::filesystem::create_directories(run_dir);
+  WriteJsonAtomically(run_dir / "run.json", ToJson(run));
+  return run_dir;
+}
+
+std::optional<FinishedRun> RecordWorkerEnding(const RunSpec& run, const WorkerEnding& ending,
+                                              const std::filesystem::path& output_dir, ResultsStore& store,
+                                              std::int64_t sweep_id) {
+  const std::filesystem::path run_dir = RunFolder(output_dir, run.run_id);
+  StoredResult stored = ReadRunResult(run_dir);
+  if (!stored.result && ending.interrupted) {
+    // Interrupted before its result existed: nothing half-done may look like a result.
+    RemovePartialRun(run_dir);
+    return std::nullopt;
+  }
+  nlohmann::json result = stored.result ? std::move(*stored.result)
+                                        : MissingResult(run, ending.reason + " (" + stored.problem + ")", false);
+  if (!stored.result) WriteJsonAtomically(run_dir / "result.json", result);
+  store.RecordRun(sweep_id, ToJson(run), result, std::filesystem::path("runs") / run.run_id);
+  FinishedRun finished;
+  finished.run_id = run.run_id;
+  finished.ok = result.value("status", "failed") == "ok";
+  if (!finished.ok) {
+    finished.reason = result.value("failure_kind", std::string("failed")) + ": " + result.value("reason", "");
+  }
+  if (result.contains("wall_s") && result["wall_s"].is_number()) finished.wall_s = result["wall_s"].get<double>();
+  return finished;
+}
+
+std::size_t WriteSweepOutputs(const ResultsStore& store, const std::set<std::string>& matrix_ids,
+                              const std::filesystem::path& output_dir) {
+  std::vector<StoredRun> stored_runs;
+  for (StoredRun& stored : store.Runs()) {
+    if (matrix_ids.count(stored.run_id) > 0) stored_runs.push_back(std::move(stored));
+  }
+  std::size_t failed = 0;
+  for (const StoredRun& stored : stored_runs) failed += stored.status == "ok" ? 0 : 1;
+  WriteSummaryJson(stored_runs, output_dir / "summary.json");
+  WriteCsvTables(stored_runs, output_dir);
+  WriteJUnit(stored_runs, output_dir / "junit.xml");
+  return failed;
+}
+
+SweepInfo SweepInfoFor(const SweepSettings& settings) {
+  SweepInfo info;
+  info.name = settings.name;
+  info.config_path = settings.config_path;
+  info.config_sha = settings.config_sha;
+  info.slamsweep_version = SLAMSWEEP_VERSION;
+  info.host = HostName();
+  info.command_line = settings.command_line;
+  return info;
+}
+
+}  // namespace slamsweep::orchestrator

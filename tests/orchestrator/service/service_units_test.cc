@@ -1,0 +1,198 @@
+// The service's parts without processes: token files, the constant-time check, loopback addresses,
+// the pages' escaping, the metrics text (read back by the Prometheus project's own parser), the queue.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+
+#include "orchestrator/config/input_policy.h"
+#include "orchestrator/service/auth.h"
+#include "orchestrator/service/leftover_workers.h"
+#include "orchestrator/service/queue_store.h"
+#include "orchestrator/service/service_metrics.h"
+#include "orchestrator/service/status_page.h"
+#include "tests/support/shared_data.h"
+
+namespace slamsweep::orchestrator::service {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+TEST(TokenFileTest, OnlyAPrivateFileOfTheServersUserIsAccepted) {
+  testing::TempDir dir;
+  const fs::path file = testing::WriteFile(dir / "token", "  tok-123\n");
+  fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write, fs::perm_options::replace);
+  EXPECT_EQ(ReadTokenFile(file), "tok-123");
+  fs::permissions(file, fs::perms::owner_read, fs::perm_options::replace);
+  EXPECT_EQ(ReadTokenFile(file), "tok-123");
+  for (const fs::perms extra : {fs::perms::group_read, fs::perms::others_read, fs::perms::others_write}) {
+    fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write | extra, fs::perm_options::replace);
+    EXPECT_THROW(ReadTokenFile(file), evaluator::InputError);
+  }
+  const fs::path empty = testing::WriteFile(dir / "empty", "\n");
+  fs::permissions(empty, fs::perms::owner_read | fs::perms::owner_write, fs::perm_options::replace);
+  EXPECT_THROW(ReadTokenFile(empty), evaluator::InputError);
+  EXPECT_THROW(ReadTokenFile(dir / "missing"), evaluator::InputError);
+  EXPECT_THROW(ReadTokenFile(dir.path()), evaluator::InputError);
+}
+
+TEST(BearerAuthTest, AcceptsOnlyTheExactToken) {
+  const BearerAuth auth(std::string("tok-123"));
+  EXPECT_EQ(auth.Check(std::string_view("Bearer tok-123")), BearerAuth::Verdict::kAllowed);
+  EXPECT_EQ(auth.Check(std::nullopt), BearerAuth::Verdict::kMissing);
+  EXPECT_EQ(auth.Check(std::string_view("Basic dG9rLTEyMw==")), BearerAuth::Verdict::kMissing);
+  EXPECT_EQ(auth.Check(std::string_view("Bearer ")), BearerAuth::Verdict::kMissing);
+  for (const char* wrong : {"Bearer tok-12", "Bearer tok-1234", "Bearer TOK-123", "Bearer xok-123", "Bearer tok-12\x00"}) {
+    EXPECT_EQ(auth.Check(std::string_view(wrong)), BearerAuth::Verdict::kWrong) << wrong;
+  }
+  const BearerAuth open(std::nullopt);
+  EXPECT_EQ(open.Check(std::nullopt), BearerAuth::Verdict::kAllowed);
+  EXPECT_FALSE(open.enabled());
+}
+
+TEST(LoopbackTest, OnlyThisMachinesAddresses) {
+  for (const char* host : {"127.0.0.1", "127.1.2.3", "::1", "localhost"}) EXPECT_TRUE(IsLoopbackAddress(host)) << host;
+  for (const char* host : {"0.0.0.0", "10.0.0.1", "::", "128.0.0.1", "example.org", "::ffff:10.0.0.1"}) {
+    EXPECT_FALSE(IsLoopbackAddress(host)) << host;
+  }
+}
+
+TEST(InputPolicyTest, PathsAreCheckedAfterResolvingDotsAndLinks) {
+  testing::TempDir dir;
+  fs::create_directories(dir / "data" / "sets");
+  fs::create_directories(dir / "data" / "sets-private");
+  fs::create_symlink("/etc", dir / "data" / "sets" / "escape");
+  InputPolicy policy;
+  policy.allowed_roots = {dir / "data" / "sets"};
+  EXPECT_TRUE(IsAllowedPath(policy, dir / "data" / "sets" / "a.log"));
+  EXPECT_TRUE(IsAllowedPath(policy, dir / "data" / "sets" / "sub" / ".." / "a.log"));
+  EXPECT_FALSE(IsAllowedPath(policy, dir / "data" / "sets" / ".." / "sets-private" / "a.log"));
+  EXPECT_FALSE(IsAllowedPath(policy, dir / "data" / "sets-private" / "a.log")) << "a sibling sharing the prefix";
+  EXPECT_FALSE(IsAllowedPath(policy, dir / "data" / "sets" / "escape" / "passwd")) << "a link out of the root";
+  EXPECT_FALSE(IsAllowedPath(policy, "/etc/passwd"));
+  EXPECT_TRUE(IsAllowedPath(InputPolicy{}, "/etc/passwd")) << "no roots: the command line's trust";
+}
+
+TEST(StatusPageTest, SubmittedTextIsEscapedEverywhere) {
+  EXPECT_EQ(HtmlEscape("<a href=\"x\">'&'</a>"), "&lt;a href=&quot;x&quot;&gt;&#39;&amp;&#39;&lt;/a&gt;");
+  SweepView view;
+  view.sweep.id = 7;
+  view.sweep.name = "n<i>";
+  view.sweep.submitter = "\"><img src=x>";
+  view.sweep.config_name = "<c>.yaml";
+  view.sweep.message = "<m>";
+  view.sweep.state = "running";
+  const std::string index = RenderIndexPage({view}, QueueGauges{});
+  const std::string page = RenderSweepPage(view, {RunView{"r<1>", "failed", 1, std::nullopt, 1.5, "<reason>"}});
+  for (const std::string& html : {index, page}) {
+    EXPECT_EQ(html.find("<i>"), std::string::npos);
+    EXPECT_EQ(html.find("<img"), std::string::npos);
+    EXPECT_EQ(html.find("style="), std::string::npos) << "no inline style";
+    EXPECT_EQ(html.find("<script"), std::string::npos);
+  }
+  EXPECT_THAT(page, HasSubstr("&lt;reason&gt;"));
+  EXPECT_THAT(index, HasSubstr("<meta http-equiv=\"refresh\""));
+  EXPECT_THAT(index, HasSubstr("href=\"/static/service.css\""));
+}
+
+TEST(ServiceMetricsTest, TheTextIsValidPrometheusExpositionFormat) {
+  ServiceMetrics metrics;
+  metrics.RunFinished("ok", 3.0, true);
+  metrics.RunFinished("ok", 90.0, true);
+  metrics.RunFinished("failed", 0.5, true);
+  metrics.RunFinished("reused", 0.0, false);
+  metrics.SchedulingOverhead(0.004);
+  metrics.HttpRequest(200, 0.0007);
+  metrics.HttpRequest(429, 0.0002);
+  QueueGauges gauges;
+  gauges.runs_queued = 12;
+  gauges.runs_running = 2;
+  gauges.slots = 2;
+  gauges.sweeps_by_state = {{"running", 1}, {"ok", 3}};
+  testing::TempDir dir;
+  testing::WriteFile(dir / "metrics.txt", metrics.Render(gauges));
+  // The official client library's parser, an independent reader of the format.
+  const std::string script =
+      "import sys\n"
+      "from prometheus_client.parser import text_string_to_metric_families\n"
+      "values = {}\n"
+      "for family in text_string_to_metric_families(open(sys.argv[1]).read()):\n"
+      "    for sample in family.samples:\n"
+      "        values[sample.name + str(sorted(sample.labels.items()))] = sample.value\n"
+      "print(values[\"slamsweep_queue_depth[]\"], values[\"slamsweep_runs_running[]\"],\n"
+      "      values[\"slamsweep_runs_finished_total[('status', 'ok')]\"],\n"
+      "      values[\"slamsweep_run_duration_seconds_bucket[('le', '5')]\"],\n"
+      "      values[\"slamsweep_run_duration_seconds_count[]\"],\n"
+      "      values[\"slamsweep_sweeps[('state', 'ok')]\"])\n";
+  testing::WriteFile(dir / "parse.py", script);
+  const std::string command = "/usr/bin/python3 " + (dir / "parse.py").string() + " " + (dir / "metrics.txt").string() +
+                              " > " + (dir / "parsed.txt").string() + " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << std::ifstream(dir / "parsed.txt").rdbuf();
+  std::ifstream parsed(dir / "parsed.txt");
+  std::string line;
+  std::getline(parsed, line);
+  // 12 queued, 2 running, 2 ok finished, 2 runs <= 5 s (0.5 and 3), 3 runs timed, 3 ok sweeps.
+  EXPECT_EQ(line, "12.0 2.0 2.0 2.0 3.0 3.0");
+}
+
+TEST(QueueStoreTest, ARestartQueuesTheRunsLeftRunning) {
+  testing::TempDir dir;
+  QueueStore queue = QueueStore::Open(dir / "queue.sqlite");
+  QueuedSweep sweep;
+  sweep.name = "s";
+  sweep.config_name = "s.yaml";
+  sweep.config_text = "name: s";
+  sweep.submitter = "me";
+  const QueuedSweep added = queue.AddSweep(sweep, {{{"run_id", "a"}}, {{"run_id", "b"}}, {{"run_id", "c"}}}, dir / "sweeps");
+  EXPECT_EQ(added.id, 1);
+  EXPECT_EQ(added.result_dir, dir / "sweeps" / "1");
+  queue.SetRunState(1, "a", "ok", true, 2.0);
+  queue.SetRunState(1, "b", "running", true);
+  EXPECT_EQ(queue.RequeueRunning(), 1u);
+  const std::vector<QueuedRun> runs = queue.Runs(1);
+  ASSERT_EQ(runs.size(), 3u);
+  EXPECT_EQ(runs[0].state, "ok");
+  EXPECT_EQ(runs[1].state, "queued");
+  EXPECT_EQ(runs[1].attempt, 1);
+  EXPECT_EQ(queue.SweepsWithOkRun("a", 2), std::vector<std::int64_t>{1});
+  EXPECT_TRUE(queue.SweepsWithOkRun("a", 1).empty());
+  EXPECT_EQ(queue.AddSweep(sweep, {}, dir / "sweeps").id, 2);
+}
+
+}  // namespace
+}  // namespace slamsweep::orchestrator::service
+
+namespace slamsweep::orchestrator::service {
+namespace {
+
+// A killed server's Slurm arrays are cancelled on restart; everyone else's are left alone. Stand-in
+// squeue/scancel on PATH: squeue lists two jobs until scancel was called for ours.
+TEST(LeftoverSlurmJobsTest, OnlyTheArraysOfThisServersStateFolderAreCancelled) {
+  testing::TempDir dir;
+  const fs::path bin = dir / "bin", state = dir / "data" / "slurm";
+  fs::create_directories(bin);
+  fs::create_directories(state);
+  testing::WriteFile(bin / "squeue",
+                     "#!/bin/sh\n"
+                     "echo \"77|/home/other/job.sh\"\n"
+                     "if ! grep -qx 41 \"" + (dir / "cancelled").string() + "\" 2>/dev/null; then\n"
+                     "  echo \"41|" + state.string() + "/array-9-0.sh\"\nfi\n");
+  testing::WriteFile(bin / "scancel", "#!/bin/sh\necho \"$1\" >> \"" + (dir / "cancelled").string() + "\"\n");
+  fs::permissions(bin / "squeue", fs::perms::owner_all);
+  fs::permissions(bin / "scancel", fs::perms::owner_all);
+  const std::string saved_path = std::getenv("PATH");
+  setenv("PATH", (bin.string() + ":" + saved_path).c_str(), 1);
+  const std::vector<std::string> cancelled = EndLeftoverSlurmJobs(state, 10.0);
+  setenv("PATH", saved_path.c_str(), 1);
+  EXPECT_EQ(cancelled, std::vector<std::string>{"41"});
+  std::ifstream log(dir / "cancelled");
+  std::string line, all;
+  while (std::getline(log, line)) all += line + ";";
+  EXPECT_EQ(all, "41;");
+}
+
+}  // namespace
+}  // namespace slamsweep::orchestrator::service
