@@ -2,10 +2,14 @@
 // the pages' escaping, the metrics text (read back by the Prometheus project's own parser), the queue.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
+#include <thread>
 
 #include "orchestrator/config/input_policy.h"
 #include "orchestrator/service/auth.h"
@@ -13,6 +17,7 @@
 #include "orchestrator/service/queue_store.h"
 #include "orchestrator/service/service_metrics.h"
 #include "orchestrator/service/status_page.h"
+#include "tests/support/child_process.h"
 #include "tests/support/shared_data.h"
 
 namespace slamsweep::orchestrator::service {
@@ -192,6 +197,63 @@ TEST(LeftoverSlurmJobsTest, OnlyTheArraysOfThisServersStateFolderAreCancelled) {
   std::string line, all;
   while (std::getline(log, line)) all += line + ";";
   EXPECT_EQ(all, "41;");
+}
+
+/// A stand-in for a worker that its killed server left: a process whose command line is exactly
+/// `PROGRAM worker RUN_DIR` (/bin/sh under another argv[0], running the script `worker` in
+/// `script_dir`, outside every sweep), in a process group of its own like a real worker.
+pid_t StartStandInWorker(const fs::path& script_dir, const std::string& program, const fs::path& run_dir) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    setpgid(0, 0);
+    if (chdir(script_dir.c_str()) != 0) _exit(127);
+    execl("/bin/sh", program.c_str(), "worker", run_dir.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  return pid;
+}
+
+/// The NUL-separated command line of `pid`, once it shows `worker` (after the exec).
+std::string WorkerCommandLine(pid_t pid) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  std::string text;
+  while (std::chrono::steady_clock::now() < deadline) {
+    std::ifstream in("/proc/" + std::to_string(pid) + "/cmdline", std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    text = bytes.str();
+    if (text.find(std::string("\0worker\0", 8)) != std::string::npos) return text;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return text;
+}
+
+// Workers run as `slamsweep-sweep worker RUN_DIR` (the sweep helper that runs serve), or, when
+// SLAMSWEEP_WORKER_PROGRAM names the core, start as `slamsweep worker RUN_DIR`: a restarted server
+// ends both when RUN_DIR lies under its sweeps folder, and a worker of another data folder never.
+TEST(LeftoverProcessesTest, WorkersOfTheSweepHelperAndTheCoreUnderTheSweepsFolderAreEnded) {
+  testing::TempDir dir;
+  const fs::path sweeps = dir / "data" / "sweeps", script_dir = dir / "bin";
+  fs::create_directories(script_dir);
+  testing::WriteFile(script_dir / "worker", "sleep 60 &\nwait\n");
+  const fs::path ours_helper = sweeps / "1" / "runs" / "a", ours_core = sweeps / "2" / "runs" / "b";
+  const fs::path theirs = dir / "other-data" / "sweeps" / "1" / "runs" / "c";
+  const pid_t helper = StartStandInWorker(script_dir, "/opt/slamsweep/lib/slamsweep/slamsweep-sweep", ours_helper);
+  const pid_t core = StartStandInWorker(script_dir, "/opt/slamsweep/bin/slamsweep", ours_core);
+  const pid_t other = StartStandInWorker(script_dir, "/opt/slamsweep/lib/slamsweep/slamsweep-sweep", theirs);
+  const std::string nul(1, '\0');
+  ASSERT_EQ(WorkerCommandLine(helper),
+            "/opt/slamsweep/lib/slamsweep/slamsweep-sweep" + nul + "worker" + nul + ours_helper.string() + nul);
+  ASSERT_EQ(WorkerCommandLine(core), "/opt/slamsweep/bin/slamsweep" + nul + "worker" + nul + ours_core.string() + nul);
+  ASSERT_THAT(WorkerCommandLine(other), HasSubstr(nul + "worker" + nul + theirs.string()));
+
+  EXPECT_THAT(FindLeftoverProcesses(sweeps), ::testing::UnorderedElementsAre(helper, core));
+  EXPECT_EQ(EndLeftoverProcesses(sweeps, 10.0), 2u);
+  EXPECT_EQ(slamsweep::testing::WaitExit(helper, std::chrono::seconds(10)), 128 + SIGTERM);
+  EXPECT_EQ(slamsweep::testing::WaitExit(core, std::chrono::seconds(10)), 128 + SIGTERM);
+  EXPECT_EQ(::kill(other, 0), 0) << "another server's worker was ended";
+  ::kill(-other, SIGKILL);
+  slamsweep::testing::WaitExit(other, std::chrono::seconds(10));
 }
 
 }  // namespace
