@@ -21,6 +21,7 @@
 #include "report/html/write_report.h"
 #include "tests/report/fake_artwork.h"
 #include "tests/report/fixture_sweep.h"
+#include "tests/support/headless_chromium.h"
 #include "tests/support/shared_data.h"
 
 extern char** environ;
@@ -32,99 +33,12 @@ namespace fs = std::filesystem;
 using slamsweep::testing::TempDir;
 using testing::ReadAll;
 
-constexpr const char* kChromium = "/usr/bin/chromium";
 constexpr const char* kPython = "/usr/bin/python3";
-
-/// A child process (no shell) with stdout and stderr sent to files; killed when destroyed.
-class Child {
- public:
-  Child(const std::vector<std::string>& argv, const fs::path& stdout_file, const fs::path& stderr_file) {
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 1, stdout_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_addopen(&actions, 2, stderr_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawnattr_t attributes;
-    posix_spawnattr_init(&attributes);
-    // Its own process group, so that Chromium's helper processes end with it.
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
-    posix_spawnattr_setpgroup(&attributes, 0);
-    std::vector<char*> args;
-    for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
-    args.push_back(nullptr);
-    if (posix_spawn(&pid_, argv[0].c_str(), &actions, &attributes, args.data(), environ) != 0) pid_ = -1;
-    posix_spawn_file_actions_destroy(&actions);
-    posix_spawnattr_destroy(&attributes);
-  }
-  ~Child() {
-    if (pid_ > 0 && !exited_) {
-      kill(-pid_, SIGKILL);
-      waitpid(pid_, nullptr, 0);
-    }
-  }
-  bool started() const { return pid_ > 0; }
-  /// Waits up to `timeout`; true when the process ended by itself.
-  bool Wait(std::chrono::seconds timeout) {
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
-    while (std::chrono::steady_clock::now() < deadline) {
-      int status = 0;
-      if (waitpid(pid_, &status, WNOHANG) == pid_) {
-        exited_ = true;
-        return true;
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    return false;
-  }
-  void Stop() {
-    if (pid_ <= 0 || exited_) return;
-    kill(-pid_, SIGTERM);
-    if (!Wait(std::chrono::seconds(5))) kill(-pid_, SIGKILL);
-    waitpid(pid_, nullptr, 0);
-    exited_ = true;
-  }
-
- private:
-  pid_t pid_ = -1;
-  bool exited_ = false;
-};
-
-struct BrowserRun {
-  std::string stderr_text;
-  bool finished = false;
-};
-
-BrowserRun LoadInChromium(const std::string& url, const fs::path& work, const std::string& name,
-                          const fs::path& screenshot, int window_height_px = 2000) {
-  std::vector<std::string> argv = {kChromium, "--headless=new", "--no-sandbox", "--disable-gpu",
-                                   "--no-first-run", "--enable-logging=stderr", "--v=0",
-                                   "--user-data-dir=" + (work / ("profile-" + name)).string(),
-                                   "--window-size=1280," + std::to_string(window_height_px)};
-  if (screenshot.empty()) {
-    argv.push_back("--dump-dom");
-  } else {
-    argv.push_back("--screenshot=" + screenshot.string());
-  }
-  argv.push_back(url);
-  Child chromium(argv, work / (name + ".out"), work / (name + ".err"));
-  BrowserRun run;
-  if (!chromium.started()) return run;
-  run.finished = chromium.Wait(std::chrono::seconds(40));
-  chromium.Stop();
-  run.stderr_text = ReadAll(work / (name + ".err"));
-  return run;
-}
-
-std::vector<std::string> CspViolations(const std::string& stderr_text) {
-  std::vector<std::string> lines;
-  std::istringstream in(stderr_text);
-  for (std::string line; std::getline(in, line);) {
-    if (line.find("Refused to") != std::string::npos || line.find("Content Security Policy") != std::string::npos) {
-      lines.push_back(line);
-    }
-  }
-  return lines;
-}
+using slamsweep::testing::ChildProcess;
+using slamsweep::testing::ChromiumPage;
+using slamsweep::testing::CspViolations;
+using slamsweep::testing::kChromium;
+using slamsweep::testing::LoadInHeadlessChromium;
 
 class BrowserTest : public ::testing::Test {
  protected:
@@ -139,7 +53,7 @@ class BrowserTest : public ::testing::Test {
     ReportOptions options;
     options.artwork = artwork_ ? artwork_.get() : &fake_;
     WriteReport(dir_ / "sweep", dir_ / "report", options);
-    server_ = std::make_unique<Child>(
+    server_ = std::make_unique<ChildProcess>(
         std::vector<std::string>{kPython, SLAMSWEEP_CSP_SERVER, (dir_ / "report").string(),
                                  (dir_ / "port").string(), (dir_ / "requests.log").string()},
         dir_ / "server.out", dir_ / "server.err");
@@ -158,9 +72,9 @@ class BrowserTest : public ::testing::Test {
   void CheckPage(const std::string& page, const fs::path& screenshot = {}, int window_height_px = 2000) {
     SCOPED_TRACE(page);
     const std::string name = "page" + std::to_string(++pages_);
-    const BrowserRun run = LoadInChromium(base_url_ + page, dir_.path(), name, screenshot, window_height_px);
+    const ChromiumPage run = LoadInHeadlessChromium(base_url_ + page, dir_.path(), name, screenshot, window_height_px);
     EXPECT_TRUE(run.finished) << "chromium did not finish in 40 s";
-    EXPECT_TRUE(CspViolations(run.stderr_text).empty()) << ::testing::PrintToString(CspViolations(run.stderr_text));
+    EXPECT_TRUE(CspViolations(run.log).empty()) << ::testing::PrintToString(CspViolations(run.log));
     const std::string log = ReadAll(dir_ / "requests.log");
     EXPECT_NE(log.find("200 /" + page), std::string::npos) << log;
     EXPECT_NE(log.find("200 /style.css"), std::string::npos) << log;
@@ -175,7 +89,7 @@ class BrowserTest : public ::testing::Test {
   TempDir dir_;
   testing::FakeArtwork fake_;
   std::unique_ptr<Artwork> artwork_;
-  std::unique_ptr<Child> server_;
+  std::unique_ptr<ChildProcess> server_;
   std::string base_url_;
   int pages_ = 0;
 };
@@ -242,9 +156,9 @@ TEST_F(ViewsBrowserTest, SegmentAndParameterPagesLoadUnderJenkinsCsp) {
 TEST_F(BrowserTest, InlineStyleIsReportedAsViolation) {
   slamsweep::testing::WriteFile(dir_ / "report/bad.html",
                                 "<!DOCTYPE html><html><head><style>p{color:red}</style></head><body><p>x</p></body></html>");
-  const BrowserRun run = LoadInChromium(base_url_ + "bad.html", dir_.path(), "bad", {});
+  const ChromiumPage run = LoadInHeadlessChromium(base_url_ + "bad.html", dir_.path(), "bad", {});
   EXPECT_TRUE(run.finished);
-  EXPECT_FALSE(CspViolations(run.stderr_text).empty()) << run.stderr_text;
+  EXPECT_FALSE(CspViolations(run.log).empty()) << run.log;
 }
 
 }  // namespace

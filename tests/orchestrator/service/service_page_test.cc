@@ -2,11 +2,10 @@
 // server sends with every answer): no violation may be logged, and submitted text is escaped.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <spawn.h>
 
 #include "tests/orchestrator/service/service_process.h"
-
-extern char** environ;
+#include "tests/support/headless_chromium.h"
+#include "tests/support/shared_data.h"
 
 namespace slamsweep {
 namespace {
@@ -15,52 +14,15 @@ using namespace service_testing;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-struct Loaded {
-  std::string dom;
-  std::string log;
-};
-
-/// `chromium --headless --dump-dom URL` in its own process group, with its console and CSP log on stderr.
-Loaded LoadInChromium(const std::string& url, const fs::path& work, const std::string& name) {
-  const fs::path out = work / (name + ".dom"), err = work / (name + ".err");
-  const std::vector<std::string> argv = {"/usr/bin/chromium", "--headless=new", "--no-sandbox", "--disable-gpu",
-                                         "--no-first-run", "--enable-logging=stderr", "--v=0",
-                                         "--user-data-dir=" + (work / ("profile-" + name)).string(), "--dump-dom", url};
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawnattr_t attributes;
-  posix_spawnattr_init(&attributes);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);  // its helpers end with it
-  posix_spawnattr_setpgroup(&attributes, 0);
-  std::vector<char*> args;
-  for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
-  args.push_back(nullptr);
-  pid_t pid = -1;
-  const int spawned = posix_spawn(&pid, argv[0].c_str(), &actions, &attributes, args.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  posix_spawnattr_destroy(&attributes);
-  if (spawned != 0) return {};
-  if (WaitExit(pid, std::chrono::seconds(60)) < 0) kill(-pid, SIGKILL);
-  kill(-pid, SIGKILL);
-  return {ReadAll(out), ReadAll(err)};
-}
-
-std::vector<std::string> CspViolations(const std::string& log) {
-  std::vector<std::string> violations;
-  std::istringstream in(log);
-  for (std::string line; std::getline(in, line);) {
-    if (line.find("Content Security Policy") != std::string::npos || line.find("Refused to") != std::string::npos) {
-      violations.push_back(line);
-    }
-  }
-  return violations;
-}
+using slamsweep::testing::CspViolations;
+using slamsweep::testing::LoadInHeadlessChromium;
 
 TEST(ServicePageTest, PagesLoadInChromiumUnderTheReportCspWithoutViolationsAndEscapeSubmittedText) {
-  if (!fs::exists("/usr/bin/chromium")) GTEST_SKIP() << "chromium is not installed (scripts/install-deps.sh)";
+  if (!fs::exists(slamsweep::testing::kChromium)) {
+    const std::string why = std::string(slamsweep::testing::kChromium) + " is missing (scripts/install-deps.sh)";
+    if (slamsweep::testing::RunningInCi()) FAIL() << why;
+    GTEST_SKIP() << why;
+  }
   testing::TempDir dir;
   Server server(dir / "data", {"--jobs", "2"}, dir / "serve.log");
   ASSERT_TRUE(server.listening()) << server.Log();
@@ -89,7 +51,7 @@ TEST(ServicePageTest, PagesLoadInChromiumUnderTheReportCspWithoutViolationsAndEs
        std::vector<std::tuple<std::string, std::string, std::string>>{{"index", "/", "page-test"},
                                                                       {"sweep", "/sweeps/1", "odometry-floor-clean-i1"},
                                                                       {"report", "/sweeps/1/report/index.html", "floor"}}) {
-    const Loaded page = LoadInChromium(server.url() + path, dir.path(), name);
+    const slamsweep::testing::ChromiumPage page = LoadInHeadlessChromium(server.url() + path, dir.path(), name);
     EXPECT_THAT(page.dom, HasSubstr(expected)) << name << " did not render; log:\n" << page.log;
     EXPECT_EQ(CspViolations(page.log), std::vector<std::string>{}) << name;
   }
