@@ -4,23 +4,27 @@
 # (median of --runs runs). Inputs are synthetic (bench/cli/make_inputs.py, no ../shared); the
 # worker case needs ../shared/datasets/intel and is skipped without it.
 #
-# usage: bench/cli/cli_bench.sh [--runs N] [--out DIR] [--only REGEX] [LABEL=BINARY ...]
+# usage: bench/cli/cli_bench.sh [--runs N] [--out DIR] [--only REGEX] [--check] [LABEL=BINARY ...]
 #   LABEL=BINARY  programs to compare, one column each (default: after=build/slamsweep), e.g.
 #                 before=/tmp/before-slamsweep after=build/slamsweep
 #   --out DIR     where inputs, hyperfine JSON, table.md and summary.json go (default build/bench-cli)
 #   --only REGEX  only the cases whose name matches
+#   --check       exit 3 when the last program misses a target (a nightly performance job fails on a
+#                 regression); without it the table is written and the exit status is 0
 # The `eval map` cases run on one core (taskset -c 0), as their target says.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 runs=10
 out="${SLAMSWEEP_BUILD_DIR:-$root/build}/bench-cli"
 only=""
+check=()
 programs=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --runs) runs=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --only) only=$2; shift 2 ;;
+    --check) check=(--check); shift ;;
     *=*) programs+=("$1"); shift ;;
     *) echo "cli_bench.sh: unexpected argument '$1' (see the usage at the top of the script)" >&2; exit 2 ;;
   esac
@@ -33,6 +37,7 @@ for i in "${!programs[@]}"; do
 done
 command -v hyperfine >/dev/null || { echo "cli_bench.sh: hyperfine missing (apt install hyperfine)" >&2; exit 2; }
 
+out=$(realpath -m -- "$out")  # the cases run inside the inputs folder
 inputs="$out/inputs"
 mkdir -p "$out"
 /usr/bin/python3 "$root/bench/cli/make_inputs.py" "$inputs"
@@ -104,6 +109,9 @@ load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 mv "$out/cases.tmp" "$out/cases.txt"
 labels=()
 for program in "${programs[@]}"; do labels+=("${program%%=*}"); done
-/usr/bin/python3 "$root/bench/cli/cli_table.py" "$out" "$runs" "load average before: $load_before, after: $load_after; $(nproc) cores" "${labels[@]}" \
-  | tee "$out/table.md"
+table_status=0
+/usr/bin/python3 "$root/bench/cli/cli_table.py" "${check[@]}" "$out" "$runs" "load average before: $load_before, after: $load_after; $(nproc) cores" "${labels[@]}" \
+  >"$out/table.md" || table_status=$?
+cat "$out/table.md"
 echo "results: $out (table.md, summary.json, hyperfine JSON per case)"
+exit "$table_status"
