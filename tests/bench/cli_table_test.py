@@ -86,7 +86,21 @@ class CliTableTest(unittest.TestCase):
         self.assertEqual(result.returncode, 3)
         self.assertEqual(met_column(result.stdout), {"worker-halved": "yes", "worker-not-halved": "NO"})
 
-    def test_half_with_one_program_is_said_to_be_unchecked(self):
+    def test_half_with_one_program_uses_the_recorded_before(self):
+        write_case(self.out, "worker-fast", "half:255.8", "-", {"after": (127.0, 54.0, 0)})
+        write_case(self.out, "worker-slow", "half:255.8", "-", {"after": (128.5, 54.0, 0)})
+        result = run_table(self.out, ["after"], check=True)
+        self.assertEqual(result.returncode, 3)
+        self.assertEqual(met_column(result.stdout), {"worker-fast": "yes", "worker-slow": "NO"})
+        self.assertIn("1/2 of the recorded before (255.8 ms)", result.stdout)
+
+    def test_a_second_program_outranks_the_recorded_before(self):
+        write_case(self.out, "worker", "half:255.8", "-", {"before": (300.0, 110.0, 0), "after": (140.0, 54.0, 0)})
+        result = run_table(self.out, ["before", "after"], check=True)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertEqual(met_column(result.stdout), {"worker": "yes"})
+
+    def test_half_without_a_recorded_before_and_one_program_is_said_to_be_unchecked(self):
         write_case(self.out, "worker", "half", "-", {"after": (500.0, 54.0, 0)})
         result = run_table(self.out, ["after"], check=True)
         self.assertEqual(result.returncode, 0, result.stderr)
