@@ -6,6 +6,7 @@
 #include "orchestrator/store/junit_xml.h"
 #include "orchestrator/store/results_store.h"
 #include "orchestrator/store/summary_json.h"
+#include "orchestrator/store/validity_table.h"
 #include "tests/orchestrator/store/store_test_util.h"
 
 using namespace slamsweep::orchestrator;
@@ -41,7 +42,7 @@ static void BM_RunsSummaryJunit(benchmark::State& state) {
   }
   for (auto _ : state) {
     const auto runs = store.Runs();
-    WriteSummaryJson(runs, dir / "summary.json");
+    WriteSummaryJson(runs, ValidityStudyOf(runs), dir / "summary.json");
     WriteJUnit(runs, dir / "junit.xml");
   }
   std::filesystem::remove_all(dir);

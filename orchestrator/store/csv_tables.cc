@@ -8,7 +8,6 @@
 #include <utility>
 
 #include "orchestrator/files/atomic_file.h"
-#include "orchestrator/store/validity_table.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -144,10 +143,11 @@ std::string ValidityCsv(const evaluator::ValidityStudy& study) {
   return out;
 }
 
-void WriteCsvTables(const std::vector<StoredRun>& runs, const std::filesystem::path& output_dir) {
+void WriteCsvTables(const std::vector<StoredRun>& runs, const evaluator::ValidityStudy& study,
+                    const std::filesystem::path& output_dir) {
   WriteFileAtomically(output_dir / "summary.csv", GroupsCsv(SummarizeGroups(runs)));
   WriteFileAtomically(output_dir / "runs.csv", RunsCsv(runs));
-  if (const evaluator::ValidityStudy study = ValidityStudyOf(runs); !study.empty()) {
+  if (!study.empty()) {
     WriteFileAtomically(output_dir / "validity.csv", ValidityCsv(study));
   } else {
     std::error_code ignored;

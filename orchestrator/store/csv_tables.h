@@ -27,8 +27,9 @@ std::string RunsCsv(const std::vector<StoredRun>& runs);
 /// resamples_defined, verdict (empty numbers where the verdict is "too few runs" or "no variation").
 std::string ValidityCsv(const evaluator::ValidityStudy& study);
 
-/// Writes OUTPUT_DIR/summary.csv, OUTPUT_DIR/runs.csv and, for a sweep with reference data,
-/// OUTPUT_DIR/validity.csv atomically.
-void WriteCsvTables(const std::vector<StoredRun>& runs, const std::filesystem::path& output_dir);
+/// Writes OUTPUT_DIR/summary.csv, OUTPUT_DIR/runs.csv and, unless `study` (ValidityStudyOf(runs)) is
+/// empty, OUTPUT_DIR/validity.csv atomically.
+void WriteCsvTables(const std::vector<StoredRun>& runs, const evaluator::ValidityStudy& study,
+                    const std::filesystem::path& output_dir);
 
 }  // namespace slamsweep::orchestrator

@@ -7,10 +7,8 @@
 #include <fmt/format.h>
 
 #include "evaluator/core/input_error.h"
-#include "orchestrator/store/junit_xml.h"
+#include "orchestrator/store/result_files.h"
 #include "orchestrator/store/results_store.h"
-#include "orchestrator/store/csv_tables.h"
-#include "orchestrator/store/summary_json.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -93,10 +91,7 @@ class Merger {
   }
 
   void WriteReports() {
-    const std::vector<StoredRun> runs = store_.Runs();
-    WriteSummaryJson(runs, out_ / "summary.json");
-    WriteCsvTables(runs, out_);
-    WriteJUnit(runs, out_ / "junit.xml");
+    WriteResultFiles(store_.Runs(), out_);
   }
 
  private:

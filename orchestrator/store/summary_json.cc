@@ -2,7 +2,6 @@
 
 #include "orchestrator/files/atomic_file.h"
 #include "orchestrator/store/group_summary.h"
-#include "orchestrator/store/validity_table.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -63,7 +62,8 @@ json SummarizeRun(const StoredRun& run) {
   };
 }
 
-json BuildSummaryJson(const std::vector<StoredRun>& runs, const std::string& generated_at) {
+json BuildSummaryJson(const std::vector<StoredRun>& runs, const evaluator::ValidityStudy& study,
+                      const std::string& generated_at) {
   json listed = json::array();
   std::size_t ok = 0;
   for (const StoredRun& run : runs) {
@@ -77,14 +77,15 @@ json BuildSummaryJson(const std::vector<StoredRun>& runs, const std::string& gen
                {"runs", std::move(listed)},
                {"counts", {{"total", runs.size()}, {"ok", ok}, {"failed", runs.size() - ok}}}};
   // Which ground-truth-free metrics track real error (evaluator/validity); only with reference data.
-  if (const evaluator::ValidityStudy study = ValidityStudyOf(runs); !study.empty()) summary["validity"] = ToJson(study);
+  if (!study.empty()) summary["validity"] = ToJson(study);
   return summary;
 }
 
-void WriteSummaryJson(const std::vector<StoredRun>& runs, const std::filesystem::path& file) {
+void WriteSummaryJson(const std::vector<StoredRun>& runs, const evaluator::ValidityStudy& study,
+                      const std::filesystem::path& file) {
   // Replacement of invalid UTF-8 (a reason quoting a program's garbled output) keeps the file writable.
   const std::string text =
-      BuildSummaryJson(runs, UtcNowIso8601()).dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+      BuildSummaryJson(runs, study, UtcNowIso8601()).dump(2, ' ', false, json::error_handler_t::replace) + "\n";
   WriteFileAtomically(file, text);
 }
 

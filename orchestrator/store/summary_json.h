@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "evaluator/validity/metric_validity.h"
 #include "orchestrator/store/results_store.h"
 
 namespace slamsweep::orchestrator {
@@ -15,10 +16,13 @@ namespace slamsweep::orchestrator {
 nlohmann::json SummarizeRun(const StoredRun& run);
 
 /// The whole summary.json document: {"generated_at", "groups": [ToJson(GroupSummary)...] (one per
-/// comparison group: sequence x algorithm x parameters x noise), "runs": [...], "counts": {"total", "ok", "failed"}}.
-nlohmann::json BuildSummaryJson(const std::vector<StoredRun>& runs, const std::string& generated_at);
+/// comparison group: sequence x algorithm x parameters x noise), "runs": [...], "counts": {"total", "ok", "failed"},
+/// and "validity": `study` (ValidityStudyOf(runs)) unless it is empty}.
+nlohmann::json BuildSummaryJson(const std::vector<StoredRun>& runs, const evaluator::ValidityStudy& study,
+                                const std::string& generated_at);
 
-/// Writes BuildSummaryJson(runs, now) to `file` atomically (readers never see a half-written file).
-void WriteSummaryJson(const std::vector<StoredRun>& runs, const std::filesystem::path& file);
+/// Writes BuildSummaryJson(runs, study, now) to `file` atomically (readers never see a half-written file).
+void WriteSummaryJson(const std::vector<StoredRun>& runs, const evaluator::ValidityStudy& study,
+                      const std::filesystem::path& file);
 
 }  // namespace slamsweep::orchestrator

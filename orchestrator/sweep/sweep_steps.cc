@@ -2,9 +2,7 @@
 
 #include <unistd.h>
 
-#include "orchestrator/store/csv_tables.h"
-#include "orchestrator/store/junit_xml.h"
-#include "orchestrator/store/summary_json.h"
+#include "orchestrator/store/result_files.h"
 #include "orchestrator/sweep/run_folder.h"
 
 namespace slamsweep::orchestrator {
@@ -91,9 +89,7 @@ std::size_t WriteSweepOutputs(const ResultsStore& store, const std::set<std::str
   }
   std::size_t failed = 0;
   for (const StoredRun& stored : stored_runs) failed += stored.status == "ok" ? 0 : 1;
-  WriteSummaryJson(stored_runs, output_dir / "summary.json");
-  WriteCsvTables(stored_runs, output_dir);
-  WriteJUnit(stored_runs, output_dir / "junit.xml");
+  WriteResultFiles(stored_runs, output_dir);
   return failed;
 }
 

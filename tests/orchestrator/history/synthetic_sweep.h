@@ -15,6 +15,7 @@
 
 #include "orchestrator/store/results_store.h"
 #include "orchestrator/store/summary_json.h"
+#include "orchestrator/store/validity_table.h"
 #include "tests/support/shared_data.h"
 
 namespace slamsweep::orchestrator::testing {
@@ -99,7 +100,8 @@ inline std::vector<double> WriteSyntheticSweep(const std::filesystem::path& dir,
     store.RecordRun(sweep_id, spec, result, "runs/" + run_id);
   }
   store.FinishSweep(sweep_id, sweep.failed_iterations.empty() ? "ok" : "failed", sweep.iterations);
-  WriteSummaryJson(store.Runs(), dir / "summary.json");
+  const std::vector<StoredRun> runs = store.Runs();
+  WriteSummaryJson(runs, ValidityStudyOf(runs), dir / "summary.json");
   return ape;
 }
 

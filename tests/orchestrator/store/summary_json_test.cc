@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "orchestrator/store/results_store.h"
+#include "orchestrator/store/validity_table.h"
 #include "tests/orchestrator/store/store_test_util.h"
 #include "tests/support/shared_data.h"
 
@@ -28,7 +29,7 @@ TEST(SummaryJsonTest, ListsEveryRunWithFlatMetricsUnitsAndCounts) {
   store.RecordRun(1, MakeSpec("ok-run", "icp-slam", "intel", 3), MakeOkResult("ok-run", 4.25, 0.3), "runs/ok-run");
   store.RecordRun(1, MakeSpec("bad-run", "rbpf", "intel"), MakeFailedResult("bad-run"), "runs/bad-run");
   const auto file = dir / "summary.json";
-  WriteSummaryJson(store.Runs(), file);
+  WriteSummaryJson(store.Runs(), ValidityStudyOf(store.Runs()), file);
   const json summary = ReadJson(file);
 
   EXPECT_TRUE(summary.at("generated_at").get<std::string>().ends_with("Z"));
@@ -75,14 +76,14 @@ TEST(SummaryJsonTest, ListsEveryRunWithFlatMetricsUnitsAndCounts) {
 
 TEST(SummaryJsonTest, EmptyStoreAndGarbledTextStillGiveValidJson) {
   slamsweep::testing::TempDir dir;
-  WriteSummaryJson({}, dir / "summary.json");
+  WriteSummaryJson({}, {}, dir / "summary.json");
   EXPECT_EQ(ReadJson(dir / "summary.json").at("counts").at("total"), 0);
 
   StoredRun run;
   run.run_id = "r";
   run.status = "failed";
   run.result = {{"reason", std::string("bad byte \xff here")}};
-  WriteSummaryJson({run}, dir / "summary.json");
+  WriteSummaryJson({run}, ValidityStudyOf({run}), dir / "summary.json");
   const json back = ReadJson(dir / "summary.json");
   EXPECT_EQ(back.at("runs")[0].at("reason"), "bad byte \xEF\xBF\xBD here");
   // Missing spec fields come out as nulls, not as a crash.
@@ -94,7 +95,7 @@ TEST(SummaryJsonTest, UnwritableFolderNamesTheFile) {
   slamsweep::testing::TempDir dir;
   const auto file = dir / "missing-folder" / "summary.json";
   try {
-    WriteSummaryJson({}, file);
+    WriteSummaryJson({}, {}, file);
     FAIL() << "expected InputError";
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("missing-folder/summary.json"), std::string::npos) << e.what();

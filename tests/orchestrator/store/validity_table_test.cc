@@ -8,8 +8,7 @@
 #include <iterator>
 #include <sstream>
 
-#include "orchestrator/store/csv_tables.h"
-#include "orchestrator/store/summary_json.h"
+#include "orchestrator/store/result_files.h"
 #include "tests/orchestrator/store/store_test_util.h"
 #include "tests/support/shared_data.h"
 
@@ -47,8 +46,7 @@ std::vector<StoredRun> Runs(bool with_ate) {
 TEST(ValidityTableTest, SummaryJsonAndValidityCsvCarryTheSameTable) {
   slamsweep::testing::TempDir dir;
   const std::vector<StoredRun> runs = Runs(true);
-  WriteSummaryJson(runs, dir / "summary.json");
-  WriteCsvTables(runs, dir.path());
+  WriteResultFiles(runs, dir.path());
   const json validity = json::parse(ReadText(dir / "summary.json")).at("validity");
   EXPECT_EQ(validity.at("sequences"), json::array({"intel"}));
   EXPECT_EQ(validity.at("method").at("resamples"), 2000);
@@ -110,8 +108,7 @@ TEST(ValidityTableTest, WithoutReferenceDataThereIsNoTable) {
   slamsweep::testing::TempDir dir;
   slamsweep::testing::WriteFile(dir / "validity.csv", "stale\n");
   const std::vector<StoredRun> runs = Runs(false);
-  WriteSummaryJson(runs, dir / "summary.json");
-  WriteCsvTables(runs, dir.path());
+  WriteResultFiles(runs, dir.path());
   EXPECT_FALSE(json::parse(ReadText(dir / "summary.json")).contains("validity"));
   EXPECT_FALSE(std::filesystem::exists(dir / "validity.csv"));
 }
