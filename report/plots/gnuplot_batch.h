@@ -21,4 +21,14 @@ struct GnuplotBatchJob {
 /// does not finish. Does nothing for no jobs.
 void RunGnuplotBatch(const std::vector<GnuplotBatchJob>& jobs);
 
+/// RunGnuplotBatch of one GnuplotBatchJob per plot job: `to_batch_job(jobs[i], i)`, where i is the
+/// index its script's PlotMarker must use.
+template <typename Job, typename ToBatchJob>
+void RunGnuplotJobs(const std::vector<Job>& jobs, ToBatchJob to_batch_job) {
+  std::vector<GnuplotBatchJob> batch;
+  batch.reserve(jobs.size());
+  for (std::size_t i = 0; i < jobs.size(); ++i) batch.push_back(to_batch_job(jobs[i], i));
+  RunGnuplotBatch(batch);
+}
+
 }  // namespace slamsweep::report

@@ -6,12 +6,9 @@
 namespace slamsweep::report {
 
 void WriteMetricPlots(const std::vector<MetricPlotJob>& jobs) {
-  std::vector<GnuplotBatchJob> batch;
-  batch.reserve(jobs.size());
-  for (std::size_t i = 0; i < jobs.size(); ++i) {
-    batch.push_back({MetricPlotScript(jobs[i].plot, jobs[i].png, i), jobs[i].png, jobs[i].plot.title});
-  }
-  RunGnuplotBatch(batch);
+  RunGnuplotJobs(jobs, [](const MetricPlotJob& job, std::size_t i) {
+    return GnuplotBatchJob{MetricPlotScript(job.plot, job.png, i), job.png, job.plot.title};
+  });
 }
 
 }  // namespace slamsweep::report

@@ -91,12 +91,9 @@ std::string ScatterPlotScript(const ScatterPlot& plot, const std::filesystem::pa
 }
 
 void WriteScatterPlots(const std::vector<ScatterPlotJob>& jobs) {
-  std::vector<GnuplotBatchJob> batch;
-  batch.reserve(jobs.size());
-  for (std::size_t i = 0; i < jobs.size(); ++i) {
-    batch.push_back({ScatterPlotScript(jobs[i].plot, jobs[i].png, i), jobs[i].png, jobs[i].plot.title});
-  }
-  RunGnuplotBatch(batch);
+  RunGnuplotJobs(jobs, [](const ScatterPlotJob& job, std::size_t i) {
+    return GnuplotBatchJob{ScatterPlotScript(job.plot, job.png, i), job.png, job.plot.title};
+  });
 }
 
 }  // namespace slamsweep::report

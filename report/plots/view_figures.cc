@@ -6,10 +6,9 @@
 namespace slamsweep::report {
 
 void WriteViewFigures(const std::vector<FigureJob>& jobs) {
-  std::vector<GnuplotBatchJob> batch;
-  batch.reserve(jobs.size());
-  for (std::size_t i = 0; i < jobs.size(); ++i) batch.push_back({FigureScript(jobs[i], i), jobs[i].png, FigureTitle(jobs[i].figure)});
-  RunGnuplotBatch(batch);
+  RunGnuplotJobs(jobs, [](const FigureJob& job, std::size_t i) {
+    return GnuplotBatchJob{FigureScript(job, i), job.png, FigureTitle(job.figure)};
+  });
 }
 
 }  // namespace slamsweep::report

@@ -1,12 +1,15 @@
 #pragma once
 
-// What the plot tests share: skipping without gnuplot, and counting the pixels of a colour in a PNG.
+// What the plot tests share: skipping without gnuplot, reading a PNG while keeping a copy for a person to
+// look at, and counting the pixels of a colour in it. Its includers define SLAMSWEEP_ARTIFACT_DIR
+// (tests/report/plots_images/CMakeLists.txt).
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <filesystem>
 #include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "tests/support/shared_data.h"
 
@@ -27,6 +30,16 @@ inline int CountColour(const cv::Mat& bgr, std::uint32_t rgb) {
     for (int c = 0; c < bgr.cols; ++c) count += bgr.at<cv::Vec3b>(r, c) == wanted ? 1 : 0;
   }
   return count;
+}
+
+/// Reads the PNG (BGR) and keeps a copy as a test artefact (build/tests/report/plots_images/figures/).
+inline cv::Mat ReadAndKeep(const std::filesystem::path& png) {
+  const std::filesystem::path kept = std::filesystem::path(SLAMSWEEP_ARTIFACT_DIR) / "figures";
+  std::filesystem::create_directories(kept);
+  std::filesystem::copy_file(png, kept / png.filename(), std::filesystem::copy_options::overwrite_existing);
+  const cv::Mat image = cv::imread(png.string(), cv::IMREAD_COLOR);
+  EXPECT_FALSE(image.empty()) << png;
+  return image;
 }
 
 }  // namespace slamsweep::testing

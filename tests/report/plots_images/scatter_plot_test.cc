@@ -96,10 +96,7 @@ TEST(ScatterPlotTest, GnuplotDrawsEverySeriesInItsColour) {
   empty.title = "no runs";
   const std::vector<ScatterPlotJob> jobs = {{NoiseScatter(), dir / "validity-scatter.png"}, {empty, dir / "empty.png"}};
   WriteScatterPlots(jobs);
-  const fs::path kept = fs::path(SLAMSWEEP_ARTIFACT_DIR) / "figures";
-  fs::create_directories(kept);
-  fs::copy_file(jobs[0].png, kept / jobs[0].png.filename(), fs::copy_options::overwrite_existing);
-  const cv::Mat image = cv::imread(jobs[0].png.string(), cv::IMREAD_COLOR);
+  const cv::Mat image = slamsweep::testing::ReadAndKeep(jobs[0].png);
   ASSERT_FALSE(image.empty());
   EXPECT_EQ(image.cols, 560);
   for (std::size_t level = 0; level < 3; ++level) EXPECT_GT(CountColour(image, GradedColour(level, 3)), 20) << level;

@@ -21,16 +21,7 @@ using ::testing::HasSubstr;
 using ::testing::Not;
 
 using slamsweep::testing::CountColour;
-
-/// Reads the PNG and keeps a copy as a test artefact (build/tests/report/plots_images/figures/).
-cv::Mat ReadAndKeep(const fs::path& png) {
-  const fs::path kept = fs::path(SLAMSWEEP_ARTIFACT_DIR) / "figures";
-  fs::create_directories(kept);
-  fs::copy_file(png, kept / png.filename(), fs::copy_options::overwrite_existing);
-  const cv::Mat image = cv::imread(png.string(), cv::IMREAD_COLOR);
-  EXPECT_FALSE(image.empty()) << png;
-  return image;
-}
+using slamsweep::testing::ReadAndKeep;
 
 BoxStats Box(double centre, std::size_t outliers = 0) {
   BoxStats box;
