@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "orchestrator/process/file_system_view.h"
+
 namespace slamsweep::orchestrator {
 
 /// How to run one child program. Plain data: the runner never changes it.
@@ -30,6 +32,8 @@ struct ProcessSpec {
   std::vector<std::string> removed_env_prefixes;
   /// Added to (or replacing in) the runner's environment, after the removal.
   std::vector<std::pair<std::string, std::string>> extra_env;
+  /// Folders hidden from the child (and folders inside them it keeps); empty: it sees what the runner sees.
+  FileSystemView view;
 };
 
 }  // namespace slamsweep::orchestrator

@@ -4,6 +4,8 @@
 
 #include "orchestrator/process/spawn.h"
 
+#include "orchestrator/process/file_system_view.h"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/prctl.h>
@@ -46,6 +48,27 @@ struct ChildSetup : bp::extend::handler {
     ::prctl(PR_SET_PDEATHSIG, SIGTERM);
     // The supervisor may have died before prctl took effect; then nobody would send the signal.
     if (::getppid() != supervisor) ::_exit(127);
+  }
+
+  template <typename Executor>
+  void on_error(Executor& executor, const std::error_code&) const {
+    // Boost.Process does not reap a child whose exec failed; it has exited, so this does not block long.
+    if (executor.pid > 0) ::waitpid(executor.pid, nullptr, 0);
+  }
+};
+
+/// Enters the child's FileSystemView (after the standard streams are set up). Only with fork: a
+/// vfork child shares the runner's memory, and a user namespace needs a process of its own.
+struct ViewSetup : bp::extend::handler {
+  const PreparedFileSystemView* view = nullptr;
+
+  template <typename Executor>
+  void on_exec_setup(Executor& executor) const {
+    const char* step = "";
+    const int failure = ApplyFileSystemView(*view, &step);
+    if (failure == 0) return;
+    executor.set_error(std::error_code(failure, std::system_category()), step);
+    ::_exit(127);
   }
 
   template <typename Executor>
@@ -105,11 +128,25 @@ SpawnResult SpawnChild(const ProcessSpec& spec) {
     const std::vector<std::string> args(spec.argv.begin() + 1, spec.argv.end());
     const std::string working_dir = spec.working_dir.empty() ? std::string(".") : spec.working_dir.string();
     std::error_code ec;
-    // vfork: the supervisor links OpenCV and MRPT, and copying its page tables for every fork was the
-    // largest part of the per-run overhead (bench/sweep_bench). ChildSetup writes no shared memory.
-    bp::child child(ChildSetup{{}, ::getpid()}, bp::posix::use_vfork, bp::exe = program, bp::args = args,
-                    bp::std_in < bp::null, (bp::std_out & bp::std_err) > pipe, bp::start_dir = working_dir,
-                    environment, ec);
+    bp::child child;
+    if (spec.view.empty()) {
+      // vfork: the supervisor links OpenCV and MRPT, and copying its page tables for every fork was the
+      // largest part of the per-run overhead (bench/sweep_bench). ChildSetup writes no shared memory.
+      child = bp::child(ChildSetup{{}, ::getpid()}, bp::posix::use_vfork, bp::exe = program, bp::args = args,
+                        bp::std_in < bp::null, (bp::std_out & bp::std_err) > pipe, bp::start_dir = working_dir,
+                        environment, ec);
+    } else {
+      // bp::start_dir changes directory after the handlers: inside the view, so a visible working
+      // folder is the bound one.
+      const PreparedFileSystemView view = PrepareFileSystemView(spec.view);
+      child = bp::child(ChildSetup{{}, ::getpid()}, bp::exe = program, bp::args = args, bp::std_in < bp::null,
+                        (bp::std_out & bp::std_err) > pipe, ViewSetup{{}, &view}, bp::start_dir = working_dir,
+                        environment, ec);
+      if (ec) {
+        result.error = "cannot hide the file system from the program: " + ec.message();
+        return result;
+      }
+    }
     if (ec || !child.valid()) {
       result.error = ec ? ec.message() : "unknown error";
       return result;  // `pipe` closes both ends

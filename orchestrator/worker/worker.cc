@@ -19,8 +19,10 @@
 #include "orchestrator/adapters/run_paths.h"
 #include "orchestrator/matrix/run_spec.h"
 #include "orchestrator/process/interruption.h"
+#include "orchestrator/process/file_system_view.h"
 #include "orchestrator/process/process_set.h"
 #include "orchestrator/reference_map/reference_map.h"
+#include "orchestrator/worker/program_view.h"
 #include "orchestrator/worker/run_metrics.h"
 #include "orchestrator/worker/run_outputs.h"
 #include "orchestrator/worker/run_result.h"
@@ -143,6 +145,13 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
     process.log_cap_bytes = kLogCapBytes;
     process.timeout_s = spec.algorithm.timeout_s;
     process.memory_limit_mb = spec.algorithm.memory_limit_mb;
+    // The environment is not enough: a program could read the reference through a path it guessed.
+    if (const std::string& unavailable = FileSystemViewUnavailableReason(); unavailable.empty()) {
+      process.view = ProgramFileSystemView(spec, paths, prepared.argv.front(), result.warnings);
+    } else {
+      result.warnings.push_back("the program could read every file this machine lets slamsweep read (the reference "
+                                "included): a private mount namespace is not available here (" + unavailable + ")");
+    }
     if (!RecordProcessOutcome(RunProcess(process), result)) return;
   }
   if (InterruptionRequested()) return;

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <fstream>
 #include <string>
 #include <thread>
 
@@ -18,6 +19,8 @@
 #include "evaluator/formats/trajectory/segment_errors_csv.h"
 #include "evaluator/formats/trajectory/tum_format.h"
 #include "orchestrator/adapters/run_inputs.h"
+#include "orchestrator/process/file_system_view.h"
+#include "orchestrator/worker/program_view.h"
 #include "tests/orchestrator/worker/run_spec_fixture.h"
 #include "tests/support/shared_data.h"
 
@@ -336,6 +339,63 @@ TEST_F(WorkerTest, TheReferenceMapIsOutOfTheProgramsReachUntilItHasExited) {
       }
     }
   }
+}
+
+TEST_F(WorkerTest, TheProgramSeesItsInputAndOutputFoldersButNoResultsAndNoReferenceFiles) {
+  if (const std::string& reason = FileSystemViewUnavailableReason(); !reason.empty()) {
+    if (slamsweep::testing::RunningInCi()) FAIL() << "no private mount namespace under CI: " << reason;
+    GTEST_SKIP() << "no private mount namespace here: " << reason;
+  }
+  // The program and its canned outputs live outside the sweep's folder, as an installed program does.
+  slamsweep::testing::TempDir tools;
+  fs::copy_file(dir_ / "estimate.tum", tools / "estimate.tum");
+  fs::copy_file(dir_ / "room.yaml", tools / "room.yaml");
+  fs::copy_file(dir_ / "room.pgm", tools / "room.pgm");
+  // The catalog's reference map, in a dataset folder; a service's private folder; an earlier run's truth.
+  slamsweep::testing::TempDir datasets;
+  fs::copy_file(dir_ / "room.yaml", datasets / "room.yaml");
+  fs::copy_file(dir_ / "room.pgm", datasets / "room.pgm");
+  spec_.sequence.entry.reference_map_path = (datasets / "room.yaml").string();
+  slamsweep::testing::TempDir private_dir;
+  std::ofstream(private_dir / "queue.sqlite") << "other sweeps\n";
+  fs::create_directories(dir_ / "runs" / "r0");
+  std::ofstream(dir_ / "runs" / "r0" / "reference.tum") << "0 0 0 0 0 0 0 1\n";
+  std::ofstream(dir_ / "results.sqlite") << "metrics\n";
+
+  const std::string out = dir_.path().string();
+  std::string probes;
+  const std::vector<std::string> hidden_files = {"\"$1/../run.json\"", "\"$1/../command.txt\"",
+                                                 "\"$1/../../r0/reference.tum\"", "'" + out + "/runs/r0/reference.tum'",
+                                                 "'" + out + "/results.sqlite'", "'" + (datasets / "room.yaml").string() + "'",
+                                                 "'" + (private_dir / "queue.sqlite").string() + "'"};
+  for (const std::string& file : hidden_files) {
+    probes += "cat " + file + " >/dev/null 2>&1 && echo \"READ " + file + "\"\n";
+  }
+  CommandDeclaration declaration;
+  declaration.argv = {WriteScript(tools / "program.sh", "cd '" + tools.path().string() + "' || exit 9\n{\n" + probes +
+                                                            "ls \"$1/../input\" >/dev/null && echo INPUT-OK\n} > \"$1/seen.txt\"\n" +
+                                                            kWriteOutputs)
+                          .string(),
+                      "{output_dir}"};
+  declaration.trajectory = DeclaredOutput{"trajectory.tum", "tum"};
+  declaration.map = DeclaredOutput{"map.yaml", "map_server"};
+  spec_.algorithm.command = declaration;
+  ::setenv(kPrivateDirsVariable, private_dir.path().c_str(), 1);
+  const nlohmann::json result = Run();
+  ::unsetenv(kPrivateDirsVariable);
+
+  ASSERT_EQ(result["status"], "ok") << result.dump(2);
+  const std::string seen = ReadText(run_dir_ / "raw" / "seen.txt");
+  EXPECT_EQ(seen.find("READ"), std::string::npos) << seen;
+  EXPECT_NE(seen.find("INPUT-OK"), std::string::npos) << seen;
+  for (const nlohmann::json& warning : result["warnings"]) {
+    EXPECT_EQ(warning.get<std::string>().find("could"), std::string::npos) << warning;
+  }
+  // The outputs reached the run folder, and the hidden reference map was used once the program had exited.
+  EXPECT_NEAR(Metric(result, "ape_trans", "rmse"), kShiftM, 1e-9);
+  EXPECT_EQ(result["metric_details"]["map_compare"]["reference_map"]["source"], "file")
+      << result["metric_details"]["map_compare"];
+  EXPECT_EQ(Metric(result, "map_chamfer", "value"), 0.0);
 }
 
 TEST_F(WorkerTest, InterruptionStopsTheProgramAndLeavesNoResult) {
