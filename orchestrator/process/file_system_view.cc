@@ -68,11 +68,10 @@ std::string Probe() {
   if (child == 0) {
     const char* step = "";
     const int failure = ApplyFileSystemView(prepared, &step);
+    // Only async-signal-safe calls here: the errno goes back as a number, the parent words it.
     if (failure != 0) {
+      (void)!::write(report[1], &failure, sizeof(failure));
       (void)!::write(report[1], step, std::strlen(step));
-      (void)!::write(report[1], ": ", 2);
-      const char* text = std::strerror(failure);
-      (void)!::write(report[1], text, std::strlen(text));
     }
     ::_exit(failure == 0 ? 0 : 1);
   }
@@ -80,12 +79,19 @@ std::string Probe() {
   if (child < 0) {
     reason = std::string("fork: ") + std::strerror(errno);
   } else {
+    std::string message;
     char buffer[256];
     ssize_t n = 0;
-    while ((n = ::read(report[0], buffer, sizeof(buffer))) > 0) reason.append(buffer, static_cast<std::size_t>(n));
+    while ((n = ::read(report[0], buffer, sizeof(buffer))) > 0) message.append(buffer, static_cast<std::size_t>(n));
     int status = 0;
     ::waitpid(child, &status, 0);
-    if (reason.empty() && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) reason = "the probe child failed";
+    if (message.size() >= sizeof(int)) {
+      int failure = 0;
+      std::memcpy(&failure, message.data(), sizeof(int));
+      reason = message.substr(sizeof(int)) + ": " + std::strerror(failure);
+    } else if (!(WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
+      reason = "the probe child failed";
+    }
   }
   ::close(report[0]);
   fs::remove_all(scratch, error);

@@ -7,6 +7,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
@@ -82,6 +84,26 @@ TEST(FileSystemViewTest, AChildCannotReadAHiddenFileByAnyPathButKeepsItsVisibleF
   // The child's writes land in the real folder, and the parent still sees everything.
   EXPECT_TRUE(fs::exists(dir / "out" / "runs" / "r1" / "raw" / "written.txt"));
   EXPECT_TRUE(fs::exists(dir / "out" / "runs" / "r0" / "reference.tum"));
+}
+
+TEST(FileSystemViewTest, AFailedStepIsNamedWithItsErrno) {
+  if (const std::string& reason = FileSystemViewUnavailableReason(); !reason.empty()) {
+    GTEST_SKIP() << "no private mount namespace here: " << reason;
+  }
+  testing::TempDir dir;
+  FileSystemView view;
+  view.hidden = {dir / "no-such-folder"};
+  const PreparedFileSystemView prepared = PrepareFileSystemView(view);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const char* step = "";
+    const int failure = ApplyFileSystemView(prepared, &step);
+    ::_exit(failure == ENOENT && std::strcmp(step, "mount tmpfs over a hidden folder") == 0 ? 0 : 1);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "expected ENOENT from the tmpfs step";
 }
 
 }  // namespace

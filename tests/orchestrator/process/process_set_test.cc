@@ -282,6 +282,23 @@ TEST(ProcessSetTest, FailedStartIsReportedByWaitForAny) {
   EXPECT_EQ(set.running(), 0u);
 }
 
+TEST(ProcessSetTest, AViewThatCannotBeSetUpIsAFailedStartNamingWhy) {
+  if (const std::string& reason = FileSystemViewUnavailableReason(); !reason.empty()) {
+    GTEST_SKIP() << "no private mount namespace here: " << reason;
+  }
+  TempDir dir;
+  ProcessSet set;
+  ProcessSpec spec;
+  spec.argv = {"/bin/true"};
+  spec.view.hidden = {dir / "no-such-folder"};
+  set.Start(spec);
+  const auto ended = set.WaitForAny();
+  ASSERT_EQ(ended.size(), 1u);
+  EXPECT_EQ(ended[0].second.ending, ProcessEnding::kFailedToStart);
+  EXPECT_NE(ended[0].second.reason.find("cannot hide the file system from the program"), std::string::npos)
+      << ended[0].second.reason;
+}
+
 /// Raises `signal_number` in a helper thread after `delay`. The thread unblocks the signal itself:
 /// it inherited the mask of the test thread, where the guard blocks it, and raise() targets the
 /// calling thread only.
