@@ -59,7 +59,7 @@ std::string GroupsCsv(const std::vector<GroupSummary>& groups) {
     }
   }
   std::vector<std::string> header = {"sequence", "algorithm",  "parameters",           "noise",  "n_runs",
-                                     "n_ok",     "n_failed",   "odometry_is_reference", "seeding"};
+                                     "n_ok",     "n_failed",   "odometry_is_reference", "seeding", "flags"};
   for (const auto& [metric, statistic] : headline) {
     for (const char* part : {"n", "mean", "std", "min", "max"}) {
       header.push_back(fmt::format("{}.{}.{}", metric, statistic, part));
@@ -75,7 +75,8 @@ std::string GroupsCsv(const std::vector<GroupSummary>& groups) {
                                        std::to_string(group.ok),
                                        std::to_string(group.failed),
                                        group.odometry_is_reference ? "true" : "false",
-                                       group.seeding};
+                                       group.seeding,
+                                       RunFlagsText(group.flags)};
     for (const auto& [metric, statistic] : headline) {
       const MetricAggregate* found = nullptr;
       for (const MetricAggregate& aggregate : group.metrics) {
@@ -100,7 +101,7 @@ std::string RunsCsv(const std::vector<StoredRun>& runs) {
   }
   std::vector<std::string> header = {"run_id", "sequence",     "algorithm",             "parameters", "noise",
                                      "iteration", "seed",      "status",                "failure_kind", "reason",
-                                     "odometry_is_reference", "seeding", "wall_s", "cpu_s", "peak_rss_kb"};
+                                     "odometry_is_reference", "seeding", "flags", "wall_s", "cpu_s", "peak_rss_kb"};
   for (const auto& [metric, statistic] : names) header.push_back(fmt::format("{}.{}", metric, statistic));
   std::string out = Row(header);
   for (const StoredRun& run : runs) {
@@ -118,6 +119,7 @@ std::string RunsCsv(const std::vector<StoredRun>& runs) {
                                        JsonScalar(Field(run.result, "reason")),
                                        run.odometry_is_reference ? "true" : "false",
                                        run.seeding,
+                                       RunFlagsText(run.flags),
                                        JsonScalar(Field(run.result, "wall_s")),
                                        JsonScalar(Field(run.result, "cpu_s")),
                                        JsonScalar(Field(run.result, "peak_rss_kb"))};

@@ -49,6 +49,7 @@ std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs) {
     }
     ++summary.runs;
     summary.odometry_is_reference = summary.odometry_is_reference || run.odometry_is_reference;
+    summary.flags |= run.flags;
     if (run.status != "ok") {
       ++summary.failed;
       continue;
@@ -95,6 +96,7 @@ nlohmann::json ToJson(const GroupSummary& group) {
           {"n_ok", group.ok},
           {"n_failed", group.failed},
           {"odometry_is_reference", group.odometry_is_reference},
+          {"flags", ToJson(group.flags)},
           {"seeding", group.seeding},
           {"metrics", std::move(metrics)},
           {"rpe_segments_m", group.segment_lengths_m},

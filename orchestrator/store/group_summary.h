@@ -29,6 +29,8 @@ struct GroupSummary {
   std::size_t failed = 0;
   /// Some run of the group got the reference as odometry: an upper bound, not a SLAM result.
   bool odometry_is_reference = false;
+  /// The union of the runs' marks: a flagged group is shown, never ranked or marked best.
+  RunFlags flags;
   /// The runs' seeding ("seeded", "deterministic", "unseeded"; "mixed" if they differ).
   std::string seeding;
   /// Sorted by metric, then statistic; only metrics some ok run has.
@@ -44,7 +46,7 @@ struct GroupSummary {
 std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs);
 
 /// {"sequence", "algorithm", "parameters", "noise", "n_runs", "n_ok", "n_failed", "odometry_is_reference",
-///  "seeding", "metrics": {metric: {statistic: {"n", "mean", "std", "min", "max", "unit"}}},
+///  "flags", "seeding", "metrics": {metric: {statistic: {"n", "mean", "std", "min", "max", "unit"}}},
 ///  "rpe_segments_m": [...], "rpe_segments_consistent": bool}
 nlohmann::json ToJson(const GroupSummary& group);
 

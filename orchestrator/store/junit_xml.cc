@@ -116,6 +116,15 @@ Testcase RenderTestcase(const StoredRun& run) {
     }
     notes = std::move(check.unchecked);
   }
+  // Marks travel with the case: a flagged pass is not a plain pass (Jenkins shows properties and output).
+  std::string properties;
+  std::vector<std::string> flag_notes;
+  for (RunFlag flag : run.flags) {
+    properties += fmt::format("        <property name=\"flag\" value=\"{}\"/>\n", RunFlagName(flag));
+    flag_notes.push_back(fmt::format("{}: {}", RunFlagLabel(flag), RunFlagMeaning(flag)));
+  }
+  notes.insert(notes.begin(), flag_notes.begin(), flag_notes.end());
+  if (!properties.empty()) body = "      <properties>\n" + properties + "      </properties>\n" + body;
   if (!notes.empty()) {
     std::string lines;
     for (const std::string& line : notes) lines += line + "\n";

@@ -50,6 +50,11 @@ ALTER TABLE runs ADD COLUMN slamsweep_revision TEXT;
 CREATE INDEX runs_group ON runs(sequence, noise, algorithm, parameters);
 )sql";
 
+// Version 3: the run's marks (RunFlags: odometry = reference, stale, unisolated) as "a;b" text.
+constexpr const char* kMigrationV3 = R"sql(
+ALTER TABLE runs ADD COLUMN flags TEXT;
+)sql";
+
 const json* Find(const json& object, const char* key) {
   if (!object.is_object()) return nullptr;
   const auto it = object.find(key);
@@ -150,7 +155,7 @@ double Median(std::vector<double> values) {
 
 constexpr const char* kRunColumns =
     "run_id, sweep_id, spec_json, result_json, status, run_dir, algorithm, sequence, noise, iteration, wall_s, "
-    "finished_at, parameters, odometry_is_reference, seeding";
+    "finished_at, parameters, odometry_is_reference, seeding, flags";
 
 }  // namespace
 
@@ -223,6 +228,7 @@ void ResultsStore::InitializeSchema() {
   const std::int64_t locked_version = read_version();
   if (locked_version == 0) db_.Execute(kSchemaV1);
   if (locked_version < 2) db_.Execute(kMigrationV2);
+  if (locked_version < 3) db_.Execute(kMigrationV3);
   db_.Execute(fmt::format("PRAGMA user_version = {}", kResultsSchemaVersion));
   transaction.Commit();
 }
@@ -299,14 +305,15 @@ std::int64_t ResultsStore::ImportSweep(const StoredSweep& sweep) {
 void ResultsStore::RecordRun(std::int64_t sweep_id, const json& run_spec, const json& result,
                              const std::string& run_dir_relative) {
   const RunColumns columns = ValidateRun(run_spec, result);
+  const RunFlags flags = RunFlagsOf(run_spec, result);
   SqliteTransaction transaction(db_);
   {
     auto insert = db_.Prepare(
         "INSERT OR REPLACE INTO runs(run_id, sweep_id, algorithm, adapter, parameters_json, sequence, noise, "
         "iteration, seed, spec_json, status, failure_kind, reason, exit_code, signal, wall_s, cpu_s, peak_rss_kb, "
         "started_at, finished_at, run_dir, result_json, parameters, odometry_is_reference, seeding, "
-        "slamsweep_revision) "
-        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+        "slamsweep_revision, flags) "
+        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     const json& parameters = Nested(run_spec, "algorithm", "parameters");
     insert.Bind(1, columns.run_id).Bind(2, sweep_id);
     insert.BindJson(3, Nested(run_spec, "algorithm", "name")).BindJson(4, Nested(run_spec, "algorithm", "adapter"));
@@ -329,6 +336,7 @@ void ResultsStore::RecordRun(std::int64_t sweep_id, const json& run_spec, const 
     insert.BindJson(24, OdometryIsReferenceOf(run_spec, result));
     insert.BindJson(25, FieldOrNull(run_spec, "seeding"));
     insert.BindJson(26, Nested(run_spec, "build", "slamsweep_revision"));
+    insert.Bind(27, RunFlagsText(flags));
     insert.Run();
   }
   if (mid_transaction_hook_) mid_transaction_hook_();
@@ -374,6 +382,24 @@ std::optional<StoredRun> ResultsStore::FindRun(const std::string& run_id) const 
 
 std::vector<StoredRun> ResultsStore::Runs() const { return QueryRuns("", ""); }
 
+bool ResultsStore::AddRunFlags(const std::string& run_id, const RunFlags& added) {
+  SqliteTransaction transaction(db_);
+  auto select = db_.Prepare("SELECT spec_json, result_json, flags FROM runs WHERE run_id = ?");
+  select.Bind(1, run_id);
+  if (!select.Step()) return false;
+  const json spec = ParseStored(db_.file(), run_id, "spec_json", select.Text(0));
+  json result = ParseStored(db_.file(), run_id, "result_json", select.Text(1));
+  RunFlags flags = select.IsNull(2) ? RunFlagsOf(spec, result)
+                                    : RunFlagsFromText(select.Text(2), db_.file().string() + ": runs.flags");
+  flags |= added;
+  result["flags"] = ToJson(flags);
+  auto update = db_.Prepare("UPDATE runs SET flags = ?, result_json = ? WHERE run_id = ?");
+  update.Bind(1, RunFlagsText(flags)).Bind(2, std::string_view(Dump(result))).Bind(3, run_id);
+  update.Run();
+  transaction.Commit();
+  return true;
+}
+
 std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const std::string& run_id) const {
   std::vector<StoredRun> runs;
   std::unordered_map<std::string, std::size_t> index_of;
@@ -413,6 +439,9 @@ std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const s
                                          : select.Text(12);
       run.odometry_is_reference = !select.IsNull(13) && select.Int64(13) != 0;
       run.seeding = NullableText(select, 14);
+      // Runs recorded before the column existed: the flags their files imply.
+      run.flags = select.IsNull(15) ? RunFlagsOf(run.spec, run.result)
+                                    : RunFlagsFromText(select.Text(15), db_.file().string() + ": runs.flags");
       index_of.emplace(run.run_id, runs.size());
       runs.push_back(std::move(run));
     }

@@ -10,13 +10,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "orchestrator/run/run_flags.h"
 #include "orchestrator/store/sqlite_db.h"
 
 namespace slamsweep::orchestrator {
 
 /// The schema version this build writes (PRAGMA user_version). A file with a higher version was
 /// written by a newer slamsweep and is refused rather than misread.
-inline constexpr int kResultsSchemaVersion = 2;
+inline constexpr int kResultsSchemaVersion = 3;
 
 /// What is known about a sweep when it starts.
 struct SweepInfo {
@@ -70,6 +71,8 @@ struct StoredRun {
   bool odometry_is_reference = false;
   /// "seeded", "deterministic" or "unseeded" (run.json's seeding; "" for runs recorded before it existed).
   std::string seeding;
+  /// The run's marks (RunFlagsOf its run.json and result.json): any one keeps it out of "best".
+  RunFlags flags;
   std::int64_t iteration = 0;
   std::optional<double> wall_s;
   std::string finished_at;
@@ -108,6 +111,9 @@ class ResultsStore {
   /// "ok" / "failed", or empty when the run was never recorded.
   std::optional<std::string> RunStatus(const std::string& run_id) const;
   std::optional<StoredRun> FindRun(const std::string& run_id) const;
+  /// Adds `flags` to a recorded run (its column and its stored result.json's `flags`); false when the run
+  /// was never recorded. The sweep marks a run it reuses under another build or evaluation "stale" this way.
+  bool AddRunFlags(const std::string& run_id, const RunFlags& flags);
   /// Every run, ordered by sequence, algorithm, noise, iteration, run id.
   std::vector<StoredRun> Runs() const;
 

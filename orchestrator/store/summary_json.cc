@@ -46,6 +46,7 @@ json SummarizeRun(const StoredRun& run) {
       {"seeding", run.seeding},
       {"seeded", run.seeding == "seeded" || run.seeding == "deterministic"},
       {"odometry_is_reference", run.odometry_is_reference},
+      {"flags", ToJson(run.flags)},
       {"status", run.status},
       {"failure_kind", FieldOrNull(result, "failure_kind")},
       {"reason", FieldOrNull(result, "reason")},

@@ -14,6 +14,23 @@ std::string HostName() {
   return name;
 }
 
+// A finished run reused under another build or evaluation (--reuse-stale) carries the "stale" mark in its
+// folder's result.json, which the report reads, and in the store, which the summaries read.
+void MarkStale(const std::filesystem::path& output_dir, const std::string& run_id, ResultsStore& store) {
+  const std::filesystem::path run_dir = RunFolder(output_dir, run_id);
+  StoredResult stored = ReadRunResult(run_dir);
+  const RunFlags stale{RunFlag::kStale};
+  if (stored.result) {
+    RunFlags flags = RunFlagsOf(ReadRunSpecJson(run_dir).value_or(nlohmann::json()), *stored.result);
+    if (!flags.Has(RunFlag::kStale)) {
+      flags |= stale;
+      (*stored.result)["flags"] = ToJson(flags);
+      WriteJsonAtomically(run_dir / "result.json", *stored.result);
+    }
+  }
+  store.AddRunFlags(run_id, stale);
+}
+
 }  // namespace
 
 std::vector<const RunSpec*> RunsStillToDo(const std::vector<RunSpec>& runs, const SweepSettings& settings,
@@ -26,6 +43,7 @@ std::vector<const RunSpec*> RunsStillToDo(const std::vector<RunSpec>& runs, cons
       const bool reusable = RecordedRunIsReusable(run, recorded->status, recorded->spec, settings, stale);
       outcome.stale += stale ? 1 : 0;
       if (reusable) {
+        if (stale) MarkStale(settings.output_dir, run.run_id, store);
         ++outcome.already_done;
         continue;
       }
@@ -39,6 +57,7 @@ std::vector<const RunSpec*> RunsStillToDo(const std::vector<RunSpec>& runs, cons
           RecordedRunIsReusable(run, stored.result->value("status", "failed"), *stored_spec, settings, stale)) {
         outcome.stale += stale ? 1 : 0;
         store.RecordRun(sweep_id, *stored_spec, *stored.result, std::filesystem::path("runs") / run.run_id);
+        if (stale) MarkStale(settings.output_dir, run.run_id, store);
         ++outcome.already_done;
         continue;
       }

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "orchestrator/adapters/run_failure.h"
+#include "orchestrator/run/run_flags.h"
 #include "orchestrator/worker/run_metrics.h"
 
 namespace slamsweep::orchestrator {
@@ -36,6 +37,8 @@ struct RunResult {
   /// The program's odometry was the reference (RunInputs::odometry_is_reference); absent when the
   /// inputs were never prepared.
   std::optional<bool> odometry_is_reference;
+  /// Marks the worker measured (odometry = reference, unisolated); the orchestrator may add "stale" later.
+  RunFlags flags;
 
   bool ok() const { return !failure_kind; }
   /// Marks the run failed (the first failure wins: later ones are consequences).

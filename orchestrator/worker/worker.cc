@@ -128,6 +128,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   result.warnings.insert(result.warnings.end(), inputs.warnings.begin(), inputs.warnings.end());
   result.noise = inputs.noise_record;
   result.odometry_is_reference = inputs.odometry_is_reference;
+  result.flags.Set(RunFlag::kOdometryIsReference, inputs.odometry_is_reference);
   if (inputs.odometry_is_reference) result.warnings.push_back(std::string(kOdometryIsReferenceWarning));
   // The adapter gets the robot's part only; inputs.truth stays here until the program has exited.
   const PreparedRun prepared = adapter->Prepare(spec, inputs.robot, paths);
@@ -149,6 +150,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
     if (const std::string& unavailable = FileSystemViewUnavailableReason(); unavailable.empty()) {
       process.view = ProgramFileSystemView(spec, paths, prepared.argv.front(), result.warnings);
     } else {
+      result.flags.Set(RunFlag::kUnisolated);
       result.warnings.push_back("the program could read every file this machine lets slamsweep read (the reference "
                                 "included): a private mount namespace is not available here (" + unavailable + ")");
     }

@@ -59,8 +59,9 @@ Html Cell(const MetricCell& cell) {
 /// What a reader must know before comparing the row's numbers with the others.
 Html RowNotes(const AlgorithmRow& row) {
   Html notes;
-  if (row.odometry_is_reference) {
-    notes += T("<br>") + Element("span", "warning", E("odometry = reference: an upper bound, not a SLAM result"));
+  for (const orchestrator::RunFlag flag : row.flags) {
+    notes += T("<br>") + Element("span", "warning", E(std::string(orchestrator::RunFlagLabel(flag)) + ": " +
+                                                      std::string(orchestrator::RunFlagMeaning(flag))));
   }
   if (row.seeding == "unseeded" || row.seeding == "mixed") {
     notes += T("<br>") + Element("span", "warning",
@@ -256,9 +257,9 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
   Html body = Element("p", "status-" + status,
                       E("Status: " + status + (record.failure_kind.empty() ? "" : " (" + record.failure_kind + ")") +
                         (record.reason.empty() ? "" : ": " + record.reason)));
-  if (record.odometry_is_reference) {
-    body += Element("p", "warning", E("odometry = reference: an upper bound, not a SLAM result (the program's odometry "
-                                      "was the reference trajectory)"));
+  for (const orchestrator::RunFlag flag : record.flags) {
+    body += Element("p", "warning", E(std::string(orchestrator::RunFlagLabel(flag)) + ": " +
+                                      std::string(orchestrator::RunFlagMeaning(flag))));
   }
   body += KeyValueTable({
       {"Algorithm", record.algorithm},

@@ -28,8 +28,9 @@ Html LengthTable(const SiteData& site, const SequenceModel& sequence, const Segm
   for (const SegmentRow& row : table.rows) {
     const AlgorithmRow& algorithm = sequence.rows[row.row];
     Html name = AlgorithmSwatch(site, algorithm.name) + E(algorithm.algorithm);
-    if (algorithm.odometry_is_reference) {
-      name += T("<br>") + Element("span", "warning", E("odometry = reference: an upper bound, not a SLAM result"));
+    for (const orchestrator::RunFlag flag : algorithm.flags) {
+      name += T("<br>") + Element("span", "warning", E(std::string(orchestrator::RunFlagLabel(flag)) + ": " +
+                                                       std::string(orchestrator::RunFlagMeaning(flag))));
     }
     for (const std::string& note : row.notes) name += T("<br>") + Element("span", "warning", E(note));
     Html line = Element("th", "", name);

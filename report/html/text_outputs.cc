@@ -28,7 +28,7 @@ std::string CellText(const std::string& name, const MetricColumn& column, const 
 std::string Header(const SequenceModel& sequence, const AlgorithmRow& row) {
   return "algorithm: " + row.name + "\nparameters: " + (row.parameters.empty() ? "-" : row.parameters) +
          "\nsequence: " + sequence.name + "\nnoise: " + sequence.noise +
-         (row.odometry_is_reference ? "\nnote: odometry = reference: an upper bound, not a SLAM result" : "") +
+         (row.flags.empty() ? "" : "\nflags: " + orchestrator::RunFlagsLabel(row.flags)) +
          "\nruns: " +
          std::to_string(row.counts.total) + "\nok: " + std::to_string(row.counts.ok) +
          "\nfailed: " + std::to_string(row.counts.failed) + "\n";

@@ -98,6 +98,7 @@ void ReadRunSpec(const std::filesystem::path& file, RunRecord& run) {
     run.odometry_is_reference = it->get<bool>();
   }
   run.seeding = OptionalString(spec, "seeding", file);
+  run.flags = orchestrator::RunFlagsOf(spec, nullptr);
   run.sweep = OptionalString(spec, "sweep", file);
   run.iteration = OptionalInteger(spec, "iteration", file).value_or(0);
 }
@@ -126,6 +127,7 @@ void ReadResult(const std::filesystem::path& file, RunRecord& run) {
   if (const auto it = result.find("odometry_is_reference"); it != result.end() && it->is_boolean()) {
     run.odometry_is_reference = it->get<bool>();
   }
+  run.flags = orchestrator::RunFlagsOf(run.run_spec, result);
   run.warnings = OptionalStrings(result, "warnings", file);
   if (const auto it = result.find("outputs"); it != result.end() && !it->is_null()) {
     if (!it->is_object()) FieldError(file, "outputs", "an object");

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "orchestrator/run/run_flags.h"
+
 namespace slamsweep::report {
 
 /// What became of a run, as far as its folder tells.
@@ -51,6 +53,8 @@ struct RunRecord {
   nlohmann::json parameter_values = nlohmann::json::object();
   /// The program got the reference as odometry (result.json when measured, else run.json).
   bool odometry_is_reference = false;
+  /// The run's marks (RunFlagsOf run.json and result.json): a flagged run is shown, never ranked.
+  orchestrator::RunFlags flags;
   /// run.json's seeding: "seeded", "deterministic", "unseeded" ("" when not recorded).
   std::string seeding;
   /// run.json's sweep name.

@@ -166,13 +166,13 @@ std::optional<SegmentTable> BuildSegmentTable(const SweepModel& model, const Seq
   for (std::size_t k = 0; k < table.lengths_m.size(); ++k) {
     double best = std::numeric_limits<double>::infinity();
     for (const SegmentRow& row : table.rows) {
-      if (row.cells[k].mean_drift_pct.n > 0 && !sequence.rows[row.row].odometry_is_reference) {
+      if (row.cells[k].mean_drift_pct.n > 0 && IsBestCandidate(sequence.rows[row.row])) {
         best = std::min(best, row.cells[k].mean_drift_pct.mean);
       }
     }
     for (SegmentRow& row : table.rows) {
       SegmentCell& cell = row.cells[k];
-      cell.best = cell.mean_drift_pct.n > 0 && !sequence.rows[row.row].odometry_is_reference && cell.mean_drift_pct.mean == best;
+      cell.best = cell.mean_drift_pct.n > 0 && IsBestCandidate(sequence.rows[row.row]) && cell.mean_drift_pct.mean == best;
     }
   }
   return table;

@@ -87,16 +87,23 @@ MetricCell BuildCell(const std::vector<RunRecord>& runs, const std::vector<std::
   return cell;
 }
 
+std::string AdapterOf(const RunRecord& run) {
+  const auto algorithm = run.run_spec.find("algorithm");
+  if (algorithm == run.run_spec.end() || !algorithm->is_object()) return {};
+  const auto adapter = algorithm->find("adapter");
+  return adapter != algorithm->end() && adapter->is_string() ? adapter->get<std::string>() : std::string();
+}
+
 void MarkBest(std::vector<AlgorithmRow>& rows, std::vector<MetricCell> AlgorithmRow::* cells, std::size_t columns) {
   for (std::size_t c = 0; c < columns; ++c) {
     double best = std::numeric_limits<double>::infinity();
     for (const AlgorithmRow& row : rows) {
       const MetricCell& cell = (row.*cells)[c];
-      if (cell.summary.n > 0 && !row.odometry_is_reference) best = std::min(best, cell.summary.mean);
+      if (cell.summary.n > 0 && IsBestCandidate(row)) best = std::min(best, cell.summary.mean);
     }
     for (AlgorithmRow& row : rows) {
       MetricCell& cell = (row.*cells)[c];
-      cell.best = cell.summary.n > 0 && !row.odometry_is_reference && cell.summary.mean == best;
+      cell.best = cell.summary.n > 0 && IsBestCandidate(row) && cell.summary.mean == best;
     }
   }
 }
@@ -183,6 +190,8 @@ void Count(const RunRecord& run, RunCounts& counts) {
 
 }  // namespace
 
+bool IsBestCandidate(const AlgorithmRow& row) { return row.kind == RowKind::kContestant && row.flags.empty(); }
+
 std::string MetricSpecLabel(const RunRecord& run, const std::string& metric) {
   const json* details = Find(run.metric_details, metric.c_str());
   const json* specification = details ? Find(*details, "specification") : nullptr;
@@ -251,10 +260,12 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs) {
       row.algorithm = RowLabel(first, found == varying.end() ? kNone : found->second);
       row.seeding = first.seeding;
       row.runs = indices;
+      if (AdapterOf(first) == "odometry") row.kind = RowKind::kOdometryBaseline;
       for (std::size_t index : indices) {
         const RunRecord& run = model.runs[index];
         Count(run, row.counts);
         row.odometry_is_reference = row.odometry_is_reference || run.odometry_is_reference;
+        row.flags |= run.flags;
         if (run.seeding != row.seeding) row.seeding = "mixed";
       }
       for (const MetricColumn& column : sequence.trajectory_columns) {

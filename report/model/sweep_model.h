@@ -10,6 +10,10 @@
 
 namespace slamsweep::report {
 
+struct AlgorithmRow;
+/// Whether a row may be ranked and marked best: a contestant without any run mark.
+bool IsBestCandidate(const AlgorithmRow& row);
+
 /// One table column: one flat metric computed under one specification. Runs whose
 /// specifications differ (say alignment se2 and sim2) get separate columns, because numbers from
 /// different specifications must never share a column (spec/metrics.md).
@@ -38,6 +42,15 @@ struct RunCounts {
   std::size_t unfinished = 0;  ///< unfinished or unreadable
 };
 
+/// What a row is to the comparison: only contestants are ranked and marked best; the other kinds are
+/// drawn beside them as reference lines.
+enum class RowKind {
+  kContestant,        ///< a SLAM program's runs
+  kOdometryBaseline,  ///< the odometry baseline (adapter "odometry"): dead reckoning, the line to beat
+  kReferenceFloor,    ///< the reference trajectory itself, scored by the table's metrics
+  kPublished,         ///< a published figure for the same data, with its citation
+};
+
 /// One comparison group: an algorithm with one set of parameter values, on the table's sequence and
 /// noise setting. Runs of other parameter values are other rows, never pooled into this one.
 struct AlgorithmRow {
@@ -49,6 +62,9 @@ struct AlgorithmRow {
   std::string parameters;
   /// Some run of the row got the reference as odometry: an upper bound, not a SLAM result.
   bool odometry_is_reference = false;
+  /// The union of the row's run marks: a flagged row is shown, never marked best.
+  orchestrator::RunFlags flags;
+  RowKind kind = RowKind::kContestant;
   /// "seeded", "deterministic", "unseeded" or "mixed"; "" when not recorded.
   std::string seeding;
   RunCounts counts;

@@ -241,7 +241,9 @@ TEST_F(ViewsModelTest, RowsWhoseOdometryIsTheReferenceAreNeverBest) {
   }
   testing::WriteFixtureSweep(dir_ / "sweep", runs);
   std::vector<RunRecord> records = LoadRuns(dir_ / "sweep");
-  for (RunRecord& record : records) record.odometry_is_reference = record.parameters == "p=1";
+  for (RunRecord& record : records) {
+    record.flags.Set(orchestrator::RunFlag::kOdometryIsReference, record.parameters == "p=1");
+  }
   const SweepModel model = BuildSweepModel(std::move(records));
   const SequenceModel& intel = model.sequences[0];
   const std::optional<ParameterTable> table = BuildParameterTable(model, intel);

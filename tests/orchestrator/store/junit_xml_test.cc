@@ -14,6 +14,7 @@ namespace {
 
 using nlohmann::json;
 using ::testing::HasSubstr;
+using ::testing::Not;
 using testing::MakeFailedResult;
 using testing::MakeOkResult;
 using testing::MakeSpec;
@@ -187,6 +188,17 @@ TEST(JUnitXmlTest, EmptyRunListIsAValidDocument) {
   ASSERT_FALSE(xml.is_discarded());
   EXPECT_EQ(xml.at("attrib").at("tests"), "0");
   EXPECT_TRUE(xml.at("suites").empty());
+}
+
+TEST(JUnitXmlTest, AFlaggedRunCarriesEachFlagAsAPropertyAndItsMeaningInItsOutput) {
+  const auto result = MakeOkResult("r");
+  StoredRun run = MakeRun(MakeSpec("r"), result, MetricsOf(result));
+  run.flags = RunFlags{RunFlag::kStale, RunFlag::kUnisolated};
+  const std::string xml = RenderJUnit({run});
+  EXPECT_THAT(xml, HasSubstr("<property name=\"flag\" value=\"stale\"/>"));
+  EXPECT_THAT(xml, HasSubstr("<property name=\"flag\" value=\"unisolated\"/>"));
+  EXPECT_THAT(xml, HasSubstr(std::string(RunFlagMeaning(RunFlag::kUnisolated))));
+  EXPECT_THAT(RenderJUnit({MakeRun(MakeSpec("r"), result, MetricsOf(result))}), Not(HasSubstr("<properties>")));
 }
 
 }  // namespace

@@ -280,5 +280,50 @@ TEST(ResultsStoreTest, ImportSweepReusesAnIdenticalSweep) {
   EXPECT_EQ(store.Sweeps()[0].run_count, 3);
 }
 
+TEST(ResultsStoreTest, RunFlagsAreRecordedAddedAndReadBack) {
+  slamsweep::testing::TempDir dir;
+  const auto file = dir / "results.sqlite";
+  ResultsStore store = ResultsStore::Open(file);
+  const std::int64_t sweep = store.BeginSweep(SweepInfo{});
+  nlohmann::json result = MakeOkResult("r1");
+  result["flags"] = {"unisolated"};
+  nlohmann::json spec = MakeSpec("r1");
+  spec["odometry_is_reference"] = true;
+  store.RecordRun(sweep, spec, result, "runs/r1");
+  store.RecordRun(sweep, MakeSpec("r2"), MakeOkResult("r2"), "runs/r2");
+  EXPECT_EQ(store.FindRun("r1")->flags, (RunFlags{RunFlag::kOdometryIsReference, RunFlag::kUnisolated}));
+  EXPECT_TRUE(store.FindRun("r2")->flags.empty());
+
+  EXPECT_TRUE(store.AddRunFlags("r2", RunFlags{RunFlag::kStale}));
+  EXPECT_FALSE(store.AddRunFlags("nope", RunFlags{RunFlag::kStale}));
+  const std::optional<StoredRun> stale = store.FindRun("r2");
+  EXPECT_EQ(stale->flags, RunFlags{RunFlag::kStale});
+  EXPECT_EQ(stale->result.at("flags"), nlohmann::json::array({"stale"}));
+  SqliteDb db = SqliteDb::Open(file, false);
+  auto column = db.Prepare("SELECT flags FROM runs WHERE run_id = 'r1'");
+  ASSERT_TRUE(column.Step());
+  EXPECT_EQ(column.Text(0), "odometry_is_reference;unisolated");
+}
+
+TEST(ResultsStoreTest, AVersion2StoreGainsTheFlagsColumnAndDerivesFlagsFromItsRuns) {
+  slamsweep::testing::TempDir dir;
+  const auto file = dir / "results.sqlite";
+  {
+    ResultsStore store = ResultsStore::Open(file);
+    nlohmann::json spec = MakeSpec("old");
+    spec["odometry_is_reference"] = true;
+    store.RecordRun(store.BeginSweep(SweepInfo{}), spec, MakeOkResult("old"), "runs/old");
+  }
+  {
+    // What a slamsweep of schema version 2 left: no flags column.
+    SqliteDb db = SqliteDb::Open(file, false);
+    db.Execute("ALTER TABLE runs DROP COLUMN flags");
+    db.Execute("PRAGMA user_version = 2");
+  }
+  ResultsStore reopened = ResultsStore::Open(file);
+  EXPECT_EQ(QueryInt(file, "PRAGMA user_version"), kResultsSchemaVersion);
+  EXPECT_EQ(reopened.FindRun("old")->flags, RunFlags{RunFlag::kOdometryIsReference});
+}
+
 }  // namespace
 }  // namespace slamsweep::orchestrator

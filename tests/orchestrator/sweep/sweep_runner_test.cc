@@ -8,6 +8,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "orchestrator/store/results_store.h"
+#include "orchestrator/store/run_folder.h"
 #include "orchestrator/sweep/output_lock.h"
 #include "tests/orchestrator/sweep/fake_executor.h"
 #include "tests/support/shared_data.h"
@@ -127,6 +128,12 @@ TEST(SweepRunner, ARunScoredUnderOtherEvaluationOptionsIsRunAgain) {
   const SweepOutcome reused = RunSweep(runs, reuse, kept, status);
   EXPECT_TRUE(kept.started.empty());
   EXPECT_EQ(reused.stale, 1u);
+  // The reused run is marked stale in its folder and its store row; the fresh one is not.
+  ResultsStore store = ResultsStore::Open(dir.path() / "results.sqlite");
+  EXPECT_EQ(store.FindRun(runs[1].run_id)->flags, RunFlags{RunFlag::kStale});
+  EXPECT_TRUE(store.FindRun(runs[0].run_id)->flags.empty());
+  const nlohmann::json result = ReadJsonFile(dir.path() / "runs" / runs[1].run_id / "result.json");
+  EXPECT_EQ(result.at("flags"), nlohmann::json::array({"stale"}));
 }
 
 // The reference map is scoring too (not part of the run id): naming another one makes the map scores
