@@ -5,6 +5,9 @@
 #include <map>
 #include <set>
 
+#include "report/model/validity_runs.h"
+#include "report/model/validity_support.h"
+
 namespace slamsweep::report {
 
 namespace {
@@ -67,7 +70,7 @@ std::vector<MetricColumn> BuildColumns(const std::vector<RunRecord>& runs, const
       if (std::find(specs.begin(), specs.end(), spec) == specs.end()) specs.push_back(std::move(spec));
     }
     for (std::string& spec : specs) {
-      columns.push_back({candidate.metric, candidate.statistic, candidate.title, unit, std::move(spec)});
+      columns.push_back({candidate.metric, candidate.statistic, candidate.title, unit, std::move(spec), {}});
     }
   }
   return columns;
@@ -94,17 +97,31 @@ std::string AdapterOf(const RunRecord& run) {
   return adapter != algorithm->end() && adapter->is_string() ? adapter->get<std::string>() : std::string();
 }
 
-void MarkBest(std::vector<AlgorithmRow>& rows, std::vector<MetricCell> AlgorithmRow::* cells, std::size_t columns) {
-  for (std::size_t c = 0; c < columns; ++c) {
+void MarkBest(std::vector<AlgorithmRow>& rows, const std::vector<MetricColumn>& columns,
+              std::vector<MetricCell> AlgorithmRow::* cells) {
+  for (std::size_t c = 0; c < columns.size(); ++c) {
     double best = std::numeric_limits<double>::infinity();
     for (const AlgorithmRow& row : rows) {
       const MetricCell& cell = (row.*cells)[c];
-      if (cell.summary.n > 0 && IsBestCandidate(row)) best = std::min(best, cell.summary.mean);
+      if (IsBestCandidate(row, columns[c], cell)) best = std::min(best, cell.summary.mean);
     }
     for (AlgorithmRow& row : rows) {
       MetricCell& cell = (row.*cells)[c];
-      cell.best = cell.summary.n > 0 && IsBestCandidate(row) && cell.summary.mean == best;
+      cell.best = IsBestCandidate(row, columns[c], cell) && cell.summary.mean == best;
     }
+  }
+}
+
+/// A ground-truth-free map metric names a best run only where the validity study supports it.
+void WithholdUnsupportedBest(SequenceModel& sequence, const SweepModel& model, const SweepModelOptions& options) {
+  for (MetricColumn& column : sequence.map_columns) {
+    const std::string key = column.metric + "." + column.statistic;
+    const evaluator::ValidityQuantity* quantity = evaluator::FindValidityQuantity(key);
+    if (!quantity || quantity->kind != std::string_view("paper map metric")) continue;  // a real error
+    const ValiditySupport support = SupportFor(key, sequence.name, model.validity,
+                                               options.named_study ? &*options.named_study : nullptr,
+                                               options.named_study_source);
+    if (!support.supported) column.best_withheld = support.reason;
   }
 }
 
@@ -190,7 +207,15 @@ void Count(const RunRecord& run, RunCounts& counts) {
 
 }  // namespace
 
-bool IsBestCandidate(const AlgorithmRow& row) { return row.kind == RowKind::kContestant && row.flags.empty(); }
+bool IsBestCandidate(const AlgorithmRow& row) {
+  return row.kind == RowKind::kContestant && row.flags.empty() && !row.odometry_is_reference && row.counts.total > 0 &&
+         row.counts.ok == row.counts.total;
+}
+
+bool IsBestCandidate(const AlgorithmRow& row, const MetricColumn& column, const MetricCell& cell) {
+  return IsBestCandidate(row) && column.best_withheld.empty() && cell.summary.n > 0 &&
+         cell.summary.n == row.counts.total;
+}
 
 std::string MetricSpecLabel(const RunRecord& run, const std::string& metric) {
   const json* details = Find(run.metric_details, metric.c_str());
@@ -215,10 +240,11 @@ std::string MetricSpecLabel(const RunRecord& run, const std::string& metric) {
   return {};
 }
 
-SweepModel BuildSweepModel(std::vector<RunRecord> runs) {
+SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions& options) {
   SweepModel model;
   std::sort(runs.begin(), runs.end(), [](const RunRecord& a, const RunRecord& b) { return a.run_id < b.run_id; });
   model.runs = std::move(runs);
+  model.validity = evaluator::ComputeValidityStudy(ToValidityRuns(model.runs));
   // Table (sequence, noise) -> row (algorithm name, parameters) -> runs.
   using RowKey = std::pair<std::string, std::string>;
   std::map<std::pair<std::string, std::string>, std::map<RowKey, std::vector<std::size_t>>> tables;
@@ -277,8 +303,9 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs) {
       ChooseMedianRun(model.runs, row);
       sequence.rows.push_back(std::move(row));
     }
-    MarkBest(sequence.rows, &AlgorithmRow::trajectory_cells, sequence.trajectory_columns.size());
-    MarkBest(sequence.rows, &AlgorithmRow::map_cells, sequence.map_columns.size());
+    WithholdUnsupportedBest(sequence, model, options);
+    MarkBest(sequence.rows, sequence.trajectory_columns, &AlgorithmRow::trajectory_cells);
+    MarkBest(sequence.rows, sequence.map_columns, &AlgorithmRow::map_cells);
     model.sequences.push_back(std::move(sequence));
   }
   return model;

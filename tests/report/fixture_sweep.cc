@@ -128,7 +128,7 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
     const json spec = {
         {"run_id", id},
         {"sweep", "fixture"},
-        {"algorithm", {{"name", run.algorithm}, {"adapter", "generic"}, {"parameters", run.parameters},
+        {"algorithm", {{"name", run.algorithm}, {"adapter", run.adapter}, {"parameters", run.parameters},
                        {"timeout_s", 300}, {"memory_limit_mb", 4096}, {"command", nullptr}}},
         {"group", {{"sequence", run.sequence}, {"algorithm", run.algorithm}, {"parameters", ParametersTextOf(run.parameters)},
                    {"noise", run.noise}}},

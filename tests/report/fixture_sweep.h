@@ -13,6 +13,7 @@ namespace slamsweep::report::testing {
 /// reference, where the worker computes no ATE).
 struct FixtureRun {
   std::string algorithm = "icp-slam";
+  std::string adapter = "generic";  ///< run.json's algorithm.adapter ("odometry" makes the baseline row)
   std::string sequence = "intel";
   std::string noise = "clean";
   int iteration = 0;
