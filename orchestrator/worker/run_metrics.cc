@@ -168,13 +168,25 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
     Attempt(out, "paper_map", [&] {
       ev::PaperMetricsOptions paper_options;
       paper_options.canvas.crop = evaluation.crop;
-      const ev::PaperMetrics paper = ev::ComputePaperMetrics(*inputs.map, paper_options);
+      // One scale for every program: the metrics count cells (blur, corner spacing, minimum areas),
+      // so each map is scored on evaluation.map_resolution_m cells, grey levels kept.
+      const ev::PaperMetrics paper = ev::ComputePaperMetrics(
+          ev::ResampleKeepingProbabilities(*inputs.map, evaluation.map_resolution_m), paper_options);
       out.metrics.push_back({"occupied_to_free_unknown", "value", paper.occupied.occupied_to_free_unknown, "ratio"});
       out.metrics.push_back({"occupied_to_all", "value", paper.occupied.occupied_to_all, "ratio"});
       out.metrics.push_back({"unknown_to_all", "value", paper.occupied.unknown_to_all, "ratio"});
       out.metrics.push_back({"corners", "value", static_cast<double>(paper.corners.corners), "count"});
       out.metrics.push_back({"enclosed_areas", "value", static_cast<double>(paper.enclosed.enclosed_areas), "count"});
       out.details["paper_map"] = paper.ToJson();
+      out.details["paper_map"]["resolution_m"] = evaluation.map_resolution_m;
+      out.details["paper_map"]["map_resolution_m"] = inputs.map->resolution_m;
+      if (inputs.map->resolution_m > evaluation.map_resolution_m * (1.0 + 1e-9)) {
+        out.warnings.push_back(fmt::format(
+            "paper_map: the map's {} m cells are scored on {} m cells (evaluation.map_resolution_m): each is repeated, "
+            "so its staircase edges count as corners; score every map of the sweep at the coarsest cell size to "
+            "compare maps of different cell sizes",
+            inputs.map->resolution_m, evaluation.map_resolution_m));
+      }
     });
   }
   if (inputs.map && inputs.reference_map) {

@@ -54,7 +54,9 @@ struct MetricInputs {
 /// rigid alignment does not change relative errors), the segment RPE at evaluation.rpe_segments_m
 /// (SegmentRpeMetricName; its lengths, and how they were chosen, in details["segment_rpe"]),
 /// relations_trans/rot (Kuemmerle et al.), and
-/// always the paper map metrics. A metric that cannot be computed becomes a warning, never an
+/// always the paper map metrics, on the map resampled to evaluation.map_resolution_m
+/// (ResampleKeepingProbabilities; details["paper_map"] records resolution_m, the scale scored, and
+/// map_resolution_m, the program's own). A metric that cannot be computed becomes a warning, never an
 /// exception: the others still count. An invalid evaluation option (unknown alignment) is an
 /// InputError naming it.
 RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricInputs& inputs);
