@@ -18,7 +18,8 @@ constexpr std::array kRoster = {
     RosterAlgorithm{"tinyslam", "slam-constructor", "tinySLAM (slam-constructor)", "MIT", Seeding::kSeeded},
     RosterAlgorithm{"vinyslam", "slam-constructor", "vinySLAM (slam-constructor)", "MIT", Seeding::kSeeded},
     RosterAlgorithm{"hector", "hector", "Hector SLAM (hector_slam_lib)", "BSD", Seeding::kDeterministic},
-    RosterAlgorithm{"cartographer", "cartographer", "Cartographer", "Apache-2.0", Seeding::kDeterministic},
+    RosterAlgorithm{"cartographer", "cartographer", "Cartographer", "Apache-2.0", Seeding::kDeterministic,
+                    "slamsweep-slam-cartographer.lua"},
 };
 
 fs::path FromEnvironment(const char* variable, const char* fallback) {
@@ -50,6 +51,26 @@ fs::path RosterDriver(const RosterAlgorithm& algorithm) {
                                 built.parent_path().string() + " and PATH); install it with scripts/install-slam.sh " +
                                 std::string(algorithm.upstream) + " && scripts/build.sh");
   }
+}
+
+std::vector<fs::path> RosterProgramFiles(const RosterAlgorithm& algorithm) {
+  const fs::path driver = RosterDriver(algorithm);
+  std::vector<fs::path> files = {driver};
+  if (!algorithm.config_file.empty()) {
+    const fs::path config = driver.parent_path() / algorithm.config_file;
+    if (!fs::is_regular_file(config)) {
+      throw evaluator::InputError("algorithm.adapter " + std::string(algorithm.name) + ": " + config.string() +
+                                  " missing (the driver's configuration, copied beside it by scripts/build.sh)");
+    }
+    files.push_back(config);
+  }
+  const fs::path manifest = RosterManifestPath(algorithm);
+  if (!fs::is_regular_file(manifest)) {
+    throw evaluator::InputError("algorithm.adapter " + std::string(algorithm.name) + ": " + manifest.string() +
+                                " missing: install the upstream with scripts/install-slam.sh " + std::string(algorithm.upstream));
+  }
+  files.push_back(manifest);
+  return files;
 }
 
 fs::path RosterManifestPath(const RosterAlgorithm& algorithm) {

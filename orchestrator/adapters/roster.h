@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -20,6 +21,8 @@ struct RosterAlgorithm {
   std::string_view title;     ///< what the report and `slamsweep algorithms` call it
   std::string_view license;   ///< the upstream's licence (the driver links it)
   Seeding seeding;            ///< whether the run's seed reaches a random generator
+  /// A file beside the driver that it reads as configuration ("" for none): part of the build identity.
+  std::string_view config_file = "";
 };
 
 /// GMapping, tinySLAM, vinySLAM, Hector SLAM and Cartographer, in the paper's order.
@@ -35,6 +38,11 @@ std::filesystem::path RosterPrefix();
 /// ($SLAMSWEEP_SLAM_DRIVER_DIR overrides it), else in PATH. Throws InputError saying how to install
 /// it when it is in neither.
 std::filesystem::path RosterDriver(const RosterAlgorithm& algorithm);
+
+/// The files a run of the driver executes or reads as configuration: the driver, its config_file
+/// beside it, and the upstream's install manifest (which names the pinned commit). Throws InputError
+/// naming a missing one and how to install it.
+std::vector<std::filesystem::path> RosterProgramFiles(const RosterAlgorithm& algorithm);
 
 /// <prefix>/share/slamsweep/slam/<upstream>.json, written by install-slam.sh (upstream, commit,
 /// licence, tarball hash, build time).

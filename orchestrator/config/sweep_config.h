@@ -15,6 +15,9 @@
 //   workers: 2                       # default --jobs (0 = number of cores)
 //   failure_budget: 0                # stop starting new runs after this many failures; 0 = never stop
 //   evaluation: {align: se2, rpe_delta_m: 1.0, t_max_diff_s: 0.01, stages: 24, map_resolution_m: 0.05}
+//                                    # min_coverage: 0.95 (a run whose trajectory spans less of the reference's
+//                                    #   time span fails); map_resolution_m is also the cell size the paper's
+//                                    #   map metrics score every map on
 //                                    # rpe_segments_m: auto (default: 10-50 % of the reference path, rounded to 1 m,
 //                                    #   as KITTI/rpg) or a list such as [5, 10, 20]; [] = no segment RPE
 //   validity_study: ../out/validity/summary.json  # optional: the metric validity study of another sweep (its

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/adapters/run_failure.h"
 #include "evaluator/map/paper_metrics.h"
 #include "evaluator/map_compare/map_compare.h"
 #include "evaluator/map_compare/map_resample.h"
@@ -112,6 +113,16 @@ std::string SegmentRpeMetricName(std::string_view kind, double length_m) {
   return fmt::format("segment_{}_{}m", kind, length);
 }
 
+void RequireCoverage(const EvaluationOptions& evaluation, const RunMetrics& metrics) {
+  if (!metrics.coverage || metrics.coverage->fraction >= evaluation.min_coverage) return;
+  const ev::TrajectoryCoverage& c = *metrics.coverage;
+  throw RunFailure(FailureKind::kIncompleteTrajectory,
+                   fmt::format("the trajectory covers {:.1f} % of the reference's time span ({:.1f} to {:.1f} s of "
+                               "{:.1f} to {:.1f} s), below evaluation.min_coverage {:.0f} %",
+                               100.0 * c.fraction, c.estimate_start_s, c.estimate_end_s, c.reference_start_s,
+                               c.reference_end_s, 100.0 * evaluation.min_coverage));
+}
+
 nlohmann::json ToJson(const FlatMetric& metric) {
   return {{"metric", metric.metric}, {"statistic", metric.statistic}, {"value", metric.value}, {"unit", metric.unit}};
 }
@@ -126,6 +137,11 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
   // The estimate-to-reference transform of the ATE: the map-versus-reference scores place the map with it.
   std::optional<ev::Alignment> ape_alignment;
   if (inputs.estimate && inputs.reference) {
+    Attempt(out, "coverage", [&] {
+      out.coverage = ev::ComputeCoverage(*inputs.reference, *inputs.estimate);
+      out.details["coverage"] = out.coverage->ToJson();
+      out.details["coverage"]["min_coverage"] = evaluation.min_coverage;
+    });
     for (const auto& [name, relation] : {std::pair<const char*, ev::PoseRelation>{"ape_trans", ev::PoseRelation::kTranslation},
                                          {"ape_rot", ev::PoseRelation::kRotationDeg}}) {
       Attempt(out, name, [&, name = std::string(name), relation = relation] {

@@ -64,6 +64,11 @@ Html RowNotes(const AlgorithmRow& row) {
                                  E("baseline: the odometry as the robot recorded it (with the table's noise), the line "
                                    "a SLAM program must beat; never ranked"));
   }
+  if (row.build_split) {
+    notes += T("<br>") + Element("span", "warning",
+                                 E("build " + row.build + " (" + row.build_description +
+                                   "): runs of this algorithm by other builds are other rows, never pooled with these"));
+  }
   if (row.kind == RowKind::kContestant && row.counts.ok < row.counts.total) {
     notes += T("<br>") + Element("span", "warning",
                                  E("not ranked: " + std::to_string(row.counts.total - row.counts.ok) + " of " +

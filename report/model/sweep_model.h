@@ -63,8 +63,9 @@ enum class RowKind {
   kPublished,         ///< a published figure for the same data, with its citation
 };
 
-/// One comparison group: an algorithm with one set of parameter values, on the table's sequence and
-/// noise setting. Runs of other parameter values are other rows, never pooled into this one.
+/// One comparison group: an algorithm with one set of parameter values, computed by one build, on the
+/// table's sequence and noise setting. Runs of other parameter values or builds are other rows,
+/// never pooled into this one.
 struct AlgorithmRow {
   /// What the row is called everywhere (tables, legends, galleries, file folders): the algorithm's
   /// name, followed by "[k=v;...]" of the parameters whose values differ between its rows in the sweep.
@@ -77,6 +78,11 @@ struct AlgorithmRow {
   /// The union of the row's run marks: a flagged row is shown, never marked best.
   orchestrator::RunFlags flags;
   RowKind kind = RowKind::kContestant;
+  /// BuildSignature of the row's runs; rows of one algorithm and parameters computed by different
+  /// builds are separate rows (`build_split`), labelled with it and never pooled.
+  std::string build;
+  bool build_split = false;
+  std::string build_description;  ///< BuildDescriptionOfRunJson, for the note of a split row
   /// "seeded", "deterministic", "unseeded" or "mixed"; "" when not recorded.
   std::string seeding;
   RunCounts counts;

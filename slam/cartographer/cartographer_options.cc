@@ -1,5 +1,6 @@
 #include "slam/cartographer/cartographer_options.h"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -98,7 +99,12 @@ std::string ValueAt(carto::common::LuaParameterDictionary& options, const Listed
 }  // namespace
 
 CartographerOptions ReadCartographerOptions(Parameters& parameters) {
-  const std::string base = ReadFile(std::string(SLAMSWEEP_CARTOGRAPHER_LUA_DIR) + "/slamsweep_2d.lua");
+  // Beside the program (the build copies slamsweep_2d.lua there): a file a run reads as configuration
+  // sits where slamsweep's build identity finds and hashes it (orchestrator/adapters/roster.h).
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error) throw evaluator::InputError("cannot find the Cartographer driver's own folder: " + error.message());
+  const std::string base = ReadFile((self.parent_path() / "slamsweep-slam-cartographer.lua").string());
   auto resolver = [] {
     return std::make_unique<carto::common::ConfigurationFileResolver>(
         std::vector<std::string>{CARTOGRAPHER_CONFIGURATION_FILES});

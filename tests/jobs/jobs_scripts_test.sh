@@ -504,9 +504,70 @@ EOF
   else
     fail "speed-check.sh exited $status but the table has $missed NO rows"
   fi
+  # The check must be able to fail: a program that spends 200 ms before it starts misses the 10 ms
+  # start-up target on any machine, and the stage must say so (exit 3, a NO row).
+  local slow=$work/slow-slamsweep
+  printf '#!/bin/sh\nsleep 0.2\nexec "%s" "$@"\n' "$SLAMSWEEP_BIN" >"$slow"
+  chmod +x "$slow"
+  expect_status 3 "speed-check.sh on a program 200 ms slow to start" env BENCH_RUNS=1 BENCH_ONLY='^version$' \
+    SLAMSWEEP_BIN="$slow" "$jobs_dir/speed-check.sh" slow
+  if grep -q '| NO |' slow/table.md 2>/dev/null; then
+    pass "the slow program's table has a NO row"
+  else
+    fail "the slow program's table has no NO row: $(cat slow/table.md 2>/dev/null)"
+  fi
+}
+
+# --- programs: one build handed to every shard (jobs/pack-programs.sh, jobs/unpack-programs.sh) ----------
+
+check_programs() {
+  local root=$work/programs-root archive=$work/stash/programs.tar.gz digest_before digest_after
+  mkdir -p "$root/src/configs" "$root/src/.git" "$root/build/slam/bin" "$root/build/CMakeFiles"
+  printf 'binary one\n' >"$root/build/slamsweep"
+  printf 'helper\n' >"$root/build/slamsweep-sweep"
+  printf 'module\n' >"$root/build/slamsweep-rawlog.so"
+  printf 'driver\n' >"$root/build/slam/bin/slamsweep-slam-cartographer"
+  printf 'options = {}\n' >"$root/build/slam/bin/slamsweep-slam-cartographer.lua"
+  printf 'object\n' >"$root/build/CMakeFiles/left-out.o"
+  printf 'name: x\n' >"$root/src/configs/x.yaml"
+  printf 'history\n' >"$root/src/.git/HEAD"
+  digest_before=$(cd "$root" && sha256sum build/slamsweep build/slam/bin/slamsweep-slam-cartographer.lua)
+  expect_status 0 "pack-programs.sh packs the programs of ROOT" "$jobs_dir/pack-programs.sh" "$root" "$archive"
+  if tar -tzf "$archive" | grep -q '/\.git/\|CMakeFiles'; then
+    fail "the archive holds .git or build intermediates"
+  else
+    pass "the archive leaves .git and build intermediates out"
+  fi
+  # Another agent: nothing at ROOT yet.
+  rm -rf -- "$root"
+  expect_status 0 "unpack-programs.sh on an agent without them" "$jobs_dir/unpack-programs.sh" "$archive"
+  expect_log "^programs: $root/build/slamsweep\$" "it names the unpacked program"
+  digest_after=$(cd "$root" && sha256sum build/slamsweep build/slam/bin/slamsweep-slam-cartographer.lua)
+  if [[ "$digest_before" == "$digest_after" ]]; then
+    pass "the unpacked programs are the very bytes that were built (same digests, same paths)"
+  else
+    fail "digests differ after unpacking: $digest_before / $digest_after"
+  fi
+  # A second shard on the same agent: already there, only checked.
+  expect_status 0 "unpack-programs.sh again on the same agent" "$jobs_dir/unpack-programs.sh" "$archive"
+  printf 'tampered\n' >"$root/build/slamsweep"
+  expect_status 5 "unpack-programs.sh over a changed program" "$jobs_dir/unpack-programs.sh" "$archive"
+  # Another night's build left at ROOT with a consistent manifest of its own.
+  printf 'binary two\n' >"$root/build/slamsweep"
+  (cd "$root" && sha256sum build/slamsweep >PROGRAMS.sha256)
+  expect_status 5 "unpack-programs.sh over another build's programs" "$jobs_dir/unpack-programs.sh" "$archive"
+  expect_status 2 "unpack-programs.sh without an archive" "$jobs_dir/unpack-programs.sh" "$work/none.tar.gz"
+  expect_status 2 "pack-programs.sh with a relative ROOT" "$jobs_dir/pack-programs.sh" relative "$archive"
+  # The nightly runs shards from the unpacked programs, not from a build of their own.
+  if grep -q "jobs/unpack-programs.sh" "$jobs_dir/Jenkinsfile.nightly" && grep -q "jobs/build-programs.sh" "$jobs_dir/Jenkinsfile.nightly"; then
+    pass "Jenkinsfile.nightly builds the programs once and unpacks them on every shard"
+  else
+    fail "Jenkinsfile.nightly does not build once and hand the programs to the shards"
+  fi
 }
 
 case $case_name in
+  programs) check_programs ;;
   static)
     check_jenkinsfile "$jobs_dir/Jenkinsfile" 2 "stage('Setup')" "stage('Sweep')" "stage('Publish')" \
       "junit testResults: 'out/junit.xml', allowEmptyResults: false" "archiveArtifacts" "publishHTML" \

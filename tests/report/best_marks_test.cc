@@ -183,6 +183,30 @@ TEST(BestMarksTest, WithoutAnyReferenceOnlyANamedStudyEarnsABest) {
               HasSubstr("the named study validity/summary.json"));
 }
 
+TEST(BuildSplitTest, RunsOfOneAlgorithmByDifferentBuildsAreSeparateLabelledRows) {
+  std::vector<FixtureRun> runs;
+  for (int i = 0; i < 4; ++i) {
+    FixtureRun run = MakeRun("gmapping", "intel", i);
+    run.ape_rmse_m = i < 2 ? 0.1 : 0.3;
+    run.build = {{"slamsweep_revision", "0.1+abc"},
+                 {"program_files", {{"/opt/slamsweep-slam-gmapping", std::string(64, i < 2 ? '1' : '2')}}}};
+    runs.push_back(run);
+  }
+  TempDir dir;
+  const SweepModel model = ModelOf(runs, dir);
+  const SequenceModel& intel = Sequence(model, "intel");
+  ASSERT_EQ(intel.rows.size(), 2u);
+  const std::size_t ate = Column(intel.trajectory_columns, "ape_trans");
+  for (const AlgorithmRow& row : intel.rows) {
+    EXPECT_TRUE(row.build_split);
+    EXPECT_THAT(row.algorithm, HasSubstr("gmapping [build b"));
+    EXPECT_THAT(row.build_description, HasSubstr("slamsweep-slam-gmapping"));
+    EXPECT_EQ(row.counts.total, 2u);
+    EXPECT_DOUBLE_EQ(row.trajectory_cells[ate].summary.std.value_or(-1), 0.0);  // 0.1, 0.1 or 0.3, 0.3: never mixed
+  }
+  EXPECT_NE(intel.rows[0].build, intel.rows[1].build);
+}
+
 TEST(BestMarksTest, ANamedStudyThatIsNotAStudyIsAnErrorNamingTheFile) {
   TempDir dir;
   testing::WriteFixtureSweep(dir.path(), BestFixtureRuns(false));

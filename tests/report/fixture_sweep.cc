@@ -139,7 +139,9 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
         {"seed", 1000 + run.iteration},
         {"evaluation", {{"align", "se2"}, {"rpe_delta_m", 1.0}, {"t_max_diff_s", 0.01}, {"stages", run.stages}}},
         {"thresholds", json::array()}};
-    Write(run_dir / "run.json", spec.dump(2));
+    json written = spec;
+    if (!run.build.is_null()) written["build"] = run.build;
+    Write(run_dir / "run.json", written.dump(2));
     Write(run_dir / "command.txt", "fake-slam\n--input\ninput/log.clf\n");
     Write(run_dir / "log.txt", run.log);
 
