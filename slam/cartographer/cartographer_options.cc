@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include <cartographer/common/configuration_file_resolver.h>
 #include <cartographer/common/lua_parameter_dictionary.h>
@@ -9,6 +10,7 @@
 #include <cartographer/mapping/trajectory_builder_interface.h>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/core/installation.h"
 
 namespace slamsweep::slam::cartographer_driver {
 namespace {
@@ -21,6 +23,12 @@ std::string ReadFile(const std::string& path) {
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+/// An installed driver's copy (PREFIX/share/slamsweep/cartographer/<name>), else the one this build used.
+std::string OptionsPath(std::string_view name, const std::string& build_path) {
+  const auto installed = evaluator::FindInstalledData("cartographer/" + std::string(name));
+  return installed ? installed->string() : build_path;
 }
 
 /// Whether `path` (a.b.c) names an option of `options`: every step must exist. Checked on a
@@ -98,10 +106,11 @@ std::string ValueAt(carto::common::LuaParameterDictionary& options, const Listed
 }  // namespace
 
 CartographerOptions ReadCartographerOptions(Parameters& parameters) {
-  const std::string base = ReadFile(std::string(SLAMSWEEP_CARTOGRAPHER_LUA_DIR) + "/slamsweep_2d.lua");
-  auto resolver = [] {
-    return std::make_unique<carto::common::ConfigurationFileResolver>(
-        std::vector<std::string>{CARTOGRAPHER_CONFIGURATION_FILES});
+  const std::string base =
+      ReadFile(OptionsPath("slamsweep_2d.lua", std::string(SLAMSWEEP_CARTOGRAPHER_LUA_DIR) + "/slamsweep_2d.lua"));
+  const std::string upstream_files = OptionsPath("configuration_files", CARTOGRAPHER_CONFIGURATION_FILES);
+  auto resolver = [&upstream_files] {
+    return std::make_unique<carto::common::ConfigurationFileResolver>(std::vector<std::string>{upstream_files});
   };
   auto plain = carto::common::LuaParameterDictionary::NonReferenceCounted(base + "\nreturn options\n", resolver());
   for (const Listed& listed : kListed) {
