@@ -112,7 +112,7 @@ else
 fi
 in_image "$tag" algorithms >"$out/algorithms.txt" 2>&1 || true
 for algorithm in gmapping tinyslam vinyslam hector cartographer; do
-  if grep -E "^$algorithm\b.*\binstalled\b|^$algorithm\b" "$out/algorithms.txt" | grep -vq "not installed\|not built"; then
+  if grep -qE "^$algorithm +\[installed\]" "$out/algorithms.txt"; then
     pass "slamsweep algorithms: $algorithm installed"
   else
     fail "slamsweep algorithms: $algorithm not installed ($out/algorithms.txt)"
