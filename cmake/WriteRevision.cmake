@@ -1,13 +1,16 @@
 # Run at every build (cmake -P): writes OUTPUT, a header defining SLAMSWEEP_REVISION, only when the
 # text changes, so an unchanged revision recompiles nothing. The revision is `git describe --always
 # --dirty --abbrev=12` of SOURCE_DIR, or outside a git checkout (a source tarball, a Docker build context)
-# $SLAMSWEEP_REVISION when set (docker/Dockerfile's build argument, from the checkout), else "<VERSION>-nogit".
+# $SLAMSWEEP_REVISION when set, else the first line of docker/revision (written from the checkout by
+# docker/build-image.sh), else "<VERSION>-nogit".
 # A run records it: results of an older slamsweep are not silently reused (orchestrator/DESIGN.md).
 execute_process(COMMAND git -C "${SOURCE_DIR}" describe --always --dirty --abbrev=12
                 OUTPUT_VARIABLE revision OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET RESULT_VARIABLE status)
 if(NOT status EQUAL 0 OR revision STREQUAL "")
   if(NOT "$ENV{SLAMSWEEP_REVISION}" STREQUAL "")
     set(revision "$ENV{SLAMSWEEP_REVISION}")
+  elseif(EXISTS "${SOURCE_DIR}/docker/revision")
+    file(STRINGS "${SOURCE_DIR}/docker/revision" revision LIMIT_COUNT 1)
   else()
     set(revision "${VERSION}-nogit")
   endif()

@@ -31,9 +31,10 @@ fi
 
 "$root/docker/build-base.sh" "$(sed -n 's/^ARG BASE=//p' "$root/docker/Dockerfile")"
 
-# The checkout's revision, recorded by every run (the build context has no .git).
+# The checkout's revision, recorded by every run (the build context has no .git). A file rather than a
+# build argument: an argument would be one more instruction, a full layer copy with vfs.
 revision=$(git -C "$root" describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)
+echo "$revision" >"$root/docker/revision"
 start=$(date +%s)
-"$docker_client" build --network host -f "$root/docker/Dockerfile" -t "$tag" \
-  --build-arg SLAMSWEEP_REVISION="$revision" "$@" "$root"
+"$docker_client" build --network host -f "$root/docker/Dockerfile" -t "$tag" "$@" "$root"
 echo "build-image: built $tag ($revision) in $(($(date +%s) - start)) s"
