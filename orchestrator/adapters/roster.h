@@ -31,12 +31,14 @@ std::span<const RosterAlgorithm> Roster();
 /// The roster algorithm whose adapter name is `name`, or nullptr.
 const RosterAlgorithm* FindRosterAlgorithm(std::string_view name);
 
-/// Where the roster's upstream builds are: $SLAMSWEEP_SLAM_PREFIX, else the build's configured prefix.
+/// Where the roster's upstream manifests are (PREFIX/share/slamsweep/slam): $SLAMSWEEP_SLAM_PREFIX, else
+/// the installation the running program belongs to, else the build's configured prefix.
 std::filesystem::path RosterPrefix();
 
-/// The driver as the worker runs it: slamsweep-slam-<name> in the build's slam/bin folder
-/// ($SLAMSWEEP_SLAM_DRIVER_DIR overrides it), else in PATH. Throws InputError saying how to install
-/// it when it is in neither.
+/// The driver as the worker runs it: slamsweep-slam-<name> in $SLAMSWEEP_SLAM_DRIVER_DIR when set,
+/// else beside the helper programs (evaluator/core/installation.h: an installation's lib/slamsweep),
+/// else in the build's slam/bin folder; then in PATH. Throws InputError listing where it looked and
+/// how to install it when it is nowhere.
 std::filesystem::path RosterDriver(const RosterAlgorithm& algorithm);
 
 /// The files a run of the driver executes or reads as configuration: the driver, its config_file

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include <cartographer/common/configuration_file_resolver.h>
 #include <cartographer/common/lua_parameter_dictionary.h>
@@ -10,6 +11,7 @@
 #include <cartographer/mapping/trajectory_builder_interface.h>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/core/installation.h"
 
 namespace slamsweep::slam::cartographer_driver {
 namespace {
@@ -22,6 +24,12 @@ std::string ReadFile(const std::string& path) {
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+/// An installed driver's copy (PREFIX/share/slamsweep/cartographer/<name>), else the one this build used.
+std::string OptionsPath(std::string_view name, const std::string& build_path) {
+  const auto installed = evaluator::FindInstalledData("cartographer/" + std::string(name));
+  return installed ? installed->string() : build_path;
 }
 
 /// Whether `path` (a.b.c) names an option of `options`: every step must exist. Checked on a
@@ -99,15 +107,15 @@ std::string ValueAt(carto::common::LuaParameterDictionary& options, const Listed
 }  // namespace
 
 CartographerOptions ReadCartographerOptions(Parameters& parameters) {
-  // Beside the program (the build copies slamsweep_2d.lua there): a file a run reads as configuration
-  // sits where slamsweep's build identity finds and hashes it (orchestrator/adapters/roster.h).
+  // Beside the program (the build and the installation put slamsweep_2d.lua there): a file a run reads as
+  // configuration sits where slamsweep's build identity finds and hashes it (orchestrator/adapters/roster.h).
   std::error_code error;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
   if (error) throw evaluator::InputError("cannot find the Cartographer driver's own folder: " + error.message());
   const std::string base = ReadFile((self.parent_path() / "slamsweep-slam-cartographer.lua").string());
-  auto resolver = [] {
-    return std::make_unique<carto::common::ConfigurationFileResolver>(
-        std::vector<std::string>{CARTOGRAPHER_CONFIGURATION_FILES});
+  const std::string upstream_files = OptionsPath("configuration_files", CARTOGRAPHER_CONFIGURATION_FILES);
+  auto resolver = [&upstream_files] {
+    return std::make_unique<carto::common::ConfigurationFileResolver>(std::vector<std::string>{upstream_files});
   };
   auto plain = carto::common::LuaParameterDictionary::NonReferenceCounted(base + "\nreturn options\n", resolver());
   for (const Listed& listed : kListed) {
