@@ -31,6 +31,8 @@ packages=(
   python3-prometheus-client wrk
   # the Slurm executor's test: a real one-node cluster on localhost (jobs/slurm/local-cluster.sh)
   slurm-wlm munge
+  # the sandbox every SLAM program runs in (orchestrator/sandbox)
+  bubblewrap
 )
 
 if (($# > 0)); then

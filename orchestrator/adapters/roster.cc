@@ -52,6 +52,12 @@ fs::path RosterDriver(const RosterAlgorithm& algorithm) {
   }
 }
 
+std::vector<fs::path> RosterProgramReads(const RosterAlgorithm& algorithm) {
+  std::vector<fs::path> reads = {fs::absolute(RosterPrefix()).lexically_normal()};
+  if (algorithm.upstream == "cartographer") reads.emplace_back(SLAMSWEEP_CARTOGRAPHER_LUA_DIR);
+  return reads;
+}
+
 fs::path RosterManifestPath(const RosterAlgorithm& algorithm) {
   return RosterPrefix() / "share" / "slamsweep" / "slam" / (std::string(algorithm.upstream) + ".json");
 }

@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -35,6 +36,10 @@ std::filesystem::path RosterPrefix();
 /// ($SLAMSWEEP_SLAM_DRIVER_DIR overrides it), else in PATH. Throws InputError saying how to install
 /// it when it is in neither.
 std::filesystem::path RosterDriver(const RosterAlgorithm& algorithm);
+
+/// What the driver reads besides its input: the installed upstreams (libraries, Cartographer's
+/// configuration files) and, for Cartographer, the driver's Lua options in the source tree.
+std::vector<std::filesystem::path> RosterProgramReads(const RosterAlgorithm& algorithm);
 
 /// <prefix>/share/slamsweep/slam/<upstream>.json, written by install-slam.sh (upstream, commit,
 /// licence, tarball hash, build time).

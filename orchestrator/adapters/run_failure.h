@@ -15,12 +15,15 @@ enum class FailureKind {
   kCorruptOutput,
   kInputError,
   kMemoryLimit,
+  kProcessLimit,
+  kDiskLimit,
+  kNotIsolated,
   kInterrupted,
   kInternal,
 };
 
 /// "timeout", "signal", "exit_code", "missing_output", "corrupt_output", "input_error",
-/// "memory_limit", "interrupted", "internal".
+/// "memory_limit", "process_limit", "disk_limit", "not_isolated", "interrupted", "internal".
 std::string_view FailureKindName(FailureKind kind);
 
 /// A failure of one run that an adapter detects (an output missing or unreadable). The worker
