@@ -34,6 +34,8 @@ struct ChildSetup : bp::extend::handler {
   int kept_fd = -1;
   /// The user the child becomes before exec (a sandbox started by root); nullopt: the runner's.
   std::optional<SandboxSpec::User> user;
+  /// A pids cgroup's cgroup.procs the child joins before exec; nullptr: none.
+  const char* cgroup_procs = nullptr;
 
   template <typename Executor>
   void on_exec_setup(Executor&) const {
@@ -52,6 +54,13 @@ struct ChildSetup : bp::extend::handler {
     // open until exec, and the standard streams set up later by dup2 are below 3.
     ::close_range(3, ~0U, CLOSE_RANGE_CLOEXEC);
     if (kept_fd >= 0) ::fcntl(kept_fd, F_SETFD, 0);
+    if (cgroup_procs != nullptr) {
+      // "0": the writing process; everything it starts from now on is counted there.
+      const int procs = ::open(cgroup_procs, O_WRONLY | O_CLOEXEC);
+      const bool joined = procs >= 0 && ::write(procs, "0", 1) == 1;
+      if (procs >= 0) ::close(procs);
+      if (!joined) ::_exit(126);
+    }
     if (user) {
       // Raw system calls: glibc's wrappers would signal every thread of the (vfork-shared) parent.
       if (::syscall(SYS_setgroups, 0, nullptr) != 0 || ::syscall(SYS_setresgid, user->gid, user->gid, user->gid) != 0 ||
@@ -141,8 +150,12 @@ SpawnResult SpawnChild(const ProcessSpec& spec) {
     // vfork: the supervisor links OpenCV and MRPT, and copying its page tables for every fork was the
     // largest part of the per-run overhead (bench/sweep_bench). ChildSetup writes no shared memory.
     std::optional<SandboxSpec::User> user;
-    if (spec.sandbox) user = spec.sandbox->user;
-    bp::child child(ChildSetup{{}, ::getpid(), status_write, user}, bp::posix::use_vfork, bp::exe = executable,
+    const char* cgroup_procs = nullptr;
+    if (spec.sandbox) {
+      user = spec.sandbox->user;
+      if (!spec.sandbox->pids_cgroup_procs.empty()) cgroup_procs = spec.sandbox->pids_cgroup_procs.c_str();
+    }
+    bp::child child(ChildSetup{{}, ::getpid(), status_write, user, cgroup_procs}, bp::posix::use_vfork, bp::exe = executable,
                     bp::args = args, bp::std_in < bp::null, (bp::std_out & bp::std_err) > pipe,
                     bp::start_dir = working_dir, environment, ec);
     if (status_write >= 0) ::close(status_write);

@@ -27,9 +27,13 @@ struct SandboxSpec {
   std::uint64_t process_limit = 0;
   /// The largest file it may write (RLIMIT_FSIZE), also the size of its /tmp and /dev/shm; 0 = none.
   std::uint64_t file_size_limit_bytes = 0;
-  /// When set, bubblewrap itself is started under this user and group (slamsweep runs as root): the
-  /// sandbox's processes then belong to a user of no privilege, whom RLIMIT_NPROC binds (root is
-  /// exempt from it even in a user namespace). Else they keep the starting user's uid.
+  /// The cgroup.procs file of the sandbox's own pids cgroup (pids_cgroup.h), which bubblewrap joins
+  /// before it starts anything: the process limit for a sandbox started by root, who is exempt from
+  /// RLIMIT_NPROC even mapped into a user namespace. Empty: none.
+  std::filesystem::path pids_cgroup_procs;
+  /// When set, bubblewrap itself is started under this user and group: root's way to a process limit
+  /// where it can make no pids cgroup (a container), since RLIMIT_NPROC binds that user. Else the
+  /// sandbox's processes keep the starting user's uid, mapped into their own user namespace.
   struct User {
     unsigned uid = 0;
     unsigned gid = 0;

@@ -102,14 +102,16 @@ void AddPrivateDirs(const std::vector<fs::path>& folders) {
 }
 
 SandboxSpec ProgramSandbox(const RunSpec& spec, const RunPaths& paths, const std::vector<fs::path>& reads,
-                           const std::string& program, const SandboxPrograms& programs) {
+                           const std::string& program, const SandboxPrograms& programs,
+                           const fs::path& pids_cgroup_procs) {
   SandboxSpec sandbox;
   sandbox.bwrap_program = programs.bwrap;
   sandbox.init_program = programs.init;
   sandbox.network = spec.algorithm.network;
   sandbox.process_limit = spec.algorithm.process_limit;
   sandbox.file_size_limit_bytes = spec.algorithm.disk_limit_mb << 20;
-  if (::geteuid() == 0) {
+  sandbox.pids_cgroup_procs = pids_cgroup_procs;
+  if (::geteuid() == 0 && pids_cgroup_procs.empty()) {
     // Root is exempt from RLIMIT_NPROC, even mapped into a user namespace: the sandbox runs as nobody,
     // who owns the run's raw/ (and input/, so that a strict umask cannot hide it).
     sandbox.user = Nobody();

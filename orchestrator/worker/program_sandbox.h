@@ -24,13 +24,15 @@ void AddPrivateDirs(const std::vector<std::filesystem::path>& folders);
 /// The sandbox a run's program runs in: read-only its own file, input/ and `reads` (what its adapter
 /// knows it reads: the roster's installed libraries, Cartographer's Lua file, a command's
 /// `read_only`), writable raw/ (its working folder), with the algorithm's disk and process limits
-/// and network. When this process is root, the sandbox runs as `nobody`, who is given raw/ and
-/// input/. Throws InputError when one of those paths would show the run's truth: the sweep's
+/// and network. When this process is root, the process limit is `pids_cgroup_procs` (the sandbox's
+/// own pids cgroup) or, where none could be made, the sandbox runs as `nobody`, who is given raw/ and
+/// input/ (RLIMIT_NPROC does not bind root). Throws InputError when one of those paths would show the run's truth: the sweep's
 /// output folder (every run's reference.tum and result.json, results.sqlite, the reference-map
 /// cache), the folders of the catalog files with the sequence's reference (the corrected log, the
 /// relations, a reference map) or a folder of SLAMSWEEP_PRIVATE_DIRS. Such a folder inside the system
 /// paths every sandbox shows (a dataset under /usr/share) is covered by an empty one instead.
 SandboxSpec ProgramSandbox(const RunSpec& spec, const RunPaths& paths, const std::vector<std::filesystem::path>& reads,
-                           const std::string& program, const SandboxPrograms& programs);
+                           const std::string& program, const SandboxPrograms& programs,
+                           const std::filesystem::path& pids_cgroup_procs = {});
 
 }  // namespace slamsweep::orchestrator

@@ -23,6 +23,8 @@
 #include "orchestrator/process/interruption.h"
 #include "orchestrator/process/process_set.h"
 #include "orchestrator/reference_map/reference_map.h"
+#include "orchestrator/process/outcome_reason.h"
+#include "orchestrator/sandbox/pids_cgroup.h"
 #include "orchestrator/sandbox/sandbox_availability.h"
 #include "orchestrator/worker/program_sandbox.h"
 #include "orchestrator/worker/raw_folder.h"
@@ -141,10 +143,22 @@ bool RunProgram(const RunSpec& spec, const RunPaths& paths, const Adapter& adapt
   const SandboxPrograms& programs = FindSandboxPrograms();
   std::string unisolated = programs.missing;
   std::optional<ProcessOutcome> outcome;
+  // Root counts the sandbox's processes in a pids cgroup of its own where it can make one.
+  std::unique_ptr<PidsCgroup> cgroup;
+  std::string no_cgroup;
+  if (unisolated.empty() && ::geteuid() == 0) cgroup = PidsCgroup::Create(spec.algorithm.process_limit, no_cgroup);
   if (unisolated.empty()) {
-    process.sandbox = ProgramSandbox(spec, paths, adapter.ProgramReads(spec), process.argv.front(), programs);
+    process.sandbox = ProgramSandbox(spec, paths, adapter.ProgramReads(spec), process.argv.front(), programs,
+                                     cgroup ? cgroup->ProcsFile() : fs::path());
     outcome = RunProcess(process);
     if (outcome->sandbox_failed) unisolated = outcome->reason;
+  }
+  if (cgroup && outcome && !outcome->sandbox_failed && outcome->ending != ProcessEnding::kProcessLimit) {
+    // Exact, where the sampling of the running sandbox may miss a program that gave up at once.
+    if (const std::uint64_t refused = cgroup->Refusals(); refused > 0) {
+      result.Fail(FailureKind::kProcessLimit, fmt::format("{}: {} fork{} refused", ProcessLimitReason(spec.algorithm.process_limit),
+                                                           refused, refused == 1 ? "" : "s"));
+    }
   }
   if (!unisolated.empty()) {
     RequireIsolationOrAllowed(spec, unisolated);

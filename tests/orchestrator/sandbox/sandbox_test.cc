@@ -8,11 +8,14 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "orchestrator/process/process_set.h"
 #include "orchestrator/sandbox/bwrap_command.h"
+#include "orchestrator/sandbox/pids_cgroup.h"
 #include "orchestrator/sandbox/sandbox_availability.h"
 #include "tests/orchestrator/process/process_test_util.h"
 #include "tests/support/shared_data.h"
@@ -163,6 +166,27 @@ TEST_F(SandboxedProcessTest, AForkStormEndsAtTheProcessLimitAndNothingOutlivesTh
   EXPECT_EQ(outcome.ending, ProcessEnding::kProcessLimit) << outcome.reason << Log();
   EXPECT_NE(outcome.reason.find("process_limit"), std::string::npos) << outcome.reason;
   EXPECT_LT(outcome.wall_s, 30.0);
+}
+
+TEST_F(SandboxedProcessTest, APidsCgroupCountsEveryForkItRefusesWhereOneCanBeMade) {
+  std::string why;
+  std::unique_ptr<PidsCgroup> cgroup = PidsCgroup::Create(16, why);
+  if (!cgroup) {
+    // The fallback (RLIMIT_NPROC, the other tests here) is what such a machine uses; say why.
+    EXPECT_FALSE(why.empty());
+    std::cout << "no pids cgroup here: " << why << "\n";
+    return;
+  }
+  const fs::path folder = cgroup->ProcsFile().parent_path();
+  sandbox_.user.reset();
+  sandbox_.process_limit = 0;
+  sandbox_.pids_cgroup_procs = cgroup->ProcsFile();
+  // Gives up at once on its first refused fork: no sampling would see it, the cgroup does.
+  const ProcessOutcome outcome = Run("i=0; while [ $i -lt 40 ]; do sleep 30 & i=$((i+1)); done");
+  EXPECT_FALSE(outcome.ok()) << Log();
+  EXPECT_GE(cgroup->Refusals(), 1u);
+  cgroup.reset();
+  EXPECT_FALSE(fs::exists(folder)) << "the cgroup is removed with its object";
 }
 
 TEST_F(SandboxedProcessTest, AFileOverTheLimitEndsTheWriterWithSigxfsz) {
