@@ -13,6 +13,7 @@ enum class FailureKind {
   kExitCode,
   kMissingOutput,
   kCorruptOutput,
+  kIncompleteTrajectory,  ///< the trajectory spans too little of the reference's time (evaluation.min_coverage)
   kInputError,
   kMemoryLimit,
   kProcessLimit,
@@ -22,8 +23,8 @@ enum class FailureKind {
   kInternal,
 };
 
-/// "timeout", "signal", "exit_code", "missing_output", "corrupt_output", "input_error",
-/// "memory_limit", "process_limit", "disk_limit", "not_isolated", "interrupted", "internal".
+/// "timeout", "signal", "exit_code", "missing_output", "corrupt_output", "incomplete_trajectory",
+/// "input_error", "memory_limit", "process_limit", "disk_limit", "not_isolated", "interrupted", "internal".
 std::string_view FailureKindName(FailureKind kind);
 
 /// A failure of one run that an adapter detects (an output missing or unreadable). The worker

@@ -158,7 +158,7 @@ TEST(RunProcessTest, BadWorkingDirectoryOrLogFailToStart) {
 }
 
 TEST(RunProcessTest, MemoryLimitOnTheGroup) {
-  if (::access("/usr/bin/python3", X_OK) != 0) GTEST_SKIP() << "/usr/bin/python3 is needed";
+  if (::access("/usr/bin/python3", X_OK) != 0) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("/usr/bin/python3 is needed");
   ProcessSpec spec;
   // bytes * n writes every page, so the 300 MB are resident, not just reserved.
   spec.argv = {"/usr/bin/python3", "-c", "import time\nb = b'x' * (300 << 20)\ntime.sleep(20)"};
@@ -218,7 +218,7 @@ TEST(RunProcessTest, GrandchildHoldingThePipeDoesNotHang) {
 }
 
 TEST(RunProcessTest, ResourceUsage) {
-  if (::access("/usr/bin/python3", X_OK) != 0) GTEST_SKIP() << "/usr/bin/python3 is needed";
+  if (::access("/usr/bin/python3", X_OK) != 0) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("/usr/bin/python3 is needed");
   ProcessSpec spec;
   spec.argv = {"/usr/bin/python3", "-c",
                "import time\nt = time.process_time()\nwhile time.process_time() - t < 0.3: pass"};
