@@ -186,6 +186,10 @@ void Attempts(const std::string& raw_dir) {
     const std::string effective = at == std::string::npos ? "?" : status.substr(at + 8, 16);
     const bool holds = effective.find_first_not_of("0\t ") != std::string::npos;
     Report("hold_capabilities", holds, "CapEff " + effective);
+    // Without no_new_privs a setuid program (mount, su, ping) would give its privilege back.
+    const std::size_t flag = status.find("NoNewPrivs:");
+    const bool may_gain = flag != std::string::npos && status.compare(flag + 12, 1, "0") == 0;
+    Report("gain_privileges_by_exec", may_gain, flag == std::string::npos ? "no NoNewPrivs line" : status.substr(flag, 13));
   }
   // Undo the file system the program was given: unmount what could cover or hold a secret, then
   // read again. "/" stays, so that the program can still write its result.

@@ -5,7 +5,7 @@ It tries to read the shared reference (by absolute path and by ../), a decoy out
 reference.tum and its own run.json; to unmount or mount anything; to read the worker's
 /proc/PID/{environ,cmdline,root,mem} and /proc/1/environ; to ptrace its parent and signal the
 worker's group; to connect to a listener on 127.0.0.1; to write outside raw/ and into the host's
-/tmp; to hold capabilities; to leave a setsid daemon behind and a symbolic link in raw/ pointing at
+/tmp; to hold capabilities or gain them through a setuid program; to leave a setsid daemon behind and a symbolic link in raw/ pointing at
 the reference; then a bounded fork storm and a file larger than the run's disk limit.
 
 Passes when every attempt fails, the attempts run is scored ok, the fork storm and the big file end
