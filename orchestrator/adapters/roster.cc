@@ -78,6 +78,17 @@ fs::path RosterUpstreamConfigDir(const RosterAlgorithm& algorithm) {
   return RosterPrefix() / upstream / "share" / upstream / dir;
 }
 
+std::vector<fs::path> RosterProgramReads(const RosterAlgorithm& algorithm) {
+  std::vector<fs::path> reads = {fs::absolute(RosterPrefix()).lexically_normal()};
+  // The driver's configuration beside it (Cartographer's Lua options), found from /proc/self/exe.
+  if (!algorithm.config_file.empty()) reads.push_back(RosterDriver(algorithm).parent_path() / algorithm.config_file);
+  // Upstream's configuration files, wherever the installation keeps them.
+  if (const fs::path upstream = RosterUpstreamConfigDir(algorithm); !upstream.empty()) {
+    reads.push_back(fs::absolute(upstream).lexically_normal());
+  }
+  return reads;
+}
+
 std::vector<fs::path> RosterProgramFiles(const RosterAlgorithm& algorithm) {
   const fs::path driver = RosterDriver(algorithm);
   std::vector<fs::path> files = {driver};

@@ -49,6 +49,10 @@ std::filesystem::path RosterDriver(const RosterAlgorithm& algorithm);
 /// driver follows: the installation's copy, else the upstream's build prefix. Empty when it has none.
 std::filesystem::path RosterUpstreamConfigDir(const RosterAlgorithm& algorithm);
 
+/// What the driver reads besides its input: the installed upstreams (libraries, Cartographer's
+/// configuration files) and its config_file beside it (Cartographer's Lua options).
+std::vector<std::filesystem::path> RosterProgramReads(const RosterAlgorithm& algorithm);
+
 /// The files a run of the driver executes or reads as configuration: the driver, its config_file
 /// beside it, every file of its upstream_config_dir, and the upstream's install manifest (which names
 /// the pinned commit). Throws InputError naming a missing one and how to install it.
