@@ -4,6 +4,7 @@
 #include "report/html/number_format.h"
 #include "report/html/overview_section.h"
 #include "report/html/site_data.h"
+#include "report/html/trajectory_figures.h"
 
 namespace slamsweep::report {
 
@@ -274,6 +275,7 @@ std::string RenderSequencePage(const SiteData& site, const SequenceModel& sequen
   body += ViewLinks(site, sequence, root);
   body += Element("h2", "", E("Metric plots"));
   body += Plots(site, sequence, root);
+  body += TrajectoriesSection(site, sequence, root);
   body += Element("h2", "", E("Map gallery"));
   if (!sequence.has_reference) {
     body += Element("p", "note", E("No reference trajectory: each map is the median run by corner count."));
