@@ -2,6 +2,7 @@
 
 #include "report/html/html.h"
 #include "report/html/number_format.h"
+#include "report/html/overview_section.h"
 #include "report/html/site_data.h"
 
 namespace slamsweep::report {
@@ -242,6 +243,7 @@ std::string RenderIndexPage(const SiteData& site) {
                                        E(" (each ground-truth-free metric against the real error)"));
   }
   body += Element("ul", "downloads", downloads);
+  body += OverviewSection(site, site.significance);
   for (const SequenceModel& sequence : model.sequences) {
     Html section = Element("h2", "", Link(site.layout->SequencePage(sequence.key), E("Sequence " + sequence.title)));
     section += SequenceTables(site, sequence, "");
@@ -424,6 +426,11 @@ td.verdict-opposite { background: #f6d6d0; }
 td.verdict-unclear { background: #f4f0dc; }
 td.verdict-none { color: #555; }
 table.definitions td:last-child { max-width: 60em; }
+table.overview tr.best td { background: #d8f0d8; }
+table.overview tr.beside td { color: #555; font-style: italic; }
+td.num { text-align: right; white-space: nowrap; }
+p.verdict { font-weight: bold; }
+ul.tests { font-size: 0.85em; color: #444; }
 )";
 }
 

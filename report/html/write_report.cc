@@ -358,6 +358,7 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   SiteData site;
   site.model = &model;
   site.layout = &layout;
+  site.significance = BuildSignificance(model);
   const AlgorithmPalette palette(model.algorithms);
   site.palette = &palette;
   fs::path normal = fs::absolute(result_dir).lexically_normal();

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <vector>
@@ -211,9 +212,29 @@ TEST(TrustTest, AChangedProgramIsRunAgainUnlessStaleResultsAreAllowed) {
   EXPECT_THAT(plan.at(0).at("build").at("program_files").dump(), HasSubstr("slam.sh"));
   EXPECT_FALSE(plan.at(0).at("build").at("slamsweep_revision").get<std::string>().empty());
   testing::WriteFile(program, ReadText(program) + "# edited\n");
-  const auto reused = RunCli({"run", file.string(), "--no-report", "--reuse-stale"});
+  const auto reused = RunCli({"run", file.string(), "--reuse-stale"});
   EXPECT_THAT(reused.out, HasSubstr("0 ok, 0 failed, 1 done earlier"));
   EXPECT_THAT(reused.out, HasSubstr("1 earlier result computed by another slamsweep revision, program build or evaluation setting was reused"));
+  // The reused run is marked stale in every output a reader or CI reads.
+  const std::filesystem::path out = dir / "out";
+  const nlohmann::json summary = ReadJson(out / "summary.json");
+  EXPECT_THAT(summary.at("runs").at(0).at("flags").dump(), HasSubstr("\"stale\""));
+  EXPECT_THAT(summary.at("groups").at(0).at("flags").dump(), HasSubstr("\"stale\""));
+  for (const char* table : {"summary.csv", "runs.csv"}) {
+    const std::string csv = ReadText(out / table);
+    const std::string header = csv.substr(0, csv.find('\n'));
+    const std::string row = csv.substr(header.size() + 1);
+    ASSERT_THAT(header, HasSubstr(",flags,")) << table;
+    const auto column = std::count(header.begin(), header.begin() + header.find(",flags,") + 1, ',');
+    std::string field;
+    std::istringstream cells(row);
+    for (long c = 0; c <= column; ++c) std::getline(cells, field, ',');
+    EXPECT_THAT(field, HasSubstr("stale")) << table << "\n" << csv;
+  }
+  const std::string junit = ReadText(out / "junit.xml");
+  EXPECT_THAT(junit, HasSubstr("<property name=\"flag\" value=\"stale\"/>"));
+  EXPECT_THAT(junit, HasSubstr("stale: reused from an earlier sweep"));
+  EXPECT_THAT(ReadText(out / "report" / "index.html"), HasSubstr("stale: reused from an earlier sweep"));
   const auto rerun = RunCli({"run", file.string(), "--no-report"});
   EXPECT_THAT(rerun.out, HasSubstr("1 ok, 0 failed, 0 done earlier"));
   EXPECT_THAT(rerun.out, HasSubstr("was run again"));
