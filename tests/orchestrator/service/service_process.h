@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <filesystem>
@@ -200,8 +201,14 @@ class FakeProgramSweep {
   }
 
  private:
-  /// Notes every shell running the script now: (pid, start time) -> its algorithm argument.
+  /// Notes every shell running the script now: (pid, start time) -> its algorithm argument. A child the
+  /// shell has forked shows the same command line until it execs (sleep, cp): one whose parent is such a
+  /// shell is not another invocation.
   void Look() const {
+    struct Found {
+      std::string pid, parent, start_time, algorithm;
+    };
+    std::vector<Found> found;
     std::error_code error;
     for (fs::directory_iterator it("/proc", error), end; !error && it != end; it.increment(error)) {
       const std::string pid = it->path().filename().string();
@@ -215,12 +222,18 @@ class FakeProgramSweep {
       const auto close = stat.rfind(')');
       if (close == std::string::npos) continue;
       std::istringstream fields(stat.substr(close + 2));
-      std::string field, start_time;
+      std::string field, parent, start_time;
       for (int index = 3; index <= 22 && fields >> field; ++index) {
+        if (index == 4) parent = field;
         if (index == 22) start_time = field;
       }
-      const std::lock_guard<std::mutex> lock(mutex_);
-      seen_.emplace(pid + "@" + start_time, argv[5]);
+      found.push_back({pid, parent, start_time, argv[5]});
+    }
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (const Found& process : found) {
+      const bool forked_by_script = std::any_of(found.begin(), found.end(),
+                                                [&](const Found& other) { return other.pid == process.parent; });
+      if (!forked_by_script) seen_.emplace(process.pid + "@" + process.start_time, process.algorithm);
     }
   }
 
