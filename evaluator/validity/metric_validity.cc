@@ -181,6 +181,20 @@ ValidityStudy ComputeValidityStudy(std::vector<ValidityRun> runs, const Validity
       }
     }
   }
+  // Bonferroni over the study's intervals: only a decided verdict can fail to survive, so only those are redrawn
+  // (same seed, same resamples, wider percentiles).
+  for (const ValidityCorrelation& c : study.correlations) study.family_size += c.interval ? 1 : 0;
+  if (study.family_size == 0) return study;
+  study.family_confidence = 1.0 - (1.0 - options.bootstrap.confidence) / static_cast<double>(study.family_size);
+  ValidityOptions family = options;
+  family.bootstrap.confidence = study.family_confidence;
+  for (ValidityCorrelation& c : study.correlations) {
+    if (c.verdict != ValidityVerdict::kTracksError && c.verdict != ValidityVerdict::kOpposite) continue;
+    const std::vector<ValidityPoint> points = ValidityPoints(runs, c.candidate, c.target, c.sequence);
+    c.family_interval = Correlate(points, c.pooling, c.sequence.empty(), family).interval;
+    c.survives_family = c.family_interval && (c.verdict == ValidityVerdict::kTracksError ? c.family_interval->low > 0.0
+                                                                                         : c.family_interval->high < 0.0);
+  }
   return study;
 }
 
@@ -198,6 +212,11 @@ nlohmann::json ToJson(const ValidityStudy& study) {
                             {"ci_high", c.interval ? nlohmann::json(c.interval->high) : nlohmann::json()},
                             {"resamples_defined", c.interval ? nlohmann::json(c.interval->defined) : nlohmann::json()},
                             {"verdict", ValidityVerdictName(c.verdict)}});
+    if (c.family_interval) {
+      correlations.back()["ci_low_bonferroni"] = c.family_interval->low;
+      correlations.back()["ci_high_bonferroni"] = c.family_interval->high;
+      correlations.back()["survives_bonferroni"] = c.survives_family;
+    }
   }
   return {{"method",
            {{"statistic", "Spearman's rank correlation (average ranks for ties); over several strata, the Pearson "
@@ -209,7 +228,11 @@ nlohmann::json ToJson(const ValidityStudy& study) {
             {"min_runs", study.options.min_runs},
             {"runs", "successful runs whose odometry was not the reference"},
             {"across_noise", "strata: none for one sequence, the sequence for all sequences"},
-            {"within_noise", "strata: sequence x noise setting"}}},
+            {"within_noise", "strata: sequence x noise setting"},
+            {"multiple_comparisons",
+             {{"method", "Bonferroni: each decided verdict's interval redrawn at 1 - (1 - confidence) / family_size"},
+              {"family_size", study.family_size},
+              {"confidence", study.family_confidence}}}}},
           {"candidates", QuantitiesJson(ValidityCandidates())},
           {"targets", QuantitiesJson(ValidityTargets())},
           {"sequences", study.sequences},
@@ -251,6 +274,11 @@ ValidityStudy ValidityStudyFromJson(const nlohmann::json& json) {
   study.options.bootstrap.resamples = FieldAs<std::size_t>(method, "resamples", where + ".method");
   study.options.bootstrap.seed = FieldAs<std::uint64_t>(method, "seed", where + ".method");
   study.options.min_runs = FieldAs<std::size_t>(method, "min_runs", where + ".method");
+  if (method.contains("multiple_comparisons")) {
+    const nlohmann::json& family = Field(method, "multiple_comparisons", where + ".method");
+    study.family_size = FieldAs<std::size_t>(family, "family_size", where + ".method.multiple_comparisons");
+    study.family_confidence = FieldAs<double>(family, "confidence", where + ".method.multiple_comparisons");
+  }
   study.sequences = FieldAs<std::vector<std::string>>(json, "sequences", where);
   study.runs_used = FieldAs<std::size_t>(json, "runs_used", where);
   study.runs_odometry_is_reference = FieldAs<std::size_t>(json, "runs_odometry_is_reference", where);
@@ -294,6 +322,15 @@ ValidityStudy ValidityStudyFromJson(const nlohmann::json& json) {
       }
     }
     if (!known) throw InputError(at + ".verdict: unknown verdict \"" + verdict + "\"");
+    // The Bonferroni interval of a decided verdict (absent from studies written before it existed).
+    if (entry.contains("ci_low_bonferroni")) {
+      BootstrapInterval family;
+      family.low = FieldAs<double>(entry, "ci_low_bonferroni", at);
+      family.high = FieldAs<double>(entry, "ci_high_bonferroni", at);
+      family.resamples = study.options.bootstrap.resamples;
+      c.family_interval = family;
+      c.survives_family = FieldAs<bool>(entry, "survives_bonferroni", at);
+    }
     study.correlations.push_back(std::move(c));
   }
   return study;

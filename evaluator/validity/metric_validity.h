@@ -82,6 +82,11 @@ struct ValidityCorrelation {
   std::optional<double> rho;
   std::optional<BootstrapInterval> interval;
   ValidityVerdict verdict = ValidityVerdict::kTooFewRuns;
+  /// For a verdict of "tracks error" or "opposite": the Bonferroni interval (confidence 1 - 0.05 / m over the
+  /// study's m intervals) and whether it still excludes 0 on the same side. The study reports many intervals;
+  /// read alone, some 95 % intervals exclude 0 by chance.
+  std::optional<BootstrapInterval> family_interval;
+  bool survives_family = false;
 };
 
 struct ValidityOptions {
@@ -101,6 +106,10 @@ struct ValidityStudy {
   /// such sequences or more) all of them, both poolings; ordered by target, candidate, sequence
   /// ("" last), pooling.
   std::vector<ValidityCorrelation> correlations;
+  /// The multiple-comparisons family: how many correlations have an interval, and the confidence each
+  /// Bonferroni interval is drawn at (1 - (1 - confidence) / family_size).
+  std::size_t family_size = 0;
+  double family_confidence = 0.0;
 
   bool empty() const { return sequences.empty(); }
   const ValidityCorrelation* Find(std::string_view candidate, std::string_view target, std::string_view sequence,

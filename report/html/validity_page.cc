@@ -101,6 +101,12 @@ Html CorrelationCell(const ev::ValidityCorrelation* c) {
     if (c->interval) number += fmt::format(" [{}, {}]", Rho(c->interval->low), Rho(c->interval->high));
     content = E(number) + T("<br>") +
               Element("span", "n", E(fmt::format("n={}, {}", c->runs, ev::ValidityVerdictName(c->verdict))));
+    if (c->family_interval) {
+      content += T("<br>") + Element("span", "n",
+                                     E(fmt::format("Bonferroni [{}, {}]: {}", Rho(c->family_interval->low),
+                                                   Rho(c->family_interval->high),
+                                                   c->survives_family ? "survives" : "does not survive")));
+    }
   }
   return Element("td", VerdictClass(c->verdict), content);
 }
@@ -226,6 +232,19 @@ std::string RenderValidityPage(const SiteData& /*site*/, const ValiditySite& val
                                            " left out because their odometry was the reference"
                                      : std::string()) +
                                 ")."));
+  if (study.family_size > 0) {
+    std::size_t decided = 0, survive = 0;
+    for (const ev::ValidityCorrelation& c : study.correlations) {
+      decided += c.family_interval ? 1 : 0;
+      survive += c.survives_family ? 1 : 0;
+    }
+    method += Element("li", "", E(fmt::format(
+                                    "Multiple comparisons: this page reports {} intervals, and some 95 % intervals "
+                                    "exclude 0 by chance alone. Each decided verdict's interval is redrawn at the "
+                                    "Bonferroni level {:.4g} (1 - 0.05 / {}, the same resamples); {} of {} decided "
+                                    "verdicts survive it.",
+                                    study.family_size, study.family_confidence, study.family_size, survive, decided)));
+  }
   method += Element("li", "", E("\"All noise levels\": the sequence's runs ranked together, every noise setting "
                                 "mixed: does the metric follow the error as the conditions get worse? \"Within each "
                                 "noise level\": runs ranked only against runs of the same sequence and noise setting "

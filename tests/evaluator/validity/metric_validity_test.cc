@@ -177,5 +177,42 @@ TEST(MetricValidityTest, AStudyReadBackFromJsonHasTheSameVerdicts) {
   EXPECT_THROW(ValidityStudyFromJson(broken), InputError);
 }
 
+TEST(MetricValidityTest, DecidedVerdictsAreRedrawnAtTheBonferroniLevel) {
+  // 12 sequences of 10 runs whose corners follow the error only loosely (noise a third of their range), and one
+  // sequence where they follow it exactly: many intervals, some excluding 0 at 95 % by chance.
+  std::mt19937 engine(5);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  std::vector<ValidityRun> runs;
+  for (int s = 0; s < 12; ++s) {
+    for (int i = 0; i < 10; ++i) {
+      const double ate = 0.1 * (i + 1);
+      runs.push_back(MakeRun("seq" + std::to_string(s), "n1", i, ate, 10.0 * ate + 3.0 * noise(engine)));
+    }
+  }
+  for (int i = 0; i < 10; ++i) runs.push_back(MakeRun("exact", "n1", i, 0.1 * (i + 1), 10.0 + i));
+  const ValidityStudy study = ComputeValidityStudy(runs);
+  std::size_t intervals = 0;
+  for (const ValidityCorrelation& c : study.correlations) intervals += c.interval ? 1 : 0;
+  EXPECT_EQ(study.family_size, intervals);
+  EXPECT_DOUBLE_EQ(study.family_confidence, 1.0 - 0.05 / static_cast<double>(intervals));
+  std::size_t decided = 0, survived = 0;
+  for (const ValidityCorrelation& c : study.correlations) {
+    const bool is_decided = c.verdict == ValidityVerdict::kTracksError || c.verdict == ValidityVerdict::kOpposite;
+    EXPECT_EQ(c.family_interval.has_value(), is_decided) << c.candidate << " " << c.sequence;
+    if (!is_decided) continue;
+    ++decided;
+    // Wider percentiles of the same resamples hold the 95 % interval.
+    EXPECT_LE(c.family_interval->low, c.interval->low);
+    EXPECT_GE(c.family_interval->high, c.interval->high);
+    EXPECT_EQ(c.survives_family, c.verdict == ValidityVerdict::kTracksError ? c.family_interval->low > 0.0
+                                                                             : c.family_interval->high < 0.0);
+    survived += c.survives_family ? 1 : 0;
+  }
+  EXPECT_GT(decided, survived);  // some decided verdicts do not survive the correction
+  const ValidityCorrelation& exact = Get(study, "corners.value", "exact", ValidityPooling::kAcrossNoise);
+  EXPECT_TRUE(exact.survives_family);  // rho = 1 in every resample
+  EXPECT_EQ(ToJson(ValidityStudyFromJson(ToJson(study))), ToJson(study));
+}
+
 }  // namespace
 }  // namespace slamsweep::evaluator
