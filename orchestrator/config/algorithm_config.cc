@@ -160,6 +160,13 @@ AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YA
     FailExpected(file, fields.Get("timeout_s"), fields.PathOf("timeout_s"), "a number of seconds > 0");
   }
   algorithm.memory_limit_mb = fields.Unsigned("memory_limit_mb", algorithm.memory_limit_mb);
+  if (fields.Has("iterations")) {
+    const std::uint64_t iterations = fields.Unsigned("iterations", 1);
+    if (iterations < 1 || iterations > 1000000) {
+      FailExpected(file, fields.Get("iterations"), fields.PathOf("iterations"), "a whole number from 1 to 1000000");
+    }
+    algorithm.iterations = static_cast<int>(iterations);
+  }
   algorithm.parameters = ParseParameters(file, fields.Get("parameters"), fields.PathOf("parameters"));
   std::set<std::string, std::less<>> declared;
   for (const ParameterAxis& axis : algorithm.parameters) declared.insert(axis.name);

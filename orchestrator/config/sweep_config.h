@@ -89,6 +89,10 @@ struct AlgorithmConfig {
   double timeout_s = 600.0;
   std::uint64_t memory_limit_mb = 0;
   std::optional<CommandDeclaration> command;
+  /// Fewer iterations than the sweep's for this algorithm (1 for a deterministic program on data
+  /// without a noise draw: more would repeat one result); at most the sweep's `iterations`, and
+  /// capped by `--iterations` like it. Unset: the sweep's.
+  std::optional<int> iterations;
 };
 
 enum class SeedPolicy { kPerIteration, kPerRun, kFixed };

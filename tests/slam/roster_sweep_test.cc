@@ -71,7 +71,7 @@ TEST(RosterSweepTest, EveryBuiltAlgorithmBeatsNoisyOdometryOnIntel) {
   for (const std::string& name : built) config += "  - name: " + name + "\n    adapter: " + name + "\n    timeout_s: 600\n";
   config +=
       "sequences:\n  - {catalog: intel, name: intel-300, max_scans: 300}\n"
-      // configs/paper.yaml's noise: 5 % standard deviation on turns and distances, a heading random
+      // configs/paper-noise.yaml's noise: 5 % standard deviation on turns and distances, a heading random
       // walk of 1.1 deg per sqrt(m). It makes the odometry drift metres on 300 scans.
       "noise:\n  - name: noisy\n    odometry: {alpha1: 0.0025, alpha2: 0.0004, alpha3: 0.0025, alpha4: 0.0001}\n";
   const auto file = slamsweep::testing::WriteFile(dir / "roster.yaml", config);
