@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "orchestrator/store/named_study.h"
 #include "orchestrator/store/results_store.h"
 #include "orchestrator/sweep/output_lock.h"
 #include "orchestrator/sweep/run_folder.h"
@@ -137,6 +138,7 @@ SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& set
                       Status& status) {
   OutputLock lock(settings.output_dir);
   ResultsStore store = ResultsStore::Open(settings.output_dir / "results.sqlite");
+  if (!settings.validity_study.empty()) WriteNamedStudy(ReadNamedStudy(settings.validity_study), settings.output_dir);
 
   SweepOutcome outcome;
   outcome.total = runs.size();

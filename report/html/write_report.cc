@@ -18,6 +18,7 @@
 #include "report/html/validity_page.h"
 #include "report/html/view_pages.h"
 #include "report/model/load_runs.h"
+#include "report/model/named_study.h"
 #include "report/model/sweep_model.h"
 
 namespace slamsweep::report {
@@ -301,6 +302,7 @@ void WritePaperFiles(const SweepModel& model, const ReportLayout& layout, const 
   std::error_code error;
   for (const SequenceModel& sequence : model.sequences) {
     for (const AlgorithmRow& row : sequence.rows) {
+      if (row.runs.empty()) continue;  // a reference line has no runs and no files
       const fs::path files = out_dir / layout.FilesDir(row.algorithm, sequence.key);
       MakeDirectories(files);
       WriteTextFile(files / "rmse.txt", RmseText(sequence, row));
@@ -350,7 +352,7 @@ ReportSummary CountImages(const fs::path& out_dir, bool drawing, SiteData& site)
 }  // namespace
 
 ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, const ReportOptions& options) {
-  const SweepModel model = BuildSweepModel(LoadRuns(result_dir));
+  const SweepModel model = BuildSweepModel(LoadRuns(result_dir), LoadSweepModelOptions(result_dir));
   const ReportLayout layout(model);
   PrepareOutputDir(out_dir);
 

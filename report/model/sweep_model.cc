@@ -4,6 +4,12 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <tuple>
+
+#include "orchestrator/matrix/run_spec.h"
+
+#include "report/model/validity_runs.h"
+#include "report/model/validity_support.h"
 
 namespace slamsweep::report {
 
@@ -17,12 +23,17 @@ struct ColumnCandidate {
   const char* title;
 };
 
-// Table I of the paper (trajectory RMSE), then RPE and the relations metric of Kuemmerle et al.
+// The relations metric of Kuemmerle et al. leads where a sequence has relations: on the Radish and
+// Freiburg logs it is the only score against something other than one SLAM program's output. Then
+// Table I of the paper (trajectory RMSE) and RPE.
 constexpr ColumnCandidate kTrajectoryCandidates[] = {
+    {"relations_trans", "mean", "Relations translation mean"}, {"relations_rot", "mean", "Relations rotation mean"},
     {"ape_trans", "rmse", "ATE translation RMSE"},    {"ape_rot", "rmse", "ATE rotation RMSE"},
     {"rpe_trans", "rmse", "RPE translation RMSE"},    {"rpe_rot", "rmse", "RPE rotation RMSE"},
-    {"relations_trans", "mean", "Relations translation mean"}, {"relations_rot", "mean", "Relations rotation mean"},
 };
+
+/// What ATE and RPE measure on a sequence whose reference is a corrected log.
+constexpr const char* kCorrectedLogAgreement = "agreement with the corrected log (GMapping's output)";
 
 // The three ground-truth-free metrics (paper sections III.A-C).
 constexpr ColumnCandidate kMapCandidates[] = {
@@ -67,7 +78,7 @@ std::vector<MetricColumn> BuildColumns(const std::vector<RunRecord>& runs, const
       if (std::find(specs.begin(), specs.end(), spec) == specs.end()) specs.push_back(std::move(spec));
     }
     for (std::string& spec : specs) {
-      columns.push_back({candidate.metric, candidate.statistic, candidate.title, unit, std::move(spec)});
+      columns.push_back({candidate.metric, candidate.statistic, candidate.title, unit, std::move(spec), {}});
     }
   }
   return columns;
@@ -94,17 +105,31 @@ std::string AdapterOf(const RunRecord& run) {
   return adapter != algorithm->end() && adapter->is_string() ? adapter->get<std::string>() : std::string();
 }
 
-void MarkBest(std::vector<AlgorithmRow>& rows, std::vector<MetricCell> AlgorithmRow::* cells, std::size_t columns) {
-  for (std::size_t c = 0; c < columns; ++c) {
+void MarkBest(std::vector<AlgorithmRow>& rows, const std::vector<MetricColumn>& columns,
+              std::vector<MetricCell> AlgorithmRow::* cells) {
+  for (std::size_t c = 0; c < columns.size(); ++c) {
     double best = std::numeric_limits<double>::infinity();
     for (const AlgorithmRow& row : rows) {
       const MetricCell& cell = (row.*cells)[c];
-      if (cell.summary.n > 0 && IsBestCandidate(row)) best = std::min(best, cell.summary.mean);
+      if (IsBestCandidate(row, columns[c], cell)) best = std::min(best, cell.summary.mean);
     }
     for (AlgorithmRow& row : rows) {
       MetricCell& cell = (row.*cells)[c];
-      cell.best = cell.summary.n > 0 && IsBestCandidate(row) && cell.summary.mean == best;
+      cell.best = IsBestCandidate(row, columns[c], cell) && cell.summary.mean == best;
     }
+  }
+}
+
+/// A ground-truth-free map metric names a best run only where the validity study supports it.
+void WithholdUnsupportedBest(SequenceModel& sequence, const SweepModel& model, const SweepModelOptions& options) {
+  for (MetricColumn& column : sequence.map_columns) {
+    const std::string key = column.metric + "." + column.statistic;
+    const evaluator::ValidityQuantity* quantity = evaluator::FindValidityQuantity(key);
+    if (!quantity || quantity->kind != std::string_view("paper map metric")) continue;  // a real error
+    const ValiditySupport support = SupportFor(key, sequence.name, model.validity,
+                                               options.named_study ? &*options.named_study : nullptr,
+                                               options.named_study_source);
+    if (!support.supported) column.best_withheld = support.reason;
   }
 }
 
@@ -172,6 +197,40 @@ void ChooseMedianRun(const std::vector<RunRecord>& runs, AlgorithmRow& row) {
   }
 }
 
+/// Whether the run's reference is a corrected log (run.json's sequence ground_truth corrected_poses).
+bool ReferenceIsCorrectedLog(const RunRecord& run) {
+  const json* sequence = Find(run.run_spec, "sequence");
+  const json* ground_truth = sequence ? Find(*sequence, "ground_truth") : nullptr;
+  return ground_truth && ground_truth->is_string() && ground_truth->get<std::string>() == "corrected_poses";
+}
+
+/// The reference floor of a table: the reference itself scored by the relations metric as the runs
+/// were (result.json's reference_floor of the first successful run that has one; every run of a
+/// table scores the same reference against the same relations, with its own odometry between poses,
+/// which is the same robot odometry unless noise was drawn). Absent without relations.
+std::optional<AlgorithmRow> ReferenceFloorRow(const std::vector<RunRecord>& runs, const std::vector<std::size_t>& all,
+                                              const SequenceModel& sequence) {
+  for (std::size_t index : all) {
+    const RunRecord& run = runs[index];
+    if (run.status != RunStatus::kOk || run.reference_floor.empty()) continue;
+    AlgorithmRow row;
+    row.kind = RowKind::kReferenceFloor;
+    row.name = "reference floor";
+    row.algorithm = ReferenceIsCorrectedLog(run) ? "reference floor: the corrected log itself" : "reference floor";
+    for (const MetricColumn& column : sequence.trajectory_columns) {
+      MetricCell cell;
+      for (const FlatMetric& metric : run.reference_floor) {
+        if (metric.metric == column.metric && metric.statistic == column.statistic) cell.values.push_back(metric.value);
+      }
+      cell.summary = ComputeMeanStd(cell.values);
+      row.trajectory_cells.push_back(std::move(cell));
+    }
+    row.map_cells.resize(sequence.map_columns.size());
+    return row;
+  }
+  return std::nullopt;
+}
+
 void Count(const RunRecord& run, RunCounts& counts) {
   ++counts.total;
   switch (run.status) {
@@ -190,7 +249,15 @@ void Count(const RunRecord& run, RunCounts& counts) {
 
 }  // namespace
 
-bool IsBestCandidate(const AlgorithmRow& row) { return row.kind == RowKind::kContestant && row.flags.empty(); }
+bool IsBestCandidate(const AlgorithmRow& row) {
+  return row.kind == RowKind::kContestant && row.flags.empty() && !row.odometry_is_reference && row.counts.total > 0 &&
+         row.counts.ok == row.counts.total;
+}
+
+bool IsBestCandidate(const AlgorithmRow& row, const MetricColumn& column, const MetricCell& cell) {
+  return IsBestCandidate(row) && column.best_withheld.empty() && cell.summary.n > 0 &&
+         cell.summary.n == row.counts.total;
+}
 
 std::string MetricSpecLabel(const RunRecord& run, const std::string& metric) {
   const json* details = Find(run.metric_details, metric.c_str());
@@ -215,18 +282,20 @@ std::string MetricSpecLabel(const RunRecord& run, const std::string& metric) {
   return {};
 }
 
-SweepModel BuildSweepModel(std::vector<RunRecord> runs) {
+SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions& options) {
   SweepModel model;
   std::sort(runs.begin(), runs.end(), [](const RunRecord& a, const RunRecord& b) { return a.run_id < b.run_id; });
   model.runs = std::move(runs);
+  model.validity = evaluator::ComputeValidityStudy(ToValidityRuns(model.runs));
   // Table (sequence, noise) -> row (algorithm name, parameters) -> runs.
-  using RowKey = std::pair<std::string, std::string>;
+  using RowKey = std::tuple<std::string, std::string, std::string>;  // algorithm, parameters, build
   std::map<std::pair<std::string, std::string>, std::map<RowKey, std::vector<std::size_t>>> tables;
   std::set<std::string> algorithms;
   std::set<std::string> sweep_names;
   for (std::size_t i = 0; i < model.runs.size(); ++i) {
     const RunRecord& run = model.runs[i];
-    tables[{run.sequence, run.noise}][{run.algorithm, run.parameters}].push_back(i);
+    tables[{run.sequence, run.noise}][{run.algorithm, run.parameters, orchestrator::BuildSignatureOfRunJson(run.run_spec)}]
+        .push_back(i);
     algorithms.insert(run.algorithm);
     if (!run.sweep.empty()) sweep_names.insert(run.sweep);
     Count(run, model.counts);
@@ -249,8 +318,17 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs) {
       all.insert(all.end(), indices.begin(), indices.end());
     }
     sequence.trajectory_columns = BuildColumns(model.runs, all, kTrajectoryCandidates);
+    if (std::any_of(all.begin(), all.end(), [&](std::size_t i) { return ReferenceIsCorrectedLog(model.runs[i]); })) {
+      for (MetricColumn& column : sequence.trajectory_columns) {
+        if (column.metric.starts_with("ape_") || column.metric.starts_with("rpe_")) {
+          column.title += ": " + std::string(kCorrectedLogAgreement);
+        }
+      }
+    }
     sequence.map_columns = BuildColumns(model.runs, all, kMapCandidates);
     sequence.has_reference = !sequence.trajectory_columns.empty();
+    std::map<std::pair<std::string, std::string>, std::size_t> builds_per_group;
+    for (const auto& [row_key, indices] : rows) ++builds_per_group[{std::get<0>(row_key), std::get<1>(row_key)}];
     for (auto& [row_key, indices] : rows) {
       const RunRecord& first = model.runs[indices.front()];
       const auto found = varying.find(first.algorithm);
@@ -258,6 +336,12 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs) {
       row.name = first.algorithm;
       row.parameters = first.parameters;
       row.algorithm = RowLabel(first, found == varying.end() ? kNone : found->second);
+      row.build = std::get<2>(row_key);
+      row.build_split = builds_per_group.at({std::get<0>(row_key), std::get<1>(row_key)}) > 1;
+      if (row.build_split) {
+        row.algorithm += " [build " + (row.build.empty() ? std::string("unrecorded") : row.build) + "]";
+        row.build_description = orchestrator::BuildDescriptionOfRunJson(first.run_spec);
+      }
       row.seeding = first.seeding;
       row.runs = indices;
       if (AdapterOf(first) == "odometry") row.kind = RowKind::kOdometryBaseline;
@@ -277,8 +361,12 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs) {
       ChooseMedianRun(model.runs, row);
       sequence.rows.push_back(std::move(row));
     }
-    MarkBest(sequence.rows, &AlgorithmRow::trajectory_cells, sequence.trajectory_columns.size());
-    MarkBest(sequence.rows, &AlgorithmRow::map_cells, sequence.map_columns.size());
+    if (std::optional<AlgorithmRow> floor = ReferenceFloorRow(model.runs, all, sequence)) {
+      sequence.rows.push_back(std::move(*floor));
+    }
+    WithholdUnsupportedBest(sequence, model, options);
+    MarkBest(sequence.rows, sequence.trajectory_columns, &AlgorithmRow::trajectory_cells);
+    MarkBest(sequence.rows, sequence.map_columns, &AlgorithmRow::map_cells);
     model.sequences.push_back(std::move(sequence));
   }
   return model;
