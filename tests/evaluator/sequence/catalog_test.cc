@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/sequence/sequence_file.h"
 #include "tests/support/shared_data.h"
 
 namespace slamsweep::evaluator {
@@ -233,6 +234,52 @@ TEST(CatalogTest, MissingFileNamesEntryPathAndWhereToGetIt) {
   EXPECT_THAT(error, HasSubstr("get it from: example.org/a"));
   EXPECT_THAT(ErrorOf([&] { LoadCatalogSequence(catalog.entries[0], {}); }), HasSubstr("unknown variable ${ROOT}"));
   EXPECT_THAT(ErrorOf([&] { FindCatalogEntry(catalog, "b"); }), HasSubstr("no sequence named 'b' in the catalog c.yaml (known: a)"));
+}
+
+
+TEST(CatalogTest, Fr079HasItsRelationsOnTheLogsClock) {
+  SLAMSWEEP_REQUIRE_SHARED(relations, "datasets/fr079/fr079.relations");
+  const Catalog catalog = ReadCatalog(ShippedCatalog());
+  const CatalogEntry& entry = FindCatalogEntry(catalog, "fr079");
+  EXPECT_NE(entry.relations_rate, 1.0);  // the relations' clock runs at another rate (the fitted map)
+  EXPECT_FALSE(entry.notes.empty());     // how the map was fitted, and its residual
+  const Sequence sequence = LoadCatalogSequence(entry, Shared());
+  ASSERT_TRUE(sequence.relations.has_value());
+  EXPECT_EQ(sequence.relations->size(), 1685u);
+  // Every relation falls inside the log's span once mapped.
+  for (const Relation& relation : *sequence.relations) {
+    ASSERT_GE(std::min(relation.t1_s, relation.t2_s), sequence.odometry_readings.stamps_s().front());
+    ASSERT_LE(std::max(relation.t1_s, relation.t2_s), sequence.odometry_readings.stamps_s().back());
+  }
+}
+
+TEST(CatalogTest, DenseIntelTakesTheCorrectedLogsClockReferenceAndRelations) {
+  SLAMSWEEP_REQUIRE_SHARED(rawlog, "datasets/intel/intel-mrpt-every5.rawlog.gz");
+  if (!RawlogSupported()) {
+    if (testing::RunningInCi()) FAIL() << "MRPT not built";
+    GTEST_SKIP() << "MRPT not built";
+  }
+  const Sequence dense = LoadCatalogSequence(FindCatalogEntry(ReadCatalog(ShippedCatalog()), "intel-dense"), Shared());
+  const Sequence intel = LoadCatalogSequence(FindCatalogEntry(ReadCatalog(ShippedCatalog()), "intel"), Shared());
+  // Three times the corrected log's density, on its clock: the scans' stamps are readings' stamps.
+  EXPECT_GT(dense.scans.size(), 2700u);
+  ASSERT_TRUE(dense.reference.has_value());
+  ASSERT_TRUE(dense.relations.has_value());
+  EXPECT_EQ(dense.relations->size(), intel.relations->size());
+  const std::vector<double>& readings = intel.odometry_readings.stamps_s();
+  for (const LaserScan& scan : dense.scans) {
+    ASSERT_TRUE(std::binary_search(readings.begin(), readings.end(), scan.stamp_s)) << scan.stamp_s;
+  }
+  // Scans both logs hold (the same stamp) have identical ranges: the time map is right.
+  std::size_t shared = 0;
+  std::size_t k = 0;
+  for (const LaserScan& scan : intel.scans) {
+    while (k < dense.scans.size() && dense.scans[k].stamp_s < scan.stamp_s) ++k;
+    if (k == dense.scans.size() || dense.scans[k].stamp_s != scan.stamp_s) continue;
+    ++shared;
+    ASSERT_EQ(dense.scans[k].ranges_m, scan.ranges_m) << scan.stamp_s;
+  }
+  EXPECT_GT(shared, 150u);  // PROVENANCE.txt: 174 of the 910 scans are in both
 }
 
 }  // namespace
