@@ -1,4 +1,6 @@
 // `slamsweep data ...`: sequences in, SLAM-ready inputs out.
+#include <fmt/format.h>
+
 #include <charconv>
 #include <cstdint>
 #include <filesystem>
@@ -19,6 +21,10 @@
 #include "evaluator/noise/odometry_noise.h"
 #include "evaluator/noise/random.h"
 #include "evaluator/noise/range_noise.h"
+#include "evaluator/formats/trajectory/carmen_log.h"
+#include "evaluator/formats/trajectory/relations_format.h"
+#include "evaluator/sequence/recorded_odometry.h"
+#include "evaluator/sequence/relations_clock.h"
 #include "evaluator/sequence/sequence_file.h"
 #include "evaluator/sequence/robot_log_file.h"
 #include "evaluator/simulation/simulated_sequence.h"
@@ -59,6 +65,7 @@ struct SourceOptions {
   std::string source;
   std::string catalog;
   evaluator::SequenceReadOptions read;
+  std::string odometry;
 };
 
 void AddSourceOptions(CLI::App& command, SourceOptions& options) {
@@ -68,10 +75,17 @@ void AddSourceOptions(CLI::App& command, SourceOptions& options) {
   command.add_option("--odometry-topic", options.read.odometry_topic, "ROS bag: the nav_msgs/Odometry topic");
   command.add_option("--reference-topic", options.read.reference_topic,
                      "ROS bag: a nav_msgs/Odometry topic with ground truth");
+  command.add_option("--odometry", options.odometry,
+                     "recorded | reference: the robot's odometry rebuilt from a corrected log's ODOM stream (an error "
+                     "where there is none), or the logged odometry, which in a corrected log is the reference "
+                     "(default: recorded where the log has the stream)")
+      ->check(CLI::IsMember({"recorded", "reference"}));
 }
 
 ev::Sequence LoadSource(const SourceOptions& options) {
-  return LoadSequenceArgument(options.source, FindCatalog(options.catalog), options.read);
+  std::optional<ev::OdometryMode> odometry;
+  if (!options.odometry.empty()) odometry = ev::ParseOdometryMode(options.odometry, "--odometry");
+  return LoadSequenceArgument(options.source, FindCatalog(options.catalog), options.read, odometry);
 }
 
 nlohmann::json InfoJson(const ev::Sequence& sequence) {
@@ -88,11 +102,19 @@ nlohmann::json InfoJson(const ev::Sequence& sequence) {
   info["duration_s"] =
       sequence.scans.empty() ? 0.0 : sequence.scans.back().stamp_s - sequence.scans.front().stamp_s;
   info["has_reference"] = sequence.reference.has_value();
+  // Recorded odometry: what the robot measured, not the reference (a corrected log read with its
+  // logged odometry is not); the readings are the robot's whole stream, or one per scan.
+  const bool recorded = !ev::OdometryEqualsReference(sequence);
+  info["odometry"] = recorded ? "recorded" : "reference";
+  info["recorded_odometry"] = recorded;
+  info["recorded_odometry_readings"] =
+      !recorded ? 0 : (sequence.odometry_readings.empty() ? sequence.odometry.size() : sequence.odometry_readings.size());
   info["relations"] = sequence.relations ? sequence.relations->size() : 0;
   info["warnings"] = sequence.warnings;
   info["provenance"] = {{"source", sequence.provenance.source},
                         {"citation", sequence.provenance.citation},
                         {"licence_note", sequence.provenance.licence_note}};
+  if (!sequence.provenance.notes.empty()) info["notes"] = sequence.provenance.notes;
   return info;
 }
 
@@ -167,11 +189,15 @@ void RegisterConvert(CLI::App& data, const Streams& streams) {
 
     // Noisy odometry is drawn around the ground truth when there is one: the corrected logs'
     // odometry equals their reference, and a SLAM program given it would have nothing to do.
+    // On recorded odometry the noise comes on top of what the robot measured.
     const bool noisy_odometry = odometry_noise != ev::OdometryNoise{};
+    const bool around_reference = ev::OdometryEqualsReference(sequence);
     if (noisy_odometry) {
-      const ev::Trajectory& truth = sequence.reference ? *sequence.reference : sequence.odometry;
-      const ev::Trajectory at_scans = truth.stamps_s() == sequence.odometry.stamps_s() ? truth : sequence.odometry;
-      sequence.odometry = ev::ApplyOdometryNoise(at_scans, odometry_noise, ev::DeriveSeed(options->seed, 0));
+      const ev::Trajectory clean = around_reference ? *sequence.reference : sequence.odometry;
+      sequence.odometry = ev::ApplyOdometryNoise(clean, odometry_noise, ev::DeriveSeed(options->seed, 0));
+      if (!sequence.odometry_readings.empty()) {
+        sequence.odometry_readings = ev::NoisyReadings(sequence.odometry_readings, clean, sequence.odometry);
+      }
     }
     if (range_noise != ev::RangeNoise{}) {
       sequence.scans = ev::ApplyRangeNoise(sequence.scans, range_noise, ev::DeriveSeed(options->seed, 1));
@@ -191,9 +217,8 @@ void RegisterConvert(CLI::App& data, const Streams& streams) {
     record["seed"] = options->seed;
     record["odometry_noise"] = odometry_noise;
     record["odometry_noise_seed"] = ev::DeriveSeed(options->seed, 0);
-    record["odometry_noise_around"] = !noisy_odometry          ? "none"
-                                      : sequence.reference ? "reference"
-                                                           : "odometry";
+    record["odometry_noise_around"] = !noisy_odometry ? "none" : around_reference ? "reference" : "odometry";
+    record["odometry"] = around_reference ? "reference" : "recorded";
     record["range_noise"] = range_noise;
     record["range_noise_seed"] = ev::DeriveSeed(options->seed, 1);
     const std::filesystem::path noise_path = options->output + ".noise.json";
@@ -264,7 +289,7 @@ void RegisterSimulate(CLI::App& data, const Streams& streams) {
     sequence.scans.assign(simulated.scans.begin(), simulated.scans.begin() + static_cast<std::ptrdiff_t>(count));
     sequence.odometry = FirstPoses(simulated.odometry, count);
     sequence.reference = FirstPoses(simulated.ground_truth, count);
-    sequence.provenance = {"slamsweep simulation", "slamsweep's floor-plan simulator", "generated data"};
+    sequence.provenance = {"slamsweep simulation", "slamsweep's floor-plan simulator", "generated data", ""};
 
     const std::filesystem::path dir = options->output_dir;
     std::error_code error;
@@ -284,6 +309,97 @@ void RegisterSimulate(CLI::App& data, const Streams& streams) {
   });
 }
 
+/// The file and relations of a relations-clock argument: a CARMEN log, or a catalog entry's log and relations.
+struct ClockSources {
+  std::filesystem::path log;
+  std::filesystem::path relations;
+};
+
+ClockSources ResolveClockSources(const std::string& source, const std::string& catalog_option,
+                                 const std::string& relations_option) {
+  ClockSources sources{source, relations_option};
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(source, error)) {
+    const CatalogLocation location = FindCatalog(catalog_option);
+    const ev::Catalog catalog = ev::ReadCatalog(location.catalog);
+    const ev::CatalogEntry& entry = ev::FindCatalogEntry(catalog, source);
+    const ev::CatalogVariables variables{{"SHARED", location.shared_root.string()}};
+    sources.log = ev::ResolveCatalogPath(entry.corrected_log ? entry.corrected_log->path : entry.path, variables);
+    if (relations_option.empty() && !entry.relations_path.empty()) {
+      sources.relations = ev::ResolveCatalogPath(entry.relations_path, variables);
+    }
+  }
+  if (sources.relations.empty()) throw ev::InputError(source + ": --relations: no relations file given or in the catalog");
+  return sources;
+}
+
+void RegisterRelationsClock(CLI::App& data, const Streams& streams) {
+  struct Options {
+    std::string source;
+    std::string catalog;
+    std::string relations;
+    bool json = false;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = data.add_subcommand(
+      "relations-clock",
+      "fit the map from a relations file's clock onto a corrected CARMEN log's, from time stamps alone: relation "
+      "stamps against the raw-scan stamps of the log's ODOM stream (an offset and a rate)");
+  command->add_option("SOURCE", options->source, "corrected CARMEN log, or catalog name")->required();
+  command->add_option("--relations", options->relations, "relations file (default: the catalog entry's)");
+  command->add_option("--catalog", options->catalog, "dataset catalog (default: configs/datasets.yaml)");
+  command->add_flag("--json", options->json, "print one JSON object");
+  command->callback([options, streams] {
+    const ClockSources sources = ResolveClockSources(options->source, options->catalog, options->relations);
+    const ev::CarmenLog log = ev::ReadCarmenLog(sources.log);
+    std::vector<const ev::CarmenLaserRecord*> scans;
+    for (const ev::CarmenLaserRecord& record : log.lasers) {
+      if (record.type == "FLASER") scans.push_back(&record);
+    }
+    const ev::RecordedOdometry odometry = ev::RebuildRecordedOdometry(log, scans, sources.log, {});
+    std::vector<double> relation_stamps;
+    for (const ev::Relation& relation : ev::ReadRelations(sources.relations)) {
+      relation_stamps.push_back(relation.t1_s);
+      relation_stamps.push_back(relation.t2_s);
+    }
+    const ev::RelationsClockFit fit = ev::FitRelationsClock(relation_stamps, odometry.logged_stamps_s);
+    const ev::OdometryClockFit by_odometry =
+        ev::FitRelationsClockByOdometry(ev::ReadRelations(sources.relations), odometry.readings);
+    ev::RelationsClockFitOptions from_odometry;
+    from_odometry.start_offset_s = by_odometry.offset_s;
+    from_odometry.start_rate = by_odometry.rate;
+    const ev::RelationsClockFit combined = ev::FitRelationsClock(relation_stamps, odometry.logged_stamps_s, from_odometry);
+    nlohmann::json out = fit.ToJson();
+    out["by_odometry"] = by_odometry.ToJson();
+    out["stamps_from_odometry_fit"] = combined.ToJson();
+    out["log"] = sources.log.string();
+    out["relations"] = sources.relations.string();
+    out["readings"] = odometry.logged_stamps_s.size();
+    if (options->json) {
+      streams.out << out.dump() << "\n";
+      return;
+    }
+    streams.out << fmt::format(
+        "relations_rate: {:.12g}\nrelations_offset_s: {:.12g}\n{} of {} relation stamps paired with a reading within "
+        "{:.3f} s (half the readings' median spacing), {} within 10 ms; residual rms {:.4f} s, max {:.4f} s; the rate "
+        "takes up {:.4f} s of drift over the relations' span\n",
+        fit.rate, fit.offset_s, fit.matched, fit.stamps, fit.tolerance_s, fit.matched_within_10ms, fit.rms_residual_s,
+        fit.max_abs_residual_s, fit.drift_over_span_s);
+    streams.out << fmt::format(
+        "from the recorded odometry (for logs whose reading stamps do not carry the laser's clock):\n"
+        "relations_rate: {:.12g}\nrelations_offset_s: {:.12g}\n{} short relations turn as the odometry does within "
+        "{:.4f} deg on average (the best offset more than 0.1 s away: {:.4f} deg); halves fitted at {:.4f} and {:.4f} s\n",
+        by_odometry.rate, by_odometry.offset_s, by_odometry.short_relations, by_odometry.rotation_agreement_deg,
+        by_odometry.next_best_agreement_deg, by_odometry.first_half_offset_s, by_odometry.second_half_offset_s);
+    streams.out << fmt::format(
+        "stamps again, starting from the odometry's map (it picks the laser period; the stamps the time within it):\n"
+        "relations_rate: {:.12g}\nrelations_offset_s: {:.12g}\n{} of {} relation stamps paired with a reading within "
+        "{:.3f} s, {} within 10 ms; residual rms {:.4f} s, max {:.4f} s; drift over the span {:.4f} s\n",
+        combined.rate, combined.offset_s, combined.matched, combined.stamps, combined.tolerance_s,
+        combined.matched_within_10ms, combined.rms_residual_s, combined.max_abs_residual_s, combined.drift_over_span_s);
+  });
+}
+
 }  // namespace
 
 void RegisterDataCommands(CLI::App& app, const Streams& streams) {
@@ -293,6 +409,7 @@ void RegisterDataCommands(CLI::App& app, const Streams& streams) {
   RegisterConvert(*data, streams);
   RegisterMap(*data, streams);
   RegisterSimulate(*data, streams);
+  RegisterRelationsClock(*data, streams);
 }
 
 }  // namespace slamsweep::cli

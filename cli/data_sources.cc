@@ -35,9 +35,14 @@ CatalogLocation FindCatalog(const std::string& catalog_option) {
 }
 
 ev::Sequence LoadSequenceArgument(const std::string& argument, const CatalogLocation& location,
-                                  const ev::SequenceReadOptions& read_options) {
+                                  const ev::SequenceReadOptions& read_options, std::optional<ev::OdometryMode> odometry) {
   std::error_code error;
-  if (std::filesystem::is_regular_file(argument, error)) return ev::ReadSequence(argument, read_options);
+  if (std::filesystem::is_regular_file(argument, error)) {
+    ev::SequenceReadOptions options = read_options;
+    options.carmen.odometry = odometry.value_or(ev::OdometryMode::kRecorded);
+    options.carmen.require_recorded_odometry = odometry.has_value();
+    return ev::ReadSequence(argument, options);
+  }
   ev::Catalog catalog;
   try {
     catalog = ev::ReadCatalog(location.catalog);
@@ -47,7 +52,15 @@ ev::Sequence LoadSequenceArgument(const std::string& argument, const CatalogLoca
   }
   for (const ev::CatalogEntry& entry : catalog.entries) {
     if (entry.name == argument) {
-      return ev::LoadCatalogSequence(entry, {{"SHARED", location.shared_root.string()}});
+      ev::CatalogEntry chosen = entry;
+      if (odometry) {
+        if (*odometry == ev::OdometryMode::kReference && !ev::OdometryModeApplies(entry)) {
+          throw ev::InputError("--odometry reference: sequence '" + argument +
+                               "' is not a corrected CARMEN log; it has only its recorded odometry");
+        }
+        chosen.odometry = odometry;
+      }
+      return ev::LoadCatalogSequence(chosen, {{"SHARED", location.shared_root.string()}});
     }
   }
   std::string known;

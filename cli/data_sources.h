@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "evaluator/sequence/catalog.h"
@@ -23,8 +24,12 @@ CatalogLocation FindCatalog(const std::string& catalog_option);
 
 /// A sequence named on the command line: an existing file (any format ReadSequence knows), else a
 /// catalog name. Neither is an InputError naming the argument and the catalog's names.
-/// `read_options` apply to a file argument (catalog entries carry their own).
+/// `read_options` apply to a file argument (catalog entries carry their own). `odometry`, when set,
+/// is the odometry mode asked for explicitly (a corrected log without an ODOM stream is then an
+/// error naming the line); unset, a file is read as the catalog reads its entries by default: with
+/// its recorded odometry where it has a stream, else its logged odometry and a warning.
 evaluator::Sequence LoadSequenceArgument(const std::string& argument, const CatalogLocation& location,
-                                         const evaluator::SequenceReadOptions& read_options = {});
+                                         const evaluator::SequenceReadOptions& read_options = {},
+                                         std::optional<evaluator::OdometryMode> odometry = std::nullopt);
 
 }  // namespace slamsweep::cli

@@ -46,8 +46,9 @@ def main():
     with open(runs_csv) as table:
         for row in csv.DictReader(table):
             groups[(row["algorithm"], row["sequence"])].append(row)
-    print("| algorithm | sequence | build s | ok/runs | wall s | CPU s | peak MB | ATE RMSE m (mean +- std) |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| algorithm | sequence | build s | ok/runs | wall s | CPU s | peak MB | relations trans m (mean +- std, coverage) "
+          "| ATE RMSE m (mean +- std) |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for (algorithm, sequence), rows in sorted(groups.items()):
         ok = [r for r in rows if r["status"] == "ok"]
         wall = mean_std([v for v in (number(r["wall_s"]) for r in ok) if v is not None])[0]
@@ -55,9 +56,20 @@ def main():
         rss = [v for v in (number(r["peak_rss_kb"]) for r in ok) if v is not None]
         peak = "-" if not rss else "%.0f" % (sum(rss) / len(rss) / 1024)
         ate_mean, ate_std = mean_std([v for v in (number(r.get("ape_trans.rmse")) for r in ok) if v is not None])
-        print("| %s | %s | %s | %d/%d | %.1f | %.1f | %s | %.3f +- %.3f |" %
+        # The relations error: mean over the relations of each run (its own std is the spread over
+        # relations), averaged over runs; coverage = used / (used + skipped).
+        rel = [v for v in (number(r.get("relations_trans.mean")) for r in ok) if v is not None]
+        rel_std = [v for v in (number(r.get("relations_trans.std")) for r in ok) if v is not None]
+        used = [v for v in (number(r.get("relations_trans.n")) for r in ok) if v is not None]
+        skipped = [v for v in (number(r.get("relations_trans.skipped")) for r in ok) if v is not None]
+        if rel:
+            coverage = sum(used) / max(1.0, sum(used) + sum(skipped))
+            relations = "%.4f +- %.4f (%.1f %%)" % (mean_std(rel)[0], mean_std(rel_std)[0], 100.0 * coverage)
+        else:
+            relations = "-"
+        print("| %s | %s | %s | %d/%d | %.1f | %.1f | %s | %s | %.3f +- %.3f |" %
               (algorithm, sequence, build_seconds(prefix, algorithm), len(ok), len(rows), wall, cpu, peak,
-               ate_mean, ate_std))
+               relations, ate_mean, ate_std))
 
 
 if __name__ == "__main__":

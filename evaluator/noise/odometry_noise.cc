@@ -143,4 +143,20 @@ OdometryNoise OdometryNoiseFromJson(const nlohmann::json& in, const std::string&
 
 void from_json(const nlohmann::json& in, OdometryNoise& noise) { noise = OdometryNoiseFromJson(in); }
 
+Trajectory NoisyReadings(const Trajectory& readings, const Trajectory& clean_scans, const Trajectory& noisy_scans) {
+  if (clean_scans.size() != noisy_scans.size() || clean_scans.empty()) {
+    throw InputError("noisy readings: expected the clean and noisy scan odometry to have the same, non-zero size");
+  }
+  Trajectory out;
+  out.Reserve(readings.size());
+  std::size_t scan = 0;
+  for (std::size_t i = 0; i < readings.size(); ++i) {
+    const double stamp = readings.stamps_s()[i];
+    while (scan + 1 < clean_scans.size() && clean_scans.stamps_s()[scan + 1] <= stamp) ++scan;
+    const Pose shift = noisy_scans.poses()[scan] * clean_scans.poses()[scan].Inverse();
+    out.Add(stamp, shift * readings.poses()[i]);
+  }
+  return out;
+}
+
 }  // namespace slamsweep::evaluator

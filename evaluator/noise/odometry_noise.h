@@ -56,6 +56,13 @@ void ValidateOdometryNoise(const OdometryNoise& noise);
 /// iteration k of a sweep.
 Trajectory ApplyOdometryNoise(const Trajectory& reference, const OdometryNoise& noise, std::uint64_t seed);
 
+/// The readings of a denser odometry stream after noise was drawn on the scans' odometry
+/// (`noisy_scans` = ApplyOdometryNoise(`clean_scans`, ...), whose stamps are among the readings'):
+/// a reading at a scan's stamp is that scan's noisy pose; any other reading keeps its recorded
+/// motion from the last scan before it, composed onto that scan's noisy pose (readings before the
+/// first scan are moved with it). So the alphas keep their meaning, variances per scan step.
+Trajectory NoisyReadings(const Trajectory& readings, const Trajectory& clean_scans, const Trajectory& noisy_scans);
+
 /// JSON record of the noise specification, {"model": "odometry_motion_model", "alpha1": ...},
 /// to be stored with every run (the seed is recorded by the caller beside it).
 void to_json(nlohmann::json& out, const OdometryNoise& noise);

@@ -12,6 +12,7 @@
 #include "evaluator/formats/trajectory/relations_format.h"
 #include "evaluator/sequence/flaser_fan.h"
 #include "evaluator/sequence/provenance_file.h"
+#include "evaluator/sequence/recorded_odometry.h"
 #include "evaluator/sequence/robot_log.h"
 
 namespace slamsweep::evaluator {
@@ -190,17 +191,39 @@ void WarnAboutIgnoredLasers(const CarmenLog& log, const std::filesystem::path& s
   }
 }
 
-Relations ShiftedRelations(Relations relations, double offset_s) {
+Relations ShiftedRelations(Relations relations, double rate, double offset_s) {
   for (Relation& relation : relations) {
-    relation.t1_s += offset_s;
-    relation.t2_s += offset_s;
+    relation.t1_s = rate * relation.t1_s + offset_s;
+    relation.t2_s = rate * relation.t2_s + offset_s;
   }
   return relations;
 }
 
+/// The median gap between consecutive stamps (sorted), 0 for fewer than two.
+double MedianSpacingS(std::vector<double> stamps) {
+  if (stamps.size() < 2) return 0.0;
+  std::sort(stamps.begin(), stamps.end());
+  std::vector<double> gaps(stamps.size() - 1);
+  for (std::size_t i = 1; i < stamps.size(); ++i) gaps[i - 1] = stamps[i] - stamps[i - 1];
+  std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
+  return gaps[gaps.size() / 2];
+}
+
+/// The ODOM records of a raw robot log written by slamsweep, when their stamps strictly increase
+/// (the readings between its scans); empty otherwise.
+Trajectory RawLogReadings(const CarmenLog& log) {
+  Trajectory readings;
+  readings.Reserve(log.odometry.size());
+  for (const CarmenOdomRecord& odom : log.odometry) {
+    if (!readings.empty() && !(odom.ipc_stamp_s > readings.stamps_s().back())) return Trajectory();
+    readings.Add(odom.ipc_stamp_s, odom.pose);
+  }
+  return readings;
+}
+
 Provenance ProvenanceOf(const std::filesystem::path& source, const CarmenSequenceOptions& options) {
   if (options.provenance) return *options.provenance;
-  Provenance provenance = ReadProvenanceBeside(source).value_or(Provenance{source.string(), "", ""});
+  Provenance provenance = ReadProvenanceBeside(source).value_or(Provenance{source.string(), "", "", ""});
   if (options.relations_path) {
     if (const std::optional<Provenance> relations = ReadProvenanceBeside(*options.relations_path);
         relations && !relations->citation.empty()) {
@@ -225,6 +248,14 @@ void CheckCarmenSequenceOptions(const CarmenSequenceOptions& options) {
   if (options.max_range_m && (!(*options.max_range_m > options.min_range_m) || !std::isfinite(*options.max_range_m))) {
     throw InputError(fmt::format("max_range_m: expected a finite range above min_range_m ({} m), got {}",
                                  options.min_range_m, *options.max_range_m));
+  }
+  if (!(options.relations_rate > 0.0) || !std::isfinite(options.relations_rate)) {
+    throw InputError(fmt::format("relations_rate: expected a finite rate > 0, got {}", options.relations_rate));
+  }
+  if (options.relations_match_tolerance_s &&
+      (!(*options.relations_match_tolerance_s >= 0.0) || !std::isfinite(*options.relations_match_tolerance_s))) {
+    throw InputError(fmt::format("relations_match_tolerance_s: expected a finite tolerance >= 0 s, got {}",
+                                 *options.relations_match_tolerance_s));
   }
   if (!std::isfinite(options.relations_offset_s)) {
     throw InputError(
@@ -267,7 +298,25 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
   const bool logged_pose_is_reference = options.logged_pose_is_reference && !MarkedAsRawRobotLog(log);
   const double flaser_max_range_m = FlaserMaxRange(
       log, source, options, options.use_rear_laser ? kRearLaserMaxParam : kFrontLaserMaxParam, sequence.warnings);
-  const std::vector<double> stamps_s = ScanStampsOf(records, source, options.stamps, sequence.warnings);
+  std::optional<RecordedOdometry> recorded;
+  if (options.odometry == OdometryMode::kRecorded && logged_pose_is_reference) {
+    try {
+      recorded = RebuildRecordedOdometry(log, records, source, options.stamps);
+    } catch (const InputError& error) {
+      if (options.require_recorded_odometry) throw;
+      sequence.warnings.push_back(std::string(error.what()) +
+                                  "; the laser records' odometry (the reference) is used instead");
+    }
+  }
+  std::vector<double> stamps_s;
+  if (recorded) {
+    // Each scan is stamped like its raw reading, so that scans, readings and relations share one clock.
+    stamps_s.reserve(records.size());
+    for (std::size_t reading : recorded->scan_readings) stamps_s.push_back(recorded->readings.stamps_s()[reading]);
+    sequence.warnings.insert(sequence.warnings.end(), recorded->warnings.begin(), recorded->warnings.end());
+  } else {
+    stamps_s = ScanStampsOf(records, source, options.stamps, sequence.warnings);
+  }
 
   std::vector<std::size_t> guessed_fan_lines;
   sequence.scans.reserve(records.size());
@@ -285,7 +334,9 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
   for (std::size_t i = 0; i < records.size(); ++i) {
     const CarmenLaserRecord& record = *records[i];
     Pose odometry_pose = record.odom_pose;
-    if (odometry_from_odom) {
+    if (recorded) {
+      odometry_pose = recorded->readings.poses()[recorded->scan_readings[i]];
+    } else if (odometry_from_odom) {
       while (next_odom < log.odometry.size() && log.odometry[next_odom].line < record.line) ++next_odom;
       // The latest ODOM before this scan; a scan before the first ODOM takes the first one.
       odometry_pose = log.odometry[next_odom == 0 ? 0 : next_odom - 1].pose;
@@ -315,7 +366,29 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
   }
   if (logged_pose_is_reference) sequence.reference = std::move(reference);
   if (options.relations_path) {
-    sequence.relations = ShiftedRelations(ReadRelations(*options.relations_path), options.relations_offset_s);
+    sequence.relations =
+        ShiftedRelations(ReadRelations(*options.relations_path), options.relations_rate, options.relations_offset_s);
+    if (recorded) {
+      // Repaired reading stamps moved: the relations follow their raw scans (the logged stamps name them).
+      std::size_t unmatched = 0;
+      const double tolerance_s =
+          options.relations_match_tolerance_s.value_or(0.5 * MedianSpacingS(recorded->logged_stamps_s));
+      sequence.relations =
+          MapRelationsOntoReadings(std::move(*sequence.relations), *recorded, tolerance_s, unmatched);
+      if (unmatched > 0) {
+        sequence.warnings.push_back(Located(
+            *options.relations_path, 0,
+            fmt::format("{} of {} relation stamps lie farther than {} s from every recorded ODOM reading of {} and keep "
+                        "their own time",
+                        unmatched, 2 * sequence.relations->size(), tolerance_s,
+                        source.string())));
+      }
+    }
+  }
+  if (recorded) {
+    sequence.odometry_readings = std::move(recorded->readings);
+  } else if (MarkedAsRawRobotLog(log) && log.odometry.size() > records.size()) {
+    sequence.odometry_readings = RawLogReadings(log);
   }
   sequence.provenance = ProvenanceOf(source, options);
   return sequence;

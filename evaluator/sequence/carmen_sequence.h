@@ -5,6 +5,7 @@
 #include <string>
 
 #include "evaluator/formats/trajectory/carmen_log.h"
+#include "evaluator/sequence/odometry_mode.h"
 #include "evaluator/sequence/scan_stamps.h"
 #include "evaluator/sequence/sequence.h"
 
@@ -35,9 +36,23 @@ struct CarmenSequenceOptions {
   bool use_rear_laser = false;
   /// Kuemmerle et al. relations for this log, read into Sequence::relations when set.
   std::optional<std::filesystem::path> relations_path;
-  /// Added to both stamps of every relation, to bring the relations' clock onto the log's (intel:
-  /// the relations use absolute ipc time, the corrected log relative time).
+  /// The relations' clock on the log's: each relation stamp t becomes relations_rate * t +
+  /// relations_offset_s (intel: the relations use absolute ipc time, the corrected log relative time;
+  /// fr079: the relations' clock also runs at another rate). With recorded odometry the stamps are then
+  /// moved onto the raw scans of the ODOM stream (MapRelationsOntoReadings).
   double relations_offset_s = 0.0;
+  double relations_rate = 1.0;
+  /// How far a relation stamp may lie from the logged stamp of a reading to name that raw scan;
+  /// unset: half the readings' median spacing, so each stamp names its nearest reading.
+  std::optional<double> relations_match_tolerance_s;
+  /// With logged_pose_is_reference: kRecorded rebuilds the robot's odometry from the ODOM stream
+  /// (RebuildRecordedOdometry; scans then take the stamps of their raw readings, and every reading
+  /// goes into Sequence::odometry_readings); kReference keeps the laser records' odometry fields.
+  /// Logs that are not corrected logs have only their recorded odometry, whatever this says.
+  OdometryMode odometry = OdometryMode::kReference;
+  /// With kRecorded: a log without a usable stream is an InputError naming the line (true) or is
+  /// read with its logged odometry and a warning saying so (false).
+  bool require_recorded_odometry = true;
   /// When set, used as is; otherwise read from PROVENANCE.txt beside the log (ReadProvenanceBeside),
   /// else just the log's path as source.
   std::optional<Provenance> provenance;
@@ -55,7 +70,9 @@ void CheckCarmenSequenceOptions(const CarmenSequenceOptions& options);
 ///   RLASER: FlaserBeamFan(n) seen from a sensor at the robot origin facing backwards (yaw pi);
 ///   ROBOTLASER1: start_angle, angular_res, max_range of the record; sensor pose = laser pose in the
 ///           frame of the robot pose.
-/// Odometry: FLASER odom_x/y/theta (ROBOTLASER1: robot pose), one pose per scan at the scan's stamp.
+/// Odometry: FLASER odom_x/y/theta (ROBOTLASER1: robot pose), one pose per scan at the scan's stamp;
+/// with options.odometry kRecorded on a corrected log, the rebuilt recorded odometry instead. A raw
+/// robot log written by slamsweep gives its ODOM records as Sequence::odometry_readings.
 /// Reference: the logged pose at the same stamps, when options.logged_pose_is_reference and the log is not
 /// marked as a raw robot log ("PARAM slamsweep_logged_pose odometry", see FormatCarmenLog).
 /// Warnings (each naming `source`) for repaired or made-up stamps, guessed beam fans, conflicting

@@ -9,6 +9,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
+#include "evaluator/sequence/corrected_log_clock.h"
 #include "evaluator/simulation/simulated_sequence.h"
 
 namespace slamsweep::evaluator {
@@ -72,11 +73,42 @@ nlohmann::json ToJson(const std::filesystem::path& source, const YAML::Node& nod
   return text;
 }
 
+std::size_t Count(const std::filesystem::path& source, const YAML::Node& node, std::string_view key, std::size_t minimum) {
+  const std::string text = Scalar(source, node, key);
+  const bool digits = !text.empty() && text.size() < 10 && text.find_first_not_of("0123456789") == std::string::npos;
+  if (!digits || std::stoul(text) < minimum) {
+    Fail(source, node, fmt::format("{}: expected a whole number >= {}, got '{}'", key, minimum, text));
+  }
+  return std::stoul(text);
+}
+
+CorrectedLogLink ParseCorrectedLog(const std::filesystem::path& source, const YAML::Node& node) {
+  if (!node.IsMap()) Fail(source, node, "corrected_log: expected a map with path, first_reading and every");
+  CorrectedLogLink link;
+  for (const auto& item : node) {
+    const std::string key = item.first.as<std::string>();
+    if (key == "path") {
+      link.path = Scalar(source, item.second, "corrected_log.path");
+    } else if (key == "first_scan") {
+      link.first_scan = Count(source, item.second, "corrected_log.first_scan", 0);
+    } else if (key == "first_reading") {
+      link.first_reading = Count(source, item.second, "corrected_log.first_reading", 0);
+    } else if (key == "every") {
+      link.every = Count(source, item.second, "corrected_log.every", 1);
+    } else {
+      Fail(source, item.first, fmt::format("corrected_log: unknown key '{}' (expected path, first_scan, first_reading, every)", key));
+    }
+  }
+  if (link.path.empty()) Fail(source, node, "corrected_log: no path");
+  return link;
+}
+
 CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& node) {
   if (!node.IsMap()) Fail(source, node, "sequences: expected each entry to be a map with name, format, ...");
   CatalogEntry entry;
   entry.line = LineOf(node);
   bool has_ground_truth = false;
+  YAML::Node odometry_node;
   for (const auto& item : node) {
     const std::string key = item.first.as<std::string>();
     const YAML::Node& value = item.second;
@@ -109,6 +141,20 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
       entry.reference_map_path = Scalar(source, value, key);
     } else if (key == "relations_offset_s") {
       entry.relations_offset_s = Number(source, value, key);
+    } else if (key == "relations_rate") {
+      entry.relations_rate = Number(source, value, key);
+      if (!(entry.relations_rate > 0.0)) Fail(source, value, "relations_rate: expected a clock rate > 0");
+    } else if (key == "odometry") {
+      try {
+        entry.odometry = ParseOdometryMode(Scalar(source, value, key), "odometry");
+      } catch (const InputError& error) {
+        Fail(source, value, error.what());
+      }
+      odometry_node = value;
+    } else if (key == "corrected_log") {
+      entry.corrected_log = ParseCorrectedLog(source, value);
+    } else if (key == "notes") {
+      entry.notes = Scalar(source, value, key);
     } else if (key == "max_range_m") {
       entry.max_range_m = Number(source, value, key);
       if (!(*entry.max_range_m > 0.0)) Fail(source, value, "max_range_m: expected a range > 0 m");
@@ -136,7 +182,8 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
     } else {
       Fail(source, item.first,
            fmt::format("unknown key '{}' (expected name, format, path, ground_truth, relations, relations_offset_s, "
-                       "max_range_m, stamp_policy, citation, licence, download, simulation, reference_map)",
+                       "relations_rate, odometry, max_range_m, stamp_policy, citation, licence, download, simulation, "
+                       "reference_map, corrected_log, notes)",
                        key));
     }
   }
@@ -145,8 +192,15 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
   if (!has_ground_truth) Fail(source, node, fmt::format("sequence '{}': no ground_truth", entry.name));
   if (entry.format == "simulated") {
     if (!entry.path.empty()) Fail(source, node, fmt::format("sequence '{}': a simulated sequence has no path", entry.name));
+    if (entry.corrected_log) Fail(source, node, fmt::format("sequence '{}': a simulated sequence has no corrected_log", entry.name));
   } else if (entry.path.empty()) {
     Fail(source, node, fmt::format("sequence '{}': no path", entry.name));
+  }
+  if (entry.odometry == OdometryMode::kReference && !OdometryModeApplies(entry)) {
+    Fail(source, odometry_node,
+         fmt::format("sequence '{}': odometry: reference applies only to CARMEN logs whose logged pose is the corrected "
+                     "pose (format carmen, ground_truth corrected_poses); this sequence has only its recorded odometry",
+                     entry.name));
   }
   return entry;
 }
@@ -163,6 +217,14 @@ std::filesystem::path RequireFile(const CatalogEntry& entry, std::string_view wh
 }
 
 }  // namespace
+
+bool OdometryModeApplies(const CatalogEntry& entry) {
+  return entry.format == "carmen" && entry.ground_truth == GroundTruthKind::kCorrectedPoses;
+}
+
+OdometryMode EffectiveOdometryMode(const CatalogEntry& entry) {
+  return OdometryModeApplies(entry) ? entry.odometry.value_or(OdometryMode::kRecorded) : OdometryMode::kRecorded;
+}
 
 std::string_view GroundTruthKindName(GroundTruthKind kind) {
   switch (kind) {
@@ -251,7 +313,7 @@ std::filesystem::path ResolveCatalogPath(std::string_view path, const CatalogVar
 }
 
 Sequence LoadCatalogSequence(const CatalogEntry& entry, const CatalogVariables& variables) {
-  Provenance provenance{"", entry.citation, entry.licence_note};
+  Provenance provenance{"", entry.citation, entry.licence_note, entry.notes};
   if (entry.format == "simulated") {
     const SimulationOptions options = SimulationOptionsFromJson(entry.simulation, "simulation");
     SimulatedSequence simulated = SimulateSequence(options);
@@ -270,14 +332,40 @@ Sequence LoadCatalogSequence(const CatalogEntry& entry, const CatalogVariables& 
   options.name = entry.name;
   options.carmen.max_range_m = entry.max_range_m;
   options.carmen.stamps.policy = ParseStampPolicy(entry.stamp_policy, "stamp_policy");
+  options.carmen.odometry = EffectiveOdometryMode(entry);
+  // The catalog's default falls back to the logged odometry (with a warning) where a log has no stream.
+  options.carmen.require_recorded_odometry = entry.odometry.has_value();
   options.rawlog_stamps.policy = options.carmen.stamps.policy;
+  std::optional<std::filesystem::path> relations_path;
   if (!entry.relations_path.empty()) {
-    options.carmen.relations_path = RequireFile(entry, "relations file", entry.relations_path, variables);
-    options.carmen.relations_offset_s = entry.relations_offset_s;
+    relations_path = RequireFile(entry, "relations file", entry.relations_path, variables);
   }
+  if (entry.corrected_log) {
+    // The corrected log of the same run gives the clock, the reference and the relations (on its raw scans).
+    const std::filesystem::path corrected_path =
+        RequireFile(entry, "corrected log", entry.corrected_log->path, variables);
+    SequenceReadOptions corrected_options = options;
+    corrected_options.carmen.odometry = OdometryMode::kRecorded;
+    corrected_options.carmen.require_recorded_odometry = true;
+    corrected_options.carmen.relations_path = relations_path;
+    corrected_options.carmen.relations_offset_s = entry.relations_offset_s;
+    corrected_options.carmen.relations_rate = entry.relations_rate;
+    Sequence corrected = ReadSequence(corrected_path, corrected_options);
+    Sequence sequence = ReadSequence(path, options);
+    TakeClockFromCorrectedLog(sequence, std::move(corrected), entry.corrected_log->first_scan,
+                              entry.corrected_log->first_reading, entry.corrected_log->every, corrected_path);
+    if (sequence.provenance.citation.empty()) sequence.provenance.citation = entry.citation;
+    if (sequence.provenance.licence_note.empty()) sequence.provenance.licence_note = entry.licence_note;
+    sequence.provenance.notes = entry.notes;
+    return sequence;
+  }
+  options.carmen.relations_path = relations_path;
+  options.carmen.relations_offset_s = entry.relations_offset_s;
+  options.carmen.relations_rate = entry.relations_rate;
   Sequence sequence = ReadSequence(path, options);
   if (sequence.provenance.citation.empty()) sequence.provenance.citation = entry.citation;
   if (sequence.provenance.licence_note.empty()) sequence.provenance.licence_note = entry.licence_note;
+  sequence.provenance.notes = entry.notes;
   return sequence;
 }
 

@@ -20,6 +20,8 @@ struct RobotLog {
   std::string name;
   std::vector<LaserScan> scans;
   Trajectory odometry;
+  /// Every odometry reading recorded between the scans too (Sequence::odometry_readings); may be empty.
+  Trajectory odometry_readings;
 };
 
 /// The PARAM that marks a CARMEN log as a raw robot log (FormatCarmenLog writes it): its logged

@@ -82,14 +82,25 @@ std::string FormatCarmenLog(const RobotLog& log) {
   if (flaser && same_max_range) {
     out += FormatCarmenRecord(CarmenParam{"robot_front_laser_max", ShortestText(max_range_m), 0}) + '\n';
   }
+  const auto odom_line = [](double stamp_s, const Pose& pose) {
+    CarmenOdomRecord odom;
+    odom.pose = pose;
+    odom.ipc_stamp_s = stamp_s;
+    odom.logger_stamp_s = stamp_s;
+    return FormatCarmenRecord(odom) + '\n';
+  };
+  const Trajectory& readings = log.odometry_readings;
+  std::size_t next_reading = 0;
   for (std::size_t i = 0; i < log.scans.size(); ++i) {
     const LaserScan& scan = log.scans[i];
     const Pose& odometry = log.odometry.poses()[i];
-    CarmenOdomRecord odom;
-    odom.pose = odometry;
-    odom.ipc_stamp_s = scan.stamp_s;
-    odom.logger_stamp_s = scan.stamp_s;
-    out += FormatCarmenRecord(odom) + '\n';
+    // Every recorded reading up to the scan, as a raw log holds them; the scan's own odometry last.
+    while (next_reading < readings.size() && readings.stamps_s()[next_reading] < scan.stamp_s) {
+      out += odom_line(readings.stamps_s()[next_reading], readings.poses()[next_reading]);
+      ++next_reading;
+    }
+    if (next_reading < readings.size() && readings.stamps_s()[next_reading] == scan.stamp_s) ++next_reading;
+    out += odom_line(scan.stamp_s, odometry);
 
     CarmenLaserRecord laser;
     laser.ranges_m = RangesAsWritten(scan);
@@ -111,6 +122,9 @@ std::string FormatCarmenLog(const RobotLog& log) {
       laser.laser_pose = odometry * scan.sensor_pose_on_robot;
     }
     out += FormatCarmenRecord(laser) + '\n';
+  }
+  for (; next_reading < readings.size(); ++next_reading) {
+    out += odom_line(readings.stamps_s()[next_reading], readings.poses()[next_reading]);
   }
   return out;
 }

@@ -22,8 +22,9 @@ std::string_view SequenceWriteFormatName(SequenceWriteFormat format);
 SequenceWriteFormat ParseSequenceWriteFormat(std::string_view text, std::string_view option = "--to");
 
 /// The CARMEN log text of a robot log, as a raw (uncorrected) CARMEN log holds it. First
-/// "PARAM slamsweep_logged_pose odometry", then per scan, in order: an ODOM record (the odometry
-/// pose) and a laser record stamped with the scan's stamp:
+/// "PARAM slamsweep_logged_pose odometry", then per scan, in order: an ODOM record per odometry
+/// reading recorded since the previous scan (RobotLog::odometry_readings), an ODOM record (the scan's
+/// odometry pose) and a laser record stamped with the scan's stamp:
 ///  - FLASER, when every scan has a fan that CARMEN infers from its beam count (FlaserBeamFan) and the
 ///    sensor sits at the robot origin: x y theta and odom_x odom_y odom_theta are both the odometry
 ///    pose. A "PARAM robot_front_laser_max" states the max range when all scans agree on it.

@@ -52,21 +52,59 @@ void ValidateScansAndOdometry(const std::string& name, const std::vector<LaserSc
   }
 }
 
+void ValidateReadings(const std::string& name, const Trajectory& readings) {
+  const std::vector<double>& stamps = readings.stamps_s();
+  for (std::size_t i = 1; i < stamps.size(); ++i) {
+    if (!(stamps[i] > stamps[i - 1])) {
+      Fail(name, fmt::format("odometry reading {}: stamp {} s does not come after the previous reading's {} s", i,
+                             stamps[i], stamps[i - 1]));
+    }
+  }
+}
+
 }  // namespace
 
 void ValidateSequence(const Sequence& sequence) {
   ValidateScansAndOdometry(sequence.name, sequence.scans, sequence.odometry);
+  ValidateReadings(sequence.name, sequence.odometry_readings);
 }
 
-void ValidateRobotLog(const RobotLog& log) { ValidateScansAndOdometry(log.name, log.scans, log.odometry); }
+void ValidateRobotLog(const RobotLog& log) {
+  ValidateScansAndOdometry(log.name, log.scans, log.odometry);
+  ValidateReadings(log.name, log.odometry_readings);
+}
 
-RobotLog RobotLogOf(const Sequence& sequence) { return RobotLog{sequence.name, sequence.scans, sequence.odometry}; }
+RobotLog RobotLogOf(const Sequence& sequence) {
+  return RobotLog{sequence.name, sequence.scans, sequence.odometry, sequence.odometry_readings};
+}
 
 RobotLog TakeRobotLog(Sequence& sequence) {
-  RobotLog log{sequence.name, std::move(sequence.scans), std::move(sequence.odometry)};
+  RobotLog log{sequence.name, std::move(sequence.scans), std::move(sequence.odometry),
+               std::move(sequence.odometry_readings)};
   sequence.scans.clear();
   sequence.odometry = Trajectory();
+  sequence.odometry_readings = Trajectory();
   return log;
+}
+
+bool OdometryEqualsReference(const Sequence& sequence) {
+  constexpr double kSameM = 1e-6;
+  constexpr double kSameRad = 1e-6;
+  if (!sequence.reference || sequence.odometry.empty()) return false;
+  const std::vector<double>& stamps = sequence.reference->stamps_s();
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < sequence.odometry.size(); ++i) {
+    const double stamp = sequence.odometry.stamps_s()[i];
+    while (j < stamps.size() && stamps[j] < stamp) ++j;
+    if (j == stamps.size() || stamps[j] != stamp) return false;
+    const Pose& odometry = sequence.odometry.poses()[i];
+    const Pose& reference = sequence.reference->poses()[j];
+    if ((odometry.position - reference.position).norm() > kSameM ||
+        RotationAngleRad(odometry.orientation.inverse() * reference.orientation) > kSameRad) {
+      return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace slamsweep::evaluator

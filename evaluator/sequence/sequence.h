@@ -20,6 +20,8 @@ struct Provenance {
   std::string citation;
   /// The redistribution terms as far as they are known.
   std::string licence_note;
+  /// How the sequence's clock, time maps or relations were established and checked (catalog notes).
+  std::string notes;
 };
 
 /// Timestamped 2D laser scans with the robot's odometry, optionally the ground truth that makes
@@ -30,6 +32,10 @@ struct Sequence {
   std::vector<LaserScan> scans;
   /// Robot pose by odometry at each scan, same stamps as `scans`.
   Trajectory odometry;
+  /// Every odometry reading the robot recorded, when the log has more of them than scans (a raw
+  /// run's wheel odometry between keyframes); empty otherwise. Stamps strictly increase, and each
+  /// scan's stamp is one of them.
+  Trajectory odometry_readings;
   /// Ground-truth robot poses (any stamps; metrics associate them by time).
   std::optional<Trajectory> reference;
   std::optional<Relations> relations;
@@ -43,5 +49,9 @@ struct Sequence {
 /// scan is usable: at least one beam, a finite non-zero angle increment, 0 <= range_min_m < range_max_m,
 /// finite stamps and a valid sensor pose.
 void ValidateSequence(const Sequence& sequence);
+
+/// Whether the odometry is the reference: the reference has a pose at every scan's stamp and each
+/// equals the odometry pose there (within 1 um and 1 urad). A program given it is handed the answer.
+bool OdometryEqualsReference(const Sequence& sequence);
 
 }  // namespace slamsweep::evaluator

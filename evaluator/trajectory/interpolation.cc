@@ -43,4 +43,24 @@ std::optional<Pose> TrajectoryInterpolator::At(double stamp_s) const {
   return InterpolatePose(poses[below], poses[above], fraction);
 }
 
+OdometryInterpolator::OdometryInterpolator(const Trajectory& estimate, const Trajectory& odometry)
+    : estimate_(estimate), linear_(estimate), odometry_(odometry) {}
+
+std::optional<Pose> OdometryInterpolator::At(double stamp_s, bool* linear_fallback) const {
+  if (linear_fallback != nullptr) *linear_fallback = false;
+  const std::vector<double>& stamps = estimate_.stamps_s();
+  const auto after = std::upper_bound(stamps.begin(), stamps.end(), stamp_s);
+  if (after == stamps.begin()) return std::nullopt;
+  const std::size_t below = static_cast<std::size_t>(after - stamps.begin()) - 1;
+  if (stamps[below] == stamp_s) return estimate_.poses()[below];
+  if (after == stamps.end()) return std::nullopt;
+  const std::optional<Pose> odometry_from = odometry_.At(stamps[below]);
+  const std::optional<Pose> odometry_to = odometry_.At(stamp_s);
+  if (!odometry_from || !odometry_to) {
+    if (linear_fallback != nullptr) *linear_fallback = true;
+    return linear_.At(stamp_s);
+  }
+  return estimate_.poses()[below] * Relative(*odometry_from, *odometry_to);
+}
+
 }  // namespace slamsweep::evaluator

@@ -57,6 +57,8 @@ nlohmann::json RelationsResult::ToJson() const {
                         {"rotation_sq_std_deg2", rotation_sq_std_deg2},
                         {"used", used},
                         {"skipped", skipped},
+                        {"interpolation", interpolation},
+                        {"linear_fallbacks", linear_fallbacks},
                         {"specification", specification}};
 }
 
@@ -66,19 +68,30 @@ RelationsMetric::RelationsMetric(RelationsOptions options) : options_(options) {
   }
 }
 
-RelationsResult RelationsMetric::Compute(const Trajectory& estimate, const Relations& relations) const {
+RelationsResult RelationsMetric::Compute(const Trajectory& estimate, const Relations& relations,
+                                         const Trajectory* odometry) const {
   if (estimate.empty()) {
     throw InputError("relations metric: the estimate has no poses; relations cover " +
                      DescribeRelationsRange(relations, options_.t_offset_s));
   }
-  const TrajectoryInterpolator interpolator(estimate);
+  const TrajectoryInterpolator linear(estimate);
+  std::optional<OdometryInterpolator> by_odometry;
+  if (odometry != nullptr && !odometry->empty()) by_odometry.emplace(estimate, *odometry);
+  std::size_t linear_fallbacks = 0;
+  const auto pose_at = [&](double stamp_s) -> std::optional<Pose> {
+    if (!by_odometry) return linear.At(stamp_s);
+    bool fallback = false;
+    std::optional<Pose> pose = by_odometry->At(stamp_s, &fallback);
+    if (fallback) ++linear_fallbacks;
+    return pose;
+  };
   std::vector<double> translation_m;
   std::vector<double> rotation_deg;
   translation_m.reserve(relations.size());
   rotation_deg.reserve(relations.size());
   for (const Relation& relation : relations) {
-    const std::optional<Pose> first = interpolator.At(relation.t1_s + options_.t_offset_s);
-    const std::optional<Pose> second = interpolator.At(relation.t2_s + options_.t_offset_s);
+    const std::optional<Pose> first = pose_at(relation.t1_s + options_.t_offset_s);
+    const std::optional<Pose> second = pose_at(relation.t2_s + options_.t_offset_s);
     if (!first || !second) continue;
     const Pose error = Relative(*first, *second) * relation.delta.Inverse();
     translation_m.push_back(error.position.norm());
@@ -88,7 +101,9 @@ RelationsResult RelationsMetric::Compute(const Trajectory& estimate, const Relat
   RelationsResult result;
   result.used = translation_m.size();
   result.skipped = relations.size() - result.used;
-  result.specification = nlohmann::json{{"t_offset_s", options_.t_offset_s}};
+  result.interpolation = by_odometry ? "odometry" : "linear";
+  result.linear_fallbacks = linear_fallbacks;
+  result.specification = nlohmann::json{{"t_offset_s", options_.t_offset_s}, {"interpolation", result.interpolation}};
   if (result.used == 0) {
     throw InputError("relations metric: none of the relations lies inside the estimate's time span; estimate " +
                      DescribeTimeRange(estimate) + ", relations " +

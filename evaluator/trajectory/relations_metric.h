@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "evaluator/core/relation.h"
@@ -28,16 +29,23 @@ struct RelationsResult {
   /// the estimate's time span.
   std::size_t used = 0;
   std::size_t skipped = 0;
-  /// {"t_offset_s"}.
+  /// "odometry" (the estimate moved by the odometry between its poses, OdometryInterpolator) or
+  /// "linear" (no odometry given); relation stamps the odometry did not cover were interpolated
+  /// linearly all the same, and are counted.
+  std::string interpolation = "linear";
+  std::size_t linear_fallbacks = 0;
+  /// {"t_offset_s", "interpolation"}.
   nlohmann::json specification;
 
   /// Every field above under its own name, plus "metric": "relations".
   nlohmann::json ToJson() const;
 };
 
-/// The relations metric of Kuemmerle et al.: for each relation (t1, t2, expected), the estimate
-/// is interpolated at t1 and t2 (linear translation, shortest-arc slerp rotation) giving P1, P2;
-/// the error is E = (P1^-1 P2) * expected^-1, scored as |t(E)| (m) and the angle of R(E) (deg).
+/// The relations metric of Kuemmerle et al.: for each relation (t1, t2, expected), the estimate's
+/// poses P1, P2 at t1 and t2; the error is E = (P1^-1 P2) * expected^-1, scored as |t(E)| (m) and
+/// the angle of R(E) (deg). Between the estimate's poses, P is its last pose before t moved by the
+/// odometry the program was given (OdometryInterpolator), or without odometry interpolated linearly
+/// (linear translation, shortest-arc slerp rotation).
 class RelationsMetric {
  public:
   /// Throws InputError when t_offset_s is not finite.
@@ -45,7 +53,9 @@ class RelationsMetric {
 
   /// Throws InputError when the estimate's stamps decrease, or when no relation can be used
   /// (the message names the estimate's and the relations' time ranges).
-  RelationsResult Compute(const Trajectory& estimate, const Relations& relations) const;
+  /// `odometry`: the program's odometry (its readings, when denser than its scans), or null.
+  RelationsResult Compute(const Trajectory& estimate, const Relations& relations,
+                          const Trajectory* odometry = nullptr) const;
 
  private:
   RelationsOptions options_;

@@ -23,6 +23,13 @@ ev::Sequence CutSequence(ev::Sequence sequence, std::size_t max_scans) {
   std::iota(first.begin(), first.end(), std::size_t{0});
   sequence.odometry = sequence.odometry.Subset(first);
   const double last_stamp_s = sequence.scans.back().stamp_s;
+  if (!sequence.odometry_readings.empty()) {
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < sequence.odometry_readings.size(); ++i) {
+      if (sequence.odometry_readings.stamps_s()[i] <= last_stamp_s) kept.push_back(i);
+    }
+    sequence.odometry_readings = std::move(sequence.odometry_readings).Select(kept);
+  }
   if (sequence.reference) {
     std::vector<std::size_t> kept;
     for (std::size_t i = 0; i < sequence.reference->size(); ++i) {
@@ -47,12 +54,16 @@ nlohmann::json ApplyRunNoise(ev::Sequence& sequence, const NoiseSpec& noise, std
   record["range"] = nullptr;
   if (noise.odometry && *noise.odometry != ev::OdometryNoise{}) {
     ev::ValidateOdometryNoise(*noise.odometry);
-    // Noise drawn around the odometry of a corrected log would be drawn around its reference
-    // anyway (they are equal); drawing around the truth keeps the run's truth exact.
-    const bool around_reference = sequence.reference && sequence.reference->stamps_s() == sequence.odometry.stamps_s();
-    const ev::Trajectory around = around_reference ? *sequence.reference : sequence.odometry;
+    // Noise drawn around the odometry of a corrected log in reference mode would be drawn around its
+    // reference anyway (they are equal); drawing around the truth keeps the run's truth exact. On
+    // recorded odometry the noise comes on top of what the robot measured.
+    const bool around_reference = ev::OdometryEqualsReference(sequence);
+    const ev::Trajectory clean = around_reference ? *sequence.reference : sequence.odometry;
     const std::uint64_t odometry_seed = ev::DeriveSeed(seed, 0);
-    sequence.odometry = ev::ApplyOdometryNoise(around, *noise.odometry, odometry_seed);
+    sequence.odometry = ev::ApplyOdometryNoise(clean, *noise.odometry, odometry_seed);
+    if (!sequence.odometry_readings.empty()) {
+      sequence.odometry_readings = ev::NoisyReadings(sequence.odometry_readings, clean, sequence.odometry);
+    }
     record["odometry"] = *noise.odometry;
     record["odometry_seed"] = odometry_seed;
     record["odometry_around"] = around_reference ? "reference" : "odometry";
@@ -67,25 +78,7 @@ nlohmann::json ApplyRunNoise(ev::Sequence& sequence, const NoiseSpec& noise, std
   return record;
 }
 
-bool OdometryIsReference(const ev::Sequence& sequence) {
-  constexpr double kSameM = 1e-6;
-  constexpr double kSameRad = 1e-6;
-  if (!sequence.reference || sequence.odometry.empty()) return false;
-  const std::vector<double>& stamps = sequence.reference->stamps_s();
-  std::size_t j = 0;
-  for (std::size_t i = 0; i < sequence.odometry.size(); ++i) {
-    const double stamp = sequence.odometry.stamps_s()[i];
-    while (j < stamps.size() && stamps[j] < stamp) ++j;
-    if (j == stamps.size() || stamps[j] != stamp) return false;
-    const ev::Pose& odometry = sequence.odometry.poses()[i];
-    const ev::Pose& reference = sequence.reference->poses()[j];
-    if ((odometry.position - reference.position).norm() > kSameM ||
-        ev::RotationAngleRad(odometry.orientation.inverse() * reference.orientation) > kSameRad) {
-      return false;
-    }
-  }
-  return true;
-}
+bool OdometryIsReference(const ev::Sequence& sequence) { return ev::OdometryEqualsReference(sequence); }
 
 RunInputs PrepareRunInputs(const RunSpec& spec) {
   // run.json holds resolved paths: no ${VARIABLE} is left to expand.

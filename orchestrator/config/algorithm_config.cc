@@ -197,6 +197,13 @@ AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YA
                                             "got network: true",
                                             fields.PathOf("network"))));
   }
+  if (fields.Has("iterations")) {
+    const std::uint64_t iterations = fields.Unsigned("iterations", 1);
+    if (iterations < 1 || iterations > 1000000) {
+      FailExpected(file, fields.Get("iterations"), fields.PathOf("iterations"), "a whole number from 1 to 1000000");
+    }
+    algorithm.iterations = static_cast<int>(iterations);
+  }
   algorithm.parameters = ParseParameters(file, fields.Get("parameters"), fields.PathOf("parameters"));
   std::set<std::string, std::less<>> declared;
   for (const ParameterAxis& axis : algorithm.parameters) declared.insert(axis.name);

@@ -77,6 +77,20 @@ SequenceSpec ParseSequenceConfig(const std::filesystem::path& file, YAML::Node n
     spec.entry.name = fields.Text("name", spec.entry.name);
     if (spec.entry.name.empty()) FailExpected(file, fields.Get("name"), fields.PathOf("name"), "a non-empty name");
     spec.max_scans = MaxScans(file, fields.Get("max_scans"), fields.PathOf("max_scans"));
+    if (const YAML::Node odometry = fields.Get("odometry"); odometry.IsDefined() && !odometry.IsNull()) {
+      if (!odometry.IsScalar()) FailExpected(file, odometry, fields.PathOf("odometry"), "recorded or reference");
+      try {
+        spec.entry.odometry = evaluator::ParseOdometryMode(odometry.Scalar(), fields.PathOf("odometry"));
+      } catch (const evaluator::InputError& error) {
+        FailAt(file, odometry, error.what());
+      }
+      if (*spec.entry.odometry == evaluator::OdometryMode::kReference && !evaluator::OdometryModeApplies(spec.entry)) {
+        FailAt(file, odometry,
+               fmt::format("{}: reference applies only to CARMEN logs whose logged pose is the corrected pose; "
+                           "sequence '{}' has only its recorded odometry",
+                           fields.PathOf("odometry"), spec.entry.name));
+      }
+    }
     fields.Finish();
     base = catalog.source.parent_path();
   } else if (node.IsMap()) {
@@ -95,6 +109,10 @@ SequenceSpec ParseSequenceConfig(const std::filesystem::path& file, YAML::Node n
     spec.entry.relations_path =
         ResolveExisting(file, node, path, spec.entry, "relations file", spec.entry.relations_path, base, variables,
                         policy);
+  }
+  if (spec.entry.corrected_log) {
+    spec.entry.corrected_log->path = ResolveExisting(file, node, path, spec.entry, "corrected log",
+                                                     spec.entry.corrected_log->path, base, variables, policy);
   }
   if (!spec.entry.reference_map_path.empty()) {
     spec.entry.reference_map_path = ResolveExisting(file, node, path, spec.entry, "reference map",

@@ -246,6 +246,13 @@ SweepConfig ParseSweepConfig(std::string_view yaml_text, const std::filesystem::
         return ParseAlgorithmConfig(file, node, path, context.policy);
       },
       &AlgorithmName);
+  for (std::size_t i = 0; i < config.algorithms.size(); ++i) {
+    if (config.algorithms[i].iterations && *config.algorithms[i].iterations > config.iterations) {
+      const YAML::Node node = algorithms[i]["iterations"];
+      FailExpected(file, node, fmt::format("algorithms[{}].iterations", i),
+                   fmt::format("at most the sweep's iterations ({})", config.iterations));
+    }
+  }
 
   const YAML::Node sequences = fields.Get("sequences");
   if (!sequences.IsDefined()) FailAt(file, root, "sequences: missing (required: a list of sequences)");

@@ -102,6 +102,10 @@ struct AlgorithmConfig {
   std::uint64_t process_limit = kDefaultProcessLimit;
   bool network = false;
   std::optional<CommandDeclaration> command;
+  /// Fewer iterations than the sweep's for this algorithm (1 for a deterministic program on data
+  /// without a noise draw: more would repeat one result); at most the sweep's `iterations`, and
+  /// capped by `--iterations` like it. Unset: the sweep's.
+  std::optional<int> iterations;
 };
 
 enum class SeedPolicy { kPerIteration, kPerRun, kFixed };

@@ -138,8 +138,8 @@ std::vector<RunSpec> ExpandMatrix(const SweepConfig& config) {
   CheckSize(config);
   RunList runs;
   const auto add_iterations = [&](const AlgorithmSpec& algorithm, const SequenceSpec& sequence, const NoiseSpec& noise,
-                                  bool excludable) {
-    for (int iteration = 0; iteration < config.iterations; ++iteration) {
+                                  bool excludable, int iterations) {
+    for (int iteration = 0; iteration < iterations; ++iteration) {
       RunSpec spec;
       spec.sweep = config.name;
       spec.algorithm = algorithm;
@@ -161,11 +161,15 @@ std::vector<RunSpec> ExpandMatrix(const SweepConfig& config) {
     }
   };
 
+  // An algorithm's own iterations are capped by the sweep's (which --iterations may lower).
+  const auto iterations_of = [&](const AlgorithmConfig& algorithm) {
+    return std::min(algorithm.iterations.value_or(config.iterations), config.iterations);
+  };
   for (const AlgorithmConfig& algorithm : config.algorithms) {
     for (const nlohmann::json& parameters : ParameterCombinations(algorithm.parameters)) {
       const AlgorithmSpec resolved = Resolve(algorithm, parameters);
       for (const SequenceSpec& sequence : config.sequences) {
-        for (const NoiseSpec& noise : config.noise) add_iterations(resolved, sequence, noise, true);
+        for (const NoiseSpec& noise : config.noise) add_iterations(resolved, sequence, noise, true, iterations_of(algorithm));
       }
     }
   }
@@ -184,7 +188,7 @@ std::vector<RunSpec> ExpandMatrix(const SweepConfig& config) {
       const AlgorithmSpec resolved = Resolve(algorithm, parameters);
       for (const NoiseSpec& noise : config.noise) {
         if (include.noise && *include.noise != noise.name) continue;
-        add_iterations(resolved, sequence, noise, false);
+        add_iterations(resolved, sequence, noise, false, iterations_of(algorithm));
       }
     }
   }

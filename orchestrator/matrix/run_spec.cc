@@ -278,6 +278,15 @@ json ToJson(const evaluator::CatalogEntry& entry) {
            {"download", entry.download_hint}};
   // Only when set: the run ids of entries without one (every run before it existed) stay the same.
   if (!entry.reference_map_path.empty()) out["reference_map"] = entry.reference_map_path;
+  if (entry.relations_rate != 1.0) out["relations_rate"] = entry.relations_rate;
+  if (entry.odometry) out["odometry"] = std::string(evaluator::OdometryModeName(*entry.odometry));
+  if (entry.corrected_log) {
+    out["corrected_log"] = json{{"path", entry.corrected_log->path},
+                                {"first_scan", entry.corrected_log->first_scan},
+                                {"first_reading", entry.corrected_log->first_reading},
+                                {"every", entry.corrected_log->every}};
+  }
+  if (!entry.notes.empty()) out["notes"] = entry.notes;
   return out;
 }
 
@@ -316,6 +325,23 @@ evaluator::CatalogEntry CatalogEntryFromJson(const json& value, const std::strin
   entry.licence_note = fields.Text("licence", "");
   entry.download_hint = fields.Text("download", "");
   entry.reference_map_path = fields.Text("reference_map", "");
+  entry.relations_rate = fields.Number("relations_rate", 1.0);
+  if (object.contains("odometry")) {
+    entry.odometry = evaluator::ParseOdometryMode(fields.Text("odometry", ""), Join(path, "odometry"));
+  }
+  if (const json* corrected = fields.Object("corrected_log")) {
+    JsonFields link_fields(*corrected, Join(path, "corrected_log"));
+    evaluator::CorrectedLogLink link;
+    link.path = link_fields.Text("path", "");
+    link.first_scan = link_fields.Unsigned("first_scan", 0);
+    link.first_reading = link_fields.Unsigned("first_reading", 0);
+    link.every = link_fields.Unsigned("every", 1);
+    link_fields.Finish();
+    if (link.path.empty()) throw InputError(Join(Join(path, "corrected_log"), "path") + ": expected the log's path");
+    if (link.every == 0) throw InputError(Join(Join(path, "corrected_log"), "every") + ": expected a step >= 1");
+    entry.corrected_log = link;
+  }
+  entry.notes = fields.Text("notes", "");
   fields.Finish();
 
   if (entry.name.empty()) throw InputError(Join(path, "name") + ": expected a non-empty name");
@@ -340,6 +366,7 @@ evaluator::CatalogEntry CatalogEntryFromJson(const json& value, const std::strin
   if (entry.max_range_m && !(*entry.max_range_m > 0.0)) {
     throw InputError(Join(path, "max_range_m") + ": expected a range > 0 m");
   }
+  if (!(entry.relations_rate > 0.0)) throw InputError(Join(path, "relations_rate") + ": expected a clock rate > 0");
   evaluator::ParseStampPolicy(entry.stamp_policy, Join(path, "stamp_policy"));
   if (entry.format == "simulated") {
     if (entry.simulation.is_null()) throw InputError(Join(path, "simulation") + ": a simulated sequence needs options");
@@ -378,7 +405,11 @@ std::string AlgorithmLabel(const std::string& algorithm, const std::string& para
 
 ComparisonGroup ComparisonGroupOf(const RunSpec& spec) {
   return ComparisonGroup{spec.sequence.entry.name, spec.algorithm.name, ParametersText(spec.algorithm.parameters),
-                         spec.noise.name};
+                         spec.noise.name, OdometryModeOf(spec.sequence)};
+}
+
+std::string OdometryModeOf(const SequenceSpec& sequence) {
+  return std::string(evaluator::OdometryModeName(evaluator::EffectiveOdometryMode(sequence.entry)));
 }
 
 std::string BuildSignature(const BuildIdentity& build) {
@@ -391,7 +422,8 @@ std::string BuildSignature(const BuildIdentity& build) {
 }
 
 bool PlannedOdometryIsReference(const evaluator::CatalogEntry& entry, const NoiseSpec& noise) {
-  return entry.ground_truth == evaluator::GroundTruthKind::kCorrectedPoses &&
+  return evaluator::OdometryModeApplies(entry) &&
+         evaluator::EffectiveOdometryMode(entry) == evaluator::OdometryMode::kReference &&
          (!noise.odometry || *noise.odometry == evaluator::OdometryNoise{});
 }
 
@@ -429,7 +461,8 @@ json ToJson(const ComparisonGroup& group) {
   return json{{"sequence", group.sequence},
               {"algorithm", group.algorithm},
               {"parameters", group.parameters},
-              {"noise", group.noise}};
+              {"noise", group.noise},
+              {"odometry", group.odometry}};
 }
 
 }  // namespace
@@ -516,6 +549,16 @@ json RunIdentity(const RunSpec& spec) {
   sequence.erase("download");
   // Nor does what a run is scored against (like `evaluation`): the reference map is never the program's input.
   sequence.erase("reference_map");
+  sequence.erase("notes");
+  // The odometry mode as it takes effect: "recorded" on a corrected CARMEN log (the catalog's default
+  // or set) changes the program's input; elsewhere the odometry is the recorded one whatever is
+  // written, and reference mode is what every run computed before the mode existed, so neither
+  // changes an id.
+  sequence.erase("odometry");
+  if (evaluator::OdometryModeApplies(spec.sequence.entry) &&
+      evaluator::EffectiveOdometryMode(spec.sequence.entry) == evaluator::OdometryMode::kRecorded) {
+    sequence["odometry"] = "recorded";
+  }
   const json algorithm = ToJson(spec.algorithm);
   json algorithm_identity = {{"name", algorithm["name"]},
                              {"adapter", algorithm["adapter"]},

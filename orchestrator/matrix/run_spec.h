@@ -161,6 +161,9 @@ struct ComparisonGroup {
   /// Every parameter as "name=value", sorted by name, joined by ';' (ParametersText); "" for none.
   std::string parameters;
   std::string noise;
+  /// "recorded" or "reference" (OdometryModeOf): runs on a log's recorded odometry and runs handed
+  /// its reference never share a group.
+  std::string odometry = "recorded";
   auto operator<=>(const ComparisonGroup&) const = default;
 };
 
@@ -198,8 +201,11 @@ std::string AlgorithmLabel(const std::string& algorithm, const std::string& para
 /// The group a run belongs to (ComparisonGroup).
 ComparisonGroup ComparisonGroupOf(const RunSpec& spec);
 
-/// Whether the odometry a run's program gets is the reference: a corrected-poses sequence whose
-/// odometry noise is absent or zero. The worker checks the same on the data (OdometryIsReference).
+/// The odometry mode a sequence's runs use ("recorded", "reference"; EffectiveOdometryMode).
+std::string OdometryModeOf(const SequenceSpec& sequence);
+
+/// Whether the odometry a run's program gets is the reference: a corrected CARMEN log in reference
+/// odometry mode whose odometry noise is absent or zero. The worker checks the same on the data (OdometryIsReference).
 bool PlannedOdometryIsReference(const evaluator::CatalogEntry& entry, const NoiseSpec& noise);
 
 /// run.json, as in orchestrator/DESIGN.md. FromJson is strict: an unknown or mistyped field is an

@@ -19,6 +19,24 @@ const json& Nested(const json& object, const char* outer, const char* inner) {
   return FieldOrNull(FieldOrNull(object, outer), inner);
 }
 
+/// What ATE and RPE measure against, by the sequence's ground_truth kind.
+std::string ReferenceMeaning(const json& ground_truth) {
+  const std::string kind = ground_truth.is_string() ? ground_truth.get<std::string>() : "";
+  if (kind == "corrected_poses") {
+    return "corrected log: ATE and RPE are agreement with the corrected log (GMapping's output); the relations "
+           "error is the score against independent truth";
+  }
+  if (kind == "exact") return "exact ground truth (simulated)";
+  if (kind == "relations_only") return "relations only";
+  return "none";
+}
+
+/// run.json's odometry mode ("recorded" unless the sequence says "reference").
+std::string OdometryModeOfSpec(const json& spec) {
+  const json& odometry = Nested(spec, "sequence", "odometry");
+  return odometry.is_string() ? odometry.get<std::string>() : "recorded";
+}
+
 }  // namespace
 
 json SummarizeRun(const StoredRun& run) {
@@ -57,6 +75,9 @@ json SummarizeRun(const StoredRun& run) {
       {"peak_rss_kb", FieldOrNull(result, "peak_rss_kb")},
       {"run_dir", run.run_dir},
       {"ground_truth", Nested(spec, "sequence", "ground_truth")},
+      {"reference", ReferenceMeaning(Nested(spec, "sequence", "ground_truth"))},
+      {"odometry", OdometryModeOfSpec(spec)},
+      {"reference_floor", FieldOrNull(result, "reference_floor")},
       {"metrics", std::move(metrics)},
       {"units", std::move(units)},
       {"outputs", outputs.is_null() ? json::object() : outputs},

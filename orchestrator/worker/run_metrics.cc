@@ -93,6 +93,21 @@ void AddSegmentRpe(RunMetrics& out, const EvaluationOptions& evaluation, const e
   out.segment_errors = std::move(records);
 }
 
+/// The relations metric's flat numbers; "n" counts the relations used, "skipped" those outside the
+/// estimate's time span (coverage = n / (n + skipped)).
+void AddRelations(std::vector<FlatMetric>& metrics, const ev::RelationsResult& result) {
+  const double used = static_cast<double>(result.used);
+  const double skipped = static_cast<double>(result.skipped);
+  metrics.push_back({"relations_trans", "mean", result.translation_abs_mean_m, "m"});
+  metrics.push_back({"relations_trans", "std", result.translation_abs_std_m, "m"});
+  metrics.push_back({"relations_trans", "n", used, "count"});
+  metrics.push_back({"relations_trans", "skipped", skipped, "count"});
+  metrics.push_back({"relations_rot", "mean", result.rotation_abs_mean_deg, "deg"});
+  metrics.push_back({"relations_rot", "std", result.rotation_abs_std_deg, "deg"});
+  metrics.push_back({"relations_rot", "n", used, "count"});
+  metrics.push_back({"relations_rot", "skipped", skipped, "count"});
+}
+
 /// Runs one metric; an InputError (no pairs, degenerate alignment, empty map) becomes a warning
 /// naming the metric, so one metric that cannot be computed does not hide the others.
 void Attempt(RunMetrics& out, const std::string& name, const std::function<void()>& compute) {
@@ -169,15 +184,18 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
   }
   if (inputs.estimate && inputs.relations) {
     Attempt(out, "relations", [&] {
-      const ev::RelationsResult result = ev::RelationsMetric({}).Compute(*inputs.estimate, *inputs.relations);
-      const double used = static_cast<double>(result.used);
-      out.metrics.push_back({"relations_trans", "mean", result.translation_abs_mean_m, "m"});
-      out.metrics.push_back({"relations_trans", "std", result.translation_abs_std_m, "m"});
-      out.metrics.push_back({"relations_trans", "n", used, "count"});
-      out.metrics.push_back({"relations_rot", "mean", result.rotation_abs_mean_deg, "deg"});
-      out.metrics.push_back({"relations_rot", "std", result.rotation_abs_std_deg, "deg"});
-      out.metrics.push_back({"relations_rot", "n", used, "count"});
+      const ev::RelationsResult result =
+          ev::RelationsMetric({}).Compute(*inputs.estimate, *inputs.relations, inputs.odometry);
+      AddRelations(out.metrics, result);
       out.details["relations"] = result.ToJson();
+    });
+  }
+  if (inputs.reference && inputs.relations) {
+    Attempt(out, "reference_floor", [&] {
+      const ev::RelationsResult result =
+          ev::RelationsMetric({}).Compute(*inputs.reference, *inputs.relations, inputs.odometry);
+      AddRelations(out.reference_floor, result);
+      out.reference_floor_details = result.ToJson();
     });
   }
   if (inputs.map) {

@@ -34,6 +34,11 @@ struct RunMetrics {
   /// Every segment of the segment RPE, for the run folder's rpe_segments.csv; absent when it was
   /// not computed.
   std::optional<std::vector<evaluator::SegmentErrorRecord>> segment_errors;
+  /// The reference trajectory itself scored against the relations, exactly as the run's estimate is
+  /// (same relations, same odometry between poses): the floor no program's relations error can be
+  /// expected to go below when the reference is a SLAM result. Empty without reference or relations.
+  std::vector<FlatMetric> reference_floor;
+  nlohmann::json reference_floor_details;
   /// How much of the reference's time span the estimate covers; absent without both.
   std::optional<evaluator::TrajectoryCoverage> coverage;
 };
@@ -44,6 +49,9 @@ struct MetricInputs {
   const evaluator::Trajectory* estimate = nullptr;    ///< null: trajectory metrics are skipped
   const evaluator::Trajectory* reference = nullptr;   ///< null: APE and RPE are skipped
   const evaluator::Relations* relations = nullptr;    ///< null: the relations metric is skipped
+  /// The odometry the program was given (its readings where denser than its scans): the relations
+  /// metric moves the estimate by it between the estimate's poses. null: linear interpolation.
+  const evaluator::Trajectory* odometry = nullptr;
   /// The reference map at the evaluation's cell size (orchestrator/reference_map); null: the
   /// map-versus-reference scores are skipped. The run's map is resampled to its cell size when
   /// they differ, and placed on it by the ATE's alignment, or by ICP from identity without one.
@@ -56,7 +64,8 @@ struct MetricInputs {
 /// rpe_trans/rpe_rot (delta evaluation.rpe_delta_m metres, consecutive pairs, no alignment: a
 /// rigid alignment does not change relative errors), the segment RPE at evaluation.rpe_segments_m
 /// (SegmentRpeMetricName; its lengths, and how they were chosen, in details["segment_rpe"]),
-/// relations_trans/rot (Kuemmerle et al.), and
+/// relations_trans/rot (Kuemmerle et al.: mean, std, n = used and skipped relations; also for the
+/// reference itself as `reference_floor`), and
 /// always the paper map metrics, on the map resampled to evaluation.map_resolution_m
 /// (ResampleKeepingProbabilities; details["paper_map"] records resolution_m, the scale scored, and
 /// map_resolution_m, the program's own). A metric that cannot be computed becomes a warning, never an

@@ -35,6 +35,13 @@ nlohmann::json ToJson(const RunResult& result) {
   for (const FlatMetric& metric : result.metrics.metrics) metrics.push_back(ToJson(metric));
   json["metrics"] = std::move(metrics);
   json["metric_details"] = result.metrics.details;
+  if (!result.metrics.reference_floor.empty()) {
+    nlohmann::json floor_metrics = nlohmann::json::array();
+    for (const FlatMetric& metric : result.metrics.reference_floor) floor_metrics.push_back(ToJson(metric));
+    json["reference_floor"] = {{"trajectory", "reference"},
+                               {"metrics", std::move(floor_metrics)},
+                               {"relations", result.metrics.reference_floor_details}};
+  }
   std::vector<std::string> warnings = result.warnings;
   warnings.insert(warnings.end(), result.metrics.warnings.begin(), result.metrics.warnings.end());
   json["warnings"] = std::move(warnings);

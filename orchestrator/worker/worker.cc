@@ -247,6 +247,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   metric_inputs.estimate = collected.trajectory ? &*collected.trajectory : nullptr;
   metric_inputs.reference = reference;
   metric_inputs.relations = inputs.truth.relations ? &*inputs.truth.relations : nullptr;
+  metric_inputs.odometry = inputs.robot.odometry_readings.empty() ? &inputs.robot.odometry : &inputs.robot.odometry_readings;
   // The reference map is truth: read or rendered only now, after the program has exited, and
   // never into the run folder (orchestrator/reference_map: the catalog's file, or the clean scans
   // at the reference poses, cached per sequence beside runs/).

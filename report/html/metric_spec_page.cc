@@ -36,7 +36,10 @@ std::vector<Section> Sections() {
          {"ape_trans", "m", "lower",
           "Absolute (trajectory) pose error, translation: |t_ref − t_est| per pair after aligning the estimate to the "
           "reference with the alignment named in the column (se2 by default: Umeyama's closed form without scale). "
-          "Its RMSE is the paper's Table I (\"ATE\")."},
+          "Its RMSE is the paper's Table I (\"ATE\"). On a sequence whose reference is a corrected log (the "
+          "Radish/Freiburg logs: GMapping's output), ATE and RPE measure agreement with the corrected log "
+          "(GMapping's output), not error against independent truth: GMapping agrees with itself by construction, "
+          "so there the relations error leads the tables and decides best."},
          {"ape_rot", "deg", "lower", "The same pairs, rotation: the angle of R_ref^T R_est."},
          {"rpe_trans", "m", "lower",
           "Relative pose error over consecutive pose pairs delta metres of travel apart (1 m by default): "
@@ -57,8 +60,15 @@ std::vector<Section> Sections() {
          {"segment_rot_<L>m", "deg/m", "lower", "The same segments: the rotation angle of E divided by L."},
          {"relations_trans", "m", "lower",
           "Kuemmerle et al. (2009): for every relation (t1, t2, expected motion) of the sequence's relations file, the "
-          "estimated poses at t1 and t2 are interpolated and the error (P1^-1 P2) ⊖ expected is taken; mean and std of "
-          "the absolute translation error (relations outside the trajectory are skipped and counted)."},
+          "estimated poses P1, P2 at t1 and t2 are taken and the error (P1^-1 P2) ⊖ expected; mean and std of "
+          "the absolute translation error (relations outside the trajectory are skipped and counted: n used, "
+          "skipped). Between two poses of the estimate, the pose at t is the last pose before t moved by the "
+          "odometry the program was given from that pose's time to t (its recorded readings where denser than its "
+          "scans), as a keyframe SLAM program itself places the robot between keyframes (GMapping's corrected logs "
+          "are written this way); without odometry, linear interpolation (slerp for rotation). This deviates from "
+          "plain interpolation because relation stamps name raw scans a keyframe estimate does not hold: linear "
+          "interpolation across a turn on the spot adds error no program made. The reference floor row is the "
+          "reference itself scored exactly the same way."},
          {"relations_rot", "deg", "lower", "The same relations, absolute rotation error: mean and std."},
      }},
     {"Map metrics without ground truth (the paper's profile)",

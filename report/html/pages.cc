@@ -66,6 +66,16 @@ Html RowNotes(const AlgorithmRow& row) {
                                  E("baseline: the odometry as the robot recorded it (with the table's noise), the line "
                                    "a SLAM program must beat; never ranked"));
   }
+  if (row.kind == RowKind::kReferenceFloor) {
+    notes += T("<br>") + Element("span", "baseline-note",
+                                 E("the reference trajectory itself, scored by the relations exactly as the runs are "
+                                   "(same relations, same odometry between its poses): where the reference is a "
+                                   "corrected log (GMapping's output) it is a SLAM result too, and this is the error "
+                                   "of that result; never ranked"));
+  }
+  if (row.kind == RowKind::kPublished) {
+    notes += T("<br>") + Element("span", "baseline-note", E("published figure, not measured here; never ranked"));
+  }
   if (row.build_split) {
     notes += T("<br>") + Element("span", "warning",
                                  E("build " + row.build + " (" + row.build_description +
@@ -163,6 +173,7 @@ Html Plots(const SiteData& site, const SequenceModel& sequence, std::string_view
 Html Gallery(const SiteData& site, const SequenceModel& sequence, std::string_view root) {
   Html figures;
   for (const AlgorithmRow& row : sequence.rows) {
+    if (row.kind == RowKind::kReferenceFloor || row.kind == RowKind::kPublished) continue;
     Html body;
     if (!row.median_run) {
       body = Element("p", "note", E("no successful run"));
@@ -254,6 +265,7 @@ std::string RenderIndexPage(const SiteData& site) {
     section += ViewLinks(site, sequence, "");
     Html files;
     for (const AlgorithmRow& row : sequence.rows) {
+      if (row.runs.empty()) continue;
       const std::string dir = site.layout->FilesDir(row.algorithm, sequence.key);
       Html links = Link(dir + "rmse.txt", E("RMSE")) + T(" · ") + Link(dir + "corners.txt", E("corners")) + T(" · ") +
                    Link(dir + "occupied_ratio.txt", E("occupied ratio"));

@@ -303,6 +303,7 @@ void WritePaperFiles(const SweepModel& model, const ReportLayout& layout, const 
   std::error_code error;
   for (const SequenceModel& sequence : model.sequences) {
     for (const AlgorithmRow& row : sequence.rows) {
+      if (row.runs.empty()) continue;  // a reference line has no runs and no files
       const fs::path files = out_dir / layout.FilesDir(row.algorithm, sequence.key);
       MakeDirectories(files);
       WriteTextFile(files / "rmse.txt", RmseText(sequence, row));

@@ -103,6 +103,28 @@ void ReadRunSpec(const std::filesystem::path& file, RunRecord& run) {
   run.iteration = OptionalInteger(spec, "iteration", file).value_or(0);
 }
 
+/// An array of {metric, statistic, value, unit}; a metric without a value (null) could not be
+/// computed and is left out.
+std::vector<FlatMetric> FlatMetrics(const json& array, const std::string& name, const std::filesystem::path& file) {
+  if (!array.is_array()) FieldError(file, name, "an array of {metric, statistic, value, unit}");
+  std::vector<FlatMetric> metrics;
+  for (std::size_t i = 0; i < array.size(); ++i) {
+    const json& item = array[i];
+    const std::string field = name + "[" + std::to_string(i) + "]";
+    if (!item.is_object()) FieldError(file, field, "an object {metric, statistic, value, unit}");
+    FlatMetric metric;
+    metric.metric = OptionalString(item, "metric", file);
+    metric.statistic = OptionalString(item, "statistic", file);
+    metric.unit = OptionalString(item, "unit", file);
+    const std::optional<double> value = OptionalNumber(item, "value", file);
+    if (metric.metric.empty() || metric.statistic.empty()) FieldError(file, field, "non-empty metric and statistic");
+    if (!value) continue;
+    metric.value = *value;
+    metrics.push_back(std::move(metric));
+  }
+  return metrics;
+}
+
 void ReadResult(const std::filesystem::path& file, RunRecord& run) {
   const json result = ReadJsonFile(file);
   if (!result.is_object()) throw InputError(file.string() + ": expected a JSON object");
@@ -139,21 +161,11 @@ void ReadResult(const std::filesystem::path& file, RunRecord& run) {
     run.outputs.stages = OptionalStrings(*it, "stages", file);
   }
   if (const auto it = result.find("metrics"); it != result.end() && !it->is_null()) {
-    if (!it->is_array()) FieldError(file, "metrics", "an array of {metric, statistic, value, unit}");
-    for (std::size_t i = 0; i < it->size(); ++i) {
-      const json& item = (*it)[i];
-      const std::string field = "metrics[" + std::to_string(i) + "]";
-      if (!item.is_object()) FieldError(file, field, "an object {metric, statistic, value, unit}");
-      FlatMetric metric;
-      metric.metric = OptionalString(item, "metric", file);
-      metric.statistic = OptionalString(item, "statistic", file);
-      metric.unit = OptionalString(item, "unit", file);
-      const std::optional<double> value = OptionalNumber(item, "value", file);
-      if (metric.metric.empty() || metric.statistic.empty()) FieldError(file, field, "non-empty metric and statistic");
-      // A metric without a value (null) is a metric that could not be computed: leave it out.
-      if (!value) continue;
-      metric.value = *value;
-      run.metrics.push_back(std::move(metric));
+    run.metrics = FlatMetrics(*it, "metrics", file);
+  }
+  if (const auto it = result.find("reference_floor"); it != result.end() && it->is_object()) {
+    if (const auto floor = it->find("metrics"); floor != it->end() && !floor->is_null()) {
+      run.reference_floor = FlatMetrics(*floor, "reference_floor.metrics", file);
     }
   }
   if (const auto it = result.find("metric_details"); it != result.end() && it->is_object()) run.metric_details = *it;

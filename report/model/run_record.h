@@ -73,6 +73,9 @@ struct RunRecord {
   std::vector<std::string> command;
   RunOutputs outputs;
   std::vector<FlatMetric> metrics;
+  /// result.json's reference_floor: the reference itself scored by the relations metric, exactly as
+  /// the run's estimate (empty without reference or relations).
+  std::vector<FlatMetric> reference_floor;
   nlohmann::json metric_details = nlohmann::json::object();
   nlohmann::json run_spec = nlohmann::json::object();  ///< run.json as read (the resolved configuration)
   std::vector<std::string> warnings;

@@ -23,12 +23,17 @@ struct ColumnCandidate {
   const char* title;
 };
 
-// Table I of the paper (trajectory RMSE), then RPE and the relations metric of Kuemmerle et al.
+// The relations metric of Kuemmerle et al. leads where a sequence has relations: on the Radish and
+// Freiburg logs it is the only score against something other than one SLAM program's output. Then
+// Table I of the paper (trajectory RMSE) and RPE.
 constexpr ColumnCandidate kTrajectoryCandidates[] = {
+    {"relations_trans", "mean", "Relations translation mean"}, {"relations_rot", "mean", "Relations rotation mean"},
     {"ape_trans", "rmse", "ATE translation RMSE"},    {"ape_rot", "rmse", "ATE rotation RMSE"},
     {"rpe_trans", "rmse", "RPE translation RMSE"},    {"rpe_rot", "rmse", "RPE rotation RMSE"},
-    {"relations_trans", "mean", "Relations translation mean"}, {"relations_rot", "mean", "Relations rotation mean"},
 };
+
+/// What ATE and RPE measure on a sequence whose reference is a corrected log.
+constexpr const char* kCorrectedLogAgreement = "agreement with the corrected log (GMapping's output)";
 
 // The three ground-truth-free metrics (paper sections III.A-C).
 constexpr ColumnCandidate kMapCandidates[] = {
@@ -192,6 +197,40 @@ void ChooseMedianRun(const std::vector<RunRecord>& runs, AlgorithmRow& row) {
   }
 }
 
+/// Whether the run's reference is a corrected log (run.json's sequence ground_truth corrected_poses).
+bool ReferenceIsCorrectedLog(const RunRecord& run) {
+  const json* sequence = Find(run.run_spec, "sequence");
+  const json* ground_truth = sequence ? Find(*sequence, "ground_truth") : nullptr;
+  return ground_truth && ground_truth->is_string() && ground_truth->get<std::string>() == "corrected_poses";
+}
+
+/// The reference floor of a table: the reference itself scored by the relations metric as the runs
+/// were (result.json's reference_floor of the first successful run that has one; every run of a
+/// table scores the same reference against the same relations, with its own odometry between poses,
+/// which is the same robot odometry unless noise was drawn). Absent without relations.
+std::optional<AlgorithmRow> ReferenceFloorRow(const std::vector<RunRecord>& runs, const std::vector<std::size_t>& all,
+                                              const SequenceModel& sequence) {
+  for (std::size_t index : all) {
+    const RunRecord& run = runs[index];
+    if (run.status != RunStatus::kOk || run.reference_floor.empty()) continue;
+    AlgorithmRow row;
+    row.kind = RowKind::kReferenceFloor;
+    row.name = "reference floor";
+    row.algorithm = ReferenceIsCorrectedLog(run) ? "reference floor: the corrected log itself" : "reference floor";
+    for (const MetricColumn& column : sequence.trajectory_columns) {
+      MetricCell cell;
+      for (const FlatMetric& metric : run.reference_floor) {
+        if (metric.metric == column.metric && metric.statistic == column.statistic) cell.values.push_back(metric.value);
+      }
+      cell.summary = ComputeMeanStd(cell.values);
+      row.trajectory_cells.push_back(std::move(cell));
+    }
+    row.map_cells.resize(sequence.map_columns.size());
+    return row;
+  }
+  return std::nullopt;
+}
+
 void Count(const RunRecord& run, RunCounts& counts) {
   ++counts.total;
   switch (run.status) {
@@ -279,6 +318,13 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions&
       all.insert(all.end(), indices.begin(), indices.end());
     }
     sequence.trajectory_columns = BuildColumns(model.runs, all, kTrajectoryCandidates);
+    if (std::any_of(all.begin(), all.end(), [&](std::size_t i) { return ReferenceIsCorrectedLog(model.runs[i]); })) {
+      for (MetricColumn& column : sequence.trajectory_columns) {
+        if (column.metric.starts_with("ape_") || column.metric.starts_with("rpe_")) {
+          column.title += ": " + std::string(kCorrectedLogAgreement);
+        }
+      }
+    }
     sequence.map_columns = BuildColumns(model.runs, all, kMapCandidates);
     sequence.has_reference = !sequence.trajectory_columns.empty();
     std::map<std::pair<std::string, std::string>, std::size_t> builds_per_group;
@@ -314,6 +360,9 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions&
       }
       ChooseMedianRun(model.runs, row);
       sequence.rows.push_back(std::move(row));
+    }
+    if (std::optional<AlgorithmRow> floor = ReferenceFloorRow(model.runs, all, sequence)) {
+      sequence.rows.push_back(std::move(*floor));
     }
     WithholdUnsupportedBest(sequence, model, options);
     MarkBest(sequence.rows, sequence.trajectory_columns, &AlgorithmRow::trajectory_cells);

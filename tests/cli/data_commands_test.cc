@@ -33,10 +33,38 @@ TEST(DataInfoCommandTest, IntelByCatalogNameHasTheCountsOfItsProvenance) {
   // PROVENANCE.txt: FLASER=910 readings=[180] t=[32.907,2683.770].
   EXPECT_EQ(info.at("scans"), 910);
   EXPECT_EQ(info.at("beams"), 180);
-  EXPECT_NEAR(info.at("duration_s").get<double>(), 2683.770 - 32.907, 0.01);
+  // On the recorded odometry's clock: the scans take their raw readings' stamps, repaired where the
+  // stream's stepped back (by up to 0.9 s), so the span is that of the repaired readings.
+  EXPECT_NEAR(info.at("duration_s").get<double>(), 2683.770 - 32.907, 1.0);
   EXPECT_EQ(info.at("has_reference"), true);
+  EXPECT_EQ(info.at("recorded_odometry"), true);
+  EXPECT_EQ(info.at("odometry"), "recorded");
+  EXPECT_EQ(info.at("recorded_odometry_readings"), 13631);
+  EXPECT_EQ(info.at("relations"), 2984);
   ASSERT_TRUE(info.at("warnings").is_array());
-  EXPECT_EQ(info.at("warnings").size(), 1u);  // the four repaired stamps
+  EXPECT_EQ(info.at("warnings").size(), 1u);  // the repaired reading stamps
+  EXPECT_THAT(info.at("warnings").at(0).get<std::string>(), ::testing::HasSubstr("recorded odometry"));
+
+  const auto reference = RunCli({"data", "info", "intel", "--odometry", "reference", "--json"});
+  ASSERT_EQ(reference.exit_code, 0) << reference.err;
+  const nlohmann::json reference_info = nlohmann::json::parse(reference.out);
+  EXPECT_EQ(reference_info.at("recorded_odometry"), false);
+  EXPECT_EQ(reference_info.at("recorded_odometry_readings"), 0);
+  EXPECT_NEAR(reference_info.at("duration_s").get<double>(), 2683.770 - 32.907, 0.01);
+}
+
+TEST(DataInfoCommandTest, RecordedOdometryAskedOfALogWithoutAStreamNamesTheLine) {
+  testing::TempDir dir;
+  const auto log = testing::WriteFile(dir / "bare.log",
+                                      "FLASER 3 1 1 1 0 0 0 0 0 0 1.0 pippo 1.0\n"
+                                      "FLASER 3 1 1 1 1 0 0 1 0 0 2.0 pippo 2.0\n");
+  const auto recorded = RunCli({"data", "info", log.string(), "--odometry", "recorded", "--json"});
+  EXPECT_NE(recorded.exit_code, 0);
+  EXPECT_THAT(recorded.err, ::testing::HasSubstr("bare.log:1"));
+  // Not asked for explicitly: the logged odometry, and a warning.
+  const auto implicit = RunCli({"data", "info", log.string(), "--json"});
+  ASSERT_EQ(implicit.exit_code, 0) << implicit.err;
+  EXPECT_EQ(nlohmann::json::parse(implicit.out).at("recorded_odometry"), false);
 }
 
 TEST(DataInfoCommandTest, Fr079ByPath) {
@@ -84,7 +112,9 @@ TEST(DataInfoCommandTest, MissingFileAndUnknownNameExitTwoNamingThem) {
 TEST(DataConvertCommandTest, NoisyCarmenIsReproducibleAndRecordsItsNoise) {
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
   testing::TempDir dir;
-  const std::vector<std::string> args = {"data", "convert", "intel", "--to", "carmen", "--odometry-noise",
+  // Noise drawn around the reference (the corrected path handed as odometry).
+  const std::vector<std::string> args = {"data", "convert", "intel", "--odometry", "reference", "--to", "carmen",
+                                         "--odometry-noise",
                                          "0.01,0.001,0.01,0.001", "--drift", "0.002", "--range-noise", "0.02",
                                          "--seed", "7", "--reference-out", (dir / "ref.tum").string(), "-o"};
   auto first_args = args;
@@ -101,6 +131,8 @@ TEST(DataConvertCommandTest, NoisyCarmenIsReproducibleAndRecordsItsNoise) {
   EXPECT_EQ(noise.at("odometry_noise").at("alpha2"), 0.001);
   EXPECT_EQ(noise.at("odometry_noise").at("drift_heading_rad_per_m"), 0.002);
   EXPECT_EQ(noise.at("range_noise").at("sigma_m"), 0.02);
+  EXPECT_EQ(noise.at("odometry"), "reference");
+  EXPECT_EQ(noise.at("odometry_noise_around"), "reference");
 
   const evaluator::Sequence converted = evaluator::ReadSequence(dir / "a.log");
   const evaluator::Sequence original = evaluator::ReadSequence(log);
@@ -119,15 +151,31 @@ TEST(DataConvertCommandTest, NoisyCarmenIsReproducibleAndRecordsItsNoise) {
 TEST(DataConvertCommandTest, TumHoldsTheOdometry) {
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
   testing::TempDir dir;
-  const auto run = RunCli({"data", "convert", log.string(), "--to", "tum", "-o", (dir / "intel.tum").string()});
+  const auto run = RunCli({"data", "convert", log.string(), "--to", "tum", "--odometry", "reference", "-o",
+                           (dir / "intel.tum").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const evaluator::Trajectory tum = evaluator::ReadTum(dir / "intel.tum");
   ASSERT_EQ(tum.size(), 910u);
-  // Without noise the corrected log's odometry is its reference pose: the FLASER odom fields.
+  // In reference mode the corrected log's odometry is its reference pose: the FLASER odom fields.
   // The first FLASER of the file: odometry 0.600266 -0.0320327 -0.354665 at 32.9068.
   EXPECT_EQ(tum.stamps_s().front(), 32.9068);
   EXPECT_DOUBLE_EQ(tum.poses().front().position.x(), 0.600266);
   EXPECT_NEAR(tum.poses().front().Yaw(), -0.354665, 1e-12);
+
+  // Recorded: one row per FLASER, the robot's odometry at its raw reading. Read off the file: the
+  // ODOM line before the first FLASER is "0.698035 -0.0132843 -0.460915 ... 32.9068", after one
+  // stamped 33.1085, so its stamp is lifted to 33.1085 + 1 ms (the stamp policy's repair).
+  const auto recorded = RunCli({"data", "convert", log.string(), "--to", "tum", "--odometry", "recorded", "-o",
+                                (dir / "recorded.tum").string()});
+  ASSERT_EQ(recorded.exit_code, 0) << recorded.err;
+  const evaluator::Trajectory wheels = evaluator::ReadTum(dir / "recorded.tum");
+  ASSERT_EQ(wheels.size(), 910u);
+  EXPECT_NEAR(wheels.stamps_s().front(), 33.1095, 1e-9);
+  EXPECT_DOUBLE_EQ(wheels.poses().front().position.x(), 0.698035);
+  EXPECT_NEAR(wheels.poses().front().Yaw(), -0.460915, 1e-9);
+  for (std::size_t i = 1; i < wheels.size(); ++i) ASSERT_GT(wheels.stamps_s()[i], wheels.stamps_s()[i - 1]);
+  // It drifts from the corrected path by tens of metres by the end.
+  EXPECT_GT((wheels.poses().back().position - tum.poses().back().position).norm(), 30.0);
 }
 
 TEST(DataConvertCommandTest, RawlogOfIntelReadsBackWhenMrptIsBuilt) {

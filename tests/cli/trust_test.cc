@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <vector>
 #include <sstream>
@@ -173,7 +174,7 @@ TEST(TrustTest, CorrectedLogsWithoutOdometryNoiseAreFlaggedEverywhere) {
   const auto file = testing::WriteFile(
       dir / "clean.yaml",
       "name: clean\noutput: out\nevaluation: {stages: 0}\nalgorithms:\n  - {name: odometry, adapter: odometry}\n"
-      "sequences:\n  - {catalog: intel, name: intel-50, max_scans: 50}\n");
+      "sequences:\n  - {catalog: intel, name: intel-50, max_scans: 50, odometry: reference}\n");
   const auto plan = RunCli({"plan", file.string()});
   ASSERT_EQ(plan.exit_code, 0) << plan.err;
   EXPECT_THAT(plan.err, HasSubstr("warning: 1 run on 'intel-50' with noise 'clean' get the reference as odometry"));
@@ -346,6 +347,52 @@ TEST(TrustTest, ASweepThatCannotRunStopsAtPlanTimeNamingTheLine) {
   const nlohmann::json runs = nlohmann::json::parse(RunCli({"plan", (dir / "bad.yaml").string(), "--json"}).out);
   EXPECT_EQ(runs.at(0).at("seeding"), "seeded");
 }
+
+/// A metric statistic of a run's result.json ("ape_trans", "rmse"); NaN when absent.
+double ResultMetric(const nlohmann::json& result, const std::string& name, const std::string& statistic) {
+  for (const nlohmann::json& metric : result.at("metrics")) {
+    if (metric.at("metric") == name && metric.at("statistic") == statistic) return metric.at("value").get<double>();
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+TEST(TrustTest, OdometryBaselineOnIntelsRecordedOdometryIsNoUpperBound) {
+  SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
+  testing::TempDir dir;
+  // The catalog's default: the robot's recorded odometry, no noise.
+  const auto file = testing::WriteFile(
+      dir / "recorded.yaml",
+      "name: recorded\noutput: out\nevaluation: {stages: 0}\nalgorithms:\n  - {name: odometry, adapter: odometry}\n"
+      "sequences:\n  - intel\n");
+  const auto plan = RunCli({"plan", file.string()});
+  ASSERT_EQ(plan.exit_code, 0) << plan.err;
+  EXPECT_THAT(plan.err, Not(HasSubstr("get the reference as odometry")));
+  const auto run = RunCli({"run", file.string()});
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  const nlohmann::json summary = ReadJson(dir / "out" / "summary.json");
+  EXPECT_EQ(summary.at("runs").at(0).at("odometry_is_reference"), false);
+  std::size_t runs = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "out" / "runs")) {
+    ++runs;
+    const nlohmann::json result = ReadJson(entry.path() / "result.json");
+    EXPECT_EQ(result.at("odometry_is_reference"), false);
+    // Dead reckoning on the wheels drifts tens of metres from the corrected path (21 m on average).
+    EXPECT_GT(ResultMetric(result, "ape_trans", "rmse"), 5.0);
+    // The relations: nearly all used, and the odometry far worse than the corrected log itself.
+    const double used = ResultMetric(result, "relations_trans", "n");
+    const double skipped = ResultMetric(result, "relations_trans", "skipped");
+    EXPECT_GE(used / (used + skipped), 0.95);
+    EXPECT_GT(ResultMetric(result, "relations_trans", "mean"), 1.0);
+    ASSERT_TRUE(result.contains("reference_floor")) << result.dump();
+    double floor_m = std::numeric_limits<double>::quiet_NaN();
+    for (const nlohmann::json& metric : result.at("reference_floor").at("metrics")) {
+      if (metric.at("metric") == "relations_trans" && metric.at("statistic") == "mean") floor_m = metric.at("value");
+    }
+    EXPECT_LT(floor_m, 0.2);
+  }
+  EXPECT_EQ(runs, 1u);
+}
+
 
 }  // namespace
 }  // namespace slamsweep

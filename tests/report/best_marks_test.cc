@@ -21,6 +21,7 @@ namespace slamsweep::report {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 using slamsweep::testing::TempDir;
 using testing::FixtureRun;
 using testing::MakeRun;
@@ -241,6 +242,58 @@ TEST(BestMarksTest, ANamedStudyThatIsNotAStudyIsAnErrorNamingTheFile) {
     EXPECT_THAT(error.what(), HasSubstr("validity_study.json"));
     EXPECT_THAT(error.what(), HasSubstr("confidence"));
   }
+}
+
+
+/// A run on a corrected log with relations: ATE, relations and the reference floor as result.json has them.
+RunRecord CorrectedLogRun(const std::string& algorithm, const std::string& adapter, double ate_m, double relations_m,
+                          double floor_m) {
+  RunRecord run;
+  run.run_id = algorithm + "-intel";
+  run.algorithm = algorithm;
+  run.sequence = "intel";
+  run.noise = "none";
+  run.status = RunStatus::kOk;
+  run.run_spec = nlohmann::json{{"algorithm", {{"adapter", adapter}}}, {"sequence", {{"ground_truth", "corrected_poses"}}}};
+  run.metrics = {{"ape_trans", "rmse", ate_m, "m"}, {"relations_trans", "mean", relations_m, "m"},
+                 {"relations_trans", "n", 2984.0, "count"}};
+  run.reference_floor = {{"relations_trans", "mean", floor_m, "m"}, {"relations_trans", "n", 2984.0, "count"}};
+  return run;
+}
+
+TEST(ReferenceFloorTest, CorrectedLogTablesLeadWithRelationsShowTheFloorAndNeverRankIt) {
+  // GMapping agrees best with the corrected log (its own output); Cartographer has the lower
+  // relations error; the floor (the corrected log itself) is lower still but is no contestant.
+  const SweepModel model = BuildSweepModel({CorrectedLogRun("gmapping", "gmapping", 0.10, 0.17, 0.067),
+                                            CorrectedLogRun("cartographer", "cartographer", 1.40, 0.05, 0.067),
+                                            CorrectedLogRun("odometry", "odometry", 21.0, 7.4, 0.067)});
+  const SequenceModel& intel = Sequence(model, "intel");
+  ASSERT_FALSE(intel.trajectory_columns.empty());
+  EXPECT_EQ(intel.trajectory_columns[0].metric, "relations_trans");
+  const std::size_t ate = Column(intel.trajectory_columns, "ape_trans");
+  EXPECT_THAT(intel.trajectory_columns[ate].title, HasSubstr("agreement with the corrected log (GMapping's output)"));
+  const std::size_t relations = Column(intel.trajectory_columns, "relations_trans");
+  EXPECT_THAT(intel.trajectory_columns[relations].title, Not(HasSubstr("agreement")));
+
+  const AlgorithmRow& floor = Row(intel, "reference floor: the corrected log itself");
+  EXPECT_EQ(floor.kind, RowKind::kReferenceFloor);
+  EXPECT_FALSE(IsBestCandidate(floor));
+  EXPECT_DOUBLE_EQ(floor.trajectory_cells[relations].summary.mean, 0.067);
+  EXPECT_FALSE(floor.trajectory_cells[relations].best);
+  EXPECT_EQ(floor.trajectory_cells[ate].summary.n, 0u);
+  EXPECT_TRUE(floor.runs.empty());
+  // Best by the relations error: Cartographer, not the floor and not GMapping.
+  EXPECT_TRUE(Row(intel, "cartographer").trajectory_cells[relations].best);
+  EXPECT_FALSE(Row(intel, "gmapping").trajectory_cells[relations].best);
+  EXPECT_EQ(Row(intel, "odometry").kind, RowKind::kOdometryBaseline);
+}
+
+TEST(ReferenceFloorTest, NoRelationsNoFloorRow) {
+  RunRecord run = CorrectedLogRun("gmapping", "gmapping", 0.1, 0.1, 0.1);
+  run.metrics = {{"ape_trans", "rmse", 0.1, "m"}};
+  run.reference_floor.clear();
+  const SweepModel model = BuildSweepModel({run});
+  for (const AlgorithmRow& row : Sequence(model, "intel").rows) EXPECT_NE(row.kind, RowKind::kReferenceFloor);
 }
 
 }  // namespace

@@ -71,9 +71,9 @@ constexpr int kDraws = 10;
 constexpr double kSignificance = 0.05;  // one-sided sign test: 9 wins of 10 draws
 constexpr const char* kSequence = "intel-200";
 constexpr const char* kNoise = "mild-odometry";
-// The corrected log's own odometry, which equals its reference, until the sequences can use the
-// robot's recorded odometry; then this line says "recorded" (and roster_expected_failures.json,
-// whose entries name the odometry they were measured on, is measured again).
+// The corrected log's own odometry, which equals its reference (set explicitly: the catalog's default
+// is now the robot's recorded odometry). Saying "recorded" here means measuring
+// roster_expected_failures.json again: its entries name the odometry they were measured on.
 constexpr std::string_view kOdometry = "reference";
 
 /// The ATE of every draw of `algorithm` (NaN for a failed run), by iteration.
@@ -132,7 +132,7 @@ TEST(RosterSweepTest, EveryBuiltAlgorithmBeatsTheOdometryItWasGivenByASignTest) 
   for (const std::string& name : built) config += "  - name: " + name + "\n    adapter: " + name + "\n    timeout_s: 600\n";
   config += "sequences:\n  - {catalog: intel, name: " + std::string(kSequence) + ", max_scans: " +
             std::to_string(kRosterScans) +
-            (kOdometry == "reference" ? std::string() : ", odometry: " + std::string(kOdometry)) + "}\n"
+            ", odometry: " + std::string(kOdometry) + "}\n"
             // The quick start's mild odometry noise (the alphas are variances: 4.5 % of each distance
             // and turn, 0.6 deg per metre), one seeded draw per iteration, the same draw for every algorithm.
             "noise:\n  - name: " + std::string(kNoise) +

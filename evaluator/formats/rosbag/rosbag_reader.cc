@@ -181,7 +181,7 @@ Sequence ReadRosbag(const std::filesystem::path& bag, const RosbagReadOptions& o
 
   Sequence sequence;
   sequence.name = options.name.empty() ? bag.stem().string() : options.name;
-  sequence.provenance = options.provenance.value_or(Provenance{bag.string(), "", ""});
+  sequence.provenance = options.provenance.value_or(Provenance{bag.string(), "", "", ""});
   std::vector<std::string>& warnings = sequence.warnings;
   const TransformTree tree = BuildTree(messages, bag, warnings);
 

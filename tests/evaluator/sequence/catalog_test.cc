@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/sequence/sequence_file.h"
 #include "tests/support/shared_data.h"
 
 namespace slamsweep::evaluator {
@@ -93,10 +94,75 @@ TEST(CatalogTest, IntelRelationsLandOnTheLogClock) {
     last_s = std::max({last_s, relation.t1_s, relation.t2_s});
   }
   EXPECT_NEAR(first_s, 976052896.78 - 976052857.337, 0.01);
-  EXPECT_NEAR(last_s, 976055541.11 - 976052857.337, 0.01);
-  // Both inside the log's span (to the log's 6 printed digits).
+  // The last stamp lies where the recorded readings' repaired clock puts its raw scan: the stream's
+  // stamps step back (by up to 0.9 s) near the end, and the repairs lift them.
+  EXPECT_GE(last_s, 976055541.11 - 976052857.337 - 0.01);
+  EXPECT_LT(last_s, 976055541.11 - 976052857.337 + 1.0);
   EXPECT_GT(first_s, sequence.scans.front().stamp_s);
-  EXPECT_LT(last_s, sequence.scans.back().stamp_s + 0.01);
+  EXPECT_LE(last_s, sequence.odometry_readings.stamps_s().back());
+  // With recorded odometry every relation stamp names one raw scan: it is a reading's stamp.
+  ASSERT_EQ(sequence.odometry_readings.size(), 13631u);
+  const std::vector<double>& readings = sequence.odometry_readings.stamps_s();
+  std::size_t on_a_reading = 0;
+  for (const Relation& relation : *sequence.relations) {
+    for (double stamp : {relation.t1_s, relation.t2_s}) {
+      on_a_reading += std::binary_search(readings.begin(), readings.end(), stamp) ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(on_a_reading, 2 * sequence.relations->size());
+}
+
+TEST(CatalogTest, OdometryModeDefaultsToRecordedOnCorrectedLogsOnly) {
+  const Catalog catalog = ReadCatalog(ShippedCatalog());
+  const CatalogEntry& intel = FindCatalogEntry(catalog, "intel");
+  EXPECT_TRUE(OdometryModeApplies(intel));
+  EXPECT_EQ(EffectiveOdometryMode(intel), OdometryMode::kRecorded);
+  CatalogEntry reference = intel;
+  reference.odometry = OdometryMode::kReference;
+  EXPECT_EQ(EffectiveOdometryMode(reference), OdometryMode::kReference);
+  const CatalogEntry& floor = FindCatalogEntry(catalog, "simulated-floor");
+  EXPECT_FALSE(OdometryModeApplies(floor));
+  EXPECT_EQ(EffectiveOdometryMode(floor), OdometryMode::kRecorded);
+  // Reference mode on a sequence that has only its recorded odometry is an error at its line.
+  const std::string text =
+      "sequences:\n  - {name: sim, format: simulated, ground_truth: exact, odometry: reference, simulation: {}}\n";
+  try {
+    ParseCatalog(text, "c.yaml");
+    ADD_FAILURE() << "reference mode on a simulated sequence was accepted";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), ::testing::HasSubstr("c.yaml:2"));
+    EXPECT_THAT(error.what(), ::testing::HasSubstr("only its recorded odometry"));
+  }
+  EXPECT_THROW(ParseCatalog("sequences:\n  - {name: a, format: carmen, path: a.log, ground_truth: corrected_poses, "
+                            "odometry: wheels}\n",
+                            "c.yaml"),
+               InputError);
+}
+
+TEST(CatalogTest, IntelReferenceModeHandsTheCorrectedPathAsOdometry) {
+  SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
+  CatalogEntry entry = FindCatalogEntry(ReadCatalog(ShippedCatalog()), "intel");
+  EXPECT_FALSE(OdometryEqualsReference(LoadCatalogSequence(entry, Shared())));
+  entry.odometry = OdometryMode::kReference;
+  const Sequence reference = LoadCatalogSequence(entry, Shared());
+  EXPECT_TRUE(OdometryEqualsReference(reference));
+  EXPECT_TRUE(reference.odometry_readings.empty());
+}
+
+TEST(CatalogTest, EveryEntryWithAMissingFileSaysWhereToGetIt) {
+  // Entries whose file is not in ../shared must name a download (data info prints it).
+  for (const CatalogEntry& entry : ReadCatalog(ShippedCatalog()).entries) {
+    if (entry.format == "simulated") continue;
+    const std::filesystem::path path = ResolveCatalogPath(entry.path, Shared());
+    if (std::filesystem::exists(path)) continue;
+    EXPECT_FALSE(entry.download_hint.empty()) << entry.name;
+    try {
+      LoadCatalogSequence(entry, Shared());
+      ADD_FAILURE() << entry.name << ": loaded without its file";
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find(entry.download_hint), std::string::npos) << error.what();
+    }
+  }
 }
 
 TEST(CatalogTest, OrebroMaxRangeOverrideTurnsItsSickOverflowIntoNoReturn) {
@@ -168,6 +234,52 @@ TEST(CatalogTest, MissingFileNamesEntryPathAndWhereToGetIt) {
   EXPECT_THAT(error, HasSubstr("get it from: example.org/a"));
   EXPECT_THAT(ErrorOf([&] { LoadCatalogSequence(catalog.entries[0], {}); }), HasSubstr("unknown variable ${ROOT}"));
   EXPECT_THAT(ErrorOf([&] { FindCatalogEntry(catalog, "b"); }), HasSubstr("no sequence named 'b' in the catalog c.yaml (known: a)"));
+}
+
+
+TEST(CatalogTest, Fr079HasItsRelationsOnTheLogsClock) {
+  SLAMSWEEP_REQUIRE_SHARED(relations, "datasets/fr079/fr079.relations");
+  const Catalog catalog = ReadCatalog(ShippedCatalog());
+  const CatalogEntry& entry = FindCatalogEntry(catalog, "fr079");
+  EXPECT_NE(entry.relations_rate, 1.0);  // the relations' clock runs at another rate (the fitted map)
+  EXPECT_FALSE(entry.notes.empty());     // how the map was fitted, and its residual
+  const Sequence sequence = LoadCatalogSequence(entry, Shared());
+  ASSERT_TRUE(sequence.relations.has_value());
+  EXPECT_EQ(sequence.relations->size(), 1685u);
+  // Every relation falls inside the log's span once mapped.
+  for (const Relation& relation : *sequence.relations) {
+    ASSERT_GE(std::min(relation.t1_s, relation.t2_s), sequence.odometry_readings.stamps_s().front());
+    ASSERT_LE(std::max(relation.t1_s, relation.t2_s), sequence.odometry_readings.stamps_s().back());
+  }
+}
+
+TEST(CatalogTest, DenseIntelTakesTheCorrectedLogsClockReferenceAndRelations) {
+  SLAMSWEEP_REQUIRE_SHARED(rawlog, "datasets/intel/intel-mrpt-every5.rawlog.gz");
+  if (!RawlogSupported()) {
+    if (testing::RunningInCi()) FAIL() << "MRPT not built";
+    GTEST_SKIP() << "MRPT not built";
+  }
+  const Sequence dense = LoadCatalogSequence(FindCatalogEntry(ReadCatalog(ShippedCatalog()), "intel-dense"), Shared());
+  const Sequence intel = LoadCatalogSequence(FindCatalogEntry(ReadCatalog(ShippedCatalog()), "intel"), Shared());
+  // Three times the corrected log's density, on its clock: the scans' stamps are readings' stamps.
+  EXPECT_GT(dense.scans.size(), 2700u);
+  ASSERT_TRUE(dense.reference.has_value());
+  ASSERT_TRUE(dense.relations.has_value());
+  EXPECT_EQ(dense.relations->size(), intel.relations->size());
+  const std::vector<double>& readings = intel.odometry_readings.stamps_s();
+  for (const LaserScan& scan : dense.scans) {
+    ASSERT_TRUE(std::binary_search(readings.begin(), readings.end(), scan.stamp_s)) << scan.stamp_s;
+  }
+  // Scans both logs hold (the same stamp) have identical ranges: the time map is right.
+  std::size_t shared = 0;
+  std::size_t k = 0;
+  for (const LaserScan& scan : intel.scans) {
+    while (k < dense.scans.size() && dense.scans[k].stamp_s < scan.stamp_s) ++k;
+    if (k == dense.scans.size() || dense.scans[k].stamp_s != scan.stamp_s) continue;
+    ++shared;
+    ASSERT_EQ(dense.scans[k].ranges_m, scan.ranges_m) << scan.stamp_s;
+  }
+  EXPECT_GT(shared, 150u);  // PROVENANCE.txt: 174 of the 910 scans are in both
 }
 
 }  // namespace

@@ -71,5 +71,48 @@ TEST(InterpolationTest, DecreasingStampsAndEmptyTrajectoriesAreInputErrors) {
   EXPECT_THROW(TrajectoryInterpolator{empty}, InputError);
 }
 
+
+TEST(OdometryInterpolatorTest, ATurnOnTheSpotBetweenKeyframesKeepsTurning) {
+  // Keyframes at t = 0 and t = 2, both at the origin facing +x: between them the robot turned a full
+  // circle on the spot. Linear interpolation says it never turned; the odometry says at t = 1 it
+  // faced -x. The estimate is offset by (10, 0) from the odometry: the odometry's motion is applied
+  // to the estimate's pose, not its absolute pose.
+  Trajectory estimate;
+  estimate.Add(0.0, Pose::Planar(10.0, 0.0, 0.0));
+  estimate.Add(2.0, Pose::Planar(10.0, 0.0, 0.0));
+  Trajectory odometry;
+  for (int i = 0; i <= 8; ++i) odometry.Add(0.25 * i, Pose::Planar(0.0, 0.0, std::numbers::pi / 4.0 * i));
+  const OdometryInterpolator by_odometry(estimate, odometry);
+  bool fallback = true;
+  const std::optional<Pose> at_one = by_odometry.At(1.0, &fallback);
+  ASSERT_TRUE(at_one.has_value());
+  EXPECT_FALSE(fallback);
+  EXPECT_NEAR(std::abs(at_one->Yaw()), std::numbers::pi, 1e-9);
+  EXPECT_NEAR(at_one->position.x(), 10.0, 1e-9);
+  // Between two readings the odometry itself is interpolated: t = 0.125 is half of the first 45 deg.
+  EXPECT_NEAR(by_odometry.At(0.125)->Yaw(), std::numbers::pi / 8.0, 1e-9);
+  // At an estimate stamp, the estimate's own pose; outside its span, nothing.
+  EXPECT_NEAR(by_odometry.At(2.0)->Yaw(), 0.0, 1e-12);
+  EXPECT_FALSE(by_odometry.At(2.5).has_value());
+  EXPECT_FALSE(by_odometry.At(-0.1).has_value());
+  // The linear interpolator never turns.
+  EXPECT_NEAR(TrajectoryInterpolator(estimate).At(1.0)->Yaw(), 0.0, 1e-12);
+}
+
+TEST(OdometryInterpolatorTest, OdometryThatDoesNotCoverTheTimeFallsBackToLinear) {
+  Trajectory estimate;
+  estimate.Add(0.0, Pose::Planar(0.0, 0.0, 0.0));
+  estimate.Add(2.0, Pose::Planar(2.0, 0.0, 0.0));
+  Trajectory odometry;
+  odometry.Add(0.5, Pose::Planar(0.0, 0.0, 0.0));
+  odometry.Add(1.5, Pose::Planar(5.0, 0.0, 0.0));
+  const OdometryInterpolator by_odometry(estimate, odometry);
+  bool fallback = false;
+  const std::optional<Pose> pose = by_odometry.At(1.0, &fallback);
+  ASSERT_TRUE(pose.has_value());
+  EXPECT_TRUE(fallback);
+  EXPECT_NEAR(pose->position.x(), 1.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace slamsweep::evaluator

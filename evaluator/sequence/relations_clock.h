@@ -1,0 +1,82 @@
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <span>
+
+#include <nlohmann/json.hpp>
+
+#include "evaluator/core/relation.h"
+#include "evaluator/core/trajectory.h"
+
+namespace slamsweep::evaluator {
+
+/// The map t_log = rate * t_relations + offset_s between a relations file's clock and a log's, fitted
+/// from time stamps alone: each relation stamp names a raw scan, whose time the log's reading stamps
+/// carry. Never fitted to any trajectory's error.
+struct RelationsClockFit {
+  double offset_s = 0.0;
+  double rate = 1.0;
+  /// Distinct relation stamps, those within the tolerance of a reading after the fit (the fit's
+  /// pairs), and those within 10 ms (exact matches: a log whose readings carry the laser's clock
+  /// matches them all, as intel does).
+  std::size_t stamps = 0;
+  std::size_t matched = 0;
+  std::size_t matched_within_10ms = 0;
+  /// The tolerance used: half the readings' median spacing, so each relation stamp pairs with one reading.
+  double tolerance_s = 0.0;
+  /// Residuals (reading stamp - mapped relation stamp) of the matched stamps.
+  double rms_residual_s = 0.0;
+  double max_abs_residual_s = 0.0;
+  /// The offset's drift over the relations' span that the rate takes up: (rate - 1) * span.
+  double drift_over_span_s = 0.0;
+
+  nlohmann::json ToJson() const;
+};
+
+struct RelationsClockFitOptions {
+  /// Width of the histogram bins in which the coarse offset is the most frequent difference.
+  double coarse_bin_s = 0.02;
+  /// Where the least squares start instead of the histogram's offset (rate 1): the odometry fit's
+  /// map, on a log whose stamps alone fit every multiple of the laser period (FitRelationsClockByOdometry).
+  std::optional<double> start_offset_s;
+  double start_rate = 1.0;
+};
+
+/// Fits the clock map: the most frequent difference between a reading stamp and a relation stamp
+/// (histogram of all pairs, two neighbouring bins together; or options.start_offset_s) gives the
+/// offset; then least squares
+/// over each relation stamp's nearest reading, within half the readings' median spacing, refine
+/// offset and rate (three rounds). Throws InputError when either list is empty or fewer than two
+/// stamps match.
+RelationsClockFit FitRelationsClock(std::span<const double> relation_stamps_s, std::span<const double> reading_stamps_s,
+                                    const RelationsClockFitOptions& options = {});
+
+/// The same map fitted from the robot's own measurements instead, for logs whose reading stamps do
+/// not carry the laser's clock (fr079: the relation stamps tick at a regular 0.85 s, the readings
+/// jitter by up to 0.1 s, so stamps alone fit equally well at every multiple of the laser period):
+/// the offset under which the rotations of the short relations (spans up to the median span) agree
+/// best with the rotation the recorded odometry measured over the same interval (mean absolute
+/// difference), searched every 10 ms, then every 1 ms, over the offsets that put the relations
+/// inside the readings' span; the rate from the offsets fitted to the first and second half of the
+/// relations. The odometry is robot data, the same for every program, and no SLAM result enters.
+struct OdometryClockFit {
+  double offset_s = 0.0;
+  double rate = 1.0;
+  std::size_t short_relations = 0;
+  /// Mean absolute rotation difference (deg) at the fitted offset, and the lowest one found more than
+  /// 0.1 s away from it (the margin by which the fit is unambiguous).
+  double rotation_agreement_deg = 0.0;
+  double next_best_agreement_deg = 0.0;
+  /// The offsets fitted to each half (at its middle relation stamp).
+  double first_half_offset_s = 0.0;
+  double second_half_offset_s = 0.0;
+
+  nlohmann::json ToJson() const;
+};
+
+/// Throws InputError when the readings or the short relations are too few, or no offset puts the
+/// relations inside the readings.
+OdometryClockFit FitRelationsClockByOdometry(const Relations& relations, const Trajectory& readings);
+
+}  // namespace slamsweep::evaluator
