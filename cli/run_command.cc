@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -13,6 +14,7 @@
 #include "cli/sweep_loading.h"
 #include "orchestrator/matrix/plan_listing.h"
 #include "orchestrator/matrix/shard.h"
+#include "orchestrator/phase_times/phase_times.h"
 #include "orchestrator/process/interruption.h"
 #include "orchestrator/slurm/slurm_executor.h"
 #include "orchestrator/sweep/local_executor.h"
@@ -56,7 +58,9 @@ std::string CommandLine(const RunOptions& options) {
 }
 
 int Run(const RunOptions& options, const Streams& streams, const std::string& command_line) {
+  std::optional<orchestrator::PhaseTimer> plan_phase(std::in_place, "plan");
   const LoadedSweep sweep = LoadSweep(options.config, options.selection);
+  plan_phase.reset();
   orchestrator::SweepSettings settings;
   settings.name = sweep.config.name;
   settings.output_dir = options.output.empty() ? sweep.config.output_dir : std::filesystem::path(options.output);

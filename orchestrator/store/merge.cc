@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/phase_times/phase_times.h"
 #include "orchestrator/store/result_files.h"
 #include "orchestrator/store/results_store.h"
 
@@ -91,6 +92,7 @@ class Merger {
   }
 
   void WriteReports() {
+    const PhaseTimer phase("summary");
     WriteResultFiles(store_.Runs(), out_);
   }
 
@@ -174,8 +176,12 @@ MergeReport MergeResultDirs(const std::vector<fs::path>& inputs, const fs::path&
   Check(error, fmt::format("{}: cannot create folder", (out / "runs").string()));
   MergeReport report;
   Merger merger(out, report);
-  for (const fs::path& input : inputs) merger.MergeInput(input);
+  {
+    const PhaseTimer phase("merge_runs");
+    for (const fs::path& input : inputs) merger.MergeInput(input);
+  }
   merger.WriteReports();
+  FlushPhaseTimes("merge");
   return report;
 }
 

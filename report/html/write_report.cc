@@ -6,11 +6,13 @@
 #include <fstream>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <system_error>
 #include <thread>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/phase_times/phase_times.h"
 #include "report/html/metric_spec_page.h"
 #include "report/html/report_layout.h"
 #include "report/html/site_data.h"
@@ -350,7 +352,10 @@ ReportSummary CountImages(const fs::path& out_dir, bool drawing, SiteData& site)
 }  // namespace
 
 ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, const ReportOptions& options) {
-  const SweepModel model = BuildSweepModel(LoadRuns(result_dir));
+  std::optional<orchestrator::PhaseTimer> phase(std::in_place, "load");
+  std::vector<RunRecord> records = LoadRuns(result_dir);
+  phase.emplace("model");
+  const SweepModel model = BuildSweepModel(std::move(records));
   const ReportLayout layout(model);
   PrepareOutputDir(out_dir);
 
@@ -364,6 +369,7 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   site.title = model.sweep_name.empty() ? "slamsweep report — " + normal.filename().string() : model.sweep_name;
   site.runs.resize(model.runs.size());
 
+  phase.emplace("downloads");
   ParallelFor(model.runs.size(), options.jobs, [&](std::size_t i) {
     const RunRecord& run = model.runs[i];
     const fs::path run_out = out_dir / layout.RunDir(i);
@@ -374,6 +380,7 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
     site.runs[i].log_truncated = tail.truncated;
   });
 
+  phase.emplace("plan_images");
   std::vector<PlotRequest> plots = PlanPlots(model, layout, out_dir, site);
   std::vector<ScatterPlotJob> scatter_plots;
   ValiditySite validity = PlanValidity(model, *site.palette, out_dir, scatter_plots);
@@ -406,7 +413,9 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
     }
     PlanRunImages(model, layout, out_dir, options, site, jobs);
   }
+  phase.emplace("images");
   RunImageJobs(jobs, options.jobs);
+  phase.emplace("pages");
   ReportSummary summary = CountImages(out_dir, options.artwork != nullptr, site);
   CountValidityPlots(out_dir, options.artwork != nullptr, validity, summary);
   const auto [figures_made, figures_missing] = MarkViewFigures(out_dir, options.artwork != nullptr, figures_error, site);
@@ -441,6 +450,8 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
               [&](std::size_t i) { WriteTextFile(out_dir / layout.RunPage(i), RenderRunPage(site, i)); });
   summary.pages += model.runs.size();
   summary.runs = model.runs.size();
+  phase.reset();
+  orchestrator::FlushPhaseTimes("report");
   return summary;
 }
 
