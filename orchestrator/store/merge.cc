@@ -116,7 +116,7 @@ class Merger {
       ++report_.runs_added;
       return;
     }
-    if (existing->result == run.result) {
+    if (existing->result_digest == run.result_digest && existing->flags == run.flags) {
       ++report_.duplicates;
       // The store may know the run while its folder was lost (an interrupted earlier merge).
       if (!fs::exists(out_ / existing->run_dir) && fs::exists(input / run_dir)) {
@@ -141,7 +141,7 @@ class Merger {
                                              (input / run_dir).string()));
     }
     // The folder first, then the index: a recorded run always has its files.
-    store_.RecordRun(sweep_id, run.spec, run.result, run_dir);
+    store_.ImportRun(sweep_id, run, run_dir);
     origin_[run.run_id] = input.string();
   }
 

@@ -12,12 +12,10 @@
 
 #include "orchestrator/run/run_flags.h"
 #include "orchestrator/store/sqlite_db.h"
+#include "orchestrator/store/store_schema.h"
 
 namespace slamsweep::orchestrator {
 
-/// The schema version this build writes (PRAGMA user_version). A file with a higher version was
-/// written by a newer slamsweep and is refused rather than misread.
-inline constexpr int kResultsSchemaVersion = 3;
 
 /// What is known about a sweep when it starts.
 struct SweepInfo {
@@ -55,9 +53,16 @@ struct StoredMetric {
 struct StoredRun {
   std::string run_id;
   std::int64_t sweep_id = 0;
-  /// The whole run.json and result.json, as recorded.
+  /// run.json as recorded (the whole of it).
   nlohmann::json spec;
+  /// What the store keeps of result.json: run_id, status, failure_kind, reason, exit_code, signal, wall_s,
+  /// cpu_s, peak_rss_kb, started_at, finished_at, command, outputs, warnings, odometry_is_reference, flags,
+  /// metrics, and per metric_details entry its "specification"/"parameters". The run folder's result.json
+  /// has the rest (alignments, per-length statistics, map details).
   nlohmann::json result;
+  /// FNV-1a 64 of the whole result.json as recorded, flags left out: two recordings of a run agree when
+  /// their digests and flags do (merge).
+  std::uint64_t result_digest = 0;
   /// "ok" or "failed".
   std::string status;
   /// Relative to the output directory ("runs/<run-id>").
@@ -108,10 +113,14 @@ class ResultsStore {
   void RecordRun(std::int64_t sweep_id, const nlohmann::json& run_spec, const nlohmann::json& result,
                  const std::string& run_dir_relative);
 
+  /// Records (or replaces) a run read from another store (merge): its row as that store keeps it, digest and
+  /// flags included.
+  void ImportRun(std::int64_t sweep_id, const StoredRun& run, const std::string& run_dir_relative);
+
   /// "ok" / "failed", or empty when the run was never recorded.
   std::optional<std::string> RunStatus(const std::string& run_id) const;
   std::optional<StoredRun> FindRun(const std::string& run_id) const;
-  /// Adds `flags` to a recorded run (its column and its stored result.json's `flags`); false when the run
+  /// Adds `flags` to a recorded run (its flags column, which `result`'s flags mirror); false when the run
   /// was never recorded. The sweep marks a run it reuses under another build or evaluation "stale" this way.
   bool AddRunFlags(const std::string& run_id, const RunFlags& flags);
   /// Every run, ordered by sequence, algorithm, noise, iteration, run id.
@@ -128,6 +137,10 @@ class ResultsStore {
   explicit ResultsStore(SqliteDb db) : db_(std::move(db)) {}
   static ResultsStore OpenImpl(const std::filesystem::path& file, bool create);
   void InitializeSchema();
+  /// RecordRun's writes, inside the caller's transaction.
+  void WriteRun(std::int64_t sweep_id, const nlohmann::json& run_spec, const nlohmann::json& result,
+                const std::string& run_dir_relative, const RunFlags& flags,
+                std::optional<std::uint64_t> result_digest = std::nullopt);
   std::vector<StoredRun> QueryRuns(const std::string& where, const std::string& run_id) const;
 
   SqliteDb db_;
