@@ -14,14 +14,16 @@ import sys
 
 VOLATILE_KEYS = {"generated_at", "started_at", "finished_at", "wall_s", "cpu_s", "peak_rss_kb", "run_dir",
                  "reference_map"}
+# The names of the files a run folder holds (map.pgm or map.png, stages/ or stages.png) are layout, not results.
+LAYOUT_KEYS = {"outputs"}
 RESOURCES = ("wall_s", "cpu_s", "peak_rss_kb")
 
 
 def scrub(value):
-    """A JSON value with the volatile members left out, at every depth."""
+    """A JSON value with the volatile members (and the run folder's file names) left out, at every depth."""
     if isinstance(value, dict):
         return {key: scrub(item) for key, item in value.items()
-                if key not in VOLATILE_KEYS and not any(key.startswith(r) for r in RESOURCES)}
+                if key not in VOLATILE_KEYS and key not in LAYOUT_KEYS and not any(key.startswith(r) for r in RESOURCES)}
     if isinstance(value, list):
         kept = [scrub(item) for item in value]
         # Validity rows that correlate a metric with a resource vary with the machine's load.
@@ -71,9 +73,16 @@ def main():
             left_runs = {r["run_id"]: scrub(r) for r in json.loads(left).get("runs", [])}
             right_runs = {r["run_id"]: scrub(r) for r in json.loads(right).get("runs", [])}
             for run_id in sorted(set(left_runs) | set(right_runs)):
-                if left_runs.get(run_id) != right_runs.get(run_id):
-                    differences.append(f"  run {run_id}: {left_runs.get(run_id)} != {right_runs.get(run_id)}"[:2000])
+                left_run, right_run = left_runs.get(run_id) or {}, right_runs.get(run_id) or {}
+                if left_run != right_run:
+                    keys = sorted(k for k in set(left_run) | set(right_run) if left_run.get(k) != right_run.get(k))
+                    for key in keys:
+                        differences.append(f"  run {run_id}: {key}: {left_run.get(key)} != {right_run.get(key)}"[:600])
                     break
+            left_summary, right_summary = scrub(json.loads(left)), scrub(json.loads(right))
+            for key in sorted(set(left_summary) | set(right_summary)):
+                if key != "runs" and left_summary.get(key) != right_summary.get(key):
+                    differences.append(f"  {key}: differs")
     for name in ("summary.csv", "runs.csv", "validity.csv"):
         left, right = read(f"{a}/{name}"), read(f"{b}/{name}")
         if (left is None) != (right is None):

@@ -110,37 +110,57 @@ def require_ok(step, measured, log_path, allowed=(0,)):
         sys.exit(f"scale_bench.py: {step} exited with {measured['exit']}; its output ({log_path}):\n{tail}")
 
 
+def file_kind(relative):
+    """What a file is, for the breakdown: runs/*/map.png, report/runs/*.html, results.sqlite, ..."""
+    parts = relative.split(os.sep)
+    if parts[0] == "runs" and len(parts) > 2:
+        return "runs/*/" + "/".join(parts[2:3] + (["..."] if len(parts) > 3 else []))
+    if parts[0] == "report" and len(parts) > 2 and parts[1] == "runs":
+        return "report/runs/*.html" if len(parts) == 3 else "report/runs/*/" + parts[3]
+    if parts[0] == "report" and len(parts) > 2:
+        return "report/" + parts[1] + "/"
+    if parts[0].startswith("results.sqlite"):
+        return "results.sqlite"
+    return "/".join(parts[:2]) if len(parts) > 1 else parts[0]
+
+
 def disk_usage(root, runs):
-    """Allocated bytes under root by part, every inode counted once (hard links within root share bytes)."""
+    """Allocated bytes under root by part and by kind of file, every inode counted once: runs/ first, so a
+    report file hard-linked to a run file costs the report nothing."""
     seen = set()
-    parts = {}
+    parts, kinds = {}, {}
     files_per_run_folder = []
-    for directory, folders, files in os.walk(root):
-        relative = os.path.relpath(directory, root)
-        top = relative.split(os.sep)[0] if relative != "." else None
-        if relative.startswith("runs" + os.sep) and relative.count(os.sep) == 1:
-            count = 0
-            for sub, _, sub_files in os.walk(directory):
-                count += len(sub_files)
-            files_per_run_folder.append(count)
-        for name in files:
-            info = os.lstat(os.path.join(directory, name))
-            part = top if top else (name.split("-")[0] if name.startswith("results.sqlite") else "tables")
-            if part.startswith("results.sqlite"):
-                part = "results.sqlite"
-            entry = parts.setdefault(part, {"bytes": 0, "allocated": 0, "files": 0})
-            entry["files"] += 1
-            if (info.st_dev, info.st_ino) in seen:
-                continue
-            seen.add((info.st_dev, info.st_ino))
-            entry["bytes"] += info.st_size
-            entry["allocated"] += info.st_blocks * 512
+    tops = sorted(os.listdir(root), key=lambda name: (name != "runs", name))
+    for top in tops:
+        for directory, _, files in os.walk(os.path.join(root, top)) if os.path.isdir(os.path.join(root, top)) \
+                else [(root, [], [top])]:
+            relative_dir = os.path.relpath(directory, root)
+            if relative_dir.startswith("runs" + os.sep) and relative_dir.count(os.sep) == 1:
+                files_per_run_folder.append(sum(len(f) for _, _, f in os.walk(directory)))
+            for name in files:
+                relative = os.path.normpath(os.path.join(relative_dir, name))
+                info = os.lstat(os.path.join(root, relative))
+                part = "results.sqlite" if top.startswith("results.sqlite") else (top if top in ("runs", "report", "reference_maps") else "tables")
+                kind = file_kind(relative)
+                for table, key in ((parts, part), (kinds, kind)):
+                    entry = table.setdefault(key, {"bytes": 0, "allocated": 0, "files": 0})
+                    entry["files"] += 1
+                if (info.st_dev, info.st_ino) in seen:
+                    continue
+                seen.add((info.st_dev, info.st_ino))
+                for table, key in ((parts, part), (kinds, kind)):
+                    table[key]["bytes"] += info.st_size
+                    table[key]["allocated"] += info.st_blocks * 512
     total = sum(entry["allocated"] for entry in parts.values())
+    apparent = sum(entry["bytes"] for entry in parts.values())
     files_per_run_folder.sort()
     return {
         "parts": parts,
+        "kinds": kinds,
         "allocated_bytes": total,
+        "apparent_bytes": apparent,
         "disk_kb_per_run": total / 1024.0 / runs,
+        "apparent_kb_per_run": apparent / 1024.0 / runs,
         "files_per_run_folder_max": files_per_run_folder[-1] if files_per_run_folder else 0,
         "files_per_run_folder_median": files_per_run_folder[len(files_per_run_folder) // 2]
         if files_per_run_folder else 0,
@@ -274,6 +294,7 @@ def table(results, note):
         ("report s (goal <= 30 at 10k)", lambda r: f"{r['report']['wall_s']:.1f}"),
         ("report peak MB (goal <= 1024)", lambda r: f"{r['report']['peak_mb']:.0f}"),
         ("disk KB/run (budget <= 100)", lambda r: f"{r['disk']['disk_kb_per_run']:.1f}"),
+        ("  apparent size KB/run", lambda r: f"{r['disk'].get('apparent_kb_per_run', 0):.1f}"),
         ("results.sqlite KB/run (budget <= 10)", lambda r: f"{r['disk']['db_kb_per_run']:.1f}"),
         ("files per run folder (budget <= 12)", lambda r: f"{r['disk']['files_per_run_folder_max']}"),
     ]
@@ -297,6 +318,14 @@ def table(results, note):
         lines.append(f"| {label} | " + " | ".join(cell(r) for r in results) + " |")
     lines.append("")
     lines.append(note)
+    # Disk by kind of file at the largest size (allocated KB per run; apparent KB per run).
+    largest = results[-1]
+    lines += ["", f"Disk by kind of file at {largest['runs']} runs (KB per run: allocated, apparent; files):", "",
+              "| file | allocated | apparent | files |", "|---|---:|---:|---:|"]
+    kinds = sorted(largest["disk"].get("kinds", {}).items(), key=lambda item: -item[1]["allocated"])
+    for kind, entry in kinds[:25]:
+        lines.append(f"| {kind} | {entry['allocated'] / 1024 / largest['runs']:.2f} | "
+                     f"{entry['bytes'] / 1024 / largest['runs']:.2f} | {entry['files']} |")
     return "\n".join(lines) + "\n"
 
 

@@ -141,12 +141,15 @@ std::int64_t ResultDigest(const json& result) {
 // The metrics in the order the worker listed them; a metric listed twice keeps its last value and place,
 // as a JSON object with a repeated key would.
 std::vector<const json*> DistinctMetrics(const json& metrics) {
+  std::map<std::pair<std::string, std::string>, std::size_t> last;
+  for (std::size_t i = 0; i < metrics.size(); ++i) {
+    last[{metrics[i].at("metric").get<std::string>(), metrics[i].at("statistic").get<std::string>()}] = i;
+  }
   std::vector<const json*> kept;
-  for (const json& m : metrics) {
-    std::erase_if(kept, [&](const json* earlier) {
-      return earlier->at("metric") == m.at("metric") && earlier->at("statistic") == m.at("statistic");
-    });
-    kept.push_back(&m);
+  for (std::size_t i = 0; i < metrics.size(); ++i) {
+    if (last.at({metrics[i].at("metric").get<std::string>(), metrics[i].at("statistic").get<std::string>()}) == i) {
+      kept.push_back(&metrics[i]);
+    }
   }
   return kept;
 }
@@ -315,15 +318,76 @@ std::int64_t ResultsStore::ImportSweep(const StoredSweep& sweep) {
 void ResultsStore::RecordRun(std::int64_t sweep_id, const json& run_spec, const json& result,
                              const std::string& run_dir_relative) {
   const RunFlags flags = RunFlagsOf(run_spec, result);
-  SqliteTransaction transaction(db_);
-  WriteRun(sweep_id, run_spec, result, run_dir_relative, flags);
-  transaction.Commit();
+  WriteInTransaction([&] { WriteRun(sweep_id, run_spec, result, run_dir_relative, flags); });
+}
+
+void ResultsStore::WriteInTransaction(const std::function<void()>& write) {
+  try {
+    if (batch_) {
+      write();
+      return;
+    }
+    SqliteTransaction transaction(db_);
+    write();
+    transaction.Commit();
+  } catch (...) {
+    // Rolled back (or about to be, with the batch): ids cached meanwhile may name rows that never were.
+    metric_name_ids_.clear();
+    document_ids_.clear();
+    throw;
+  }
+}
+
+void ResultsStore::BeginBatch() {
+  if (batch_) throw InputError(db_.file().string() + ": a batch of writes is already open");
+  batch_ = std::make_unique<SqliteTransaction>(db_);
+}
+
+void ResultsStore::CommitBatch() {
+  if (!batch_) return;
+  std::unique_ptr<SqliteTransaction> batch = std::move(batch_);
+  try {
+    batch->Commit();
+  } catch (...) {
+    metric_name_ids_.clear();
+    document_ids_.clear();
+    throw;
+  }
+}
+
+SqliteStatement& ResultsStore::Cached(const std::string& sql) {
+  std::unique_ptr<SqliteStatement>& statement = statements_[sql];
+  if (!statement) statement = db_.PrepareKept(sql);
+  statement->Reset();
+  return *statement;
+}
+
+std::int64_t ResultsStore::Document(const json& value) {
+  const std::string text = Dump(value);
+  const auto digest = static_cast<std::int64_t>(Fnv1a64(text));
+  if (const auto found = document_ids_.find(digest); found != document_ids_.end() && found->second.second == text) {
+    return found->second.first;
+  }
+  const std::int64_t id = DocumentId(db_, value);
+  document_ids_[digest] = {id, text};
+  return id;
+}
+
+std::map<std::string, ResultsStore::RecordedIdentity> ResultsStore::RecordedIdentities() const {
+  std::map<std::string, RecordedIdentity> identities;
+  auto select = db_.Prepare("SELECT run_id, result_digest, flags, finished_at, run_dir FROM runs");
+  while (select.Step()) {
+    RecordedIdentity& identity = identities[select.Text(0)];
+    identity.result_digest = static_cast<std::uint64_t>(select.Int64(1));
+    identity.flags = RunFlagsFromText(NullableText(select, 2), db_.file().string() + ": runs.flags");
+    identity.finished_at = NullableText(select, 3);
+    identity.run_dir = NullableText(select, 4);
+  }
+  return identities;
 }
 
 void ResultsStore::ImportRun(std::int64_t sweep_id, const StoredRun& run, const std::string& run_dir_relative) {
-  SqliteTransaction transaction(db_);
-  WriteRun(sweep_id, run.spec, run.result, run_dir_relative, run.flags, run.result_digest);
-  transaction.Commit();
+  WriteInTransaction([&] { WriteRun(sweep_id, run.spec, run.result, run_dir_relative, run.flags, run.result_digest); });
 }
 
 void ResultsStore::WriteRun(std::int64_t sweep_id, const json& run_spec, const json& result,
@@ -342,21 +406,21 @@ void ResultsStore::WriteRun(std::int64_t sweep_id, const json& run_spec, const j
   for (const char* key : kResultSharedMembers) {
     if (const json* value = Find(result, key); value != nullptr) result_shared[key] = *value;
   }
-  const std::int64_t spec_document = DocumentId(db_, spec_shared);
-  const std::int64_t result_document = DocumentId(db_, result_shared);
+  const std::int64_t spec_document = Document(spec_shared);
+  const std::int64_t result_document = Document(result_shared);
   {
     // An earlier recording of this run id goes with its metric rows.
     for (const char* table : {"metric_values", "metric_spec_refs"}) {
-      auto remove = db_.Prepare(fmt::format("DELETE FROM {} WHERE run = (SELECT id FROM runs WHERE run_id = ?)", table));
+      auto& remove = Cached(fmt::format("DELETE FROM {} WHERE run = (SELECT id FROM runs WHERE run_id = ?)", table));
       remove.Bind(1, columns.run_id);
       remove.Run();
     }
-    auto remove = db_.Prepare("DELETE FROM runs WHERE run_id = ?");
+    auto& remove = Cached("DELETE FROM runs WHERE run_id = ?");
     remove.Bind(1, columns.run_id);
     remove.Run();
   }
   {
-    auto insert = db_.Prepare(
+    auto& insert = Cached(
         "INSERT INTO runs(run_id, sweep_id, algorithm, adapter, parameters_json, sequence, noise, iteration, seed, "
         "status, failure_kind, reason, exit_code, signal, wall_s, cpu_s, peak_rss_kb, started_at, finished_at, "
         "run_dir, parameters, odometry_is_reference, seeding, slamsweep_revision, flags, spec_shared, spec_own, "
@@ -391,33 +455,36 @@ void ResultsStore::WriteRun(std::int64_t sweep_id, const json& run_spec, const j
   const std::int64_t run = db_.LastInsertRowId();
   if (mid_transaction_hook_) mid_transaction_hook_();
   if (const json* metrics = Find(result, "metrics"); metrics != nullptr && metrics->is_array()) {
-    auto find_name = db_.Prepare("SELECT id FROM metric_names WHERE metric = ? AND statistic = ? AND unit = ?");
-    auto add_name = db_.Prepare("INSERT INTO metric_names(metric, statistic, unit) VALUES(?, ?, ?)");
-    auto insert = db_.Prepare("INSERT INTO metric_values(run, position, name, value) VALUES(?, ?, ?, ?)");
+    auto& insert = Cached("INSERT INTO metric_values(run, position, name, value) VALUES(?, ?, ?, ?)");
     std::int64_t position = 0;
     for (const json* m : DistinctMetrics(*metrics)) {
       const json& unit = FieldOrNull(*m, "unit");
-      const std::string unit_text = unit.is_string() ? unit.get<std::string>() : "";
-      find_name.Reset();
-      find_name.BindJson(1, m->at("metric")).BindJson(2, m->at("statistic")).Bind(3, unit_text);
-      std::int64_t name = 0;
-      if (find_name.Step()) {
-        name = find_name.Int64(0);
-      } else {
-        add_name.Reset();
-        add_name.BindJson(1, m->at("metric")).BindJson(2, m->at("statistic")).Bind(3, unit_text);
-        add_name.Run();
-        name = db_.LastInsertRowId();
+      const std::tuple<std::string, std::string, std::string> key{
+          m->at("metric").get<std::string>(), m->at("statistic").get<std::string>(),
+          unit.is_string() ? unit.get<std::string>() : ""};
+      auto known = metric_name_ids_.find(key);
+      if (known == metric_name_ids_.end()) {
+        // Another process may have added it meanwhile: insert unless there, then read its id.
+        auto& add = Cached("INSERT OR IGNORE INTO metric_names(metric, statistic, unit) VALUES(?, ?, ?)");
+        add.Bind(1, std::get<0>(key)).Bind(2, std::get<1>(key)).Bind(3, std::get<2>(key));
+        add.Run();
+        auto& find = Cached("SELECT id FROM metric_names WHERE metric = ? AND statistic = ? AND unit = ?");
+        find.Bind(1, std::get<0>(key)).Bind(2, std::get<1>(key)).Bind(3, std::get<2>(key));
+        if (!find.Step()) throw InputError(db_.file().string() + ": metric name not recorded");
+        known = metric_name_ids_.emplace(key, find.Int64(0)).first;
+        // A statement left on a row keeps its read snapshot open, which would keep later writes (and a
+        // table drop during a conversion) from starting.
+        find.Reset();
       }
       insert.Reset();
-      insert.Bind(1, run).Bind(2, position++).Bind(3, name).BindJson(4, FieldOrNull(*m, "value"));
+      insert.Bind(1, run).Bind(2, position++).Bind(3, known->second).BindJson(4, FieldOrNull(*m, "value"));
       insert.Run();
     }
   }
   if (const json* details = Find(result, "metric_details"); details != nullptr && details->is_object()) {
-    auto insert = db_.Prepare("INSERT INTO metric_spec_refs(run, metric, spec) VALUES(?, ?, ?)");
+    auto& insert = Cached("INSERT INTO metric_spec_refs(run, metric, spec) VALUES(?, ?, ?)");
     for (const auto& [metric, detail] : details->items()) {
-      const std::int64_t spec = DocumentId(db_, MetricSpecification(detail));
+      const std::int64_t spec = Document(MetricSpecification(detail));
       insert.Reset();
       insert.Bind(1, run).Bind(2, metric).Bind(3, spec);
       insert.Run();

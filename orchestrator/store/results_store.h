@@ -4,8 +4,11 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -117,6 +120,20 @@ class ResultsStore {
   /// flags included.
   void ImportRun(std::int64_t sweep_id, const StoredRun& run, const std::string& run_dir_relative);
 
+  /// Between BeginBatch and CommitBatch, RecordRun and ImportRun write in one transaction (merge: a
+  /// thousand runs in one commit instead of a thousand). A batch not committed is rolled back.
+  void BeginBatch();
+  void CommitBatch();
+
+  /// What tells one recording of a run from another, for every recorded run at once (merge).
+  struct RecordedIdentity {
+    std::uint64_t result_digest = 0;
+    RunFlags flags;
+    std::string finished_at;
+    std::string run_dir;
+  };
+  std::map<std::string, RecordedIdentity> RecordedIdentities() const;
+
   /// "ok" / "failed", or empty when the run was never recorded.
   std::optional<std::string> RunStatus(const std::string& run_id) const;
   std::optional<StoredRun> FindRun(const std::string& run_id) const;
@@ -143,7 +160,21 @@ class ResultsStore {
                 std::optional<std::uint64_t> result_digest = std::nullopt);
   std::vector<StoredRun> QueryRuns(const std::string& where, const std::string& run_id) const;
 
+  /// Runs `write` in the open batch, else in a transaction of its own; a failure forgets the cached ids.
+  void WriteInTransaction(const std::function<void()>& write);
+  /// A prepared statement kept for the store's lifetime (reset before it is handed out).
+  SqliteStatement& Cached(const std::string& sql);
+  /// DocumentId through the cache of documents already seen.
+  std::int64_t Document(const nlohmann::json& value);
+
   SqliteDb db_;
+  // Declared after db_: statements are finalized before the connection closes.
+  std::map<std::string, std::unique_ptr<SqliteStatement>> statements_;
+  /// Ids of metric names and documents already seen: rows of both are never changed or deleted.
+  std::map<std::tuple<std::string, std::string, std::string>, std::int64_t> metric_name_ids_;
+  std::map<std::int64_t, std::pair<std::int64_t, std::string>> document_ids_;
+  /// The open batch transaction (BeginBatch); it refers to db_, so the store is not moved during a batch.
+  std::unique_ptr<SqliteTransaction> batch_;
   std::function<void()> mid_transaction_hook_;
 };
 
