@@ -4,6 +4,7 @@
 #include <system_error>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/core/installation.h"
 #include "evaluator/sequence/sequence_file.h"
 
 namespace slamsweep::cli {
@@ -22,9 +23,12 @@ std::string Environment(const char* name) {
 CatalogLocation FindCatalog(const std::string& catalog_option) {
   CatalogLocation location;
   const std::string catalog_env = Environment("SLAMSWEEP_CATALOG");
-  location.catalog = !catalog_option.empty() ? catalog_option
-                     : !catalog_env.empty()  ? catalog_env
-                                             : std::string(SLAMSWEEP_DEFAULT_CATALOG);
+  // An installed slamsweep reads its installed catalog; a build tree the repository's.
+  const auto installed = ev::FindInstalledData("configs/datasets.yaml");
+  location.catalog = !catalog_option.empty() ? std::filesystem::path(catalog_option)
+                     : !catalog_env.empty()  ? std::filesystem::path(catalog_env)
+                     : installed             ? *installed
+                                             : std::filesystem::path(SLAMSWEEP_DEFAULT_CATALOG);
   const std::string shared_env = Environment("SLAMSWEEP_SHARED");
   location.shared_root = !shared_env.empty() ? shared_env : std::string(SLAMSWEEP_DEFAULT_SHARED);
   return location;

@@ -11,7 +11,8 @@ namespace slamsweep::cli {
 
 /// Where the data commands find the dataset catalog and the shared data folder.
 struct CatalogLocation {
-  /// --catalog, else $SLAMSWEEP_CATALOG, else the repository's configs/datasets.yaml.
+  /// --catalog, else $SLAMSWEEP_CATALOG, else the installed PREFIX/share/slamsweep/configs/datasets.yaml,
+  /// else the repository's configs/datasets.yaml.
   std::filesystem::path catalog;
   /// ${SHARED} in catalog paths: $SLAMSWEEP_SHARED, else the folder configured at build time.
   std::filesystem::path shared_root;

@@ -71,6 +71,7 @@ int Run(const RunOptions& options, const Streams& streams, const std::string& co
   settings.config_path = std::filesystem::absolute(options.config).string();
   settings.config_sha = sweep.config_hash;
   settings.command_line = command_line;
+  settings.validity_study = sweep.config.validity_study;
 
   // Signals are caught from here on: Ctrl-C ends the sweep cleanly (exit 130), never half-way.
   orchestrator::InterruptionGuard interruption;

@@ -97,7 +97,8 @@ int Serve(const ServeOptions& options) {
         sweep_limits.policy = limits.policy;
         sweep_limits.max_runs = limits.max_runs;
         LoadedSweep loaded = LoadSweepText(text, file.string(), {}, sweep_limits);
-        return orchestrator::service::PlannedSweep{loaded.config.name, std::move(loaded.runs), loaded.config_hash};
+        return orchestrator::service::PlannedSweep{loaded.config.name, std::move(loaded.runs), loaded.config_hash,
+                                                   loaded.config.validity_study};
       };
   const orchestrator::service::ReportWriter reports = [](const std::filesystem::path& result_dir) {
     std::ostringstream out, err;

@@ -14,6 +14,7 @@
 #include "orchestrator/matrix/expand_matrix.h"
 #include "orchestrator/matrix/run_id.h"
 #include "orchestrator/matrix/shard.h"
+#include "orchestrator/store/named_study.h"
 
 namespace slamsweep::cli {
 
@@ -59,6 +60,8 @@ LoadedSweep LoadSweepText(std::string_view text, const std::string& config_file,
   context.policy = limits.policy;
   LoadedSweep sweep;
   sweep.config = orchestrator::ParseSweepConfig(text, config_file, context);
+  // A named validity study that is not one stops the sweep now, not when its report is written.
+  if (!sweep.config.validity_study.empty()) orchestrator::ReadNamedStudy(sweep.config.validity_study);
   sweep.config_hash = fmt::format("{:016x}", orchestrator::Fnv1a64(text));
   std::vector<std::string> algorithms, sequences;
   for (const auto& algorithm : sweep.config.algorithms) algorithms.push_back(algorithm.name);

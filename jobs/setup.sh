@@ -4,7 +4,8 @@
 # errors (scripts/build.sh).
 # Usage: jobs/setup.sh
 # Environment: SLAMSWEEP_BUILD_DIR (default <repo>/build); SKIP_DEPS=1 skips the package step (agents
-# without sudo whose packages an administrator installs).
+# without sudo whose packages an administrator installs); SKIP_BUILD=1 installs only the packages, the
+# roster's included, and builds nothing (the nightly's shards run the programs of jobs/build-programs.sh).
 # Exit code: 0 built; otherwise the failing step's code.
 set -euo pipefail
 # shellcheck source=jobs/lib.sh
@@ -17,6 +18,11 @@ else
 fi
 # The paper's roster (pinned upstream builds, cached outside the workspace); SLAMSWEEP_ROSTER as in scripts/test.sh.
 read -r -a roster <<< "${SLAMSWEEP_ROSTER:-gmapping slam-constructor hector}"
+if [[ "${SKIP_BUILD:-0}" == 1 ]]; then
+  [[ "${SKIP_DEPS:-0}" == 1 ]] || jobs_run "$SLAMSWEEP_ROOT/scripts/install-slam.sh" --packages-only "${roster[@]}"
+  jobs_log "SKIP_BUILD=1: packages only, nothing built"
+  exit 0
+fi
 jobs_run "$SLAMSWEEP_ROOT/scripts/install-slam.sh" "${roster[@]}"
 jobs_run "$SLAMSWEEP_ROOT/scripts/build.sh"
 jobs_find_binary

@@ -4,9 +4,11 @@
 # for what is missing. Used by both README commands, .ci/run and docker/.
 # With arguments it installs those packages instead, by the same check: scripts/install-slam.sh
 # passes each roster algorithm's build dependencies this way.
+#   --build    only what compiling slamsweep needs (docker/Dockerfile's build stage, without tests)
+#   --runtime  only what an installed slamsweep needs to run (the image's runtime stage: no compilers)
 set -euo pipefail
 
-packages=(
+build_packages=(
   # toolchain
   g++ cmake ninja-build pkg-config
   # libraries (README "Dependencies" says why each is there)
@@ -16,13 +18,32 @@ packages=(
   libpng-dev libfast-float-dev
   # `slamsweep serve` and `submit`: the HTTP server and client (cpp-httplib)
   libcpp-httplib-dev
-  # the report: plots (gnuplot), map GIFs (giflib); headless Chromium checks the report in tests
-  gnuplot-nox libgif-dev chromium
-  # MRPT: rawlog reading/writing (libmrpt-obs-dev), the real SLAM programs (mrpt-apps),
-  # their sample dataset and configs (mrpt-common)
-  libmrpt-obs-dev mrpt-apps mrpt-common
-  # ROS1 bags (evaluator/formats/rosbag): librosbag and message headers; python3-* write the test bags
-  librosbag-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev libgeometry-msgs-dev python3-rosbag python3-sensor-msgs python3-nav-msgs python3-tf2-msgs
+  # map GIFs in the report (giflib); MRPT's rawlog reading/writing (libmrpt-obs-dev)
+  libgif-dev libmrpt-obs-dev
+  # ROS1 bags (evaluator/formats/rosbag): librosbag and message headers
+  librosbag-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev libgeometry-msgs-dev
+)
+
+# Programs and data slamsweep runs or reads: the report's plots (gnuplot), MRPT's real SLAM programs
+# (mrpt-apps) and their sample dataset and configs (mrpt-common).
+run_programs=(gnuplot-nox mrpt-apps mrpt-common)
+
+# What the installed programs link (scripts/docker-check.sh runs ldd on each in the image: a library
+# missing here fails it) and run_programs; the package names are Debian 12's.
+runtime_packages=(
+  libstdc++6 zlib1g libboost-filesystem1.74.0 libboost-iostreams1.74.0 libdeflate0 libfmt9 libssl3 libyaml-cpp0.7
+  libspdlog1.10 libsqlite3-0 libcpp-httplib0.11 libgif7 libpng16-16 libopencv-core406 libopencv-imgproc406
+  libmrpt-obs2.5 librosbag-storage4d libroscpp-serialization0d librostime1d libcpp-common0d
+  # the Cartographer driver
+  libabsl20220623 libcholmod3 libcxsparse3 libgoogle-glog0v6 liblua5.3-0 libprotobuf32
+  "${run_programs[@]}"
+)
+
+packages=(
+  "${build_packages[@]}"
+  "${run_programs[@]}"
+  # headless Chromium checks the report in tests; python3-* write the test bags
+  chromium python3-rosbag python3-sensor-msgs python3-nav-msgs python3-tf2-msgs
   # tests and benchmarks (hyperfine: bench/cli, whole-process times); python3-scipy is the
   # independent reference for the Spearman rank correlation of the metric validity study
   # (tests/evaluator/statistics); python3-pil reads the stage animations back (tests/evaluator/formats/map)
@@ -33,9 +54,12 @@ packages=(
   slurm-wlm munge
 )
 
-if (($# > 0)); then
-  packages=("$@")
-fi
+case "${1:-}" in
+  --build) packages=("${build_packages[@]}") ;;
+  --runtime) packages=("${runtime_packages[@]}") ;;
+  "") ;;
+  *) packages=("$@") ;;
+esac
 
 missing=()
 for package in "${packages[@]}"; do

@@ -4,12 +4,14 @@
 # Builds the paper's SLAM roster from pinned upstream sources into a prefix the drivers
 # (slam/<algorithm>/) build against and the adapters read their manifests from.
 #
-# usage: scripts/install-slam.sh [--prefix DIR] [--from DIR] [NAME...]
+# usage: scripts/install-slam.sh [--prefix DIR] [--from DIR] [--packages-only] [NAME...]
 #   NAME     gmapping slam-constructor breezyslam hector cartographer (default: all of them)
 #   --from   a folder holding the pinned tarballs (../shared/peers); each is checked against the
 #            SHA-256 pinned in its recipe. Without it, and when ../shared/peers is absent, the
 #            sources come from the upstream repository at the pinned commit (git verifies the commit).
 #   --prefix default: <repo>/slam-prefix (ignored by git); SLAMSWEEP_SLAM_PREFIX overrides it.
+#   --packages-only  only the Debian packages the recipes need (a machine that runs drivers built
+#            elsewhere: the nightly's shards, jobs/unpack-programs.sh).
 #
 # Each upstream has a recipe, scripts/slam/<NAME>.sh: where it comes from, its licence, the Debian
 # packages its build needs (installed through scripts/install-deps.sh) and slam_build, which builds
@@ -26,11 +28,13 @@ all_names=(gmapping slam-constructor breezyslam hector cartographer)
 
 prefix=${SLAMSWEEP_SLAM_PREFIX:-$root/slam-prefix}
 from=""
+packages_only=0
 names=()
 while (($# > 0)); do
   case "$1" in
     --prefix) prefix=${2:?--prefix needs a folder}; shift 2 ;;
     --from) from=${2:?--from needs a folder}; shift 2 ;;
+    --packages-only) packages_only=1; shift ;;
     -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
     -*) echo "install-slam: unknown option '$1' (expected --prefix DIR, --from DIR, NAME...)" >&2; exit 2 ;;
     *) names+=("$1"); shift ;;
@@ -74,6 +78,10 @@ install_one() {
   # shellcheck source=/dev/null
   source "$recipe"
   local recipe_sum manifest key
+  if ((packages_only)); then
+    ((${#slam_packages[@]} == 0)) || "$root/scripts/install-deps.sh" "${slam_packages[@]}"
+    return 0
+  fi
   recipe_sum=$(sha256sum "$recipe" | cut -c1-8)
   key="$name-${slam_sha256:0:16}-$recipe_sum"
   manifest="$prefix/share/slamsweep/slam/$name.json"

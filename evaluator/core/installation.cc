@@ -33,6 +33,17 @@ std::optional<fs::path> FindLibexecFile(std::string_view name) {
   return std::nullopt;
 }
 
+std::optional<fs::path> FindInstalledData(std::string_view relative) {
+  std::error_code error;
+  const fs::path program = fs::read_symlink("/proc/self/exe", error);
+  if (error) return std::nullopt;
+  for (const char* up : {"..", "../.."}) {
+    const fs::path candidate = (program.parent_path() / up / "share" / "slamsweep" / relative).lexically_normal();
+    if (fs::exists(candidate, error)) return candidate;
+  }
+  return std::nullopt;
+}
+
 std::string DescribeLibexecSearch() {
   std::string text = "looked in ";
   const std::vector<fs::path> dirs = LibexecSearchDirs();

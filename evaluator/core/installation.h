@@ -21,6 +21,12 @@ std::vector<std::filesystem::path> LibexecSearchDirs();
 /// The first existing `name` in LibexecSearchDirs(); std::nullopt when there is none.
 std::optional<std::filesystem::path> FindLibexecFile(std::string_view name);
 
+/// An installed slamsweep's data (dataset catalog, example sweeps, roster manifests, Cartographer's
+/// options): `relative` under PREFIX/share/slamsweep, found beside the running program (PREFIX/bin/slamsweep
+/// or a helper or roster driver in PREFIX/lib/slamsweep). std::nullopt in a build tree, whose programs
+/// use the source and build paths compiled into them.
+std::optional<std::filesystem::path> FindInstalledData(std::string_view relative);
+
 /// "looked in A, B and C (set SLAMSWEEP_LIBEXEC_DIR to choose the folder)": the end of the
 /// message that reports a missing helper or module.
 std::string DescribeLibexecSearch();

@@ -19,4 +19,12 @@ OccupancyGrid ClassifyCells(const OccupancyGrid& grid, const MapCompareOptions& 
 OccupancyGrid ResampleToResolution(const OccupancyGrid& grid, double resolution_m,
                                    const MapCompareOptions& options = {});
 
+/// The same lattice change keeping occupancy probabilities (grey levels), for the paper's map
+/// metrics, which read the grey image: a finer lattice copies the old cell under each new cell's
+/// centre (a 0.1 m map on 0.05 m cells is each cell repeated 2 x 2); a coarser one gives each new
+/// cell the highest probability among the known old cells whose centres fall inside it (unknown
+/// when none is known), so a one-cell wall survives as it does in ResampleToResolution. The same
+/// resolution (within 1e-9 relative) returns the grid unchanged. Throws InputError for resolution_m <= 0.
+OccupancyGrid ResampleKeepingProbabilities(const OccupancyGrid& grid, double resolution_m);
+
 }  // namespace slamsweep::evaluator

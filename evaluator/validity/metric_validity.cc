@@ -9,6 +9,8 @@
 #include <thread>
 #include <tuple>
 
+#include "evaluator/core/input_error.h"
+
 namespace slamsweep::evaluator {
 namespace {
 
@@ -242,6 +244,87 @@ nlohmann::json ToJson(const ValidityStudy& study) {
           {"runs_used", study.runs_used},
           {"runs_odometry_is_reference", study.runs_odometry_is_reference},
           {"correlations", std::move(correlations)}};
+}
+
+namespace {
+
+const nlohmann::json& Field(const nlohmann::json& object, const char* key, const std::string& where) {
+  if (!object.is_object() || !object.contains(key)) throw InputError(where + ": missing \"" + key + "\"");
+  return object.at(key);
+}
+
+template <typename T>
+T FieldAs(const nlohmann::json& object, const char* key, const std::string& where) {
+  try {
+    return Field(object, key, where).get<T>();
+  } catch (const nlohmann::json::exception&) {
+    throw InputError(where + "." + key + ": wrong type");
+  }
+}
+
+std::optional<double> OptionalField(const nlohmann::json& object, const char* key, const std::string& where) {
+  const nlohmann::json& value = Field(object, key, where);
+  if (value.is_null()) return std::nullopt;
+  if (!value.is_number()) throw InputError(where + "." + key + ": expected a number or null");
+  return value.get<double>();
+}
+
+}  // namespace
+
+ValidityStudy ValidityStudyFromJson(const nlohmann::json& json) {
+  ValidityStudy study;
+  const std::string where = "validity";
+  const nlohmann::json& method = Field(json, "method", where);
+  study.options.bootstrap.confidence = FieldAs<double>(method, "confidence", where + ".method");
+  study.options.bootstrap.resamples = FieldAs<std::size_t>(method, "resamples", where + ".method");
+  study.options.bootstrap.seed = FieldAs<std::uint64_t>(method, "seed", where + ".method");
+  study.options.min_runs = FieldAs<std::size_t>(method, "min_runs", where + ".method");
+  study.sequences = FieldAs<std::vector<std::string>>(json, "sequences", where);
+  study.runs_used = FieldAs<std::size_t>(json, "runs_used", where);
+  study.runs_odometry_is_reference = FieldAs<std::size_t>(json, "runs_odometry_is_reference", where);
+  const nlohmann::json& correlations = Field(json, "correlations", where);
+  if (!correlations.is_array()) throw InputError(where + ".correlations: expected an array");
+  for (std::size_t i = 0; i < correlations.size(); ++i) {
+    const nlohmann::json& entry = correlations[i];
+    const std::string at = where + ".correlations[" + std::to_string(i) + "]";
+    ValidityCorrelation c;
+    c.candidate = FieldAs<std::string>(entry, "candidate", at);
+    c.target = FieldAs<std::string>(entry, "target", at);
+    const nlohmann::json& sequence = Field(entry, "sequence", at);
+    c.sequence = sequence.is_null() ? std::string() : FieldAs<std::string>(entry, "sequence", at);
+    const std::string pooling = FieldAs<std::string>(entry, "pooling", at);
+    if (pooling == ValidityPoolingName(ValidityPooling::kAcrossNoise)) {
+      c.pooling = ValidityPooling::kAcrossNoise;
+    } else if (pooling == ValidityPoolingName(ValidityPooling::kWithinNoise)) {
+      c.pooling = ValidityPooling::kWithinNoise;
+    } else {
+      throw InputError(at + ".pooling: expected across_noise or within_noise, got \"" + pooling + "\"");
+    }
+    c.runs = FieldAs<std::size_t>(entry, "runs", at);
+    c.strata = FieldAs<std::size_t>(entry, "strata", at);
+    c.rho = OptionalField(entry, "spearman_rho", at);
+    const std::optional<double> low = OptionalField(entry, "ci_low", at), high = OptionalField(entry, "ci_high", at);
+    if (low && high) {
+      BootstrapInterval interval;
+      interval.low = *low;
+      interval.high = *high;
+      interval.resamples = study.options.bootstrap.resamples;
+      interval.defined = FieldAs<std::size_t>(entry, "resamples_defined", at);
+      c.interval = interval;
+    }
+    const std::string verdict = FieldAs<std::string>(entry, "verdict", at);
+    bool known = false;
+    for (ValidityVerdict v : {ValidityVerdict::kTooFewRuns, ValidityVerdict::kNoVariation, ValidityVerdict::kTracksError,
+                              ValidityVerdict::kOpposite, ValidityVerdict::kUnclear}) {
+      if (verdict == ValidityVerdictName(v)) {
+        c.verdict = v;
+        known = true;
+      }
+    }
+    if (!known) throw InputError(at + ".verdict: unknown verdict \"" + verdict + "\"");
+    study.correlations.push_back(std::move(c));
+  }
+  return study;
 }
 
 }  // namespace slamsweep::evaluator

@@ -132,4 +132,9 @@ ValidityStudy ComputeValidityStudy(std::vector<ValidityRun> runs, const Validity
 /// summary.json's "validity".
 nlohmann::json ToJson(const ValidityStudy& study);
 
+/// A study back from ToJson (summary.json's "validity"), as a sweep that names another sweep's
+/// study reads it: options, sequences, run counts and every correlation with its verdict. Throws
+/// InputError naming the field that is missing or of the wrong type.
+ValidityStudy ValidityStudyFromJson(const nlohmann::json& json);
+
 }  // namespace slamsweep::evaluator

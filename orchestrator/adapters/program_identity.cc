@@ -52,18 +52,6 @@ Seeding CommandSeeding(const AlgorithmSpec& algorithm) {
   return Seeding::kUnseeded;
 }
 
-/// The driver and the upstream's install manifest (which names the pinned commit).
-std::vector<fs::path> RosterProgramFiles(const RosterAlgorithm& algorithm) {
-  std::vector<fs::path> files = {RosterDriver(algorithm)};
-  const fs::path manifest = RosterManifestPath(algorithm);
-  if (!fs::is_regular_file(manifest)) {
-    throw ev::InputError("algorithm.adapter " + std::string(algorithm.name) + ": " + manifest.string() +
-                         " missing: install the upstream with scripts/install-slam.sh " + std::string(algorithm.upstream));
-  }
-  files.push_back(manifest);
-  return files;
-}
-
 }  // namespace
 
 std::vector<fs::path> ProgramFilesOf(const AlgorithmSpec& algorithm) {

@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -20,6 +21,8 @@ struct RosterAlgorithm {
   std::string_view title;     ///< what the report and `slamsweep algorithms` call it
   std::string_view license;   ///< the upstream's licence (the driver links it)
   Seeding seeding;            ///< whether the run's seed reaches a random generator
+  /// A file beside the driver that it reads as configuration ("" for none): part of the build identity.
+  std::string_view config_file = "";
 };
 
 /// GMapping, tinySLAM, vinySLAM, Hector SLAM and Cartographer, in the paper's order.
@@ -28,13 +31,20 @@ std::span<const RosterAlgorithm> Roster();
 /// The roster algorithm whose adapter name is `name`, or nullptr.
 const RosterAlgorithm* FindRosterAlgorithm(std::string_view name);
 
-/// Where the roster's upstream builds are: $SLAMSWEEP_SLAM_PREFIX, else the build's configured prefix.
+/// Where the roster's upstream manifests are (PREFIX/share/slamsweep/slam): $SLAMSWEEP_SLAM_PREFIX, else
+/// the installation the running program belongs to, else the build's configured prefix.
 std::filesystem::path RosterPrefix();
 
-/// The driver as the worker runs it: slamsweep-slam-<name> in the build's slam/bin folder
-/// ($SLAMSWEEP_SLAM_DRIVER_DIR overrides it), else in PATH. Throws InputError saying how to install
-/// it when it is in neither.
+/// The driver as the worker runs it: slamsweep-slam-<name> in $SLAMSWEEP_SLAM_DRIVER_DIR when set,
+/// else beside the helper programs (evaluator/core/installation.h: an installation's lib/slamsweep),
+/// else in the build's slam/bin folder; then in PATH. Throws InputError listing where it looked and
+/// how to install it when it is nowhere.
 std::filesystem::path RosterDriver(const RosterAlgorithm& algorithm);
+
+/// The files a run of the driver executes or reads as configuration: the driver, its config_file
+/// beside it, and the upstream's install manifest (which names the pinned commit). Throws InputError
+/// naming a missing one and how to install it.
+std::vector<std::filesystem::path> RosterProgramFiles(const RosterAlgorithm& algorithm);
 
 /// <prefix>/share/slamsweep/slam/<upstream>.json, written by install-slam.sh (upstream, commit,
 /// licence, tarball hash, build time).

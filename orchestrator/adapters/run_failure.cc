@@ -14,6 +14,8 @@ std::string_view FailureKindName(FailureKind kind) {
       return "missing_output";
     case FailureKind::kCorruptOutput:
       return "corrupt_output";
+    case FailureKind::kIncompleteTrajectory:
+      return "incomplete_trajectory";
     case FailureKind::kInputError:
       return "input_error";
     case FailureKind::kMemoryLimit:

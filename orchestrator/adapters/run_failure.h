@@ -13,14 +13,15 @@ enum class FailureKind {
   kExitCode,
   kMissingOutput,
   kCorruptOutput,
+  kIncompleteTrajectory,  ///< the trajectory spans too little of the reference's time (evaluation.min_coverage)
   kInputError,
   kMemoryLimit,
   kInterrupted,
   kInternal,
 };
 
-/// "timeout", "signal", "exit_code", "missing_output", "corrupt_output", "input_error",
-/// "memory_limit", "interrupted", "internal".
+/// "timeout", "signal", "exit_code", "missing_output", "corrupt_output", "incomplete_trajectory",
+/// "input_error", "memory_limit", "interrupted", "internal".
 std::string_view FailureKindName(FailureKind kind);
 
 /// A failure of one run that an adapter detects (an output missing or unreadable). The worker

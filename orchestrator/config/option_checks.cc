@@ -30,6 +30,9 @@ void ValidateEvaluationOptions(const EvaluationOptions& evaluation, const std::s
   if (!(evaluation.map_resolution_m > 0.0) || !std::isfinite(evaluation.map_resolution_m)) {
     throw InputError(Field(path, "map_resolution_m") + ": expected a finite cell size > 0 m");
   }
+  if (!(evaluation.min_coverage >= 0.0 && evaluation.min_coverage <= 1.0)) {
+    throw InputError(Field(path, "min_coverage") + ": expected a fraction of the reference's time span in [0, 1]");
+  }
 }
 
 std::optional<std::vector<double>> ParseSegmentLengths(const nlohmann::json& value, const std::string& path) {

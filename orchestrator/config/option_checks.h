@@ -36,6 +36,7 @@ void ReadEvaluationFields(Fields& fields, EvaluationOptions& evaluation) {
   evaluation.stages = fields.Unsigned("stages", evaluation.stages);
   evaluation.map_resolution_m = fields.Number("map_resolution_m", evaluation.map_resolution_m);
   evaluation.crop = fields.Bool("crop", evaluation.crop);
+  evaluation.min_coverage = fields.Number("min_coverage", evaluation.min_coverage);
 }
 
 /// Whether `value` is one of a fixed list of names, and the list for "expected ..." messages.

@@ -228,6 +228,15 @@ SweepConfig ParseSweepConfig(std::string_view yaml_text, const std::filesystem::
   config.evaluation = ParseEvaluation(file, fields.Get("evaluation"));
   config.thresholds = ParseThresholds(file, fields.Get("thresholds"));
   config.regression = ParseRegression(file, fields.Get("regression"));
+  if (const std::string study = fields.Text("validity_study", ""); !study.empty()) {
+    config.validity_study = Anchored(file, study);
+    RequireAllowedPath(context.policy, file, fields.Get("validity_study"), "validity_study", "validity study file",
+                       config.validity_study);
+    if (!std::filesystem::is_regular_file(config.validity_study)) {
+      FailExpected(file, fields.Get("validity_study"), "validity_study",
+                   "a summary.json of a sweep with reference data (" + config.validity_study.string() + " is not a file)");
+    }
+  }
 
   const YAML::Node algorithms = fields.Get("algorithms");
   if (!algorithms.IsDefined()) FailAt(file, root, "algorithms: missing (required: a list of algorithms)");

@@ -15,8 +15,14 @@
 //   workers: 2                       # default --jobs (0 = number of cores)
 //   failure_budget: 0                # stop starting new runs after this many failures; 0 = never stop
 //   evaluation: {align: se2, rpe_delta_m: 1.0, t_max_diff_s: 0.01, stages: 24, map_resolution_m: 0.05}
+//                                    # min_coverage: 0.95 (a run whose trajectory spans less of the reference's
+//                                    #   time span fails); map_resolution_m is also the cell size the paper's
+//                                    #   map metrics score every map on
 //                                    # rpe_segments_m: auto (default: 10-50 % of the reference path, rounded to 1 m,
 //                                    #   as KITTI/rpg) or a list such as [5, 10, 20]; [] = no segment RPE
+//   validity_study: ../out/validity/summary.json  # optional: the metric validity study of another sweep (its
+//                                    #   summary.json), which lets a ground-truth-free map metric be marked best on
+//                                    #   sequences without a reference when this sweep's own runs study none
 //   regression: {alpha: 0.05, min_effect: 0.2}   # `slamsweep history compare --config`: Mann-Whitney U
 //                                    #   significance level in (0, 1) and minimum |Cliff's delta| in [0, 1]
 //   thresholds:                      # JUnit failures
@@ -130,6 +136,9 @@ struct SweepConfig {
   EvaluationOptions evaluation;
   std::vector<Threshold> thresholds;
   RegressionConfig regression;
+  /// `validity_study:` (absolute; empty when not named): a summary.json whose "validity" study the
+  /// report consults for sequences without a reference (report/model/validity_support.h).
+  std::filesystem::path validity_study;
   std::vector<AlgorithmConfig> algorithms;
   std::vector<SequenceSpec> sequences;
   std::vector<NoiseSpec> noise;

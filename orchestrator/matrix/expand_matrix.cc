@@ -144,7 +144,9 @@ std::vector<RunSpec> ExpandMatrix(const SweepConfig& config) {
       spec.noise = noise;
       spec.iteration = iteration;
       spec.evaluation = config.evaluation;
-      spec.thresholds = config.thresholds;
+      for (const Threshold& threshold : config.thresholds) {
+        if (ThresholdApplies(threshold, sequence.entry)) spec.thresholds.push_back(threshold);
+      }
       if (excludable && std::any_of(config.exclude.begin(), config.exclude.end(),
                                     [&](const CellFilter& filter) { return Matches(filter, spec); })) {
         continue;

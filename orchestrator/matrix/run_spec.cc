@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string_view>
 #include <utility>
 
@@ -12,6 +13,7 @@
 #include "evaluator/sequence/scan_stamps.h"
 #include "evaluator/simulation/simulated_sequence.h"
 #include "orchestrator/config/option_checks.h"
+#include "orchestrator/matrix/run_id.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -181,7 +183,8 @@ json ToJson(const EvaluationOptions& evaluation) {
               {"t_max_diff_s", evaluation.t_max_diff_s},
               {"stages", evaluation.stages},
               {"map_resolution_m", evaluation.map_resolution_m},
-              {"crop", evaluation.crop}};
+              {"crop", evaluation.crop},
+              {"min_coverage", evaluation.min_coverage}};
 }
 
 EvaluationOptions EvaluationFromJson(const json& value, const std::string& path) {
@@ -254,6 +257,16 @@ json ToJson(const evaluator::CatalogEntry& entry) {
   // Only when set: the run ids of entries without one (every run before it existed) stay the same.
   if (!entry.reference_map_path.empty()) out["reference_map"] = entry.reference_map_path;
   return out;
+}
+
+bool ThresholdApplies(const Threshold& threshold, const evaluator::CatalogEntry& entry) {
+  const bool has_trajectory = entry.ground_truth == evaluator::GroundTruthKind::kCorrectedPoses ||
+                              entry.ground_truth == evaluator::GroundTruthKind::kExact;
+  const std::string& metric = threshold.metric;
+  if (metric.starts_with("ape_") || metric.starts_with("rpe_") || metric.starts_with("segment_")) return has_trajectory;
+  if (metric.starts_with("relations_")) return !entry.relations_path.empty();
+  if (metric.starts_with("map_")) return has_trajectory || !entry.reference_map_path.empty();
+  return true;
 }
 
 bool SameEvaluation(const json& recorded_evaluation, const EvaluationOptions& current) {
@@ -344,6 +357,15 @@ std::string AlgorithmLabel(const std::string& algorithm, const std::string& para
 ComparisonGroup ComparisonGroupOf(const RunSpec& spec) {
   return ComparisonGroup{spec.sequence.entry.name, spec.algorithm.name, ParametersText(spec.algorithm.parameters),
                          spec.noise.name};
+}
+
+std::string BuildSignature(const BuildIdentity& build) {
+  std::vector<std::string> digests;
+  for (const auto& [path, digest] : build.program_files) digests.push_back(digest);
+  std::sort(digests.begin(), digests.end());
+  std::string text = build.slamsweep_revision;
+  for (const std::string& digest : digests) text += "\n" + digest;
+  return fmt::format("b{:012x}", Fnv1a64(text) >> 16);
 }
 
 bool PlannedOdometryIsReference(const evaluator::CatalogEntry& entry, const NoiseSpec& noise) {
@@ -484,6 +506,31 @@ json RunIdentity(const RunSpec& spec) {
               {"noise", ToJson(spec.noise)},
               {"iteration", spec.iteration},
               {"seed", spec.seed}};
+}
+
+std::string BuildSignatureOfRunJson(const json& run_json) {
+  if (!run_json.is_object() || !run_json.contains("build") || !run_json.at("build").is_object()) return "";
+  try {
+    return BuildSignature(BuildFromJson(run_json.at("build"), "build"));
+  } catch (const InputError&) {
+    return "";
+  }
+}
+
+std::string BuildDescriptionOfRunJson(const json& run_json) {
+  if (!run_json.is_object() || !run_json.contains("build") || !run_json.at("build").is_object()) return "not recorded";
+  try {
+    const BuildIdentity build = BuildFromJson(run_json.at("build"), "build");
+    std::string text = "slamsweep " + build.slamsweep_revision;
+    std::string files;
+    for (const auto& [path, digest] : build.program_files) {
+      files += fmt::format("{}{} {}", files.empty() ? "" : ", ", std::filesystem::path(path).filename().string(),
+                           digest.substr(0, 12));
+    }
+    return files.empty() ? text : text + "; " + files;
+  } catch (const InputError&) {
+    return "unreadable";
+  }
 }
 
 }  // namespace slamsweep::orchestrator

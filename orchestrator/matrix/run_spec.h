@@ -82,6 +82,9 @@ struct EvaluationOptions {
   /// The canvas rule of the map metrics (spec/metrics.md): crop to the known cells first. false gives
   /// the raw-grid profile, which depends on each program's canvas size.
   bool crop = true;
+  /// A run whose trajectory spans less than this fraction of the reference's time span fails
+  /// (evaluator/trajectory/coverage.h): its errors would be measured on the part it chose to keep.
+  double min_coverage = 0.95;
   /// Segment lengths of the segment RPE (evaluator SegmentRpe), ascending. Absent ("auto"): 10, 20,
   /// 30, 40 and 50 % of the sequence's whole reference path rounded to 1 m, the same for every run
   /// of a sequence, so the runs of a group are scored on the same segments. Empty: no segment RPE.
@@ -89,13 +92,19 @@ struct EvaluationOptions {
   bool operator==(const EvaluationOptions&) const = default;
 };
 
-/// A metric limit: a run whose metric statistic exceeds `max` (or falls below `min`) fails in JUnit.
+/// A metric limit: a run whose metric statistic exceeds `max` (or falls below `min`) fails in JUnit,
+/// and so does a run that lacks the metric.
 struct Threshold {
   std::string metric;
   std::string statistic = "rmse";
   std::optional<double> max;
   std::optional<double> min;
 };
+
+/// Whether a sweep's threshold is one the runs of `entry` can be held to: a metric that needs a
+/// reference trajectory (ape_, rpe_, segment_), relations (relations_) or a reference map (map_)
+/// applies only to sequences that have it; the ground-truth-free metrics apply everywhere.
+bool ThresholdApplies(const Threshold& threshold, const evaluator::CatalogEntry& entry);
 
 /// What a run's result depends on besides its inputs: the slamsweep that computed it and the
 /// program files it executed or read as configuration. Not part of the run id (the id names the
@@ -107,6 +116,15 @@ struct BuildIdentity {
   std::map<std::string, std::string> program_files;
   bool operator==(const BuildIdentity&) const = default;
 };
+
+/// A short name of a build identity ("b" and 12 hex digits of a hash of the slamsweep revision and
+/// the program files' digests, not their paths): equal for the same binaries wherever they were
+/// unpacked, different for a rebuilt program. Results of different signatures are never pooled.
+std::string BuildSignature(const BuildIdentity& build);
+/// BuildSignature of run.json's "build" block; "" when the run.json has none or it is unreadable.
+std::string BuildSignatureOfRunJson(const nlohmann::json& run_json);
+/// For notes: "slamsweep <revision>; <file name> <first 12 digits of its digest>, ...".
+std::string BuildDescriptionOfRunJson(const nlohmann::json& run_json);
 
 /// Whether a run can be reproduced from its seed.
 enum class Seeding {

@@ -1,5 +1,6 @@
 #include "orchestrator/service/submission.h"
 
+#include <optional>
 #include <regex>
 
 #include <fmt/format.h>
@@ -10,6 +11,7 @@
 #include "orchestrator/matrix/expand_matrix.h"
 #include "orchestrator/service/api_json.h"
 #include "orchestrator/service/http_api.h"
+#include "orchestrator/store/named_study.h"
 
 // Last: see http_api.h.
 #include <httplib.h>
@@ -94,8 +96,10 @@ SubmissionAnswer Submit(ApiContext& context, const httplib::Request& request) {
   limits.policy.allow_commands = options.allow_commands;
   limits.max_runs = options.limits.max_runs_per_sweep;
   PlannedSweep planned;
+  std::optional<NamedStudy> named_study;
   try {
     planned = context.planner(request.body, anchored, limits);
+    if (!planned.validity_study.empty()) named_study = ReadNamedStudy(planned.validity_study);
   } catch (const PolicyError& error) {
     return Error(403, ReplaceAll(error.what(), anchored.string(), name));
   } catch (const MatrixTooLargeError& error) {
@@ -123,6 +127,12 @@ SubmissionAnswer Submit(ApiContext& context, const httplib::Request& request) {
   sweep.submitter = Submitter(request);
   sweep.priority = priority;
   sweep = context.scheduler.Submit(std::move(sweep), planned.runs);
+  if (named_study) {
+    // The report of the sweep reads the study it names from its result directory, as after `slamsweep run`.
+    std::error_code ignored;
+    fs::create_directories(sweep.result_dir, ignored);
+    WriteNamedStudy(*named_study, sweep.result_dir);
+  }
   nlohmann::json run_ids = nlohmann::json::array();
   for (const RunSpec& run : planned.runs) run_ids.push_back(run.run_id);
   const std::string location = "/api/sweeps/" + std::to_string(sweep.id);

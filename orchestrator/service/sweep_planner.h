@@ -19,6 +19,8 @@ struct PlannedSweep {
   std::vector<RunSpec> runs;
   /// Digest of the file's text, recorded with the sweep (as `slamsweep run` records its config's).
   std::string config_hash;
+  /// The validity study the file names (validity_study:), empty when none: copied into the result directory.
+  std::filesystem::path validity_study;
 };
 
 /// What a submitted sweep may ask for.

@@ -59,7 +59,8 @@ std::string GroupsCsv(const std::vector<GroupSummary>& groups) {
     }
   }
   std::vector<std::string> header = {"sequence", "algorithm",  "parameters",           "noise",  "n_runs",
-                                     "n_ok",     "n_failed",   "odometry_is_reference", "seeding", "flags"};
+                                     "n_ok",     "n_failed",   "odometry_is_reference", "seeding", "flags",
+                                     "build"};
   for (const auto& [metric, statistic] : headline) {
     for (const char* part : {"n", "mean", "std", "min", "max"}) {
       header.push_back(fmt::format("{}.{}.{}", metric, statistic, part));
@@ -76,7 +77,9 @@ std::string GroupsCsv(const std::vector<GroupSummary>& groups) {
                                        std::to_string(group.failed),
                                        group.odometry_is_reference ? "true" : "false",
                                        group.seeding,
-                                       RunFlagsText(group.flags)};
+                                       RunFlagsText(group.flags),
+                                       // A build apart from the group's others is named; one build alone is not.
+                                       group.build_split ? group.build : ""};
     for (const auto& [metric, statistic] : headline) {
       const MetricAggregate* found = nullptr;
       for (const MetricAggregate& aggregate : group.metrics) {

@@ -11,7 +11,9 @@
 namespace slamsweep::orchestrator {
 
 /// summary.csv (RFC 4180): one row per comparison group: sequence, algorithm, parameters ("k=v;..."),
-/// noise, n_runs, n_ok, n_failed, odometry_is_reference, seeding, then for every headline metric
+/// noise, n_runs, n_ok, n_failed, odometry_is_reference, seeding, flags, build (the group's
+/// BuildSignature when runs of its comparison group were computed by several builds, else empty),
+/// then for every headline metric
 /// (IsHeadlineStatistic) that any group has, "<metric>.<statistic>.n|mean|std|min|max" over the
 /// group's ok runs (empty when the group has none; std empty for n < 2). Numbers are the shortest
 /// text that reads back to the same double.

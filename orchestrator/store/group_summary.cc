@@ -4,6 +4,7 @@
 #include <iterator>
 #include <map>
 #include <optional>
+#include <set>
 #include <utility>
 
 namespace slamsweep::orchestrator {
@@ -37,12 +38,17 @@ std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs) {
     bool has_segments = false;
   };
   // Sequence and noise first: the rows that may be compared with each other end up next to each other.
-  std::map<std::tuple<std::string, std::string, std::string, std::string>, Collected> groups;
+  std::map<std::tuple<std::string, std::string, std::string, std::string, std::string>, Collected> groups;
+  std::map<std::tuple<std::string, std::string, std::string, std::string>, std::set<std::string>> builds_of;
   for (const StoredRun& run : runs) {
-    Collected& collected = groups[{run.sequence, run.noise, run.algorithm, run.parameters}];
+    const std::string build = BuildSignatureOfRunJson(run.spec);
+    builds_of[{run.sequence, run.noise, run.algorithm, run.parameters}].insert(build);
+    Collected& collected = groups[{run.sequence, run.noise, run.algorithm, run.parameters, build}];
     GroupSummary& summary = collected.summary;
     if (summary.runs == 0) {
       summary.group = ComparisonGroup{run.sequence, run.algorithm, run.parameters, run.noise};
+      summary.build = build;
+      summary.build_description = BuildDescriptionOfRunJson(run.spec);
       summary.seeding = run.seeding;
     } else if (summary.seeding != run.seeding) {
       summary.seeding = "mixed";
@@ -68,6 +74,8 @@ std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs) {
   }
   std::vector<GroupSummary> summaries;
   for (auto& [key, collected] : groups) {
+    const auto& [sequence, noise, algorithm, parameters, build] = key;
+    collected.summary.build_split = builds_of.at({sequence, noise, algorithm, parameters}).size() > 1;
     for (const auto& [name, unit_values] : collected.values) {
       collected.summary.metrics.push_back(
           MetricAggregate{name.first, name.second, unit_values.first, evaluator::ComputeMeanStd(unit_values.second)});
@@ -92,6 +100,9 @@ nlohmann::json ToJson(const GroupSummary& group) {
           {"algorithm", group.group.algorithm},
           {"parameters", group.group.parameters},
           {"noise", group.group.noise},
+          {"build", group.build},
+          {"build_split", group.build_split},
+          {"build_description", group.build_description},
           {"n_runs", group.runs},
           {"n_ok", group.ok},
           {"n_failed", group.failed},

@@ -20,10 +20,18 @@ struct MetricAggregate {
   evaluator::MeanStd summary;
 };
 
-/// Every run of one comparison group (same sequence, algorithm, parameters, noise), summarised.
-/// Nothing is ever pooled across groups: that is what makes two rows comparable.
+/// Every run of one comparison group (same sequence, algorithm, parameters, noise) computed by one
+/// build (BuildSignature), summarised. Nothing is ever pooled across groups: that is what makes two
+/// rows comparable. Runs of one comparison group but different builds (a merge of shards built
+/// apart, a --reuse-stale rerun) are separate groups, each marked `build_split`.
 struct GroupSummary {
   ComparisonGroup group;
+  /// BuildSignature of the runs' build identity ("" when run.json has none).
+  std::string build;
+  /// Another group holds runs of the same comparison group computed by another build.
+  bool build_split = false;
+  /// BuildDescriptionOfRunJson of the group's first run, for readers of a split.
+  std::string build_description;
   std::size_t runs = 0;
   std::size_t ok = 0;
   std::size_t failed = 0;
@@ -42,10 +50,10 @@ struct GroupSummary {
   bool segment_lengths_consistent = true;
 };
 
-/// The groups of `runs`, sorted by sequence, noise, algorithm, parameters.
+/// The groups of `runs`, sorted by sequence, noise, algorithm, parameters, build.
 std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs);
 
-/// {"sequence", "algorithm", "parameters", "noise", "n_runs", "n_ok", "n_failed", "odometry_is_reference",
+/// {"sequence", "algorithm", "parameters", "noise", "build", "build_split", "build_description", "n_runs", "n_ok", "n_failed", "odometry_is_reference",
 ///  "flags", "seeding", "metrics": {metric: {statistic: {"n", "mean", "std", "min", "max", "unit"}}},
 ///  "rpe_segments_m": [...], "rpe_segments_consistent": bool}
 nlohmann::json ToJson(const GroupSummary& group);

@@ -12,10 +12,9 @@ namespace slamsweep::orchestrator {
 /// The thresholds of run.json ("thresholds": [{"metric", "statistic" (default "rmse"), "max", "min"}])
 /// checked against a run's metrics.
 struct ThresholdCheck {
-  /// "ape_trans.rmse = 0.7 > 0.5", one per limit the run is past (a null value is past every limit).
+  /// "ape_trans.rmse = 0.7 > 0.5", one per limit the run is past. A null value, a metric the run
+  /// lacks and a malformed threshold are past it too: a limit that cannot be checked is not met.
   std::vector<std::string> exceeded;
-  /// Thresholds that could not be checked: the run lacks the metric, or the threshold is malformed.
-  std::vector<std::string> unchecked;
 };
 
 ThresholdCheck CheckThresholds(const StoredRun& run);
@@ -28,7 +27,7 @@ std::string XmlEscape(std::string_view text);
 /// junit.xml: one <testsuite> per sequence, one <testcase classname="<sequence>.<noise>"
 /// name="<algorithm> [<parameters>] i<iteration> (<run_id>)" time="<wall_s>"> per run (no brackets without
 /// parameters); a failed run has <failure type="<failure_kind>" message="<reason>">, a run past a
-/// threshold <failure type="threshold">; unchecked thresholds are listed in <system-out>.
+/// threshold (or lacking a thresholded metric) <failure type="threshold">.
 std::string RenderJUnit(const std::vector<StoredRun>& runs);
 
 /// Writes RenderJUnit(runs) to `file` atomically.

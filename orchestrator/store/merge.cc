@@ -2,12 +2,15 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <system_error>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "evaluator/core/input_error.h"
 #include "orchestrator/phase_times/phase_times.h"
+#include "orchestrator/store/group_summary.h"
 #include "orchestrator/store/result_files.h"
 #include "orchestrator/store/results_store.h"
 
@@ -97,7 +100,22 @@ class Merger {
 
   void WriteReports() {
     const PhaseTimer phase("summary");
-    WriteResultFiles(store_.Runs(), out_);
+    const std::vector<StoredRun> runs = store_.Runs();
+    // Shards built apart, or a rerun under a new build: their runs must never share a mean.
+    std::set<std::string> split;
+    for (const GroupSummary& group : SummarizeGroups(runs)) {
+      if (group.build_split) {
+        split.insert(fmt::format("{} on {} ({})", AlgorithmLabel(group.group.algorithm, group.group.parameters),
+                                 group.group.sequence, group.group.noise));
+      }
+    }
+    if (!split.empty()) {
+      report_.warnings.push_back(fmt::format(
+          "{} comparison group(s) hold runs computed by different builds (slamsweep revision or program digests): "
+          "kept apart as separate groups marked build_split: {}",
+          split.size(), fmt::join(split, "; ")));
+    }
+    WriteResultFiles(runs, out_);
   }
 
  private:

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "orchestrator/store/named_study.h"
 #include "orchestrator/phase_times/phase_times.h"
 #include "orchestrator/store/results_store.h"
 #include "orchestrator/sweep/output_lock.h"
@@ -151,6 +152,7 @@ SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& set
   std::optional<PhaseTimer> phase(std::in_place, "to_do");
   OutputLock lock(settings.output_dir);
   ResultsStore store = ResultsStore::Open(settings.output_dir / "results.sqlite");
+  if (!settings.validity_study.empty()) WriteNamedStudy(ReadNamedStudy(settings.validity_study), settings.output_dir);
 
   SweepOutcome outcome;
   outcome.total = runs.size();

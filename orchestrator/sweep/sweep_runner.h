@@ -25,6 +25,9 @@ struct SweepSettings {
   /// Reuse finished runs whose build identity (slamsweep revision, program digests) differs from
   /// the run's now (`--reuse-stale`); by default they are run again.
   bool reuse_stale = false;
+  /// The validity study the sweep file names (validity_study:), copied into the output directory
+  /// for the report (orchestrator/store/named_study.h); empty when none.
+  std::filesystem::path validity_study;
   /// Recorded with the sweep, to reproduce it.
   std::string config_path;
   std::string config_sha;

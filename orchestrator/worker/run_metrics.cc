@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/adapters/run_failure.h"
 #include "evaluator/map/paper_metrics.h"
 #include "evaluator/map_compare/map_compare.h"
 #include "evaluator/map_compare/map_resample.h"
@@ -112,6 +113,16 @@ std::string SegmentRpeMetricName(std::string_view kind, double length_m) {
   return fmt::format("segment_{}_{}m", kind, length);
 }
 
+void RequireCoverage(const EvaluationOptions& evaluation, const RunMetrics& metrics) {
+  if (!metrics.coverage || metrics.coverage->fraction >= evaluation.min_coverage) return;
+  const ev::TrajectoryCoverage& c = *metrics.coverage;
+  throw RunFailure(FailureKind::kIncompleteTrajectory,
+                   fmt::format("the trajectory covers {:.1f} % of the reference's time span ({:.1f} to {:.1f} s of "
+                               "{:.1f} to {:.1f} s), below evaluation.min_coverage {:.0f} %",
+                               100.0 * c.fraction, c.estimate_start_s, c.estimate_end_s, c.reference_start_s,
+                               c.reference_end_s, 100.0 * evaluation.min_coverage));
+}
+
 nlohmann::json ToJson(const FlatMetric& metric) {
   return {{"metric", metric.metric}, {"statistic", metric.statistic}, {"value", metric.value}, {"unit", metric.unit}};
 }
@@ -126,6 +137,11 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
   // The estimate-to-reference transform of the ATE: the map-versus-reference scores place the map with it.
   std::optional<ev::Alignment> ape_alignment;
   if (inputs.estimate && inputs.reference) {
+    Attempt(out, "coverage", [&] {
+      out.coverage = ev::ComputeCoverage(*inputs.reference, *inputs.estimate);
+      out.details["coverage"] = out.coverage->ToJson();
+      out.details["coverage"]["min_coverage"] = evaluation.min_coverage;
+    });
     for (const auto& [name, relation] : {std::pair<const char*, ev::PoseRelation>{"ape_trans", ev::PoseRelation::kTranslation},
                                          {"ape_rot", ev::PoseRelation::kRotationDeg}}) {
       Attempt(out, name, [&, name = std::string(name), relation = relation] {
@@ -168,13 +184,25 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
     Attempt(out, "paper_map", [&] {
       ev::PaperMetricsOptions paper_options;
       paper_options.canvas.crop = evaluation.crop;
-      const ev::PaperMetrics paper = ev::ComputePaperMetrics(*inputs.map, paper_options);
+      // One scale for every program: the metrics count cells (blur, corner spacing, minimum areas),
+      // so each map is scored on evaluation.map_resolution_m cells, grey levels kept.
+      const ev::PaperMetrics paper = ev::ComputePaperMetrics(
+          ev::ResampleKeepingProbabilities(*inputs.map, evaluation.map_resolution_m), paper_options);
       out.metrics.push_back({"occupied_to_free_unknown", "value", paper.occupied.occupied_to_free_unknown, "ratio"});
       out.metrics.push_back({"occupied_to_all", "value", paper.occupied.occupied_to_all, "ratio"});
       out.metrics.push_back({"unknown_to_all", "value", paper.occupied.unknown_to_all, "ratio"});
       out.metrics.push_back({"corners", "value", static_cast<double>(paper.corners.corners), "count"});
       out.metrics.push_back({"enclosed_areas", "value", static_cast<double>(paper.enclosed.enclosed_areas), "count"});
       out.details["paper_map"] = paper.ToJson();
+      out.details["paper_map"]["resolution_m"] = evaluation.map_resolution_m;
+      out.details["paper_map"]["map_resolution_m"] = inputs.map->resolution_m;
+      if (inputs.map->resolution_m > evaluation.map_resolution_m * (1.0 + 1e-9)) {
+        out.warnings.push_back(fmt::format(
+            "paper_map: the map's {} m cells are scored on {} m cells (evaluation.map_resolution_m): each is repeated, "
+            "so its staircase edges count as corners; score every map of the sweep at the coarsest cell size to "
+            "compare maps of different cell sizes",
+            inputs.map->resolution_m, evaluation.map_resolution_m));
+      }
     });
   }
   if (inputs.map && inputs.reference_map) {

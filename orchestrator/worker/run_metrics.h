@@ -11,6 +11,7 @@
 #include "evaluator/core/relation.h"
 #include "evaluator/core/trajectory.h"
 #include "evaluator/formats/trajectory/segment_errors_csv.h"
+#include "evaluator/trajectory/coverage.h"
 #include "orchestrator/matrix/run_spec.h"
 
 namespace slamsweep::orchestrator {
@@ -33,6 +34,8 @@ struct RunMetrics {
   /// Every segment of the segment RPE, for the run folder's rpe_segments.csv; absent when it was
   /// not computed.
   std::optional<std::vector<evaluator::SegmentErrorRecord>> segment_errors;
+  /// How much of the reference's time span the estimate covers; absent without both.
+  std::optional<evaluator::TrajectoryCoverage> coverage;
 };
 
 /// What the metrics are computed from: the run's estimate and the truth it is compared with.
@@ -54,7 +57,9 @@ struct MetricInputs {
 /// rigid alignment does not change relative errors), the segment RPE at evaluation.rpe_segments_m
 /// (SegmentRpeMetricName; its lengths, and how they were chosen, in details["segment_rpe"]),
 /// relations_trans/rot (Kuemmerle et al.), and
-/// always the paper map metrics. A metric that cannot be computed becomes a warning, never an
+/// always the paper map metrics, on the map resampled to evaluation.map_resolution_m
+/// (ResampleKeepingProbabilities; details["paper_map"] records resolution_m, the scale scored, and
+/// map_resolution_m, the program's own). A metric that cannot be computed becomes a warning, never an
 /// exception: the others still count. An invalid evaluation option (unknown alignment) is an
 /// InputError naming it.
 RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricInputs& inputs);
@@ -63,6 +68,10 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
 /// "segment_drift_10m" (translation error in % of the length), "segment_rot_10m" (deg/m); a
 /// fractional length is written with p for the point ("segment_drift_2p5m"). `kind` is trans, drift or rot.
 std::string SegmentRpeMetricName(std::string_view kind, double length_m);
+
+/// Throws RunFailure (incomplete_trajectory) when the trajectory spans less of the reference's time
+/// span than evaluation.min_coverage: its errors would be measured on the part it chose to keep.
+void RequireCoverage(const EvaluationOptions& evaluation, const RunMetrics& metrics);
 
 /// {"metric", "statistic", "value", "unit"}.
 nlohmann::json ToJson(const FlatMetric& metric);

@@ -206,6 +206,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   }
   phase.emplace("metrics");
   result.metrics = ComputeRunMetrics(spec.evaluation, metric_inputs);
+  RequireCoverage(spec.evaluation, result.metrics);
   if (result.metrics.segment_errors) {
     // The report's boxplots need every segment; the metrics themselves are already in result.json.
     try {

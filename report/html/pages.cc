@@ -63,6 +63,22 @@ Html Cell(const MetricCell& cell) {
 /// What a reader must know before comparing the row's numbers with the others.
 Html RowNotes(const AlgorithmRow& row) {
   Html notes;
+  if (row.kind == RowKind::kOdometryBaseline) {
+    notes += T("<br>") + Element("span", "baseline-note",
+                                 E("baseline: the odometry as the robot recorded it (with the table's noise), the line "
+                                   "a SLAM program must beat; never ranked"));
+  }
+  if (row.build_split) {
+    notes += T("<br>") + Element("span", "warning",
+                                 E("build " + row.build + " (" + row.build_description +
+                                   "): runs of this algorithm by other builds are other rows, never pooled with these"));
+  }
+  if (row.kind == RowKind::kContestant && row.counts.ok < row.counts.total) {
+    notes += T("<br>") + Element("span", "warning",
+                                 E("not ranked: " + std::to_string(row.counts.total - row.counts.ok) + " of " +
+                                   std::to_string(row.counts.total) + " runs did not succeed, so its mean rests on the "
+                                   "draws it survived"));
+  }
   for (const orchestrator::RunFlag flag : row.flags) {
     notes += T("<br>") + Element("span", "warning", E(std::string(orchestrator::RunFlagLabel(flag)) + ": " +
                                                       std::string(orchestrator::RunFlagMeaning(flag))));
@@ -73,6 +89,20 @@ Html RowNotes(const AlgorithmRow& row) {
                                    "and a rerun gives other numbers"));
   }
   return notes;
+}
+
+/// A baseline or reference line is drawn apart from the contestants.
+std::string RowClass(const AlgorithmRow& row) {
+  switch (row.kind) {
+    case RowKind::kContestant:
+      return "";
+    case RowKind::kOdometryBaseline:
+      return "baseline";
+    case RowKind::kReferenceFloor:
+    case RowKind::kPublished:
+      return "reference-line";
+  }
+  return "";
 }
 
 Html MetricTableHtml(const SiteData& site, const SequenceModel& sequence, const std::vector<MetricColumn>& columns,
@@ -88,10 +118,15 @@ Html MetricTableHtml(const SiteData& site, const SequenceModel& sequence, const 
     Html line = Element("th", "", name) +
                 Element("td", row.counts.failed + row.counts.unfinished > 0 ? "failures" : "", E(CountsText(row.counts)));
     for (const MetricCell& cell : row.*cells) line += Cell(cell);
-    rows += Element("tr", "", line) + T("\n");
+    rows += Element("tr", RowClass(row), line) + T("\n");
+  }
+  Html notes;
+  for (const MetricColumn& column : columns) {
+    if (!column.best_withheld.empty()) notes += Element("li", "", E(column.best_withheld));
   }
   return T("<table>\n") + Element("caption", "", E(caption)) + T("\n<thead>") + Element("tr", "", header) +
-         T("</thead>\n<tbody>\n") + rows + T("</tbody>\n</table>\n");
+         T("</thead>\n<tbody>\n") + rows + T("</tbody>\n</table>\n") +
+         (notes.str().empty() ? Html() : Element("ul", "table-notes", notes) + T("\n"));
 }
 
 Html SequenceTables(const SiteData& site, const SequenceModel& sequence, std::string_view root) {
@@ -413,6 +448,10 @@ caption { text-align: left; font-style: italic; padding: 0.2em 0; }
 th, td { border: 1px solid #bbb; padding: 0.25em 0.6em; text-align: left; vertical-align: top; }
 thead th { background: #eee; }
 td.best { background: #d8f0d8; font-weight: bold; }
+tr.baseline th, tr.baseline td, tr.reference-line th, tr.reference-line td { background: #f3f3f3; color: #444;
+  font-style: italic; border-top: 2px dashed #888; border-bottom: 2px dashed #888; }
+.baseline-note { color: #444; font-size: 0.85em; font-weight: normal; }
+ul.table-notes { color: #8a4b00; font-size: 0.9em; margin-top: 0; }
 .marker { color: #064; white-space: nowrap; }
 .n, .spec { color: #555; font-size: 0.85em; font-weight: normal; }
 .failures, .status-failed, .status-unreadable, .status-unfinished { color: #a00; }

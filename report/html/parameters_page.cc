@@ -46,7 +46,7 @@ Html BestTable(const SequenceModel& sequence, const ParameterSweep& sweep, const
     Html line = Element("th", "", E(metric.title + (metric.spec.empty() ? "" : ", " + metric.spec)));
     if (!best.row) {
       line += Element("td", "missing", E("no value")) + Element("td", "", E("")) + Element("td", "", E("")) +
-              Element("td", "", E(""));
+              Element("td", "", E(metric.best_withheld.empty() ? "" : metric.best_withheld));
       rows += Element("tr", "", line) + T("\n");
       continue;
     }
@@ -69,7 +69,8 @@ Html BestTable(const SequenceModel& sequence, const ParameterSweep& sweep, const
   return T("<table>\n") +
          Element("caption", "",
                  E("Best value per metric: the lowest mean (every metric here is lower is better) among these rows "
-                   "only; rows whose odometry is the reference are never best. \"within noise\": the next best mean is "
+                   "only; rows with a run mark (odometry = reference, stale, unisolated) or a failed run are never best, nor "
+                   "are ground-truth-free metrics the validity study does not support. \"within noise\": the next best mean is "
                    "within one standard deviation of it, or a value has a single run; \"tie\": equal means.")) +
          T("\n<thead>") + Element("tr", "", header) + T("</thead>\n<tbody>\n") + rows + T("</tbody>\n</table>\n");
 }

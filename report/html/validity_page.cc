@@ -161,7 +161,7 @@ ValiditySite PlanValidity(const SweepModel& model, const AlgorithmPalette& palet
                           std::vector<ScatterPlotJob>& jobs) {
   ValiditySite site;
   const std::vector<ev::ValidityRun> runs = ToValidityRuns(model.runs);
-  site.study = ev::ComputeValidityStudy(runs);
+  site.study = model.validity;  // computed once, with the model whose best marks rest on it
   if (site.study.empty()) return site;
   std::error_code error;
   fs::create_directories(out_dir / "plots" / "validity", error);

@@ -20,6 +20,7 @@
 #include "report/html/validity_page.h"
 #include "report/html/view_pages.h"
 #include "report/model/load_runs.h"
+#include "report/model/named_study.h"
 #include "report/model/sweep_model.h"
 
 namespace slamsweep::report {
@@ -391,7 +392,7 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   std::optional<orchestrator::PhaseTimer> phase(std::in_place, "load");
   std::vector<RunRecord> records = LoadRuns(result_dir);
   phase.emplace("model");
-  const SweepModel model = BuildSweepModel(std::move(records));
+  const SweepModel model = BuildSweepModel(std::move(records), LoadSweepModelOptions(result_dir));
   const ReportLayout layout(model);
   PrepareOutputDir(out_dir);
 

@@ -154,7 +154,7 @@ BestValue FindBest(const SequenceModel& sequence, const std::vector<std::size_t>
   for (const std::size_t r : rows) {
     const AlgorithmRow& row = sequence.rows[r];
     const MetricCell& cell = CellOf(row, column);
-    if (cell.summary.n > 0 && IsBestCandidate(row)) ranked.emplace_back(cell.summary.mean, r);
+    if (IsBestCandidate(row, ColumnOf(sequence, column), cell)) ranked.emplace_back(cell.summary.mean, r);
   }
   std::stable_sort(ranked.begin(), ranked.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });

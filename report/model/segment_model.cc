@@ -162,18 +162,19 @@ std::optional<SegmentTable> BuildSegmentTable(const SweepModel& model, const Seq
     table.rows.push_back(std::move(row));
   }
 
-  // Best: per length, the lowest mean drift among rows that are SLAM results (not odometry = reference).
+  // Best: per length, the lowest mean drift among the rows IsBestCandidate admits, each with a drift
+  // from every one of its runs (a drift is a real error: no validity study is needed).
+  const auto candidate = [&](const SegmentRow& row, std::size_t k) {
+    const AlgorithmRow& algorithm_row = sequence.rows[row.row];
+    const std::size_t n = row.cells[k].mean_drift_pct.n;
+    return IsBestCandidate(algorithm_row) && n > 0 && n == algorithm_row.counts.total;
+  };
   for (std::size_t k = 0; k < table.lengths_m.size(); ++k) {
     double best = std::numeric_limits<double>::infinity();
     for (const SegmentRow& row : table.rows) {
-      if (row.cells[k].mean_drift_pct.n > 0 && IsBestCandidate(sequence.rows[row.row])) {
-        best = std::min(best, row.cells[k].mean_drift_pct.mean);
-      }
+      if (candidate(row, k)) best = std::min(best, row.cells[k].mean_drift_pct.mean);
     }
-    for (SegmentRow& row : table.rows) {
-      SegmentCell& cell = row.cells[k];
-      cell.best = cell.mean_drift_pct.n > 0 && IsBestCandidate(sequence.rows[row.row]) && cell.mean_drift_pct.mean == best;
-    }
+    for (SegmentRow& row : table.rows) row.cells[k].best = candidate(row, k) && row.cells[k].mean_drift_pct.mean == best;
   }
   return table;
 }

@@ -4,6 +4,12 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <tuple>
+
+#include "orchestrator/matrix/run_spec.h"
+
+#include "report/model/validity_runs.h"
+#include "report/model/validity_support.h"
 
 namespace slamsweep::report {
 
@@ -67,7 +73,7 @@ std::vector<MetricColumn> BuildColumns(const std::vector<RunRecord>& runs, const
       if (std::find(specs.begin(), specs.end(), spec) == specs.end()) specs.push_back(std::move(spec));
     }
     for (std::string& spec : specs) {
-      columns.push_back({candidate.metric, candidate.statistic, candidate.title, unit, std::move(spec)});
+      columns.push_back({candidate.metric, candidate.statistic, candidate.title, unit, std::move(spec), {}});
     }
   }
   return columns;
@@ -94,17 +100,31 @@ std::string AdapterOf(const RunRecord& run) {
   return adapter != algorithm->end() && adapter->is_string() ? adapter->get<std::string>() : std::string();
 }
 
-void MarkBest(std::vector<AlgorithmRow>& rows, std::vector<MetricCell> AlgorithmRow::* cells, std::size_t columns) {
-  for (std::size_t c = 0; c < columns; ++c) {
+void MarkBest(std::vector<AlgorithmRow>& rows, const std::vector<MetricColumn>& columns,
+              std::vector<MetricCell> AlgorithmRow::* cells) {
+  for (std::size_t c = 0; c < columns.size(); ++c) {
     double best = std::numeric_limits<double>::infinity();
     for (const AlgorithmRow& row : rows) {
       const MetricCell& cell = (row.*cells)[c];
-      if (cell.summary.n > 0 && IsBestCandidate(row)) best = std::min(best, cell.summary.mean);
+      if (IsBestCandidate(row, columns[c], cell)) best = std::min(best, cell.summary.mean);
     }
     for (AlgorithmRow& row : rows) {
       MetricCell& cell = (row.*cells)[c];
-      cell.best = cell.summary.n > 0 && IsBestCandidate(row) && cell.summary.mean == best;
+      cell.best = IsBestCandidate(row, columns[c], cell) && cell.summary.mean == best;
     }
+  }
+}
+
+/// A ground-truth-free map metric names a best run only where the validity study supports it.
+void WithholdUnsupportedBest(SequenceModel& sequence, const SweepModel& model, const SweepModelOptions& options) {
+  for (MetricColumn& column : sequence.map_columns) {
+    const std::string key = column.metric + "." + column.statistic;
+    const evaluator::ValidityQuantity* quantity = evaluator::FindValidityQuantity(key);
+    if (!quantity || quantity->kind != std::string_view("paper map metric")) continue;  // a real error
+    const ValiditySupport support = SupportFor(key, sequence.name, model.validity,
+                                               options.named_study ? &*options.named_study : nullptr,
+                                               options.named_study_source);
+    if (!support.supported) column.best_withheld = support.reason;
   }
 }
 
@@ -190,7 +210,15 @@ void Count(const RunRecord& run, RunCounts& counts) {
 
 }  // namespace
 
-bool IsBestCandidate(const AlgorithmRow& row) { return row.kind == RowKind::kContestant && row.flags.empty(); }
+bool IsBestCandidate(const AlgorithmRow& row) {
+  return row.kind == RowKind::kContestant && row.flags.empty() && !row.odometry_is_reference && row.counts.total > 0 &&
+         row.counts.ok == row.counts.total;
+}
+
+bool IsBestCandidate(const AlgorithmRow& row, const MetricColumn& column, const MetricCell& cell) {
+  return IsBestCandidate(row) && column.best_withheld.empty() && cell.summary.n > 0 &&
+         cell.summary.n == row.counts.total;
+}
 
 std::string MetricSpecLabel(const RunRecord& run, const std::string& metric) {
   const json* details = Find(run.metric_details, metric.c_str());
@@ -215,18 +243,20 @@ std::string MetricSpecLabel(const RunRecord& run, const std::string& metric) {
   return {};
 }
 
-SweepModel BuildSweepModel(std::vector<RunRecord> runs) {
+SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions& options) {
   SweepModel model;
   std::sort(runs.begin(), runs.end(), [](const RunRecord& a, const RunRecord& b) { return a.run_id < b.run_id; });
   model.runs = std::move(runs);
+  model.validity = evaluator::ComputeValidityStudy(ToValidityRuns(model.runs));
   // Table (sequence, noise) -> row (algorithm name, parameters) -> runs.
-  using RowKey = std::pair<std::string, std::string>;
+  using RowKey = std::tuple<std::string, std::string, std::string>;  // algorithm, parameters, build
   std::map<std::pair<std::string, std::string>, std::map<RowKey, std::vector<std::size_t>>> tables;
   std::set<std::string> algorithms;
   std::set<std::string> sweep_names;
   for (std::size_t i = 0; i < model.runs.size(); ++i) {
     const RunRecord& run = model.runs[i];
-    tables[{run.sequence, run.noise}][{run.algorithm, run.parameters}].push_back(i);
+    tables[{run.sequence, run.noise}][{run.algorithm, run.parameters, orchestrator::BuildSignatureOfRunJson(run.run_spec)}]
+        .push_back(i);
     algorithms.insert(run.algorithm);
     if (!run.sweep.empty()) sweep_names.insert(run.sweep);
     Count(run, model.counts);
@@ -251,6 +281,8 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs) {
     sequence.trajectory_columns = BuildColumns(model.runs, all, kTrajectoryCandidates);
     sequence.map_columns = BuildColumns(model.runs, all, kMapCandidates);
     sequence.has_reference = !sequence.trajectory_columns.empty();
+    std::map<std::pair<std::string, std::string>, std::size_t> builds_per_group;
+    for (const auto& [row_key, indices] : rows) ++builds_per_group[{std::get<0>(row_key), std::get<1>(row_key)}];
     for (auto& [row_key, indices] : rows) {
       const RunRecord& first = model.runs[indices.front()];
       const auto found = varying.find(first.algorithm);
@@ -258,6 +290,12 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs) {
       row.name = first.algorithm;
       row.parameters = first.parameters;
       row.algorithm = RowLabel(first, found == varying.end() ? kNone : found->second);
+      row.build = std::get<2>(row_key);
+      row.build_split = builds_per_group.at({std::get<0>(row_key), std::get<1>(row_key)}) > 1;
+      if (row.build_split) {
+        row.algorithm += " [build " + (row.build.empty() ? std::string("unrecorded") : row.build) + "]";
+        row.build_description = orchestrator::BuildDescriptionOfRunJson(first.run_spec);
+      }
       row.seeding = first.seeding;
       row.runs = indices;
       if (AdapterOf(first) == "odometry") row.kind = RowKind::kOdometryBaseline;
@@ -277,8 +315,9 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs) {
       ChooseMedianRun(model.runs, row);
       sequence.rows.push_back(std::move(row));
     }
-    MarkBest(sequence.rows, &AlgorithmRow::trajectory_cells, sequence.trajectory_columns.size());
-    MarkBest(sequence.rows, &AlgorithmRow::map_cells, sequence.map_columns.size());
+    WithholdUnsupportedBest(sequence, model, options);
+    MarkBest(sequence.rows, sequence.trajectory_columns, &AlgorithmRow::trajectory_cells);
+    MarkBest(sequence.rows, sequence.map_columns, &AlgorithmRow::map_cells);
     model.sequences.push_back(std::move(sequence));
   }
   return model;

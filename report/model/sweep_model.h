@@ -5,14 +5,23 @@
 #include <string>
 #include <vector>
 
+#include "evaluator/validity/metric_validity.h"
 #include "report/model/mean_std.h"
 #include "report/model/run_record.h"
 
 namespace slamsweep::report {
 
 struct AlgorithmRow;
-/// Whether a row may be ranked and marked best: a contestant without any run mark.
+struct MetricColumn;
+struct MetricCell;
+/// Whether a row may be ranked and marked best: a contestant (not a baseline or reference line)
+/// without any run mark (odometry = reference, stale, unisolated) whose every run succeeded
+/// (n_ok = n_runs: a row that failed some draws must not win on its lucky ones).
 bool IsBestCandidate(const AlgorithmRow& row);
+/// Whether one cell may be best: its row is a candidate, its column may mark a best (the validity
+/// study supports the metric, see MetricColumn::best_withheld) and every run of the row has a value.
+/// Every best mark and ranking of the report goes through here.
+bool IsBestCandidate(const AlgorithmRow& row, const MetricColumn& column, const MetricCell& cell);
 
 /// One table column: one flat metric computed under one specification. Runs whose
 /// specifications differ (say alignment se2 and sim2) get separate columns, because numbers from
@@ -23,11 +32,14 @@ struct MetricColumn {
   std::string title;      ///< e.g. "ATE translation RMSE"
   std::string unit;       ///< e.g. "m" (from the runs)
   std::string spec;       ///< e.g. "alignment se2"; empty when the metric has no options to state
+  /// Why no cell of the column is marked best, "" when one may be: a ground-truth-free metric whose
+  /// validity study does not show that it tracks the error (report/model/validity_support.h).
+  std::string best_withheld;
 };
 
 /// One row's cell in one column: the values of its successful runs (iteration order) and their
-/// mean +- std. `best` marks the lowest mean of the column among the table's SLAM rows (every metric
-/// here is "lower is better"; rows whose odometry is the reference are upper bounds, not contenders).
+/// mean +- std. `best` marks the lowest mean of the column among the cells IsBestCandidate admits
+/// (every metric here is "lower is better").
 struct MetricCell {
   std::vector<double> values;
   MeanStd summary;
@@ -51,8 +63,9 @@ enum class RowKind {
   kPublished,         ///< a published figure for the same data, with its citation
 };
 
-/// One comparison group: an algorithm with one set of parameter values, on the table's sequence and
-/// noise setting. Runs of other parameter values are other rows, never pooled into this one.
+/// One comparison group: an algorithm with one set of parameter values, computed by one build, on the
+/// table's sequence and noise setting. Runs of other parameter values or builds are other rows,
+/// never pooled into this one.
 struct AlgorithmRow {
   /// What the row is called everywhere (tables, legends, galleries, file folders): the algorithm's
   /// name, followed by "[k=v;...]" of the parameters whose values differ between its rows in the sweep.
@@ -65,6 +78,11 @@ struct AlgorithmRow {
   /// The union of the row's run marks: a flagged row is shown, never marked best.
   orchestrator::RunFlags flags;
   RowKind kind = RowKind::kContestant;
+  /// BuildSignature of the row's runs; rows of one algorithm and parameters computed by different
+  /// builds are separate rows (`build_split`), labelled with it and never pooled.
+  std::string build;
+  bool build_split = false;
+  std::string build_description;  ///< BuildDescriptionOfRunJson, for the note of a split row
   /// "seeded", "deterministic", "unseeded" or "mixed"; "" when not recorded.
   std::string seeding;
   RunCounts counts;
@@ -91,6 +109,15 @@ struct SequenceModel {
   std::vector<AlgorithmRow> rows;                ///< sorted by name, then parameters
 };
 
+/// What BuildSweepModel weighs beside the runs.
+struct SweepModelOptions {
+  /// A validity study the sweep named (validity_study: in its file, copied to the result
+  /// directory): it supports ground-truth-free metrics on sequences without a reference when the
+  /// sweep's own runs study no other sequence.
+  std::optional<evaluator::ValidityStudy> named_study;
+  std::string named_study_source;  ///< where it came from, for notes
+};
+
 /// The whole sweep, ready to render.
 struct SweepModel {
   std::vector<RunRecord> runs;  ///< sorted by run id
@@ -99,11 +126,13 @@ struct SweepModel {
   /// The sweep's name (run.json's "sweep"; the names joined by ", " when a merged directory holds several).
   std::string sweep_name;
   RunCounts counts;
+  /// The metric validity study of these runs (validity.html shows it; best marks of map metrics rest on it).
+  evaluator::ValidityStudy validity;
 };
 
 /// Groups runs by sequence x noise (a table) and algorithm x parameters (a row), builds the columns,
 /// cells, best marks and median runs.
-SweepModel BuildSweepModel(std::vector<RunRecord> runs);
+SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions& options = {});
 
 /// The specification a run computed `metric` under, as shown in a column header: "alignment se2"
 /// for APE, "delta 1 m" for RPE (from metric_details, else run.json's evaluation), "" otherwise.

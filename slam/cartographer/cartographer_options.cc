@@ -1,7 +1,9 @@
 #include "slam/cartographer/cartographer_options.h"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include <cartographer/common/configuration_file_resolver.h>
 #include <cartographer/common/lua_parameter_dictionary.h>
@@ -9,6 +11,7 @@
 #include <cartographer/mapping/trajectory_builder_interface.h>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/core/installation.h"
 
 namespace slamsweep::slam::cartographer_driver {
 namespace {
@@ -21,6 +24,12 @@ std::string ReadFile(const std::string& path) {
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+/// An installed driver's copy (PREFIX/share/slamsweep/cartographer/<name>), else the one this build used.
+std::string OptionsPath(std::string_view name, const std::string& build_path) {
+  const auto installed = evaluator::FindInstalledData("cartographer/" + std::string(name));
+  return installed ? installed->string() : build_path;
 }
 
 /// Whether `path` (a.b.c) names an option of `options`: every step must exist. Checked on a
@@ -98,10 +107,15 @@ std::string ValueAt(carto::common::LuaParameterDictionary& options, const Listed
 }  // namespace
 
 CartographerOptions ReadCartographerOptions(Parameters& parameters) {
-  const std::string base = ReadFile(std::string(SLAMSWEEP_CARTOGRAPHER_LUA_DIR) + "/slamsweep_2d.lua");
-  auto resolver = [] {
-    return std::make_unique<carto::common::ConfigurationFileResolver>(
-        std::vector<std::string>{CARTOGRAPHER_CONFIGURATION_FILES});
+  // Beside the program (the build and the installation put slamsweep_2d.lua there): a file a run reads as
+  // configuration sits where slamsweep's build identity finds and hashes it (orchestrator/adapters/roster.h).
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error) throw evaluator::InputError("cannot find the Cartographer driver's own folder: " + error.message());
+  const std::string base = ReadFile((self.parent_path() / "slamsweep-slam-cartographer.lua").string());
+  const std::string upstream_files = OptionsPath("configuration_files", CARTOGRAPHER_CONFIGURATION_FILES);
+  auto resolver = [&upstream_files] {
+    return std::make_unique<carto::common::ConfigurationFileResolver>(std::vector<std::string>{upstream_files});
   };
   auto plain = carto::common::LuaParameterDictionary::NonReferenceCounted(base + "\nreturn options\n", resolver());
   for (const Listed& listed : kListed) {

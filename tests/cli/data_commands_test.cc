@@ -132,7 +132,7 @@ TEST(DataConvertCommandTest, TumHoldsTheOdometry) {
 
 TEST(DataConvertCommandTest, RawlogOfIntelReadsBackWhenMrptIsBuilt) {
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
-  if (!evaluator::RawlogSupported()) GTEST_SKIP() << "MRPT not built";
+  if (!evaluator::RawlogSupported()) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("MRPT not built");
   testing::TempDir dir;
   const auto run = RunCli({"data", "convert", "intel", "--to", "rawlog", "-o", (dir / "intel.rawlog").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -187,7 +187,9 @@ TEST(DataMapCommandTest, SequenceWithoutReferenceOrFileExitsTwo) {
   // MRPT's sample rawlog (Debian mrpt-common) has odometry but no ground truth.
   const std::filesystem::path sample =
       "/usr/share/mrpt/datasets/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog";
-  if (!evaluator::RawlogSupported() || !std::filesystem::exists(sample)) GTEST_SKIP() << "no MRPT sample";
+  if (!evaluator::RawlogSupported() || !std::filesystem::exists(sample)) {
+    SLAMSWEEP_SKIP_OR_FAIL_IN_CI("no MRPT rawlog support or sample (Debian: libmrpt-obs-dev, mrpt-common)");
+  }
   const auto run = RunCli({"data", "map", "mrpt-telecom", "-o", (dir / "m.yaml").string()});
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_THAT(run.err, HasSubstr("mrpt-telecom: the sequence has no reference trajectory"));

@@ -92,6 +92,21 @@ std::string WriteRoom(const std::filesystem::path& yaml, double origin_x) {
   return yaml.string();
 }
 
+TEST(EvalMapCommandTest, ResolutionScoresTheMapOnOtherCellsAndSaysBoth) {
+  slamsweep::testing::TempDir dir;
+  const std::string room = WriteRoom(dir / "room.yaml", 0.0);
+  const auto own = RunCli({"eval", "map", room, "--json"});
+  ASSERT_EQ(own.exit_code, 0) << own.err;
+  const auto coarse = RunCli({"eval", "map", room, "--resolution", "0.1", "--json"});
+  ASSERT_EQ(coarse.exit_code, 0) << coarse.err;
+  const nlohmann::json a = nlohmann::json::parse(own.out), b = nlohmann::json::parse(coarse.out);
+  EXPECT_EQ(a["resolution_m"], 0.05);
+  EXPECT_EQ(b["resolution_m"], 0.1);
+  EXPECT_EQ(b["map_resolution_m"], 0.05);
+  EXPECT_EQ(b["width"], 50);  // 100 cells of 0.05 m on 0.1 m cells
+  EXPECT_EQ(RunCli({"eval", "map", room, "--resolution", "0"}).exit_code, 2);
+}
+
 TEST(EvalMapCompareCommandTest, ScoresAMapAgainstAReferenceAndFindsTheOffset) {
   testing::TempDir dir;
   const std::string reference = WriteRoom(dir / "reference.yaml", 0.0);

@@ -93,7 +93,9 @@ check_jenkinsfile() {
 check_dockerfile() {
   local file=$root/docker/Dockerfile
   [[ -f "$file" ]] || { fail "docker/Dockerfile is missing"; return; }
-  grep -qE '^FROM debian:12' "$file" && pass "Dockerfile: FROM debian:12" || fail "Dockerfile: not FROM debian:12"
+  # The base is an argument (debian:12 by default) that every stage starts from.
+  grep -qE '^ARG BASE=debian:12$' "$file" && [[ $(grep -cE '^FROM ' "$file") == $(grep -cE '^FROM \$\{BASE\}( AS [a-z]+)?$' "$file") ]] &&
+    pass "Dockerfile: every stage FROM \${BASE}, debian:12 by default" || fail "Dockerfile: stages not FROM \${BASE} (ARG BASE=debian:12)"
   # RUN instructions with their continuation lines joined.
   local runs
   runs=$(sed -e ':a' -e '/\\$/N; s/\\\n//; ta' "$file" | grep -E '^RUN ' || true)
@@ -114,18 +116,37 @@ check_dockerfile() {
       fi
     done
   done <<<"$runs"
-  grep -qE '^ENTRYPOINT \["/opt/slamsweep/build/slamsweep"\]' "$file" &&
-    pass "Dockerfile: slamsweep is the entry point" ||
-    fail "Dockerfile: ENTRYPOINT is not [\"/opt/slamsweep/build/slamsweep\"]"
-  grep -qE 'SLAMSWEEP_BUILD_DIR=/opt/slamsweep/build' "$file" && pass "Dockerfile: builds where the entry point is" ||
-    fail "Dockerfile: does not build into /opt/slamsweep/build"
+  # The runtime stage: the last one, with the installed tree of the build stage and no build step of its own.
+  local runtime
+  runtime=$(awk '/^FROM /{stage = ""} {stage = stage $0 "\n"} END {printf "%s", stage}' "$file")
+  grep -qF 'COPY --from=build /stage/opt/slamsweep/ /opt/slamsweep/' <<<"$runtime" &&
+    pass "Dockerfile: the runtime stage copies the installed tree of the build stage" ||
+    fail "Dockerfile: the runtime stage lacks COPY --from=build /stage/opt/slamsweep/ /opt/slamsweep/"
+  grep -qE 'image-steps\.sh (roster|slamsweep)|build\.sh|test\.sh' <<<"$runtime" &&
+    fail "Dockerfile: the runtime stage builds (compilers would stay in the image)" ||
+    pass "Dockerfile: the runtime stage builds nothing"
+  grep -qE '^ENTRYPOINT \["/opt/slamsweep/bin/slamsweep"\]' "$file" &&
+    pass "Dockerfile: the installed slamsweep is the entry point" ||
+    fail "Dockerfile: ENTRYPOINT is not [\"/opt/slamsweep/bin/slamsweep\"]"
   local compose=$root/docker/compose.yaml
   if [[ -f "$compose" ]] && grep -q 'dockerfile: docker/Dockerfile' "$compose" &&
-    grep -q ':/data/datasets:ro' "$compose" && grep -q 'configs/radish.yaml' "$compose"; then
-    pass "compose.yaml builds docker/Dockerfile, mounts the datasets read-only and runs configs/radish.yaml"
+    grep -q ':/data/datasets:ro' "$compose" && grep -q 'configs/radish.yaml' "$compose" &&
+    grep -qE 'command: \["serve"' "$compose"; then
+    pass "compose.yaml builds docker/Dockerfile, mounts the datasets read-only, runs configs/radish.yaml and serves"
   else
-    fail "docker/compose.yaml missing or lacks the Dockerfile, the read-only datasets mount or the radish command"
+    fail "docker/compose.yaml missing or lacks the Dockerfile, the read-only datasets mount, the radish command or serve"
   fi
+}
+
+# The Docker check needs root or a daemon and most of an hour: CI leaves its ctest out by label (never by
+# skipping it), the nightly job runs exactly that label.
+check_docker_label() {
+  grep -qE '^ctest .*--label-exclude docker' "$root/scripts/test.sh" &&
+    pass "scripts/test.sh leaves out the label docker" || fail "scripts/test.sh runs ctest without --label-exclude docker"
+  grep -qE 'docker_check PROPERTIES LABELS docker\b' "$root/tests/docker/CMakeLists.txt" &&
+    pass "docker_check has the label docker" || fail "tests/docker/CMakeLists.txt: docker_check lacks the label docker"
+  grep -qF "'jobs/docker-check.sh out/docker'" "$jobs_dir/Jenkinsfile.nightly" && grep -qF -- "--label-regex '^docker\$'" "$jobs_dir/docker-check.sh" &&
+    pass "the nightly job runs the label docker (jobs/docker-check.sh)" || fail "the nightly job does not run ctest -L docker"
 }
 
 check_bad_arguments() {
@@ -510,9 +531,70 @@ EOF
   else
     fail "speed-check.sh exited $status but the table has $missed NO rows"
   fi
+  # The check must be able to fail: a program that spends 200 ms before it starts misses the 10 ms
+  # start-up target on any machine, and the stage must say so (exit 3, a NO row).
+  local slow=$work/slow-slamsweep
+  printf '#!/bin/sh\nsleep 0.2\nexec "%s" "$@"\n' "$SLAMSWEEP_BIN" >"$slow"
+  chmod +x "$slow"
+  expect_status 3 "speed-check.sh on a program 200 ms slow to start" env BENCH_RUNS=1 BENCH_ONLY='^version$' \
+    SLAMSWEEP_BIN="$slow" "$jobs_dir/speed-check.sh" slow
+  if grep -q '| NO |' slow/table.md 2>/dev/null; then
+    pass "the slow program's table has a NO row"
+  else
+    fail "the slow program's table has no NO row: $(cat slow/table.md 2>/dev/null)"
+  fi
+}
+
+# --- programs: one build handed to every shard (jobs/pack-programs.sh, jobs/unpack-programs.sh) ----------
+
+check_programs() {
+  local root=$work/programs-root archive=$work/stash/programs.tar.gz digest_before digest_after
+  mkdir -p "$root/src/configs" "$root/src/.git" "$root/build/slam/bin" "$root/build/CMakeFiles"
+  printf 'binary one\n' >"$root/build/slamsweep"
+  printf 'helper\n' >"$root/build/slamsweep-sweep"
+  printf 'module\n' >"$root/build/slamsweep-rawlog.so"
+  printf 'driver\n' >"$root/build/slam/bin/slamsweep-slam-cartographer"
+  printf 'options = {}\n' >"$root/build/slam/bin/slamsweep-slam-cartographer.lua"
+  printf 'object\n' >"$root/build/CMakeFiles/left-out.o"
+  printf 'name: x\n' >"$root/src/configs/x.yaml"
+  printf 'history\n' >"$root/src/.git/HEAD"
+  digest_before=$(cd "$root" && sha256sum build/slamsweep build/slam/bin/slamsweep-slam-cartographer.lua)
+  expect_status 0 "pack-programs.sh packs the programs of ROOT" "$jobs_dir/pack-programs.sh" "$root" "$archive"
+  if tar -tzf "$archive" | grep -q '/\.git/\|CMakeFiles'; then
+    fail "the archive holds .git or build intermediates"
+  else
+    pass "the archive leaves .git and build intermediates out"
+  fi
+  # Another agent: nothing at ROOT yet.
+  rm -rf -- "$root"
+  expect_status 0 "unpack-programs.sh on an agent without them" "$jobs_dir/unpack-programs.sh" "$archive"
+  expect_log "^programs: $root/build/slamsweep\$" "it names the unpacked program"
+  digest_after=$(cd "$root" && sha256sum build/slamsweep build/slam/bin/slamsweep-slam-cartographer.lua)
+  if [[ "$digest_before" == "$digest_after" ]]; then
+    pass "the unpacked programs are the very bytes that were built (same digests, same paths)"
+  else
+    fail "digests differ after unpacking: $digest_before / $digest_after"
+  fi
+  # A second shard on the same agent: already there, only checked.
+  expect_status 0 "unpack-programs.sh again on the same agent" "$jobs_dir/unpack-programs.sh" "$archive"
+  printf 'tampered\n' >"$root/build/slamsweep"
+  expect_status 5 "unpack-programs.sh over a changed program" "$jobs_dir/unpack-programs.sh" "$archive"
+  # Another night's build left at ROOT with a consistent manifest of its own.
+  printf 'binary two\n' >"$root/build/slamsweep"
+  (cd "$root" && sha256sum build/slamsweep >PROGRAMS.sha256)
+  expect_status 5 "unpack-programs.sh over another build's programs" "$jobs_dir/unpack-programs.sh" "$archive"
+  expect_status 2 "unpack-programs.sh without an archive" "$jobs_dir/unpack-programs.sh" "$work/none.tar.gz"
+  expect_status 2 "pack-programs.sh with a relative ROOT" "$jobs_dir/pack-programs.sh" relative "$archive"
+  # The nightly runs shards from the unpacked programs, not from a build of their own.
+  if grep -q "jobs/unpack-programs.sh" "$jobs_dir/Jenkinsfile.nightly" && grep -q "jobs/build-programs.sh" "$jobs_dir/Jenkinsfile.nightly"; then
+    pass "Jenkinsfile.nightly builds the programs once and unpacks them on every shard"
+  else
+    fail "Jenkinsfile.nightly does not build once and hand the programs to the shards"
+  fi
 }
 
 case $case_name in
+  programs) check_programs ;;
   static)
     check_jenkinsfile "$jobs_dir/Jenkinsfile" 2 "stage('Setup')" "stage('Sweep')" "stage('Publish')" \
       "junit testResults: 'out/junit.xml', allowEmptyResults: false" "archiveArtifacts" "publishHTML" \
@@ -524,11 +606,13 @@ case $case_name in
       "jobs/submit-sweep.sh" "withCredentials" "junit testResults: 'out/junit.xml', allowEmptyResults: false" \
       "publishHTML" "name: 'SLAMSWEEP_SERVER'" "name: 'PRIORITY'"
     check_dockerfile
+    check_docker_label
     check_bad_arguments
     check_nightly_compare_mapping
     if command -v shellcheck >/dev/null; then
-      (cd "$root" && shellcheck -x -S warning jobs/*.sh tests/jobs/jobs_scripts_test.sh) >"$work/last.log" 2>&1 &&
-        pass "shellcheck finds no warning in jobs/*.sh" || { fail "shellcheck warnings:"; cat "$work/last.log" >&2; }
+      (cd "$root" && shellcheck -x -S warning jobs/*.sh tests/jobs/jobs_scripts_test.sh docker/*.sh scripts/docker-check.sh) \
+        >"$work/last.log" 2>&1 && pass "shellcheck finds no warning in jobs/*.sh, docker/*.sh and scripts/docker-check.sh" ||
+        { fail "shellcheck warnings:"; cat "$work/last.log" >&2; }
     else
       echo "note: shellcheck is not installed: the scripts are not linted"
     fi

@@ -128,7 +128,7 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
     const json spec = {
         {"run_id", id},
         {"sweep", "fixture"},
-        {"algorithm", {{"name", run.algorithm}, {"adapter", "generic"}, {"parameters", run.parameters},
+        {"algorithm", {{"name", run.algorithm}, {"adapter", run.adapter}, {"parameters", run.parameters},
                        {"timeout_s", 300}, {"memory_limit_mb", 4096}, {"command", nullptr}}},
         {"group", {{"sequence", run.sequence}, {"algorithm", run.algorithm}, {"parameters", ParametersTextOf(run.parameters)},
                    {"noise", run.noise}}},
@@ -139,7 +139,9 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
         {"seed", 1000 + run.iteration},
         {"evaluation", {{"align", "se2"}, {"rpe_delta_m", 1.0}, {"t_max_diff_s", 0.01}, {"stages", run.stages}}},
         {"thresholds", json::array()}};
-    Write(run_dir / "run.json", spec.dump(2));
+    json written = spec;
+    if (!run.build.is_null()) written["build"] = run.build;
+    Write(run_dir / "run.json", written.dump(2));
     Write(run_dir / "command.txt", "fake-slam\n--input\ninput/log.clf\n");
     Write(run_dir / "log.txt", run.log);
 

@@ -13,6 +13,9 @@ namespace slamsweep::report::testing {
 /// reference, where the worker computes no ATE).
 struct FixtureRun {
   std::string algorithm = "icp-slam";
+  std::string adapter = "generic";  ///< run.json's algorithm.adapter ("odometry" makes the baseline row)
+  /// run.json's "build" block (slamsweep_revision, program_files); null: not written.
+  nlohmann::json build = nullptr;
   std::string sequence = "intel";
   std::string noise = "clean";
   int iteration = 0;

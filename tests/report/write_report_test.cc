@@ -105,6 +105,33 @@ TEST_F(WriteReportTest, TableMarksBestAndCountsFailures) {
   EXPECT_NE(failed.find("Status: failed (exit_code): killed by SIGSEGV"), std::string::npos);
 }
 
+TEST_F(WriteReportTest, TheBaselineIsDrawnApartAndAWithheldBestSaysWhy) {
+  std::vector<testing::FixtureRun> runs = testing::StandardFixtureRuns();
+  for (int i = 0; i < 3; ++i) {
+    testing::FixtureRun odometry = testing::MakeRun("odometry", "intel", i);
+    odometry.adapter = "odometry";
+    odometry.ape_rmse_m = 2.0 + i;
+    odometry.occupied_ratio = 0.01;  // a smeared map with the lowest occupied ratio of the table
+    odometry.corners = 5.0;
+    odometry.enclosed_areas = 0.0;
+    runs.push_back(odometry);
+  }
+  testing::WriteFixtureSweep(dir_ / "with-baseline", runs);
+  WriteReport(dir_ / "with-baseline", dir_ / "report", options_);
+  const std::string page = ReadAll(dir_ / "report/sequences/intel-clean.html");
+  EXPECT_NE(page.find("<tr class=\"baseline\">"), std::string::npos) << page;
+  EXPECT_NE(page.find("baseline: the odometry as the robot recorded it"), std::string::npos);
+  EXPECT_NE(page.find("not ranked: 1 of 3 runs did not succeed"), std::string::npos);
+  // Nine runs are too few for the validity study: the map metrics are shown, none marked, and the
+  // note under the table says so for each.
+  EXPECT_NE(page.find("<ul class=\"table-notes\">"), std::string::npos);
+  EXPECT_NE(page.find("Corners: not marked best: the validity study of this sequence does not show that it tracks"),
+            std::string::npos);
+  const std::size_t map_table = page.find("Map metrics without ground truth");
+  ASSERT_NE(map_table, std::string::npos);
+  EXPECT_EQ(page.find("▼ best", map_table), std::string::npos);
+}
+
 TEST_F(WriteReportTest, SequenceWithoutReferenceRendersSensibly) {
   Write();
   const std::string page = ReadAll(dir_ / "report/sequences/mit-no-ref-clean.html");

@@ -1,18 +1,25 @@
-// The roster through `slamsweep run`, as a user runs it: each built algorithm on intel's first 300
-// scans with noisy odometry must end below the odometry baseline's ATE and produce a map the paper's
-// metrics score; a misspelt parameter is a failed run naming it, not a silent default.
+// The roster through `slamsweep run`, as a user runs it: each built algorithm's claim, to beat the
+// odometry it was given, tested with a one-sided sign test over ten seeded noise draws (an algorithm
+// upstream cannot make do that is listed with its measured numbers in roster_expected_failures.json,
+// and the test fails when it starts passing); a program that echoes its odometry is the negative
+// control that must fail; every built algorithm's map is scored; a misspelt parameter is a failed run
+// naming it, not a silent default.
 #include <stdlib.h>
 
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
 #include <string>
+#include <string_view>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "evaluator/statistics/sign_test.h"
 #include "tests/cli/run_cli.h"
 #include "tests/support/shared_data.h"
 
@@ -47,61 +54,137 @@ const nlohmann::json* GroupOf(const nlohmann::json& summary, const std::string& 
 }
 
 TEST(RosterSweepTest, CiBuildsTheRosterItPromises) {
-  // CI builds gmapping, slam-constructor's two and Hector from ../shared/peers (scripts/test.sh);
-  // Cartographer is opt-in (SLAMSWEEP_ROSTER=all). A CI run without them would test nothing.
+  // CI builds the whole roster, Cartographer included, from ../shared/peers (scripts/test.sh). A CI
+  // run without one of them would test nothing about it.
   if (!slamsweep::testing::RunningInCi()) GTEST_SKIP() << "only checked under CI=true";
   const std::vector<std::string> built = BuiltRoster();
-  for (const std::string name : {"gmapping", "tinyslam", "vinyslam", "hector"}) {
+  for (const std::string name : {"gmapping", "tinyslam", "vinyslam", "hector", "cartographer"}) {
     EXPECT_NE(std::find(built.begin(), built.end(), name), built.end()) << name << " driver not built";
   }
 }
 
-TEST(RosterSweepTest, EveryBuiltAlgorithmBeatsNoisyOdometryOnIntel) {
+// The roster test's input, stated once. intel's first kRosterScans scans (the test's CPU budget: about
+// 3 CPU-minutes for all of it), kDraws seeded draws of mild odometry noise, the error is the ATE (se2
+// RMSE) against intel's corrected poses. kOdometry is the odometry the noise is drawn around.
+constexpr int kRosterScans = 200;
+constexpr int kDraws = 10;
+constexpr double kSignificance = 0.05;  // one-sided sign test: 9 wins of 10 draws
+constexpr const char* kSequence = "intel-200";
+constexpr const char* kNoise = "mild-odometry";
+// The corrected log's own odometry, which equals its reference, until the sequences can use the
+// robot's recorded odometry; then this line says "recorded" (and roster_expected_failures.json,
+// whose entries name the odometry they were measured on, is measured again).
+constexpr std::string_view kOdometry = "reference";
+
+/// The ATE of every draw of `algorithm` (NaN for a failed run), by iteration.
+std::vector<double> AteByDraw(const nlohmann::json& summary, const std::string& algorithm) {
+  std::vector<double> ate(kDraws, std::nan(""));
+  for (const auto& run : summary.at("runs")) {
+    if (run.at("algorithm") != algorithm || run.at("status") != "ok") continue;
+    const int iteration = run.at("iteration").get<int>();
+    if (iteration >= 0 && iteration < kDraws && run.at("metrics").contains("ape_trans")) {
+      ate[iteration] = run.at("metrics").at("ape_trans").at("rmse").get<double>();
+    }
+  }
+  return ate;
+}
+
+double Mean(const std::vector<double>& values) {
+  double sum = 0.0;
+  for (double v : values) sum += v;
+  return sum / static_cast<double>(values.size());
+}
+
+/// An algorithm upstream cannot make beat the odometry on this input (roster_expected_failures.json).
+struct ExpectedFailure {
+  std::string algorithm;
+  std::string reason;
+};
+
+std::map<std::string, ExpectedFailure> ReadExpectedFailures() {
+  const std::filesystem::path file = std::filesystem::path(SLAMSWEEP_SOURCE_DIR) / "tests/slam/roster_expected_failures.json";
+  const nlohmann::json list = ReadJson(file);
+  std::map<std::string, ExpectedFailure> failures;
+  for (const auto& entry : list.at("expected_failures")) {
+    // An entry measured on another input says nothing about this one: the list must follow the test.
+    EXPECT_EQ(entry.at("sequence"), kSequence) << file << ": " << entry.dump();
+    EXPECT_EQ(entry.at("noise"), kNoise) << file << ": " << entry.dump();
+    EXPECT_EQ(entry.at("odometry"), kOdometry) << file << ": " << entry.dump();
+    EXPECT_TRUE(entry.at("measured").contains("wins")) << entry.dump();
+    failures[entry.at("algorithm")] = {entry.at("algorithm"), entry.at("reason")};
+  }
+  return failures;
+}
+
+TEST(RosterSweepTest, EveryBuiltAlgorithmBeatsTheOdometryItWasGivenByASignTest) {
   SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
   const std::vector<std::string> built = BuiltRoster();
-  if (built.empty()) GTEST_SKIP() << "no roster driver built: scripts/install-slam.sh && scripts/build.sh";
+  if (built.empty()) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("no roster driver built: scripts/install-slam.sh && scripts/build.sh");
   slamsweep::testing::TempDir dir;
-  std::string config =
-      // Three noise draws: one draw decides little (on intel's first 300 scans the baseline's ATE
-      // ranges 1.7 to 4.6 m over these seeds), the mean over three is what is compared.
-      "name: roster\noutput: out\niterations: 3\nseed: 7\nworkers: 2\n"
-      "evaluation: {align: se2, stages: 3}\n"
-      "algorithms:\n  - name: odometry\n    adapter: odometry\n"
-      "  - name: gmapping-misspelt\n    adapter: gmapping\n    parameters: {particels: 30}\n";
+  std::string config = "name: roster\noutput: out\niterations: " + std::to_string(kDraws) +
+                       "\nseed: 7\nworkers: 2\nevaluation: {align: se2, stages: 0}\n"
+                       "algorithms:\n  - name: odometry\n    adapter: odometry\n"
+                       // The negative control: a program that hands back its odometry must fail the test.
+                       "  - name: echo-odometry\n    adapter: command\n    command:\n"
+                       "      argv: [" + std::string(SLAMSWEEP_SOURCE_DIR) + "/tests/slam/echo_odometry.sh, \"{input}\", "
+                       "\"{output_dir}\"]\n      input_format: tum\n      trajectory: {path: trajectory.tum, format: tum}\n"
+                       "  - name: gmapping-misspelt\n    adapter: gmapping\n    parameters: {particels: 30}\n";
   for (const std::string& name : built) config += "  - name: " + name + "\n    adapter: " + name + "\n    timeout_s: 600\n";
-  config +=
-      "sequences:\n  - {catalog: intel, name: intel-300, max_scans: 300}\n"
-      // configs/paper.yaml's noise: 5 % standard deviation on turns and distances, a heading random
-      // walk of 1.1 deg per sqrt(m). It makes the odometry drift metres on 300 scans.
-      "noise:\n  - name: noisy\n    odometry: {alpha1: 0.0025, alpha2: 0.0004, alpha3: 0.0025, alpha4: 0.0001}\n";
+  config += "sequences:\n  - {catalog: intel, name: " + std::string(kSequence) + ", max_scans: " +
+            std::to_string(kRosterScans) +
+            (kOdometry == "reference" ? std::string() : ", odometry: " + std::string(kOdometry)) + "}\n"
+            // The quick start's mild odometry noise (the alphas are variances: 4.5 % of each distance
+            // and turn, 0.6 deg per metre), one seeded draw per iteration, the same draw for every algorithm.
+            "noise:\n  - name: " + std::string(kNoise) +
+            "\n    odometry: {alpha1: 0.002, alpha2: 0.0001, alpha3: 0.002, alpha4: 0.0001}\n";
   const auto file = slamsweep::testing::WriteFile(dir / "roster.yaml", config);
   const auto run = RunCli({"run", file.string(), "--no-report", "-k"});
   ASSERT_LE(run.exit_code, 1) << run.out << run.err;
   const nlohmann::json summary = ReadJson(dir / "out" / "summary.json");
 
-  const nlohmann::json* odometry = GroupOf(summary, "odometry");
-  ASSERT_NE(odometry, nullptr) << summary.dump(1);
-  const double baseline = odometry->at("metrics").at("ape_trans").at("rmse").at("mean").get<double>();
-  ASSERT_GT(baseline, 2.0) << "the noisy odometry must give SLAM real work";
-  for (const std::string& name : built) {
-    const nlohmann::json* group = GroupOf(summary, name);
-    ASSERT_NE(group, nullptr) << name;
-    ASSERT_EQ(group->at("n_ok").get<int>(), 3) << name << " failed:\n" << summary.dump(1);
-    const auto& metrics = group->at("metrics");
-    const double ate = metrics.at("ape_trans").at("rmse").at("mean").get<double>();
-    std::cout << "[ roster ] " << name << " ATE rmse " << ate << " m (odometry " << baseline << " m)\n";
-    if (name == "vinyslam") {
-      // slam-constructor's vinySLAM with its upstream properties does not beat this odometry on
-      // intel's sparse corrected log (scans about 1 m apart): measured over these three draws,
-      // 1.4x the odometry's mean ATE (0.4x to 4x per draw), and a wider Monte-Carlo search makes it
-      // worse (issue 14's note). It must still track the robot, not diverge.
-      EXPECT_LT(ate, 2.0 * baseline) << name;
+  const std::vector<double> odometry = AteByDraw(summary, "odometry");
+  for (double ate : odometry) ASSERT_FALSE(std::isnan(ate)) << "the odometry baseline failed:\n" << summary.dump(1);
+  const std::size_t wins_needed = evaluator::SignTestWinsNeeded(kDraws, kSignificance);
+  ASSERT_EQ(wins_needed, 9u);
+  const std::map<std::string, ExpectedFailure> expected_failures = ReadExpectedFailures();
+  std::vector<std::string> judged = built;
+  judged.push_back("echo-odometry");
+  for (const std::string& name : judged) {
+    std::vector<double> ate = AteByDraw(summary, name);
+    std::size_t failed_runs = 0;
+    for (double& value : ate) {
+      // A failed draw is a loss, never a tie.
+      if (std::isnan(value)) {
+        value = std::numeric_limits<double>::infinity();
+        ++failed_runs;
+      }
+    }
+    const evaluator::SignTestResult test = evaluator::OneSidedSignTest(ate, odometry);
+    const bool beats = test.p_value <= kSignificance;
+    std::cout << "[ roster ] " << name << ": " << test.wins << " wins, " << test.losses << " losses, " << test.ties
+              << " ties of " << kDraws << " draws (" << failed_runs << " failed runs), one-sided p = " << test.p_value
+              << "; mean ATE " << Mean(ate) << " m against the odometry's " << Mean(odometry) << " m\n";
+    if (name == "echo-odometry") {
+      EXPECT_FALSE(beats) << "the negative control passes: the test cannot tell SLAM from its odometry";
+      EXPECT_EQ(test.ties, static_cast<std::size_t>(kDraws)) << "the echo must score exactly the baseline";
+    } else if (const auto listed = expected_failures.find(name); listed != expected_failures.end()) {
+      EXPECT_FALSE(beats) << name << " is listed in tests/slam/roster_expected_failures.json (" << listed->second.reason
+                          << ") but now beats the odometry: take it off the list";
     } else {
-      EXPECT_LT(ate, baseline) << name;
+      EXPECT_TRUE(beats) << name << " does not beat the odometry it was given (" << test.wins << " of " << kDraws
+                         << " draws, " << wins_needed << " needed)";
     }
     for (const char* metric : {"occupied_to_free_unknown", "corners", "enclosed_areas"}) {
-      EXPECT_TRUE(metrics.contains(metric)) << name << " has no " << metric;
+      if (name == "echo-odometry" || failed_runs == static_cast<std::size_t>(kDraws)) continue;
+      for (const auto& group : summary.at("groups")) {
+        if (group.at("algorithm") == name) {
+          EXPECT_TRUE(group.at("metrics").contains(metric)) << name << " has no " << metric;
+        }
+      }
     }
+  }
+  for (const auto& [name, failure] : expected_failures) {
+    EXPECT_NE(std::find(built.begin(), built.end(), name), built.end()) << name << " is listed but not built here";
   }
 
   // The misspelt parameter: a failed run whose reason names it (the driver's message, via the log).
@@ -157,7 +240,7 @@ TEST(RosterSweepTest, TheCommandAdapterExampleRunsARealProgramLikeItsBuiltInAdap
   SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
   const std::vector<std::string> built = BuiltRoster();
   if (std::find(built.begin(), built.end(), "hector") == built.end()) {
-    GTEST_SKIP() << "the example runs the Hector driver: scripts/install-slam.sh hector && scripts/build.sh";
+    SLAMSWEEP_SKIP_OR_FAIL_IN_CI("the example runs the Hector driver: scripts/install-slam.sh hector && scripts/build.sh");
   }
   slamsweep::testing::TempDir dir;
   std::ifstream in(std::string(SLAMSWEEP_SOURCE_DIR) + "/configs/examples/command-adapter.yaml");

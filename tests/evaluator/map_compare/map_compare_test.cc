@@ -25,6 +25,9 @@ OccupancyGrid Floor(double origin_x = -1.0, double origin_y = -2.0) {
   return grid;
 }
 
+/// Distances between cells of a 0.05 m grid are compared to a fifth of a cell.
+constexpr double kFifthOfACellM = 0.01;
+
 /// Only vertical walls: shifting along x moves every occupied cell away from its twin by the shift.
 OccupancyGrid VerticalWalls() {
   OccupancyGrid grid(100, 60, 0.05);
@@ -51,9 +54,10 @@ TEST(MapCompareTest, AShiftOfKCellsIsKCellsAway) {
     OccupancyGrid shifted = reference;
     shifted.origin.x_m += k * reference.resolution_m;
     const MapComparison result = CompareMaps(shifted, reference);
-    EXPECT_NEAR(result.estimate_to_reference_mean_m, k * 0.05, 0.05) << k;
-    EXPECT_NEAR(result.reference_to_estimate_mean_m, k * 0.05, 0.05) << k;
-    EXPECT_NEAR(result.estimate_to_reference_max_m, k * 0.05, 0.05) << k;
+    // A fifth of a cell: a one-cell shift must not read as none (or as two).
+    EXPECT_NEAR(result.estimate_to_reference_mean_m, k * 0.05, kFifthOfACellM) << k;
+    EXPECT_NEAR(result.reference_to_estimate_mean_m, k * 0.05, kFifthOfACellM) << k;
+    EXPECT_NEAR(result.estimate_to_reference_max_m, k * 0.05, kFifthOfACellM) << k;
     // Within the 2-cell radius only for k <= 2.
     EXPECT_EQ(result.f1 == 1.0, k <= 2) << k;
     // The same shift given as the transform undoes it.
@@ -69,12 +73,12 @@ TEST(MapCompareTest, AShiftAlongYOrBothAxesIsAlsoKCellsAway) {
   for (int r = 0; r < 100; ++r) {
     for (int c = 0; c < 60; ++c) reference.at(r, c) = (r == 20 || r == 70) ? 1.0f : 0.0f;
   }
-  for (int k : {1, 4}) {
+  for (int k : {1, 2, 4}) {
     OccupancyGrid shifted = reference;
     shifted.origin.y_m -= k * reference.resolution_m;
     const MapComparison result = CompareMaps(shifted, reference);
-    EXPECT_NEAR(result.estimate_to_reference_mean_m, k * 0.05, 0.05) << k;
-    EXPECT_NEAR(result.reference_to_estimate_mean_m, k * 0.05, 0.05) << k;
+    EXPECT_NEAR(result.estimate_to_reference_mean_m, k * 0.05, kFifthOfACellM) << k;
+    EXPECT_NEAR(result.reference_to_estimate_mean_m, k * 0.05, kFifthOfACellM) << k;
   }
   // A single occupied cell moved by (3, 4) cells is 5 cells away.
   OccupancyGrid dot(40, 40, 0.05, {}, 0.0f);

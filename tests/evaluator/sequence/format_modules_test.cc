@@ -83,7 +83,7 @@ TEST(FormatModulesTest, MrptIsLoadedOnlyForRawlogsAndRosOnlyForBags) {
 
 TEST(FormatModulesTest, AReaderErrorCrossesTheModuleAsAnInputError) {
 #ifndef SLAMSWEEP_HAVE_MRPT
-  GTEST_SKIP() << "MRPT rawlog module not built";
+  SLAMSWEEP_SKIP_OR_FAIL_IN_CI("MRPT rawlog module not built (Debian: libmrpt-obs-dev, scripts/install-deps.sh)");
 #else
   testing::TempDir dir;
   testing::WriteFile(dir / "garbage.rawlog", "this is no MRPT serialization");

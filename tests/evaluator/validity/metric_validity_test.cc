@@ -1,6 +1,8 @@
 // The metric validity study on hand-made runs whose correlations are known by construction.
 #include "evaluator/validity/metric_validity.h"
 
+#include "evaluator/core/input_error.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -120,8 +122,9 @@ TEST(MetricValidityTest, WithinNoiseRanksOnlyRunsOfOneNoiseSetting) {
   // each noise level the run with more corners has the smaller error (within noise: opposite).
   std::vector<ValidityRun> runs;
   for (int level = 0; level < 4; ++level) {
+    const std::string noise(1, static_cast<char>('0' + level));
     for (int i = 0; i < 4; ++i) {
-      runs.push_back(MakeRun("intel", "n" + std::to_string(level), i, 10.0 * level + (3 - i), 100.0 * level + i));
+      runs.push_back(MakeRun("intel", noise, i, 10.0 * level + (3 - i), 100.0 * level + i));
     }
   }
   const ValidityStudy study = ComputeValidityStudy(runs);
@@ -153,6 +156,25 @@ TEST(MetricValidityTest, TheOrderOfRunsDoesNotMatter) {
     if (c["spearman_rho"].is_null() || c["ci_low"].is_null()) continue;
     EXPECT_LE(c["ci_low"].get<double>(), c["ci_high"].get<double>());
   }
+}
+
+TEST(MetricValidityTest, AStudyReadBackFromJsonHasTheSameVerdicts) {
+  std::vector<ValidityRun> runs;
+  for (int i = 0; i < 12; ++i) runs.push_back(MakeRun(i % 2 ? "intel" : "floor", "n1", i, 0.1 * (i + 1), 10.0 + i));
+  const ValidityStudy study = ComputeValidityStudy(runs);
+  const ValidityStudy back = ValidityStudyFromJson(ToJson(study));
+  EXPECT_EQ(back.sequences, study.sequences);
+  ASSERT_EQ(back.correlations.size(), study.correlations.size());
+  EXPECT_EQ(ToJson(back), ToJson(study));
+  const ValidityCorrelation& corners = Get(back, "corners.value", "", ValidityPooling::kWithinNoise);
+  EXPECT_EQ(corners.verdict, ValidityVerdict::kTracksError);
+  EXPECT_EQ(corners.runs, 12u);
+
+  nlohmann::json broken = ToJson(study);
+  broken["correlations"][0]["verdict"] = "splendid";
+  EXPECT_THROW(ValidityStudyFromJson(broken), InputError);
+  broken.erase("sequences");
+  EXPECT_THROW(ValidityStudyFromJson(broken), InputError);
 }
 
 }  // namespace

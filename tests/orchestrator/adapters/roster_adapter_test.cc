@@ -11,6 +11,7 @@
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/formats/trajectory/tum_format.h"
 #include "orchestrator/adapters/adapter.h"
+#include "orchestrator/adapters/build_stamp.h"
 #include "orchestrator/adapters/program_identity.h"
 #include "orchestrator/adapters/run_inputs.h"
 #include "tests/orchestrator/worker/run_spec_fixture.h"
@@ -158,6 +159,33 @@ TEST(RosterAdapterTest, SaysHowToInstallAMissingDriverOrUpstream) {
   ASSERT_EQ(files.size(), 2u);
   EXPECT_EQ(files[0].filename(), "slamsweep-slam-vinyslam");
   EXPECT_EQ(files[1].filename(), "slam-constructor.json");
+}
+
+TEST(RosterAdapterTest, CartographersLuaFileIsPartOfItsBuildIdentity) {
+  const slamsweep::testing::TempDir dir;
+  const RosterEnvironment environment(dir / "roster");
+  WriteExecutable(dir / "roster" / "bin" / "slamsweep-slam-cartographer");
+  slamsweep::testing::WriteFile(dir / "roster" / "prefix" / "share" / "slamsweep" / "slam" / "cartographer.json",
+                                "{\"commit\": \"877157a\"}");
+  try {
+    ProgramFilesOf(Algorithm("cartographer"));
+    FAIL() << "a driver without its Lua options must not be planned";
+  } catch (const evaluator::InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("slamsweep-slam-cartographer.lua missing"));
+  }
+  const fs::path lua = dir / "roster" / "bin" / "slamsweep-slam-cartographer.lua";
+  slamsweep::testing::WriteFile(lua, "options = { map_builder = MAP_BUILDER }\n");
+  const std::vector<fs::path> files = ProgramFilesOf(Algorithm("cartographer"));
+  ASSERT_EQ(files.size(), 3u);
+  EXPECT_EQ(files[1], lua);
+  // An edited Lua file is another build: its results are never reused or pooled with the old ones.
+  std::vector<RunSpec> runs(1);
+  runs[0].algorithm = Algorithm("cartographer");
+  StampBuildIdentity(runs);
+  const std::string before = BuildSignature(runs[0].build);
+  slamsweep::testing::WriteFile(lua, "options = { map_builder = MAP_BUILDER, tuned = true }\n");
+  StampBuildIdentity(runs);
+  EXPECT_NE(BuildSignature(runs[0].build), before);
 }
 
 TEST(RosterAdapterTest, TheRandomisedAlgorithmsAreSeeded) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <opencv2/core.hpp>
 
 #include "evaluator/core/input_error.h"
@@ -77,6 +79,22 @@ TEST(ApplyRunNoiseTest, CleanNoiseChangesNothingAndNoisyOdometryIsReproducible) 
   // The reference's stamps differ from the scans': noise is drawn around the odometry.
   EXPECT_EQ(noisy["odometry_around"], "odometry");
   EXPECT_EQ(noisy["odometry_seed"], ev::DeriveSeed(3, 0));
+}
+
+TEST(PrepareRunInputsTest, TheProgramGetsTheOdometryNeverTheReference) {
+  // The simulated floor: odometry drawn with its own noise around the exact truth. What the program
+  // is handed must be that odometry: were it the reference, every program would score perfectly.
+  const RunSpec spec = testing::SimulatedRun("odometry", 60);
+  const RunInputs inputs = PrepareRunInputs(spec);
+  ASSERT_TRUE(inputs.truth.reference);
+  ASSERT_EQ(inputs.robot.odometry.size(), inputs.truth.reference->size());
+  double largest_m = 0.0;
+  for (std::size_t i = 0; i < inputs.robot.odometry.size(); ++i) {
+    largest_m = std::max(largest_m, (inputs.robot.odometry.poses()[i].position -
+                                     inputs.truth.reference->poses()[i].position).norm());
+  }
+  EXPECT_GT(largest_m, 0.01);
+  EXPECT_FALSE(inputs.odometry_is_reference);
 }
 
 TEST(OdometryAdapterTest, TheTrajectoryIsTheOdometryAndTheMapIsRenderedFromIt) {

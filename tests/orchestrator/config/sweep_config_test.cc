@@ -535,5 +535,14 @@ TEST_F(SweepConfigTest, RegressionBlockIsOptionalStrictAndRangeChecked) {
   EXPECT_THAT(ErrorOf(std::string(kMinimal) + "regression: {alpha: often}\n"), HasSubstr("regression.alpha"));
 }
 
+TEST_F(SweepConfigTest, AValidityStudyIsAnchoredBesideTheFileAndMustExist) {
+  EXPECT_TRUE(Parse(kMinimal).validity_study.empty());
+  testing::WriteFile(dir_ / "study.json", "{}");
+  const SweepConfig named = Parse(std::string(kMinimal) + "validity_study: study.json\n");
+  EXPECT_EQ(named.validity_study, dir_.path() / "study.json");
+  EXPECT_THAT(ErrorOf(std::string(kMinimal) + "validity_study: missing.json\n"),
+              HasSubstr(Located(6, 17) + "validity_study: expected a summary.json of a sweep with reference data"));
+}
+
 }  // namespace
 }  // namespace slamsweep::orchestrator

@@ -63,6 +63,7 @@ TEST(ExpandMatrixTest, CarriesTheResolvedSettingsIntoEveryRun) {
   config.evaluation.align = "sim2";
   config.thresholds = {Threshold{"ape_trans", "rmse", 1.0, std::nullopt}};
   config.sequences[0].max_scans = 30;
+  config.sequences[0].entry.ground_truth = evaluator::GroundTruthKind::kCorrectedPoses;
   const RunSpec run = ExpandMatrix(config).front();
   EXPECT_EQ(run.algorithm.timeout_s, 12);
   EXPECT_EQ(run.algorithm.memory_limit_mb, 99u);
@@ -70,6 +71,26 @@ TEST(ExpandMatrixTest, CarriesTheResolvedSettingsIntoEveryRun) {
   ASSERT_EQ(run.thresholds.size(), 1u);
   EXPECT_EQ(run.sequence.max_scans, 30u);
   EXPECT_EQ(run.sequence.entry.path, "/data/seq1.log");
+}
+
+TEST(ExpandMatrixTest, AThresholdThatNeedsAReferenceHoldsOnlyWhereThereIsOne) {
+  SweepConfig config = testing::TwoByTwo();
+  config.thresholds = {Threshold{"ape_trans", "rmse", 1.0, std::nullopt},
+                       Threshold{"relations_trans", "mean", 0.5, std::nullopt},
+                       Threshold{"map_chamfer", "value", 0.2, std::nullopt},
+                       Threshold{"corners", "value", 100.0, std::nullopt}};
+  config.sequences[0].entry.ground_truth = evaluator::GroundTruthKind::kCorrectedPoses;
+  config.sequences[0].entry.relations_path = "/data/seq1.relations";
+  for (const RunSpec& run : ExpandMatrix(config)) {
+    std::vector<std::string> metrics;
+    for (const Threshold& threshold : run.thresholds) metrics.push_back(threshold.metric);
+    if (run.sequence.entry.name == "seq1") {
+      EXPECT_THAT(metrics, ::testing::ElementsAre("ape_trans", "relations_trans", "map_chamfer", "corners"));
+    } else {
+      // No reference of any kind: only the ground-truth-free metric can be held to its limit.
+      EXPECT_THAT(metrics, ::testing::ElementsAre("corners"));
+    }
+  }
 }
 
 TEST(ExpandMatrixTest, ExcludeDropsCellsMatchingAllGivenKeys) {

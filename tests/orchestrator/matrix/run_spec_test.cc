@@ -87,7 +87,7 @@ RunSpec FullSpec() {
   spec.noise.range = evaluator::RangeNoise{0.02, 0.01, 0.005};
   spec.iteration = 2;
   spec.seed = 18446744073709551615ULL;
-  spec.evaluation = EvaluationOptions{"sim3", 2.0, 0.05, 8, 0.1, true, std::nullopt};
+  spec.evaluation = EvaluationOptions{"sim3", 2.0, 0.05, 8, 0.1, true, 0.9, std::nullopt};
   spec.thresholds = {Threshold{"ape_trans", "rmse", 1.0, std::nullopt}, Threshold{"corners", "value", 50.0, 2.0}};
   return spec;
 }
@@ -108,6 +108,7 @@ TEST(RunSpecTest, RoundTripsEveryFieldThroughText) {
   EXPECT_EQ(back.seed, 18446744073709551615ULL);
   EXPECT_EQ(back.evaluation.align, "sim3");
   EXPECT_EQ(back.evaluation.map_resolution_m, 0.1);
+  EXPECT_EQ(back.evaluation.min_coverage, 0.9);
   ASSERT_EQ(back.thresholds.size(), 2u);
   EXPECT_EQ(back.thresholds[1].min, 2.0);
   // And nothing is lost on the way: writing it again gives the same document.

@@ -157,7 +157,7 @@ TEST(RunProcessTest, BadWorkingDirectoryOrLogFailToStart) {
 }
 
 TEST(RunProcessTest, MemoryLimitOnTheGroup) {
-  if (::access("/usr/bin/python3", X_OK) != 0) GTEST_SKIP() << "/usr/bin/python3 is needed";
+  if (::access("/usr/bin/python3", X_OK) != 0) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("/usr/bin/python3 is needed");
   ProcessSpec spec;
   // bytes * n writes every page, so the 300 MB are resident, not just reserved.
   spec.argv = {"/usr/bin/python3", "-c", "import time\nb = b'x' * (300 << 20)\ntime.sleep(20)"};
@@ -217,7 +217,7 @@ TEST(RunProcessTest, GrandchildHoldingThePipeDoesNotHang) {
 }
 
 TEST(RunProcessTest, ResourceUsage) {
-  if (::access("/usr/bin/python3", X_OK) != 0) GTEST_SKIP() << "/usr/bin/python3 is needed";
+  if (::access("/usr/bin/python3", X_OK) != 0) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("/usr/bin/python3 is needed");
   ProcessSpec spec;
   spec.argv = {"/usr/bin/python3", "-c",
                "import time\nt = time.process_time()\nwhile time.process_time() - t < 0.3: pass"};
@@ -284,7 +284,7 @@ TEST(ProcessSetTest, FailedStartIsReportedByWaitForAny) {
 
 TEST(ProcessSetTest, AViewThatCannotBeSetUpIsAFailedStartNamingWhy) {
   if (const std::string& reason = FileSystemViewUnavailableReason(); !reason.empty()) {
-    GTEST_SKIP() << "no private mount namespace here: " << reason;
+    SLAMSWEEP_SKIP_OR_FAIL_IN_CI("no private mount namespace here: " << reason);
   }
   TempDir dir;
   ProcessSet set;

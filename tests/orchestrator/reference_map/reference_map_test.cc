@@ -1,6 +1,7 @@
 // The reference map of a run: rendered from the clean scans at the reference poses, cached per
 // sequence (safe under concurrent workers, keyed by what the map depends on), or read from the
-// catalog's file. Expected maps are built here straight from the evaluator's mapper.
+// catalog's file. The rendered map is checked against the simulated floor plan the scans were cast
+// in (an independent map of the truth); the cache is checked against the evaluator's mapper.
 #include "orchestrator/reference_map/reference_map.h"
 
 #include <gtest/gtest.h>
@@ -9,11 +10,14 @@
 
 #include <cmath>
 #include <fstream>
+#include <iostream>
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/mapping/occupancy_mapper.h"
 #include "evaluator/sequence/catalog.h"
+#include "evaluator/simulation/floor_plan.h"
+#include "evaluator/simulation/simulated_sequence.h"
 #include "orchestrator/adapters/run_inputs.h"
 #include "tests/orchestrator/worker/run_spec_fixture.h"
 #include "tests/support/shared_data.h"
@@ -79,6 +83,56 @@ TEST_F(ReferenceMapTest, TheKeyHoldsWhatTheMapDependsOnAndNothingElse) {
   EXPECT_EQ(key["mapper_revision"], ev::kOccupancyMapperRevision);
   EXPECT_EQ(key["resolution_m"], 0.05);
   EXPECT_FALSE(key["sequence"].contains("citation"));
+}
+
+/// Whether a wall of `plan` lies within `cells` cells of the world point (x, y).
+bool NearWall(const ev::OccupancyGrid& plan, double x_m, double y_m, int cells) {
+  const int col = static_cast<int>(std::floor((x_m - plan.origin.x_m) / plan.resolution_m));
+  const int row_from_bottom = static_cast<int>(std::floor((y_m - plan.origin.y_m) / plan.resolution_m));
+  for (int dr = -cells; dr <= cells; ++dr) {
+    for (int dc = -cells; dc <= cells; ++dc) {
+      const int c = col + dc, r = plan.height - 1 - (row_from_bottom + dr);
+      if (c >= 0 && c < plan.width && r >= 0 && r < plan.height && plan.at(r, c) >= 0.5f) return true;
+    }
+  }
+  return false;
+}
+
+TEST_F(ReferenceMapTest, TheRenderedMapLiesOnTheWallsOfTheFloorPlanTheScansWereCastIn) {
+  const std::optional<ReferenceMap> rendered = LoadReferenceMap(spec_, true, Cache());
+  ASSERT_TRUE(rendered);
+  // The truth the simulator cast its rays in, made by the floor-plan generator, not by the mapper.
+  const ev::SimulationOptions options = ev::SimulationOptionsFromJson(spec_.sequence.entry.simulation);
+  const ev::OccupancyGrid plan = ev::GenerateFloorPlan(options.floor_plan).grid;
+  const ev::OccupancyGrid& map = rendered->grid;
+  std::size_t occupied = 0, occupied_near_walls = 0, occupied_on_walls = 0, free = 0, free_inside_walls = 0;
+  for (int r = 0; r < map.height; ++r) {
+    for (int c = 0; c < map.width; ++c) {
+      const float p = map.at(r, c);
+      const double x = map.origin.x_m + (c + 0.5) * map.resolution_m;
+      const double y = map.origin.y_m + (map.height - 1 - r + 0.5) * map.resolution_m;
+      if (p >= 0.65f) {
+        ++occupied;
+        occupied_near_walls += NearWall(plan, x, y, 1);
+        occupied_on_walls += NearWall(plan, x, y, 0);
+      } else if (!ev::OccupancyGrid::IsUnknown(p) && p <= 0.196f) {
+        ++free;
+        free_inside_walls += NearWall(plan, x, y, 0);
+      }
+    }
+  }
+  std::cout << "[ reference map ] of " << occupied << " occupied cells " << occupied_near_walls << " within a cell of a "
+            << "wall, " << occupied_on_walls << " on a wall cell; " << free_inside_walls << " of " << free
+            << " free cells inside a wall\n";
+  ASSERT_GT(occupied, 200u);
+  ASSERT_GT(free, 5000u);
+  // The scans carry 1 cm of simulated range noise: every hit is on the wall's face, within a 5 cm cell.
+  EXPECT_GE(static_cast<double>(occupied_near_walls), 0.99 * static_cast<double>(occupied));
+  // The plan's walls start on cell boundaries, so a hit lands in the wall's first cell or in the free
+  // cell before it about equally often (measured: 685 of 1088); a map one cell off would have almost none.
+  EXPECT_GE(static_cast<double>(occupied_on_walls), 0.4 * static_cast<double>(occupied));
+  // A beam passes along the wall face it ends on: a free cell may graze a wall cell, never more than a few.
+  EXPECT_LE(static_cast<double>(free_inside_walls), 0.01 * static_cast<double>(free));
 }
 
 TEST_F(ReferenceMapTest, RenderedFromTheCleanScansAtTheReferencePosesAndCached) {

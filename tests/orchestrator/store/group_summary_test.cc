@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include "orchestrator/store/csv_tables.h"
 #include "orchestrator/store/results_store.h"
 #include "tests/orchestrator/store/store_test_util.h"
@@ -52,6 +54,28 @@ TEST(GroupSummaryTest, AGroupRecordsItsSegmentLengthsAndWhetherItsRunsAgree) {
   EXPECT_TRUE(IsHeadlineStatistic("segment_drift_10m", "mean"));
   EXPECT_FALSE(IsHeadlineStatistic("segment_drift_10m", "median"));
   EXPECT_NE(GroupsCsv(groups).find("segment_drift_10m.mean.mean"), std::string::npos);
+}
+
+TEST(GroupSummaryTest, RunsOfAnotherNoiseSettingOrParameterValueAreNeverPooled) {
+  slamsweep::testing::TempDir dir;
+  ResultsStore store = ResultsStore::Open(dir / "results.sqlite");
+  json noisy = MakeSpec("n0", "icp-slam", "intel", 0);
+  noisy["noise"]["name"] = "noisy";
+  json other_parameters = MakeSpec("p0", "icp-slam", "intel", 0);
+  other_parameters["algorithm"]["parameters"]["ICP.maxIterations"] = 40;
+  store.RecordRun(1, MakeSpec("c0", "icp-slam", "intel", 0), MakeOkResult("c0", 3.0, 0.1), "runs/c0");
+  store.RecordRun(1, noisy, MakeOkResult("n0", 3.0, 0.5), "runs/n0");
+  store.RecordRun(1, other_parameters, MakeOkResult("p0", 3.0, 0.9), "runs/p0");
+  const std::vector<GroupSummary> groups = SummarizeGroups(store.Runs());
+  ASSERT_EQ(groups.size(), 3u);
+  std::map<std::string, double> ate;
+  for (const GroupSummary& group : groups) {
+    EXPECT_EQ(group.runs, 1u);
+    ate[group.group.noise + " " + group.group.parameters] = ToJson(group).at("metrics").at("ape_trans").at("rmse").at("mean");
+  }
+  EXPECT_EQ(ate.at("clean ICP.maxIterations=80"), 0.1);
+  EXPECT_EQ(ate.at("noisy ICP.maxIterations=80"), 0.5);
+  EXPECT_EQ(ate.at("clean ICP.maxIterations=40"), 0.9);
 }
 
 }  // namespace

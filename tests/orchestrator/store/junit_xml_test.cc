@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "tests/orchestrator/store/store_test_util.h"
@@ -112,13 +114,14 @@ TEST(JUnitXmlTest, OneSuitePerSequenceOneCasePerRunWithFailuresAndThresholds) {
   EXPECT_EQ(past_case.at("attrib").at("name"), "icp-slam i0 (past)");
   ASSERT_EQ(past_case.at("failures").size(), 1u);
   EXPECT_EQ(past_case.at("failures")[0].at("attrib").at("type"), "threshold");
-  // 0.7 > 0.5 and 17 corners < min 20; 17 <= max 100 is fine.
-  EXPECT_EQ(past_case.at("failures")[0].at("text"), "ape_trans.rmse = 0.7 > 0.5\ncorners.value = 17 < 20");
+  // 0.7 > 0.5 and 17 corners < min 20; 17 <= max 100 is fine. The statistic defaults to rmse; both
+  // missing metrics are failures too: a limit the run cannot show it meets is not met.
+  EXPECT_EQ(past_case.at("failures")[0].at("text"),
+            "ape_trans.rmse = 0.7 > 0.5\ncorners.value = 17 < 20\n"
+            "relations_trans.mean: the run has no such metric, so its limit is not met\n"
+            "ape_rot.rmse: the run has no such metric, so its limit is not met");
   EXPECT_EQ(past_case.at("failures")[0].at("attrib").at("message"), "ape_trans.rmse = 0.7 > 0.5");
-  ASSERT_EQ(past_case.at("system_out").size(), 1u);
-  // The statistic defaults to rmse; both missing metrics are listed, neither is a failure.
-  EXPECT_THAT(past_case.at("system_out")[0].get<std::string>(), HasSubstr("relations_trans.mean"));
-  EXPECT_THAT(past_case.at("system_out")[0].get<std::string>(), HasSubstr("ape_rot.rmse"));
+  EXPECT_TRUE(past_case.at("system_out").empty());
 
   const json& fine_case = suites[1].at("cases")[1];
   EXPECT_EQ(fine_case.at("attrib").at("name"), "icp-slam i0 (fine)");
@@ -159,17 +162,32 @@ TEST(JUnitXmlTest, XmlEscapeByHand) {
   EXPECT_EQ(XmlEscape("\xEF\xBF\xBE"), "");
 }
 
-TEST(JUnitXmlTest, MalformedThresholdsAreListedNotFatal) {
+TEST(JUnitXmlTest, MalformedThresholdsFailNamingWhich) {
   auto spec = MakeSpec("r");
   spec["thresholds"] = {{{"metric", 3}}, {{"metric", "ape_trans"}, {"statistic", "rmse"}}, "nonsense"};
   const auto result = MakeOkResult("r");
   const ThresholdCheck check = CheckThresholds(MakeRun(spec, result, MetricsOf(result)));
-  EXPECT_TRUE(check.exceeded.empty());
-  ASSERT_EQ(check.unchecked.size(), 3u);
-  EXPECT_THAT(check.unchecked[0], HasSubstr("thresholds[0]"));
-  EXPECT_THAT(check.unchecked[2], HasSubstr("thresholds[2]"));
+  ASSERT_EQ(check.exceeded.size(), 3u);
+  EXPECT_THAT(check.exceeded[0], HasSubstr("thresholds[0]"));
+  EXPECT_THAT(check.exceeded[2], HasSubstr("thresholds[2]"));
   spec["thresholds"] = "all";
-  EXPECT_THAT(CheckThresholds(MakeRun(spec, result)).unchecked.at(0), HasSubstr("expected an array"));
+  EXPECT_THAT(CheckThresholds(MakeRun(spec, result)).exceeded.at(0), HasSubstr("expected an array"));
+}
+
+TEST(JUnitXmlTest, AThresholdOnAMetricTheRunLacksIsAFailureNotANote) {
+  slamsweep::testing::TempDir dir;
+  auto spec = MakeSpec("r");
+  spec["thresholds"] = {{{"metric", "relations_trans"}, {"statistic", "mean"}, {"max", 0.5}}};
+  const auto result = MakeOkResult("r");
+  const ThresholdCheck check = CheckThresholds(MakeRun(spec, result, MetricsOf(result)));
+  ASSERT_EQ(check.exceeded.size(), 1u);
+  EXPECT_THAT(check.exceeded[0], HasSubstr("relations_trans.mean: the run has no such metric"));
+  const auto file = dir / "junit.xml";
+  WriteJUnit({MakeRun(spec, result, MetricsOf(result))}, file);
+  std::ifstream in(file);
+  const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_THAT(xml, HasSubstr("failures=\"1\""));
+  EXPECT_THAT(xml, HasSubstr("type=\"threshold\""));
 }
 
 TEST(JUnitXmlTest, NullMetricFailsItsThreshold) {

@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <set>
 
 #include "evaluator/core/input_error.h"
 #include "orchestrator/store/results_store.h"
@@ -94,6 +95,53 @@ TEST(MergeTest, CombinesShardsKeepsDuplicatesOnceAndTheNewerConflict) {
   const json summary = json::parse(ReadText(out / "summary.json"));
   EXPECT_EQ(summary.at("counts").at("total"), 3);
   EXPECT_THAT(ReadText(out / "junit.xml"), HasSubstr("i0 (r3)\""));
+}
+
+// Two shards of one comparison group whose programs were built apart (other digests): the merge keeps
+// them as two groups, each marked, and says so; it never averages them together.
+TEST(MergeTest, ResultsOfDifferentBuildsAreKeptApartAsMarkedGroups) {
+  Shards shards;
+  const auto shard = [](const fs::path& out, const std::string& id, const std::string& digest, double ape,
+                        const std::string& program = "/usr/bin/icp-slam") {
+    fs::create_directories(out);
+    ResultsStore store = ResultsStore::Open(out / "results.sqlite");
+    const std::int64_t sweep = store.BeginSweep(SweepInfo{});
+    json spec = MakeSpec(id, "icp-slam", "intel", id == "r1" ? 0 : 1);
+    spec["build"] = {{"slamsweep_revision", "0.1+abc"}, {"program_files", {{program, digest}}}};
+    const json result = MakeOkResult(id, 3.0, ape);
+    fs::create_directories(out / "runs" / id);
+    slamsweep::testing::WriteFile(out / "runs" / id / "result.json", result.dump());
+    store.RecordRun(sweep, spec, result, "runs/" + id);
+  };
+  shard(shards.a, "r1", std::string(64, 'a'), 0.10);
+  shard(shards.b, "r2", std::string(64, 'b'), 0.30);
+  const fs::path out = shards.dir / "merged";
+  const MergeReport report = MergeResultDirs({shards.a, shards.b}, out);
+  ASSERT_EQ(report.warnings.size(), 1u) << ::testing::PrintToString(report.warnings);
+  EXPECT_THAT(report.warnings[0], HasSubstr("kept apart as separate groups"));
+  EXPECT_THAT(report.warnings[0], HasSubstr("icp-slam [ICP.maxIterations=80] on intel (clean)"));
+  const json summary = json::parse(ReadText(out / "summary.json"));
+  ASSERT_EQ(summary.at("groups").size(), 2u) << summary.at("groups").dump(1);
+  std::set<double> means;
+  std::set<std::string> builds;
+  for (const json& group : summary.at("groups")) {
+    EXPECT_TRUE(group.at("build_split").get<bool>());
+    EXPECT_EQ(group.at("n_runs"), 1);
+    builds.insert(group.at("build").get<std::string>());
+    means.insert(group.at("metrics").at("ape_trans").at("rmse").at("mean").get<double>());
+    EXPECT_THAT(group.at("build_description").get<std::string>(), HasSubstr("slamsweep 0.1+abc; icp-slam "));
+  }
+  EXPECT_EQ(builds.size(), 2u);
+  EXPECT_EQ(means, (std::set<double>{0.10, 0.30}));  // never their average 0.2
+  EXPECT_THAT(ReadText(out / "summary.csv"), HasSubstr(*builds.begin()));
+
+  // The same binaries unpacked at another path are the same build: one group, unmarked.
+  Shards same;
+  shard(same.a, "r1", std::string(64, 'a'), 0.10);
+  shard(same.b, "r2", std::string(64, 'a'), 0.30, "/var/tmp/elsewhere/icp-slam");
+  const MergeReport pooled = MergeResultDirs({same.a, same.b}, same.dir / "merged");
+  EXPECT_TRUE(pooled.warnings.empty()) << ::testing::PrintToString(pooled.warnings);
+  EXPECT_EQ(json::parse(ReadText(same.dir / "merged" / "summary.json")).at("groups").size(), 1u);
 }
 
 TEST(MergeTest, OlderConflictingResultDoesNotReplaceANewerOne) {

@@ -1,16 +1,20 @@
-// The worker with MRPT's real SLAM programs (Debian mrpt-apps) on a short simulated sequence:
-// each run must end ok with a map, a trajectory on the sequence clock and trajectory metrics that
-// show the program tracked the robot. Labelled "slow" in ctest (a few seconds per run here).
+// The worker with MRPT's real SLAM programs (Debian mrpt-apps) on a short simulated sequence with
+// noisy odometry: each run must end ok with a map, a trajectory on the sequence clock, and end closer
+// to the truth than the odometry it was given (the odometry baseline's ATE on the same draw).
+// Labelled "slow" in ctest (a few seconds per run here).
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <string>
 
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/formats/trajectory/tum_format.h"
 #include "evaluator/sequence/sequence_file.h"
+#include "evaluator/trajectory/ape.h"
+#include "orchestrator/adapters/run_inputs.h"
 #include "orchestrator/worker/worker.h"
 #include "tests/orchestrator/worker/run_spec_fixture.h"
 #include "tests/support/shared_data.h"
@@ -38,6 +42,12 @@ double Metric(const nlohmann::json& result, const std::string& metric, const std
 nlohmann::json RunMrpt(const std::string& adapter, const fs::path& run_dir) {
   RunSpec spec = testing::SimulatedRun(adapter, kScans);
   spec.evaluation.align = "se2";
+  // About 20 % of every distance and turn and 8 deg of heading per metre (the alphas are variances),
+  // one seeded draw: over these 150 scans the odometry is 4.7 cm RMSE off the truth after alignment
+  // (measured when this was written: icp-slam 2.0 cm, rbpf-slam 2.7 cm).
+  spec.noise.name = "noisy";
+  spec.noise.odometry = ev::OdometryNoise{0.05, 0.02, 0.04, 0.01, 0.0, 0.0};
+  spec.seed = 7;
   testing::WriteRunJson(run_dir, spec);
   EXPECT_EQ(RunWorker(run_dir), kWorkerWroteResult);
   const nlohmann::json result = testing::ReadJson(run_dir / "result.json");
@@ -50,10 +60,15 @@ nlohmann::json RunMrpt(const std::string& adapter, const fs::path& run_dir) {
   EXPECT_EQ(estimate.size(), kScans);
   EXPECT_EQ(estimate.stamps_s(), reference.stamps_s());
   EXPECT_EQ(Metric(result, "ape_trans", "n"), static_cast<double>(kScans));
-  // The simulated robot moves about 5 m in 150 scans through a mapped floor: a SLAM program that
-  // tracks it stays within decimetres of the truth once aligned; a lost one is off by metres.
-  EXPECT_LT(Metric(result, "ape_trans", "rmse"), 0.5) << result["metric_details"]["ape_trans"].dump();
-  EXPECT_LT(Metric(result, "ape_rot", "rmse"), 10.0);
+  // The claim: closer to the truth than the odometry the program was handed (the same inputs the worker
+  // prepared, scored the same way).
+  const RunInputs inputs = PrepareRunInputs(spec);
+  ev::ApeOptions options;
+  options.alignment.mode = ev::AlignmentMode::kSe2;
+  const double odometry_ate_m = ev::Ape(options).Compute(*inputs.truth.reference, inputs.robot.odometry).statistics.rmse;
+  const double ate_m = Metric(result, "ape_trans", "rmse");
+  std::cout << "[ mrpt ] " << adapter << " ATE " << ate_m << " m, its odometry " << odometry_ate_m << " m\n";
+  EXPECT_LT(ate_m, odometry_ate_m) << result["metric_details"]["ape_trans"].dump();
 
   const ev::OccupancyGrid map = ev::ReadMapServer(run_dir / "map.yaml");
   EXPECT_GT(map.CellCount(), 1000u);
@@ -64,8 +79,8 @@ nlohmann::json RunMrpt(const std::string& adapter, const fs::path& run_dir) {
 }
 
 TEST(WorkerMrptTest, IcpSlamRunsToAScoredResult_SlowTest) {
-  if (!HaveProgram("icp-slam")) GTEST_SKIP() << "icp-slam not installed (Debian: mrpt-apps)";
-  if (!ev::RawlogSupported()) GTEST_SKIP() << "this build cannot write rawlogs (MRPT not found)";
+  if (!HaveProgram("icp-slam")) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("icp-slam not installed (Debian: mrpt-apps)");
+  if (!ev::RawlogSupported()) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("this build cannot write rawlogs (MRPT not found)");
   const slamsweep::testing::TempDir dir;
   const nlohmann::json result = RunMrpt("mrpt-icp-slam", dir / "icp");
   EXPECT_EQ(result["command"], nlohmann::json({"icp-slam", "../input/icp-slam.ini"}));
@@ -77,8 +92,8 @@ TEST(WorkerMrptTest, IcpSlamRunsToAScoredResult_SlowTest) {
 }
 
 TEST(WorkerMrptTest, RbpfSlamRunsToAScoredResultWithItsOwnStageMaps_SlowTest) {
-  if (!HaveProgram("rbpf-slam")) GTEST_SKIP() << "rbpf-slam not installed (Debian: mrpt-apps)";
-  if (!ev::RawlogSupported()) GTEST_SKIP() << "this build cannot write rawlogs (MRPT not found)";
+  if (!HaveProgram("rbpf-slam")) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("rbpf-slam not installed (Debian: mrpt-apps)");
+  if (!ev::RawlogSupported()) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("this build cannot write rawlogs (MRPT not found)");
   const slamsweep::testing::TempDir dir;
   const nlohmann::json result = RunMrpt("mrpt-rbpf-slam", dir / "rbpf");
   // LOG_FREQUENCY = ceil(150 / 4) = 38: maps after steps 0, 38, 76 and 114.

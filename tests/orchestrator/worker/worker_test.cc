@@ -91,6 +91,25 @@ class WorkerTest : public ::testing::Test {
   RunSpec spec_;
 };
 
+TEST_F(WorkerTest, ATrajectoryThatStopsHalfWayFailsTheRunWithItsCoverage) {
+  // The first 30 lines of the 60-pose TUM file (a header line, then 29 poses): 28 of the reference's
+  // 59 scan intervals, 0.1 s each.
+  UseProgram("head -n 30 estimate.tum > \"$1/trajectory.tum\" && cp room.yaml room.pgm \"$1/\" && "
+             "mv \"$1/room.yaml\" \"$1/map.yaml\"");
+  const nlohmann::json result = Run();
+  EXPECT_EQ(result["status"], "failed") << result.dump(2);
+  EXPECT_EQ(result["failure_kind"], "incomplete_trajectory");
+  EXPECT_NE(result["reason"].get<std::string>().find("covers 47.5 % of the reference's time span"), std::string::npos)
+      << result["reason"];
+  EXPECT_NE(result["reason"].get<std::string>().find("below evaluation.min_coverage 95 %"), std::string::npos);
+
+  // The same run with the check lowered to 40 % is ok, and records its coverage.
+  spec_.evaluation.min_coverage = 0.4;
+  const nlohmann::json lowered = Run();
+  EXPECT_EQ(lowered["status"], "ok") << lowered.dump(2);
+  EXPECT_NEAR(lowered["metric_details"]["coverage"]["fraction"].get<double>(), 28.0 / 59.0, 1e-9);
+}
+
 TEST_F(WorkerTest, AProgramThatWritesItsOutputsGivesAnOkRunWithMetrics) {
   UseProgram(kWriteOutputs);
   const nlohmann::json result = Run();

@@ -1,9 +1,11 @@
 // Two independent implementations of tinySLAM (CoreSLAM) on the same input: slam-constructor's,
 // which the tinyslam adapter runs, and BreezySLAM's RMHC_SLAM. They differ in details (BreezySLAM
 // searches by random-mutation hill climbing in a fixed 1-pixel-per-cell map, slam-constructor by
-// Monte-Carlo sampling in its own grid) but implement the same idea, so on a clean log both must
-// track the robot to within the map's resolution scale, and on noisy odometry their errors must be
-// of the same order. A driver that mangled the scans (wrong angles, units, frames) would fail both.
+// Monte-Carlo sampling in its own grid) but implement the same idea. On a clean log both must track
+// the robot (a driver that mangled the scans, with wrong angles, units or frames, fails both). On
+// noisy odometry both are held to the odometry baseline by a one-sided sign test over ten seeded
+// draws: BreezySLAM must beat it, which shows the input is one a tinySLAM can solve, and
+// slam-constructor's verdict must be the one the roster's expected-failures list records for it.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -19,9 +21,12 @@
 #include <algorithms.hpp>
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "evaluator/formats/trajectory/trajectory_file.h"
 #include "evaluator/sequence/robot_log.h"
 #include "evaluator/sequence/sequence_file.h"
+#include "evaluator/statistics/sign_test.h"
 #include "evaluator/trajectory/ape.h"
 #include "tests/cli/run_cli.h"
 #include "tests/support/shared_data.h"
@@ -32,14 +37,15 @@ namespace {
 namespace fs = std::filesystem;
 
 /// intel's first 300 scans, as slamsweep writes program inputs, with the given odometry noise.
-fs::path IntelInput(const fs::path& dir, const std::string& noise) {
-  const fs::path full = dir / ("intel-" + noise + ".log");
-  std::vector<std::string> args = {"data", "convert", "intel", "--to", "carmen", "-o", full.string(), "--seed", "7"};
+fs::path IntelInput(const fs::path& dir, const std::string& noise, int seed) {
+  const fs::path full = dir / ("intel-" + noise + "-" + std::to_string(seed) + ".log");
+  std::vector<std::string> args = {"data", "convert", "intel", "--to", "carmen", "-o", full.string(), "--seed",
+                                   std::to_string(seed)};
   if (noise != "clean") args.insert(args.end(), {"--odometry-noise", noise});
   const auto convert = testing::RunCli(args);
   EXPECT_EQ(convert.exit_code, 0) << convert.err;
   std::ifstream in(full);
-  const fs::path cut = dir / ("intel-300-" + noise + ".log");
+  const fs::path cut = dir / ("intel-300-" + noise + "-" + std::to_string(seed) + ".log");
   std::ofstream out(cut);
   int scans = 0;
   for (std::string line; std::getline(in, line) && scans < 300;) {
@@ -94,35 +100,66 @@ double Ate(const evaluator::Trajectory& reference, const evaluator::Trajectory& 
   return evaluator::Ape(options).Compute(reference, estimate).statistics.rmse;
 }
 
-TEST(TinySlamCrossCheckTest, SlamConstructorAndBreezySlamAgreeOnIntel) {
+/// The ATEs of slam-constructor's tinySLAM, BreezySLAM and the odometry on intel's first 300 scans.
+struct Errors {
+  double tiny = 0.0;
+  double breezy = 0.0;
+  double odometry = 0.0;
+};
+
+Errors RunBoth(const fs::path& dir, const evaluator::Sequence& truth, const std::string& noise, int seed) {
+  const fs::path input = IntelInput(dir, noise, seed);
+  evaluator::Sequence written = evaluator::ReadSequence(input);
+  const evaluator::RobotLog robot = evaluator::TakeRobotLog(written);
+  std::vector<std::size_t> first(robot.scans.size());
+  for (std::size_t i = 0; i < first.size(); ++i) first[i] = i;
+  const evaluator::Trajectory reference = truth.reference->Subset(first);
+  Errors errors;
+  errors.breezy = Ate(reference, RunBreezySlam(robot));
+  errors.tiny = Ate(reference, RunTinySlam(input, dir / ("tiny-" + noise + "-" + std::to_string(seed))));
+  errors.odometry = Ate(reference, robot.odometry);
+  std::cout << "[ tinySLAM ] intel-300 " << noise << " seed " << seed << ": slam-constructor " << errors.tiny
+            << " m, BreezySLAM " << errors.breezy << " m, odometry " << errors.odometry << " m\n";
+  return errors;
+}
+
+TEST(TinySlamCrossCheckTest, SlamConstructorAndBreezySlamAgainstTheOdometryOnIntel) {
   SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
   testing::TempDir dir;
   const evaluator::Sequence truth = evaluator::ReadSequence(intel);
   ASSERT_TRUE(truth.reference.has_value());
-  int case_index = 0;
-  for (const std::string noise : {"clean", "0.02,0.001,0.02,0.001"}) {
-    const fs::path input = IntelInput(dir.path(), noise);
-    evaluator::Sequence written = evaluator::ReadSequence(input);
-    const evaluator::RobotLog robot = evaluator::TakeRobotLog(written);
-    std::vector<std::size_t> first(robot.scans.size());
-    for (std::size_t i = 0; i < first.size(); ++i) first[i] = i;
-    const evaluator::Trajectory reference = truth.reference->Subset(first);
-    const double breezy = Ate(reference, RunBreezySlam(robot));
-    const double tiny = Ate(reference, RunTinySlam(input, dir / ("tiny-" + std::to_string(case_index++))));
-    const double odometry = Ate(reference, robot.odometry);
-    std::cout << "[ tinySLAM ] intel-300 " << noise << ": slam-constructor " << tiny << " m, BreezySLAM " << breezy
-              << " m, odometry " << odometry << " m\n";
-    if (noise == "clean") {
-      // Odometry = reference here: a matcher that reads the scans right stays near it over the 300
-      // scans (measured: slam-constructor 0.26 m, BreezySLAM's hill climbing 1.67 m); mirrored beam
-      // angles, wrong units or frames pull a matcher tens of metres away.
-      EXPECT_LT(tiny, 2.5);
-      EXPECT_LT(breezy, 2.5);
-    } else {
-      // Same order: neither more than 4x the other.
-      EXPECT_LT(tiny, 4.0 * breezy);
-      EXPECT_LT(breezy, 4.0 * tiny);
-    }
+
+  // Odometry = reference here: a matcher that reads the scans right stays near it over the 300 scans
+  // (measured: slam-constructor 0.15 m, BreezySLAM's hill climbing 1.67 m); mirrored beam angles,
+  // wrong units or frames pull a matcher tens of metres away.
+  const Errors clean = RunBoth(dir.path(), truth, "clean", 7);
+  EXPECT_LT(clean.tiny, 2.5);
+  EXPECT_LT(clean.breezy, 2.5);
+
+  // configs/paper.yaml's 5 % odometry noise (variances), ten seeded draws. Measured when this was
+  // written: BreezySLAM beat the odometry in 10 of 10 draws, slam-constructor's tinySLAM in 4.
+  constexpr int kDraws = 10;
+  std::vector<double> tiny, breezy, odometry;
+  for (int seed = 1; seed <= kDraws; ++seed) {
+    const Errors errors = RunBoth(dir.path(), truth, "0.0025,0.0004,0.0025,0.0001", seed);
+    tiny.push_back(errors.tiny);
+    breezy.push_back(errors.breezy);
+    odometry.push_back(errors.odometry);
+  }
+  const evaluator::SignTestResult breezy_test = evaluator::OneSidedSignTest(breezy, odometry);
+  const evaluator::SignTestResult tiny_test = evaluator::OneSidedSignTest(tiny, odometry);
+  std::cout << "[ tinySLAM ] wins over the odometry: BreezySLAM " << breezy_test.wins << " (p = " << breezy_test.p_value
+            << "), slam-constructor " << tiny_test.wins << " (p = " << tiny_test.p_value << ") of " << kDraws << "\n";
+  EXPECT_LE(breezy_test.p_value, 0.05) << "the independent tinySLAM no longer beats the odometry on this input";
+  std::ifstream list(std::string(SLAMSWEEP_SOURCE_DIR) + "/tests/slam/roster_expected_failures.json");
+  const nlohmann::json expected_failures = nlohmann::json::parse(list);
+  bool listed = false;
+  for (const auto& entry : expected_failures.at("expected_failures")) listed = listed || entry.at("algorithm") == "tinyslam";
+  if (listed) {
+    EXPECT_GT(tiny_test.p_value, 0.05) << "slam-constructor's tinySLAM now beats the odometry here: take it off "
+                                          "tests/slam/roster_expected_failures.json if the roster test agrees";
+  } else {
+    EXPECT_LE(tiny_test.p_value, 0.05) << "slam-constructor's tinySLAM does not beat the odometry here";
   }
 }
 

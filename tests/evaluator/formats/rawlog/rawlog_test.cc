@@ -163,7 +163,7 @@ TEST(RawlogTest, IntelCarmenLogRoundTrips) {
 }
 
 TEST(RawlogTest, ReadsMrptsSampleRawlog) {
-  if (!std::filesystem::exists(kMrptSample)) GTEST_SKIP() << "MRPT sample rawlog not installed (Debian: mrpt-common)";
+  if (!std::filesystem::exists(kMrptSample)) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("MRPT sample rawlog not installed (Debian: mrpt-common)");
   // Count with MRPT's own CRawlog: every CSensoryFrame holds one 2D scan in this file.
   mrpt::obs::CRawlog rawlog;
   ASSERT_TRUE(rawlog.loadFromRawLogFile(kMrptSample));
@@ -193,7 +193,7 @@ TEST(RawlogTest, ReadsMrptsSampleRawlog) {
 }
 
 TEST(RawlogTest, ReadsCarmen2rawlogOutputAndRepairsItsClock) {
-  if (!HaveProgram("carmen2rawlog")) GTEST_SKIP() << "carmen2rawlog not installed (Debian: mrpt-apps)";
+  if (!HaveProgram("carmen2rawlog")) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("carmen2rawlog not installed (Debian: mrpt-apps)");
   const testing::TempDir dir;
   // Three FLASER records; carmen2rawlog turns each into CObservationOdometry (odom pose) + a scan.
   std::string log;

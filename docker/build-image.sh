@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Builds slamsweep's image from this checkout without reaching a registry or the upstream repositories:
+# stages the roster's pinned tarballs into docker/peers, makes the base image (docker/build-base.sh)
+# and runs `docker build` on docker/Dockerfile with host networking (the Debian mirror is reached
+# from the build steps; a daemon without a bridge has no other network).
+#
+# usage: docker/build-image.sh [TAG] [docker build options...]     (default TAG slamsweep:latest)
+#   SLAMSWEEP_PEERS  the folder of pinned tarballs (default ../shared/peers beside the repository)
+#   DOCKER_HOST      the daemon (docker/daemon.sh start prints it)
+# Prints the build's duration; docker build's own output goes to stdout.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+docker_client=/usr/bin/docker
+tag=${1:-slamsweep:latest}
+shift || true
+
+# The tarball each recipe pins, copied into the build context (install-slam.sh checks its SHA-256).
+peers=${SLAMSWEEP_PEERS:-$root/../shared/peers}
+staged=0
+for recipe in "$root"/scripts/slam/*.sh; do
+  tarball=$(sed -n 's/^slam_tarball=//p' "$recipe")
+  if [[ -f "$peers/$tarball" ]]; then
+    cmp -s "$peers/$tarball" "$root/docker/peers/$tarball" || cp "$peers/$tarball" "$root/docker/peers/$tarball"
+    chmod 644 "$root/docker/peers/$tarball"
+    staged=$((staged + 1))
+  fi
+done
+if ((staged == 0)); then
+  echo "build-image: no pinned tarballs in $peers; the build clones the upstreams at the pinned commits"
+fi
+
+"$root/docker/build-base.sh" "$(sed -n 's/^ARG BASE=//p' "$root/docker/Dockerfile")"
+
+# The checkout's revision, recorded by every run (the build context has no .git). A file rather than a
+# build argument: an argument would be one more instruction, a full layer copy with vfs.
+revision=$(git -C "$root" describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)
+echo "$revision" >"$root/docker/revision"
+start=$(date +%s)
+"$docker_client" build --network host -f "$root/docker/Dockerfile" -t "$tag" "$@" "$root"
+echo "build-image: built $tag ($revision) in $(($(date +%s) - start)) s"

@@ -1,0 +1,194 @@
+#!/usr/bin/env bash
+# The Docker image built and run for real, as a lab administrator would deploy it: installs Debian's
+# docker.io, debootstrap and docker-compose when missing, starts a private daemon when none runs
+# (docker/daemon.sh), builds the image (docker/build-image.sh) and checks in containers:
+#   - `slamsweep --version`, `slamsweep algorithms` (all five roster algorithms installed, Cartographer's
+#     options readable), every installed program's libraries present, no compiler in the image;
+#   - the quick-start sweep with the shared data read-only and a results volume: every run ok, its report
+#     and junit.xml copied to the host;
+#   - docker-compose up of `slamsweep serve` on the host's loopback, `slamsweep submit --wait` from the
+#     host running every roster driver, `down` leaving the results volume and its results intact.
+# Then it removes the containers, volumes and images it made and stops the daemon it started.
+#
+# usage: scripts/docker-check.sh [SLAMSWEEP_BIN] [OUT_DIR]
+#   SLAMSWEEP_BIN  the host's slamsweep, for `submit` (default build/slamsweep)
+#   OUT_DIR        what the check copies out of the containers, its logs and times.txt (default out/docker-check)
+# Environment: SLAMSWEEP_SHARED (the data folder, default ../shared), SLAMSWEEP_PEERS (tarballs, default
+# $SLAMSWEEP_SHARED/peers), SLAMSWEEP_DOCKER_SCRATCH (the private daemon's folder, docker/daemon.sh),
+# SLAMSWEEP_DOCKER_KEEP=1 keeps the image and its build cache (a second run reuses the layers).
+# Exit code: 0 every check passed, 1 some failed; needs root (or a running daemon) and about 45 minutes
+# on 2 cores when nothing is cached. The ctest `docker_check` (label docker) runs it; the nightly job runs that.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+docker_client=/usr/bin/docker
+slamsweep=${1:-${SLAMSWEEP_BUILD_DIR:-$root/build}/slamsweep}
+out=${2:-$root/out/docker-check}
+shared=${SLAMSWEEP_SHARED:-$root/../shared}
+export SLAMSWEEP_PEERS=${SLAMSWEEP_PEERS:-$shared/peers}
+run_id="check-$$"
+tag="slamsweep-$run_id:latest"
+volume="slamsweep-$run_id-results"
+project="slamsweep-$run_id"
+compose_file=$root/docker/compose.yaml
+
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); echo "PASS $*"; }
+fail() { failed=$((failed + 1)); echo "FAIL $*"; }
+step() { echo "== $*"; }
+
+[[ -x "$slamsweep" ]] || { echo "docker-check: $slamsweep is not built (scripts/build.sh)" >&2; exit 1; }
+[[ -d "$shared/datasets" ]] || { echo "docker-check: $shared/datasets missing (set SLAMSWEEP_SHARED to the shared data folder)" >&2; exit 1; }
+shared=$(cd "$shared" && pwd)
+rm -rf "$out"
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+
+step "packages: docker.io, debootstrap, docker-compose"
+"$root/scripts/install-deps.sh" docker.io debootstrap docker-compose
+
+step "daemon"
+eval "$("$root/docker/daemon.sh" start)"
+images_before=$("$docker_client" images -aq --no-trunc | sort -u)
+compose() {
+  SLAMSWEEP_IMAGE=$tag SLAMSWEEP_DATASETS=$shared/datasets SLAMSWEEP_LISTEN=127.0.0.1:$port \
+    docker-compose --project-name "$project" --file "$compose_file" "$@"
+}
+port=0
+
+# Containers, volumes and images this run made; the daemon when it started it. Runs on any exit.
+cleanup() {
+  local status=$?
+  set +e
+  step "cleanup"
+  compose down --volumes --timeout 30 >/dev/null 2>&1
+  "$docker_client" ps -aq --filter "label=slamsweep.check=$run_id" | xargs -r "$docker_client" rm -f >/dev/null
+  "$docker_client" volume rm -f "$volume" >/dev/null 2>&1
+  if [[ "${SLAMSWEEP_DOCKER_KEEP:-0}" != 1 ]]; then
+    "$docker_client" rmi "$tag" >/dev/null 2>&1
+    # The build stage's layers and anything else this run built (newest first, until none goes).
+    local leftover removed=1
+    while ((removed > 0)); do
+      removed=0
+      for leftover in $(comm -13 <(echo "$images_before") <("$docker_client" images -aq --no-trunc | sort -u)); do
+        "$docker_client" rmi "$leftover" >/dev/null 2>&1 && removed=$((removed + 1))
+      done
+    done
+  else
+    echo "docker-check: SLAMSWEEP_DOCKER_KEEP=1: keeping $tag and its build layers"
+  fi
+  if [[ "$SLAMSWEEP_DOCKER_STARTED" == 1 ]]; then
+    "$root/docker/daemon.sh" stop
+  fi
+  exit "$status"
+}
+trap cleanup EXIT
+
+# in_image ARGS...: a throw-away container of the image, marked for cleanup, without network.
+in_image() {
+  "$docker_client" run --rm --label "slamsweep.check=$run_id" --network none "$@"
+}
+
+step "build"
+start=$(date +%s)
+if "$root/docker/build-image.sh" "$tag" >"$out/build.log" 2>&1; then
+  pass "the image builds ($(($(date +%s) - start)) s)"
+else
+  fail "the image does not build; the end of $out/build.log:"
+  tail -n 30 "$out/build.log"
+  echo "$passed passed, $failed failed"
+  exit 1
+fi
+echo "build_s $(($(date +%s) - start))" >>"$out/times.txt"
+size=$("$docker_client" image inspect --format '{{.Size}}' "$tag")
+echo "image_mb $((size / 1000000))" >>"$out/times.txt"
+echo "docker-check: image $tag is $((size / 1000000)) MB"
+
+step "the program in the image"
+if version=$(in_image "$tag" --version 2>&1); then
+  pass "slamsweep --version: $version"
+else
+  fail "slamsweep --version failed: $version"
+fi
+in_image "$tag" algorithms >"$out/algorithms.txt" 2>&1 || true
+for algorithm in gmapping tinyslam vinyslam hector cartographer; do
+  if grep -qE "^$algorithm +\[installed\]" "$out/algorithms.txt"; then
+    pass "slamsweep algorithms: $algorithm installed"
+  else
+    fail "slamsweep algorithms: $algorithm not installed ($out/algorithms.txt)"
+  fi
+done
+# Cartographer's parameters come from its Lua options: listed only when the installed driver reads them.
+if grep -q "trajectory_builder" "$out/algorithms.txt"; then
+  pass "Cartographer's options read from the installed Lua files"
+else
+  fail "Cartographer lists no trajectory_builder parameters ($out/algorithms.txt)"
+fi
+missing=$(in_image --entrypoint /bin/sh "$tag" -c \
+  'for f in /opt/slamsweep/bin/* /opt/slamsweep/lib/slamsweep/*; do ldd "$f" | sed "s|^|$f: |"; done' |
+  grep 'not found' || true)
+[[ -z "$missing" ]] && pass "every installed program finds its libraries" || fail "missing libraries: $missing"
+compilers=$(in_image --entrypoint /bin/sh "$tag" -c 'for c in cc c++ gcc g++ clang cmake; do command -v $c; done' || true)
+[[ -z "$compilers" ]] && pass "no compiler in the runtime image" || fail "compilers in the runtime image: $compilers"
+user=$(in_image --entrypoint /usr/bin/id "$tag" -un 2>&1 || true)
+[[ "$user" == slamsweep ]] && pass "sweeps run as the unprivileged user slamsweep" || fail "the image runs as '$user'"
+
+step "the quick start in a container"
+"$docker_client" volume create --label "slamsweep.check=$run_id" "$volume" >/dev/null
+start=$(date +%s)
+status=0
+in_image -v "$shared:/data:ro" -v "$volume:/results" "$tag" \
+  run configs/quickstart.yaml --output /results/quickstart >"$out/quickstart.log" 2>&1 || status=$?
+quickstart_s=$(($(date +%s) - start))
+echo "quickstart_s $quickstart_s" >>"$out/times.txt"
+tail -n 3 "$out/quickstart.log"
+((status == 0)) && pass "the quick start exits 0 in the container ($quickstart_s s)" ||
+  fail "the quick start exited $status (see $out/quickstart.log)"
+# The results, from the volume onto the host.
+copier=$("$docker_client" create --label "slamsweep.check=$run_id" -v "$volume:/results" "$tag")
+"$docker_client" cp "$copier:/results/quickstart" "$out/quickstart" || true
+"$docker_client" rm -f "$copier" >/dev/null
+count() { python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["counts"][sys.argv[2]])' "$@" 2>/dev/null || echo "?"; }
+total=$(count "$out/quickstart/summary.json" total)
+failed_runs=$(count "$out/quickstart/summary.json" failed)
+[[ "$total" == 18 && "$failed_runs" == 0 ]] && pass "18 quick-start runs, every one ok" ||
+  fail "quick start: $total runs, $failed_runs failed (expected 18, 0)"
+[[ -s "$out/quickstart/report/index.html" ]] && grep -qi '<html' "$out/quickstart/report/index.html" &&
+  pass "the report is on the host" || fail "no report/index.html on the host"
+[[ $(grep -c '<testcase ' "$out/quickstart/junit.xml" 2>/dev/null) == 18 ]] &&
+  pass "junit.xml with 18 testcases is on the host" || fail "junit.xml missing or without 18 testcases"
+
+step "the service with docker-compose"
+port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+compose config --quiet && pass "compose.yaml is valid for $(docker-compose version --short)" ||
+  fail "docker-compose rejects compose.yaml"
+if compose up --detach --no-build serve >"$out/compose-up.log" 2>&1; then
+  pass "docker-compose up serve"
+else
+  fail "docker-compose up serve failed: $(tail -n 5 "$out/compose-up.log")"
+fi
+waited=0
+until (exec 3<>"/dev/tcp/127.0.0.1/$port") 2>/dev/null || ((waited++ >= 60)); do sleep 1; done
+mkdir -p "$out/service"
+status=0
+"$slamsweep" submit "$root/tests/docker/service_sweep.yaml" --server "http://127.0.0.1:$port" --wait \
+  --junit "$out/service/junit.xml" --report "$out/service/report" >"$out/service/submit.log" 2>&1 || status=$?
+tail -n 3 "$out/service/submit.log"
+((status == 0)) && pass "slamsweep submit --wait from the host: every roster driver ran ok in the container" ||
+  fail "submit --wait exited $status (see $out/service/submit.log; service log: compose logs serve)"
+[[ $(grep -c '<testcase ' "$out/service/junit.xml" 2>/dev/null) == 6 ]] &&
+  pass "the service's junit.xml has the 6 runs" || fail "the service's junit.xml is missing or lacks runs"
+compose logs --no-color serve >"$out/service/serve.log" 2>&1 || true
+if compose down --timeout 60 >"$out/compose-down.log" 2>&1; then
+  pass "docker-compose down"
+else
+  fail "docker-compose down failed: $(tail -n 5 "$out/compose-down.log")"
+fi
+kept=$(in_image -v "${project}_results:/results" --entrypoint /bin/sh "$tag" -c \
+  'ls /results/service/queue.sqlite && find /results/service -name summary.json | head -n 1' 2>&1 || true)
+[[ "$kept" == *queue.sqlite*summary.json* ]] && pass "the results volume outlives down (queue and results kept)" ||
+  fail "the results volume lost the service's data: $kept"
+
+echo "docker-check: times and size in $out/times.txt"
+echo "$passed passed, $failed failed"
+((failed == 0))
