@@ -59,7 +59,7 @@ std::string CommandLine(const RunOptions& options) {
 
 int Run(const RunOptions& options, const Streams& streams, const std::string& command_line) {
   std::optional<orchestrator::PhaseTimer> plan_phase(std::in_place, "plan");
-  const LoadedSweep sweep = LoadSweep(options.config, options.selection);
+  const LoadedSweep sweep = LoadSweep(options.config, options.selection, /*install_missing_roster=*/true);
   plan_phase.reset();
   orchestrator::SweepSettings settings;
   settings.name = sweep.config.name;

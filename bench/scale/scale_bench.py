@@ -262,7 +262,7 @@ def measure_size(runs, args, env, shared):
     return result
 
 
-def check(results, times):
+def check(results, times, budgets):
     """The missed budgets (and goals with `times`), as sentences."""
     missed = []
     for result in results:
@@ -270,8 +270,8 @@ def check(results, times):
         disk = result["disk"]
         for key, value in (("disk_kb_per_run", disk["disk_kb_per_run"]), ("db_kb_per_run", disk["db_kb_per_run"]),
                            ("files_per_run_folder", disk["files_per_run_folder_max"])):
-            if value > BUDGETS[key]:
-                missed.append(f"{runs} runs: {key} {value:.1f} > {BUDGETS[key]}")
+            if value > budgets[key]:
+                missed.append(f"{runs} runs: {key} {value:.1f} > {budgets[key]}")
         if times and runs >= 10000:
             figures = {"overhead_ms_per_run": result["run"]["overhead_ms_per_run"],
                        "report_s": result["report"]["wall_s"], "report_peak_mb": result["report"]["peak_mb"],
@@ -341,6 +341,9 @@ def main():
     parser.add_argument("--check-times", action="store_true")
     parser.add_argument("--keep", action="store_true")
     parser.add_argument("--label", default="")
+    parser.add_argument("--disk-kb-per-run", type=float, default=BUDGETS["disk_kb_per_run"],
+                        help="the disk budget --check applies (default: the goal); CI holds today's figure so that "
+                             "a regression fails while the goal is not met yet")
     args = parser.parse_args()
     args.out = os.path.abspath(args.out)
     args.slamsweep = os.path.abspath(args.slamsweep)
@@ -366,7 +369,8 @@ def main():
     with open(os.path.join(args.out, "table.md"), "w") as handle:
         handle.write(text)
     print(text)
-    missed = check(results, args.check_times) if (args.check or args.check_times) else []
+    budgets = dict(BUDGETS, disk_kb_per_run=args.disk_kb_per_run)
+    missed = check(results, args.check_times, budgets) if (args.check or args.check_times) else []
     for sentence in missed:
         print(f"scale_bench: missed: {sentence}")
     return BUDGET_MISSED if missed else 0
