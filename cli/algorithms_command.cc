@@ -16,7 +16,8 @@ nlohmann::json ToJson(const orchestrator::AlgorithmInfo& info) {
   for (const auto& [key, value] : info.parameters) parameters[key] = value;
   return {{"adapter", info.adapter}, {"title", info.title},     {"installed", info.installed},
           {"status", info.status},   {"license", info.license}, {"seeding", info.seeding},
-          {"parameters", parameters}, {"parameter_note", info.parameter_note}};
+          {"parameters", parameters}, {"parameter_note", info.parameter_note},
+          {"defaults_note", info.defaults_note}};
 }
 
 void PrintText(const orchestrator::AlgorithmInfo& info, std::ostream& out) {
@@ -25,6 +26,7 @@ void PrintText(const orchestrator::AlgorithmInfo& info, std::ostream& out) {
       << "  licence: " << info.license << "; seeding: " << info.seeding << "\n"
       << "  parameters (" << info.parameter_note << ")" << (info.parameters.empty() ? "" : ":") << "\n";
   for (const auto& [key, value] : info.parameters) out << "    " << key << " = " << value << "\n";
+  if (!info.defaults_note.empty()) out << "  defaults: " << info.defaults_note << "\n";
 }
 
 }  // namespace

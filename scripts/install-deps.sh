@@ -25,8 +25,9 @@ build_packages=(
 )
 
 # Programs and data slamsweep runs or reads: the report's plots (gnuplot), MRPT's real SLAM programs
-# (mrpt-apps) and their sample dataset and configs (mrpt-common).
-run_programs=(gnuplot-nox mrpt-apps mrpt-common)
+# (mrpt-apps) and their sample dataset and configs (mrpt-common), the sandbox every SLAM program runs in
+# (bubblewrap: orchestrator/sandbox).
+run_programs=(gnuplot-nox mrpt-apps mrpt-common bubblewrap)
 
 # What the installed programs link (scripts/docker-check.sh runs ldd on each in the image: a library
 # missing here fails it) and run_programs; the package names are Debian 12's.
@@ -45,9 +46,10 @@ packages=(
   # headless Chromium checks the report in tests; python3-* write the test bags
   chromium python3-rosbag python3-sensor-msgs python3-nav-msgs python3-tf2-msgs
   # tests and benchmarks (hyperfine: bench/cli, whole-process times); python3-scipy is the
-  # independent reference for the Spearman rank correlation of the metric validity study
-  # (tests/evaluator/statistics); python3-pil reads the stage animations back (tests/evaluator/formats/map)
-  libgtest-dev libgmock-dev libbenchmark-dev shellcheck hyperfine python3-scipy python3-pil
+  # independent reference for the Spearman rank correlation of the metric validity study and the
+  # rank tests; python3-statsmodels for the Holm correction (tests/evaluator/statistics); python3-pil reads
+  # the stage animations back (tests/evaluator/formats/map)
+  libgtest-dev libgmock-dev libbenchmark-dev shellcheck hyperfine python3-scipy python3-statsmodels python3-pil
   # the service tests: /metrics parsed by the Prometheus project's own parser; wrk drives bench/service/load_test.sh
   python3-prometheus-client wrk
   # the Slurm executor's test: a real one-node cluster on localhost (jobs/slurm/local-cluster.sh)

@@ -19,6 +19,10 @@ struct AlgorithmInfo {
   std::vector<std::pair<std::string, std::string>> parameters;
   /// How other parameters are named (MRPT: any Section.key of the template).
   std::string parameter_note;
+  /// Where slamsweep's own defaults for the adapter were chosen and where they were checked since
+  /// ("" when the adapter takes upstream's defaults as they are): a sweep that scores the sequence
+  /// they were tuned on should know it.
+  std::string defaults_note;
 };
 
 /// Every adapter in the order a user meets them: the roster, MRPT's programs, the odometry baseline,

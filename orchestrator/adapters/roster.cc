@@ -1,5 +1,6 @@
 #include "orchestrator/adapters/roster.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <fstream>
@@ -21,7 +22,7 @@ constexpr std::array kRoster = {
     RosterAlgorithm{"vinyslam", "slam-constructor", "vinySLAM (slam-constructor)", "MIT", Seeding::kSeeded},
     RosterAlgorithm{"hector", "hector", "Hector SLAM (hector_slam_lib)", "BSD", Seeding::kDeterministic},
     RosterAlgorithm{"cartographer", "cartographer", "Cartographer", "Apache-2.0", Seeding::kDeterministic,
-                    "slamsweep-slam-cartographer.lua"},
+                    "slamsweep-slam-cartographer.lua", "configuration_files"},
 };
 
 }  // namespace
@@ -69,6 +70,25 @@ fs::path RosterDriver(const RosterAlgorithm& algorithm) {
   }
 }
 
+fs::path RosterUpstreamConfigDir(const RosterAlgorithm& algorithm) {
+  if (algorithm.upstream_config_dir.empty()) return {};
+  const std::string upstream(algorithm.upstream);
+  const std::string dir(algorithm.upstream_config_dir);
+  if (const auto installed = evaluator::FindInstalledData(upstream + "/" + dir)) return *installed;
+  return RosterPrefix() / upstream / "share" / upstream / dir;
+}
+
+std::vector<fs::path> RosterProgramReads(const RosterAlgorithm& algorithm) {
+  std::vector<fs::path> reads = {fs::absolute(RosterPrefix()).lexically_normal()};
+  // The driver's configuration beside it (Cartographer's Lua options), found from /proc/self/exe.
+  if (!algorithm.config_file.empty()) reads.push_back(RosterDriver(algorithm).parent_path() / algorithm.config_file);
+  // Upstream's configuration files, wherever the installation keeps them.
+  if (const fs::path upstream = RosterUpstreamConfigDir(algorithm); !upstream.empty()) {
+    reads.push_back(fs::absolute(upstream).lexically_normal());
+  }
+  return reads;
+}
+
 std::vector<fs::path> RosterProgramFiles(const RosterAlgorithm& algorithm) {
   const fs::path driver = RosterDriver(algorithm);
   std::vector<fs::path> files = {driver};
@@ -79,6 +99,21 @@ std::vector<fs::path> RosterProgramFiles(const RosterAlgorithm& algorithm) {
                                   " missing (the driver's configuration, copied beside it by scripts/build.sh)");
     }
     files.push_back(config);
+  }
+  if (!algorithm.upstream_config_dir.empty()) {
+    const fs::path folder = RosterUpstreamConfigDir(algorithm);
+    std::vector<fs::path> upstream_files;
+    std::error_code error;
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder, error)) {
+      if (entry.is_regular_file()) upstream_files.push_back(entry.path());
+    }
+    if (error || upstream_files.empty()) {
+      throw evaluator::InputError("algorithm.adapter " + std::string(algorithm.name) + ": " + folder.string() +
+                                  " missing or empty (upstream's configuration files): scripts/install-slam.sh " +
+                                  std::string(algorithm.upstream));
+    }
+    std::sort(upstream_files.begin(), upstream_files.end());
+    files.insert(files.end(), upstream_files.begin(), upstream_files.end());
   }
   const fs::path manifest = RosterManifestPath(algorithm);
   if (!fs::is_regular_file(manifest)) {

@@ -23,6 +23,10 @@ struct RosterAlgorithm {
   Seeding seeding;            ///< whether the run's seed reaches a random generator
   /// A file beside the driver that it reads as configuration ("" for none): part of the build identity.
   std::string_view config_file = "";
+  /// A folder of upstream configuration files the driver's options include ("" for none): installed as
+  /// PREFIX/share/slamsweep/<upstream>/<dir>, in a build under the roster prefix's
+  /// <upstream>/share/<upstream>/<dir>. Every file in it is part of the build identity.
+  std::string_view upstream_config_dir = "";
 };
 
 /// GMapping, tinySLAM, vinySLAM, Hector SLAM and Cartographer, in the paper's order.
@@ -41,9 +45,17 @@ std::filesystem::path RosterPrefix();
 /// how to install it when it is nowhere.
 std::filesystem::path RosterDriver(const RosterAlgorithm& algorithm);
 
+/// Where the driver finds upstream's configuration files (upstream_config_dir), the same rule the
+/// driver follows: the installation's copy, else the upstream's build prefix. Empty when it has none.
+std::filesystem::path RosterUpstreamConfigDir(const RosterAlgorithm& algorithm);
+
+/// What the driver reads besides its input: the installed upstreams (libraries, Cartographer's
+/// configuration files) and its config_file beside it (Cartographer's Lua options).
+std::vector<std::filesystem::path> RosterProgramReads(const RosterAlgorithm& algorithm);
+
 /// The files a run of the driver executes or reads as configuration: the driver, its config_file
-/// beside it, and the upstream's install manifest (which names the pinned commit). Throws InputError
-/// naming a missing one and how to install it.
+/// beside it, every file of its upstream_config_dir, and the upstream's install manifest (which names
+/// the pinned commit). Throws InputError naming a missing one and how to install it.
 std::vector<std::filesystem::path> RosterProgramFiles(const RosterAlgorithm& algorithm);
 
 /// <prefix>/share/slamsweep/slam/<upstream>.json, written by install-slam.sh (upstream, commit,

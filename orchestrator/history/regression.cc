@@ -32,7 +32,7 @@ std::string FindingName(const Finding& f) {
 std::string DescribeFinding(const Finding& f) {
   return fmt::format("median {:.6g} -> {:.6g} {} (n {} -> {}), p = {:.4g} ({}), Cliff's delta = {:+.3f}",
                      f.baseline_median, f.current_median, f.unit, f.baseline_n, f.current_n, f.test.p_value,
-                     MannWhitneyMethodName(f.test.method), f.cliffs_delta);
+                     evaluator::MannWhitneyMethodName(f.test.method), f.cliffs_delta);
 }
 
 }  // namespace
@@ -107,8 +107,8 @@ Comparison CompareNights(const Night& baseline, const Night& current, const Regr
       f.current_median = Median(after->values);
     }
     if (f.baseline_n > 0 && f.current_n > 0) {
-      f.test = MannWhitneyU(after->values, before->values);
-      f.cliffs_delta = CliffsDelta(after->values, before->values);
+      f.test = evaluator::MannWhitneyU(after->values, before->values);
+      f.cliffs_delta = evaluator::CliffsDelta(after->values, before->values);
       const bool significant = f.test.p_value < options.alpha && std::abs(f.cliffs_delta) >= options.min_effect;
       // Every metric here is an error or a defect count: larger is worse.
       if (!significant) {
@@ -138,7 +138,7 @@ json ComparisonToJson(const Comparison& comparison) {
                         {"current_median", NumberOrNull(f.current_median)},
                         {"u", f.test.u_x},
                         {"p_value", f.test.p_value},
-                        {"method", MannWhitneyMethodName(f.test.method)},
+                        {"method", evaluator::MannWhitneyMethodName(f.test.method)},
                         {"cliffs_delta", f.cliffs_delta}});
   }
   return {{"baseline", comparison.baseline_label},

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "orchestrator/history/mann_whitney.h"
+#include "evaluator/statistics/mann_whitney.h"
 #include "orchestrator/history/night.h"
 
 namespace slamsweep::orchestrator {
@@ -43,7 +43,7 @@ struct Finding : SeriesKey {
   double baseline_median = 0.0;
   double current_median = 0.0;
   /// U of the current samples against the baseline's.
-  MannWhitneyResult test;
+  evaluator::MannWhitneyResult test;
   /// Cliff's delta of current against baseline: positive = current larger = worse (every metric: lower is better).
   double cliffs_delta = 0.0;
   Verdict verdict = Verdict::kUnchanged;

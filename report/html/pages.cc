@@ -6,7 +6,9 @@
 
 #include "report/html/html.h"
 #include "report/html/number_format.h"
+#include "report/html/overview_section.h"
 #include "report/html/site_data.h"
+#include "report/html/trajectory_figures.h"
 
 namespace slamsweep::report {
 
@@ -246,6 +248,7 @@ std::string RenderIndexPage(const SiteData& site) {
                                        E(" (each ground-truth-free metric against the real error)"));
   }
   body += Element("ul", "downloads", downloads);
+  body += OverviewSection(site, site.significance);
   for (const SequenceModel& sequence : model.sequences) {
     Html section = Element("h2", "", Link(site.layout->SequencePage(sequence.key), E("Sequence " + sequence.title)));
     section += SequenceTables(site, sequence, "");
@@ -276,6 +279,7 @@ std::string RenderSequencePage(const SiteData& site, const SequenceModel& sequen
   body += ViewLinks(site, sequence, root);
   body += Element("h2", "", E("Metric plots"));
   body += Plots(site, sequence, root);
+  body += TrajectoriesSection(site, sequence, root);
   body += Element("h2", "", E("Map gallery"));
   if (!sequence.has_reference) {
     body += Element("p", "note", E("No reference trajectory: each map is the median run by corner count."));
@@ -472,6 +476,11 @@ td.verdict-opposite { background: #f6d6d0; }
 td.verdict-unclear { background: #f4f0dc; }
 td.verdict-none { color: #555; }
 table.definitions td:last-child { max-width: 60em; }
+table.overview tr.best td { background: #d8f0d8; }
+table.overview tr.beside td { color: #555; font-style: italic; }
+td.num { text-align: right; white-space: nowrap; }
+p.verdict { font-weight: bold; }
+ul.tests { font-size: 0.85em; color: #444; }
 )";
 }
 

@@ -11,6 +11,7 @@
 #include "report/html/report_layout.h"
 #include "report/model/parameter_model.h"
 #include "report/model/segment_model.h"
+#include "report/model/significance.h"
 #include "report/model/sweep_model.h"
 #include "report/plots/algorithm_palette.h"
 
@@ -55,6 +56,8 @@ struct TableViews {
 struct SiteData {
   const SweepModel* model = nullptr;
   const ReportLayout* layout = nullptr;
+  /// Per table (parallel to model->sequences): the ranking and the significance of its best row.
+  std::vector<TableSignificance> significance;
   std::string title;                   ///< the sweep's name ("slamsweep report — <result dir name>" without one)
   std::vector<RunArtifacts> runs;      ///< parallel to model->runs
   std::map<std::string, std::vector<PlotArtifact>> plots;  ///< by table key (SequenceModel::key)

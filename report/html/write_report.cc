@@ -16,6 +16,7 @@
 #include "report/html/metric_spec_page.h"
 #include "report/html/report_layout.h"
 #include "report/html/site_data.h"
+#include "report/html/trajectory_figures.h"
 #include "report/html/text_outputs.h"
 #include "report/html/validity_page.h"
 #include "report/html/view_pages.h"
@@ -399,6 +400,7 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   SiteData site;
   site.model = &model;
   site.layout = &layout;
+  site.significance = BuildSignificance(model);
   const AlgorithmPalette palette(model.algorithms);
   site.palette = &palette;
   fs::path normal = fs::absolute(result_dir).lexically_normal();
@@ -423,6 +425,7 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   ValiditySite validity = PlanValidity(model, *site.palette, out_dir, scatter_plots);
   std::vector<FigureJob> figures;
   PlanViewPages(out_dir, site, figures);
+  PlanTrajectoryFigures(out_dir, site, figures);
   std::string figures_error;
   std::vector<ImageJob> jobs;
   if (options.artwork != nullptr) {

@@ -91,7 +91,29 @@ struct HeatmapFigure {
   std::vector<std::vector<HeatmapCell>> cells;  ///< [y][x]
 };
 
-using ViewFigure = std::variant<BoxplotFigure, LineFigure, HeatmapFigure>;
+/// One path in the plane: a trajectory's x and y.
+struct PathSeries {
+  std::string label;
+  SeriesStyle style;
+  std::vector<double> x;
+  std::vector<double> y;
+  bool reference = false;  ///< drawn first, thick and grey, under the others
+  /// When not empty (parallel to x): the path is coloured by these values on a sequential scale
+  /// (evo's error-along-the-path plot) instead of its style's colour.
+  std::vector<double> colour_values;
+};
+
+/// Paths over one another at one scale (equal axes): every row's trajectory over the reference, or
+/// one trajectory coloured by its error along the path.
+struct PathFigure {
+  std::string title;
+  std::string x_label = "x (m)";
+  std::string y_label = "y (m)";
+  std::string colour_label;  ///< the colour bar's label, for a series with colour_values
+  std::vector<PathSeries> series;
+};
+
+using ViewFigure = std::variant<BoxplotFigure, LineFigure, HeatmapFigure, PathFigure>;
 
 /// A figure to draw into `png`.
 struct FigureJob {

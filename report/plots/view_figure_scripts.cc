@@ -370,6 +370,58 @@ std::string HeatmapScript(const HeatmapFigure& figure, const std::filesystem::pa
   return script;
 }
 
+std::string PathFigureScript(const PathFigure& figure, const std::filesystem::path& png, std::size_t index) {
+  std::vector<std::string> labels;
+  bool coloured = false;
+  for (const PathSeries& series : figure.series) {
+    labels.push_back(series.label);
+    coloured = coloured || !series.colour_values.empty();
+  }
+  const int width_px = 900;
+  const KeyPlacement key = PlaceKey(labels, width_px, 3);
+  std::string script = Head(figure.title, figure.x_label, figure.y_label, png, index, width_px, 720 + key.extra_height_px);
+  script += key.command;
+  script += "set size ratio -1\nset grid\n";
+  if (coloured) {
+    std::string palette;
+    for (std::size_t i = 0; i < kViridisReversed.size(); ++i) {
+      palette += fmt::format("{}{} '#{:06X}'", i == 0 ? "" : ", ", Number(kViridisReversed[i].t), kViridisReversed[i].rgb);
+    }
+    script += "set palette defined (" + palette + ")\n";
+    script += fmt::format("set cblabel {} noenhanced\n", GnuplotQuoted(figure.colour_label));
+  } else {
+    script += "unset colorbox\n";
+  }
+  std::string clauses;
+  for (std::size_t s = 0; s < figure.series.size(); ++s) {
+    const PathSeries& series = figure.series[s];
+    std::string rows;
+    const bool by_colour = series.colour_values.size() == series.x.size() && !series.x.empty();
+    for (std::size_t i = 0; i < series.x.size() && i < series.y.size(); ++i) {
+      if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
+      rows += by_colour ? fmt::format("{} {} {}\n", Number(series.x[i]), Number(series.y[i]), Number(series.colour_values[i]))
+                        : fmt::format("{} {}\n", Number(series.x[i]), Number(series.y[i]));
+    }
+    if (rows.empty()) continue;
+    const std::string name = fmt::format("$path_{}_{}", index, s);
+    script += Datablock(name, rows);
+    std::string style;
+    if (series.reference) {
+      style = "with lines linewidth 4 linecolor rgb '#A0A0A0'";
+    } else if (by_colour) {
+      style = "using 1:2:3 with lines linewidth 2.5 linecolor palette";
+    } else {
+      style = fmt::format("with lines linewidth 1.5 linecolor rgb {}{}", Colour(series.style.rgb),
+                          series.style.variant > 0 ? " dashtype 2" : "");
+    }
+    if (!by_colour) style = "using 1:2 " + style;
+    clauses += fmt::format("{}{} {} title {}", clauses.empty() ? "" : ", ", name, style, GnuplotQuoted(series.label));
+  }
+  script += clauses.empty() ? EmptyPlot(index) : "plot " + clauses + "\n";
+  script += "unset output\n";
+  return script;
+}
+
 std::string FigureScript(const FigureJob& job, std::size_t index) {
   return std::visit(
       [&](const auto& figure) -> std::string {
@@ -378,6 +430,8 @@ std::string FigureScript(const FigureJob& job, std::size_t index) {
           return BoxplotScript(figure, job.png, index);
         } else if constexpr (std::is_same_v<T, LineFigure>) {
           return LineFigureScript(figure, job.png, index);
+        } else if constexpr (std::is_same_v<T, PathFigure>) {
+          return PathFigureScript(figure, job.png, index);
         } else {
           return HeatmapScript(figure, job.png, index);
         }

@@ -25,6 +25,10 @@ std::string LineFigureScript(const LineFigure& figure, const std::filesystem::pa
 /// or white, whichever reads on its colour; cells without value grey with "no run"; the best framed.
 std::string HeatmapScript(const HeatmapFigure& figure, const std::filesystem::path& png, std::size_t index);
 
+/// Paths at one scale (equal axes), the reference first in thick grey, the others in their colours; a series
+/// with colour values drawn on the reversed viridis scale with a colour bar.
+std::string PathFigureScript(const PathFigure& figure, const std::filesystem::path& png, std::size_t index);
+
 /// The script of whichever figure `job` holds.
 std::string FigureScript(const FigureJob& job, std::size_t index);
 

@@ -110,6 +110,29 @@ TEST(BestMarksTest, ARowWithAFailedRunIsNeverBestEvenWithTheLowestMean) {
   EXPECT_EQ(floor.rows[*best.row].algorithm, "good");
 }
 
+// A run reused under another build (--reuse-stale) keeps its numbers on the page but never wins: "good"
+// has the lowest complete mean, and stale it gives the mark to "fair".
+TEST(BestMarksTest, AStaleRowIsShownWithItsMarkButNeverBest) {
+  TempDir dir;
+  testing::WriteFixtureSweep(dir.path(), BestFixtureRuns());
+  std::vector<RunRecord> records = LoadRuns(dir.path());
+  for (RunRecord& record : records) record.flags.Set(orchestrator::RunFlag::kStale, record.algorithm == "good");
+  const SweepModel model = BuildSweepModel(std::move(records), LoadSweepModelOptions(dir.path()));
+  const SequenceModel& floor = Sequence(model, "floor");
+  const std::size_t ate = Column(floor.trajectory_columns, "ape_trans");
+  const AlgorithmRow& good = Row(floor, "good");
+  EXPECT_TRUE(good.flags.Has(orchestrator::RunFlag::kStale));
+  EXPECT_FALSE(IsBestCandidate(good));
+  EXPECT_FALSE(good.trajectory_cells[ate].best);
+  EXPECT_LT(good.trajectory_cells[ate].summary.mean, Row(floor, "fair").trajectory_cells[ate].summary.mean);
+  EXPECT_TRUE(Row(floor, "fair").trajectory_cells[ate].best);
+  std::vector<std::size_t> all(floor.rows.size());
+  for (std::size_t r = 0; r < all.size(); ++r) all[r] = r;
+  const BestValue best = FindBest(floor, all, ColumnRef{true, ate});
+  ASSERT_TRUE(best.row);
+  EXPECT_EQ(floor.rows[*best.row].algorithm, "fair");
+}
+
 TEST(BestMarksTest, TheOdometryBaselineIsALineToBeatNeverBest) {
   TempDir dir;
   const SweepModel model = ModelOf(BestFixtureRuns(), dir);

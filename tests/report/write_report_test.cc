@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <variant>
 
 #include "evaluator/core/input_error.h"
 #include "report/plots/algorithm_palette.h"
@@ -414,6 +415,47 @@ TEST_F(WriteReportTest, WithoutReferenceDataThereIsNoValidityPage) {
   EXPECT_FALSE(fs::exists(dir_ / "report/validity.html"));  // the earlier report's page is gone
   EXPECT_EQ(ReadAll(dir_ / "report/index.html").find("validity.html"), std::string::npos);
   EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
+}
+
+TEST_F(WriteReportTest, DrawsEveryRowsTrajectoryOverTheReferenceAndEachPathsError) {
+  Write();
+  // intel has a reference and three rows with a median run (gmapping, the hostile name, single); mit-no-ref has none.
+  std::vector<const PathFigure*> paths;
+  for (const FigureJob& job : artwork_.figures) {
+    if (const auto* path = std::get_if<PathFigure>(&job.figure)) paths.push_back(path);
+  }
+  ASSERT_EQ(paths.size(), 1u + 3u);
+  const PathFigure& together = *paths[0];
+  ASSERT_EQ(together.series.size(), 1u + 3u);
+  EXPECT_TRUE(together.series[0].reference);
+  EXPECT_EQ(together.series[0].label, "reference");
+  for (std::size_t s = 1; s < together.series.size(); ++s) {
+    EXPECT_FALSE(together.series[s].reference);
+    EXPECT_TRUE(together.series[s].colour_values.empty());
+    EXPECT_FALSE(together.series[s].x.empty());
+  }
+  for (std::size_t f = 1; f < paths.size(); ++f) {
+    ASSERT_EQ(paths[f]->series.size(), 2u);
+    const PathSeries& path = paths[f]->series[1];
+    ASSERT_EQ(path.colour_values.size(), path.x.size());
+    for (const double error : path.colour_values) EXPECT_GE(error, 0.0);
+  }
+  const std::string page = ReadAll(dir_ / "report" / "sequences" / "intel-clean.html");
+  EXPECT_NE(page.find("<h2>Trajectories</h2>"), std::string::npos);
+  EXPECT_NE(page.find("intel-clean/trajectories.png"), std::string::npos);
+  EXPECT_NE(page.find("intel-clean/path-error-0.png"), std::string::npos);
+  EXPECT_EQ(ReadAll(dir_ / "report" / "sequences" / "mit-no-ref-clean.html").find("<h2>Trajectories</h2>"),
+            std::string::npos);
+}
+
+TEST_F(WriteReportTest, TheIndexOpensWithTheRankedOverviewAndItsVerdict) {
+  Write();
+  const std::string index = ReadAll(dir_ / "report" / "index.html");
+  const std::size_t overview = index.find("Which is better, and is the difference real?");
+  ASSERT_NE(overview, std::string::npos);
+  EXPECT_LT(overview, index.find("Sequence intel"));
+  EXPECT_NE(index.find("ATE translation RMSE (m), mean [95 % interval]"), std::string::npos);
+  EXPECT_NE(index.find("only ground-truth-free metrics"), std::string::npos);  // mit-no-ref
 }
 
 }  // namespace

@@ -230,6 +230,13 @@ TEST(RosterSweepTest, AlgorithmsListsEveryAdapterWithWhatIsInstalled) {
     EXPECT_EQ(gmapping.at("parameters").at("particles"), "30");
     EXPECT_THAT(gmapping.at("status").get<std::string>(), HasSubstr("5105476edb12"));
   }
+  // Defaults chosen on intel say so, with the re-check on a sequence they were not tuned on.
+  for (const char* tuned : {"mrpt-icp-slam", "cartographer"}) {
+    const std::string note = by_adapter.at(tuned).at("defaults_note").get<std::string>();
+    EXPECT_THAT(note, HasSubstr("intel")) << tuned;
+    EXPECT_THAT(note, HasSubstr("re-checked on the simulated floor")) << tuned;
+  }
+  EXPECT_EQ(by_adapter.at("gmapping").at("defaults_note"), "");
   if (std::find(built.begin(), built.end(), "vinyslam") != built.end()) {
     // slam-constructor's parameters are the properties of its file, under their own names.
     EXPECT_TRUE(by_adapter.at("vinyslam").at("parameters").contains("slam/mapping/blur")) << by_adapter.at("vinyslam").dump();

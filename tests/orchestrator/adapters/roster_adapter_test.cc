@@ -175,17 +175,36 @@ TEST(RosterAdapterTest, CartographersLuaFileIsPartOfItsBuildIdentity) {
   }
   const fs::path lua = dir / "roster" / "bin" / "slamsweep-slam-cartographer.lua";
   slamsweep::testing::WriteFile(lua, "options = { map_builder = MAP_BUILDER }\n");
+  try {
+    ProgramFilesOf(Algorithm("cartographer"));
+    FAIL() << "a driver without upstream's configuration files must not be planned";
+  } catch (const evaluator::InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("configuration_files missing or empty"));
+  }
+  // The upstream files slamsweep_2d.lua includes (map_builder.lua, trajectory_builder.lua, ...).
+  const fs::path upstream = dir / "roster" / "prefix" / "cartographer" / "share" / "cartographer" / "configuration_files";
+  fs::create_directories(upstream);
+  slamsweep::testing::WriteFile(upstream / "trajectory_builder.lua", "TRAJECTORY_BUILDER = {}\n");
+  slamsweep::testing::WriteFile(upstream / "map_builder.lua", "MAP_BUILDER = {}\n");
+  EXPECT_EQ(RosterUpstreamConfigDir(*FindRosterAlgorithm("cartographer")), upstream);
   const std::vector<fs::path> files = ProgramFilesOf(Algorithm("cartographer"));
-  ASSERT_EQ(files.size(), 3u);
+  ASSERT_EQ(files.size(), 5u);
   EXPECT_EQ(files[1], lua);
-  // An edited Lua file is another build: its results are never reused or pooled with the old ones.
+  EXPECT_EQ(files[2], upstream / "map_builder.lua");
+  EXPECT_EQ(files[3], upstream / "trajectory_builder.lua");
+  // An edited Lua file, ours or upstream's, is another build: its results are never reused or pooled
+  // with the old ones.
   std::vector<RunSpec> runs(1);
   runs[0].algorithm = Algorithm("cartographer");
   StampBuildIdentity(runs);
   const std::string before = BuildSignature(runs[0].build);
   slamsweep::testing::WriteFile(lua, "options = { map_builder = MAP_BUILDER, tuned = true }\n");
   StampBuildIdentity(runs);
-  EXPECT_NE(BuildSignature(runs[0].build), before);
+  const std::string after_ours = BuildSignature(runs[0].build);
+  EXPECT_NE(after_ours, before);
+  slamsweep::testing::WriteFile(upstream / "map_builder.lua", "MAP_BUILDER = { num_background_threads = 4 }\n");
+  StampBuildIdentity(runs);
+  EXPECT_NE(BuildSignature(runs[0].build), after_ours);
 }
 
 TEST(RosterAdapterTest, TheRandomisedAlgorithmsAreSeeded) {

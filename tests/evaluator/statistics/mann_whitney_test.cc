@@ -1,10 +1,10 @@
-#include "orchestrator/history/mann_whitney.h"
+#include "evaluator/statistics/mann_whitney.h"
 
 #include <gtest/gtest.h>
 
 #include <vector>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::evaluator {
 namespace {
 
 // Expected values: python3 without scipy (not installed here). Exact p-values by brute force over every
@@ -116,4 +116,4 @@ TEST(CliffsDeltaTest, HandComputed) {
 }
 
 }  // namespace
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::evaluator

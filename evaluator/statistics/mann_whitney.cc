@@ -1,10 +1,10 @@
-#include "orchestrator/history/mann_whitney.h"
+#include "evaluator/statistics/mann_whitney.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::evaluator {
 namespace {
 
 struct RankSums {
@@ -73,7 +73,7 @@ std::string_view MannWhitneyMethodName(MannWhitneyMethod method) {
   return method == MannWhitneyMethod::kExact ? "exact" : "normal";
 }
 
-MannWhitneyResult MannWhitneyU(std::span<const double> x, std::span<const double> y) {
+MannWhitneyResult MannWhitneyU(std::span<const double> x, std::span<const double> y, Alternative alternative) {
   MannWhitneyResult result;
   if (x.empty() || y.empty()) return result;
   const double n_x = static_cast<double>(x.size());
@@ -81,21 +81,25 @@ MannWhitneyResult MannWhitneyU(std::span<const double> x, std::span<const double
   const RankSums sums = RankSum(x, y);
   result.u_x = sums.rank_sum_x - n_x * (n_x + 1.0) / 2.0;
   result.u_y = n_x * n_y - result.u_x;
-  const double u_max = std::max(result.u_x, result.u_y);
+  // The U whose upper tail is the evidence: x lower than y means a small u_x, so a large u_y.
+  const double u_tail = alternative == Alternative::kTwoSided ? std::max(result.u_x, result.u_y)
+                        : alternative == Alternative::kLess   ? result.u_y
+                                                              : result.u_x;
+  const double sides = alternative == Alternative::kTwoSided ? 2.0 : 1.0;
 
   const bool ties = sums.tie_term > 0.0;
   if (!ties && x.size() <= kMannWhitneyExactMaxSize && y.size() <= kMannWhitneyExactMaxSize) {
     result.method = MannWhitneyMethod::kExact;
     const std::vector<double> counts = ExactUCounts(x.size(), y.size());
     double total = 0.0;
-    double upper_tail = 0.0;  // P(U >= u_max)
-    const auto u_high = static_cast<std::size_t>(std::llround(u_max));
+    double upper_tail = 0.0;  // P(U >= u_tail)
+    const auto u_high = static_cast<std::size_t>(std::llround(u_tail));
     for (std::size_t u = 0; u < counts.size(); ++u) {
       total += counts[u];
       if (u >= u_high) upper_tail += counts[u];
     }
-    // The distribution is symmetric, so doubling the upper tail of the larger U is the two-sided p-value.
-    result.p_value = std::min(1.0, 2.0 * upper_tail / total);
+    // The distribution is symmetric: the two-sided p-value doubles the upper tail of the larger U.
+    result.p_value = std::min(1.0, sides * upper_tail / total);
     return result;
   }
 
@@ -108,9 +112,17 @@ MannWhitneyResult MannWhitneyU(std::span<const double> x, std::span<const double
     result.p_value = 1.0;
     return result;
   }
-  result.z = std::max(0.0, (u_max - mean - 0.5) / std::sqrt(variance));
-  result.p_value = std::min(1.0, std::erfc(result.z / std::sqrt(2.0)));
+  const double z = (u_tail - mean - 0.5) / std::sqrt(variance);
+  result.z = alternative == Alternative::kTwoSided ? std::max(0.0, z) : z;
+  result.p_value = std::min(1.0, sides * 0.5 * std::erfc(result.z / std::sqrt(2.0)));
   return result;
+}
+
+double MannWhitneyMinimumOneSidedP(std::size_t n_x, std::size_t n_y) {
+  // 1 / C(n_x + n_y, n_x), built up as a product to stay finite.
+  double p = 1.0;
+  for (std::size_t i = 1; i <= n_x; ++i) p *= static_cast<double>(i) / static_cast<double>(n_y + i);
+  return p;
 }
 
 double CliffsDelta(std::span<const double> x, std::span<const double> y) {
@@ -122,4 +134,4 @@ double CliffsDelta(std::span<const double> x, std::span<const double> y) {
   return dominance / (static_cast<double>(x.size()) * static_cast<double>(y.size()));
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::evaluator

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "report/html/site_data.h"
+#include "report/plots/figure_types.h"
+
+namespace slamsweep::report {
+
+/// The id of a table's figure of every row's trajectory over the reference, in TableViews::figures.
+inline constexpr const char* kTrajectoriesFigureId = "trajectories/together";
+
+/// The id of one row's error-along-the-path figure.
+std::string PathErrorFigureId(std::size_t row);
+
+/// Plans, per table with a reference, one figure of every row's median run (by ATE) aligned onto the reference
+/// as the table's ATE aligns it (the run's evaluation align and t_max_diff_s), drawn over the reference in the
+/// algorithm palette, and per row one figure of that run coloured by its translation error along the path.
+/// Figures go to TableViews::figures (drawn by Artwork::Figures with the other view figures).
+void PlanTrajectoryFigures(const std::filesystem::path& out_dir, SiteData& site, std::vector<FigureJob>& figures);
+
+/// The sequence page's "Trajectories" section: the figures planned above (with why one is missing).
+Html TrajectoriesSection(const SiteData& site, const SequenceModel& sequence, std::string_view root);
+
+}  // namespace slamsweep::report
