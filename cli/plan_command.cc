@@ -24,7 +24,7 @@ void RegisterPlanCommand(CLI::App& app, const Streams& streams) {
   command->add_flag("--json", options->json, "print one JSON array of run.json objects");
   command->callback([options, streams] {
     // The same loading as `run`, so the plan shows exactly what run would start.
-    const LoadedSweep sweep = LoadSweep(options->config_path, options->selection);
+    const LoadedSweep sweep = LoadSweep(options->config_path, options->selection, /*install_missing_roster=*/true);
     streams.err << orchestrator::OdometryIsReferenceWarnings(sweep.runs);
     if (options->json) {
       streams.out << orchestrator::PlanJson(sweep.runs).dump(2) << "\n";

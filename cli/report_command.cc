@@ -23,6 +23,7 @@ void RegisterReportCommand(CLI::App& app, const Streams& streams) {
     bool no_images = false;
     std::string history;
     bool compare_previous = false;
+    std::string run_figures = "auto";
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("report", "turn a sweep's output directory into a static HTML report");
@@ -40,6 +41,11 @@ void RegisterReportCommand(CLI::App& app, const Streams& streams) {
   command->add_option("--log-lines", options->log_lines, "lines of each run's log shown on its page")
       ->capture_default_str();
   command->add_flag("--no-images", options->no_images, "pages and files only: no plots, thumbnails or GIFs");
+  command->add_option("--run-figures", options->run_figures,
+                      "each run's own figures (trajectory over the map, thumbnail): auto = every run's up to 500 "
+                      "runs, beyond that each table row's median run and failed runs; all = every run's")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "all"}));
   command->add_option("--history", options->history,
                       "nightly history database (slamsweep history record): adds a history page per metric");
   command->add_flag("--compare-previous", options->compare_previous,
@@ -57,6 +63,7 @@ void RegisterReportCommand(CLI::App& app, const Streams& streams) {
     report_options.thumbnail_px = options->thumbnail_px;
     report_options.gif.max_side_px = options->gif_max_side_px;
     report_options.log_tail_lines = options->log_lines;
+    report_options.run_figures_for_every_run = options->run_figures == "all";
     std::unique_ptr<report::SiteExtension> history;
     if (!options->history.empty()) {
       report::HistorySiteOptions history_options;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -13,6 +14,7 @@
 #include "cli/sweep_loading.h"
 #include "orchestrator/matrix/plan_listing.h"
 #include "orchestrator/matrix/shard.h"
+#include "orchestrator/phase_times/phase_times.h"
 #include "orchestrator/process/interruption.h"
 #include "orchestrator/slurm/slurm_executor.h"
 #include "orchestrator/sweep/local_executor.h"
@@ -59,7 +61,9 @@ std::string CommandLine(const RunOptions& options) {
 }
 
 int Run(const RunOptions& options, const Streams& streams, const std::string& command_line) {
-  LoadedSweep sweep = LoadSweep(options.config, options.selection);
+  std::optional<orchestrator::PhaseTimer> plan_phase(std::in_place, "plan");
+  LoadedSweep sweep = LoadSweep(options.config, options.selection, /*install_missing_roster=*/true);
+  plan_phase.reset();
   for (orchestrator::RunSpec& run : sweep.runs) run.allow_unisolated = options.allow_unisolated;
   // Every reference is in the shared data folder: no program's sandbox may show it.
   orchestrator::AddPrivateDirs({FindCatalog("").shared_root});

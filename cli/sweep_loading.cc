@@ -1,12 +1,15 @@
 #include "cli/sweep_loading.h"
 
 #include <algorithm>
+#include <iostream>
+#include <set>
 #include <thread>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "cli/data_sources.h"
+#include "cli/roster_install.h"
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
 #include "orchestrator/adapters/build_stamp.h"
@@ -47,8 +50,10 @@ void AddMatrixSelectionOptions(CLI::App& command, MatrixSelection& selection) {
       ->check(CLI::PositiveNumber);
 }
 
-LoadedSweep LoadSweep(const std::string& config_file, const MatrixSelection& selection) {
-  return LoadSweepText(evaluator::ReadTextFile(config_file), config_file, selection, {});
+LoadedSweep LoadSweep(const std::string& config_file, const MatrixSelection& selection, bool install_missing_roster) {
+  SweepLimits limits;
+  limits.install_missing_roster = install_missing_roster;
+  return LoadSweepText(evaluator::ReadTextFile(config_file), config_file, selection, limits);
 }
 
 LoadedSweep LoadSweepText(std::string_view text, const std::string& config_file, const MatrixSelection& selection,
@@ -92,6 +97,11 @@ LoadedSweep LoadSweepText(std::string_view text, const std::string& config_file,
   }
   if (!selection.shard.empty()) {
     sweep.runs = orchestrator::SelectShard(std::move(sweep.runs), orchestrator::ParseShard(selection.shard));
+  }
+  if (limits.install_missing_roster) {
+    std::set<std::string> adapters;
+    for (const orchestrator::RunSpec& run : sweep.runs) adapters.insert(run.algorithm.adapter);
+    InstallMissingRoster(adapters, std::cerr);
   }
   try {
     orchestrator::StampBuildIdentity(sweep.runs);

@@ -40,7 +40,10 @@ void AddMatrixSelectionOptions(CLI::App& command, MatrixSelection& selection);
 /// Reads `config_file` with the catalog and ${SHARED} of FindCatalog(""), expands it and keeps the
 /// selected runs. Throws InputError (file:line:column) for a bad config, and naming the option and
 /// the config's names for an unknown algorithm or sequence.
-LoadedSweep LoadSweep(const std::string& config_file, const MatrixSelection& selection);
+/// With `install_missing_roster` (plan and run, never the service or workers), the roster algorithms the
+/// selected runs need are built first when missing (InstallMissingRoster, cli/roster_install.h).
+LoadedSweep LoadSweep(const std::string& config_file, const MatrixSelection& selection,
+                      bool install_missing_roster = false);
 
 /// What a sweep from someone the operator does not fully trust may ask for (`slamsweep serve`).
 struct SweepLimits {
@@ -48,6 +51,8 @@ struct SweepLimits {
   orchestrator::InputPolicy policy;
   /// Most runs accepted (MatrixTooLargeError beyond); 0 = the matrix's own limit.
   std::uint64_t max_runs = 0;
+  /// Build the missing roster algorithms of the selected runs before stamping them (LoadSweep).
+  bool install_missing_roster = false;
 };
 
 /// LoadSweep of a sweep file's text: `config_file` names it in messages and anchors its relative paths.

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -25,7 +26,13 @@ std::vector<PointM> FirstDistinct(const std::vector<PointM>& vertices, std::size
   return distinct;
 }
 
-nlohmann::json Coordinates(const PointM& point) { return nlohmann::json::array({point.x_m, point.y_m}); }
+// Metres to the micrometre: cell corners computed in floating point would otherwise print as
+// 1.1750000000000007 for 1.175, a third of a map's file for digits below any map's resolution.
+double Micrometres(double metres) { return std::round(metres * 1e6) / 1e6; }
+
+nlohmann::json Coordinates(const PointM& point) {
+  return nlohmann::json::array({Micrometres(point.x_m), Micrometres(point.y_m)});
+}
 
 nlohmann::json Geometry(const Polygon& polygon) {
   const std::vector<PointM> distinct = FirstDistinct(polygon.vertices, 3);
@@ -54,11 +61,12 @@ nlohmann::json ToGeoJson(const VectorMap& map) {
                         {"properties",
                          {{"kind", KindName(polygon.kind)},
                           {"vertex_count", polygon.vertices.size()},
-                          {"border_length_m", polygon.border_length_m},
+                          {"border_length_m", Micrometres(polygon.border_length_m)},
                           {"traced_cell_count", polygon.traced_cell_count}}}});
   }
   return {{"type", "FeatureCollection"},
-          {"bbox", {map.bounds.min_x_m, map.bounds.min_y_m, map.bounds.max_x_m, map.bounds.max_y_m}},
+          {"bbox", {Micrometres(map.bounds.min_x_m), Micrometres(map.bounds.min_y_m), Micrometres(map.bounds.max_x_m),
+                    Micrometres(map.bounds.max_y_m)}},
           {"features", std::move(features)}};
 }
 

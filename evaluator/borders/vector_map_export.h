@@ -14,7 +14,8 @@ namespace slamsweep::evaluator {
 /// holes, which are separate features; a border with 2 distinct vertices is a LineString and
 /// one with a single distinct vertex a Point. Properties: "kind" ("outer" / "hole"),
 /// "vertex_count" (of the simplified ring, closing vertex not counted), "border_length_m"
-/// (traced length, see VectorMap) and "traced_cell_count".
+/// (traced length, see VectorMap) and "traced_cell_count". Coordinates, bbox and lengths are rounded to
+/// the micrometre.
 nlohmann::json ToGeoJson(const VectorMap& map);
 void WriteGeoJson(const VectorMap& map, std::ostream& out);
 

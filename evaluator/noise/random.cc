@@ -40,6 +40,12 @@ std::uint64_t UniformIndex(RandomEngine& engine, std::uint64_t count) {
   }
 }
 
+UniformIndexSampler::UniformIndexSampler(std::uint64_t count)
+    : count_(count),
+      threshold_(count > 1 ? (0 - count) % count : 0),
+      // ceil(2^128 / count); unused for count <= 1.
+      multiplier_(count > 1 ? ~static_cast<Uint128>(0) / count + 1 : 0) {}
+
 double StandardNormal(RandomEngine& engine) {
   // 1 - U is in (0, 1], so the logarithm is always finite.
   const double radius_source = 1.0 - UniformUnit(engine);

@@ -24,12 +24,27 @@ std::vector<double> AverageRanks(std::span<const double> values) {
 }
 
 std::optional<double> PooledRankCorrelation(const std::vector<PairedStratum>& strata) {
-  double sxy = 0.0, sxx = 0.0, syy = 0.0;
-  std::size_t used = 0;
+  std::vector<std::vector<double>> x_ranks, y_ranks;
+  x_ranks.reserve(strata.size());
+  y_ranks.reserve(strata.size());
   for (const PairedStratum& stratum : strata) {
     if (stratum.x.size() != stratum.y.size()) return std::nullopt;
-    if (stratum.x.size() < 2) continue;
-    const std::vector<double> rx = AverageRanks(stratum.x), ry = AverageRanks(stratum.y);
+    x_ranks.push_back(stratum.x.size() < 2 ? std::vector<double>() : AverageRanks(stratum.x));
+    y_ranks.push_back(stratum.y.size() < 2 ? std::vector<double>() : AverageRanks(stratum.y));
+  }
+  return PooledCorrelationOfRanks(x_ranks, y_ranks);
+}
+
+std::optional<double> PooledCorrelationOfRanks(const std::vector<std::vector<double>>& x_ranks,
+                                               const std::vector<std::vector<double>>& y_ranks) {
+  if (x_ranks.size() != y_ranks.size()) return std::nullopt;
+  double sxy = 0.0, sxx = 0.0, syy = 0.0;
+  std::size_t used = 0;
+  for (std::size_t s = 0; s < x_ranks.size(); ++s) {
+    const std::vector<double>& rx = x_ranks[s];
+    const std::vector<double>& ry = y_ranks[s];
+    if (rx.size() != ry.size()) return std::nullopt;
+    if (rx.size() < 2) continue;
     const double n = static_cast<double>(rx.size());
     const double mean_rank = (n + 1.0) / 2.0;
     for (std::size_t k = 0; k < rx.size(); ++k) {

@@ -35,6 +35,12 @@ struct PairedStratum {
 /// StratifiedSpearmanRho of samples already grouped by stratum (the bootstrap's inner loop).
 std::optional<double> PooledRankCorrelation(const std::vector<PairedStratum>& strata);
 
+/// The pooled correlation of within-stratum ranks already computed (AverageRanks of each stratum's x and y):
+/// PooledRankCorrelation's arithmetic, in its order, so both give the same double. Strata whose x and y ranks
+/// differ in length make it undefined.
+std::optional<double> PooledCorrelationOfRanks(const std::vector<std::vector<double>>& x_ranks,
+                                               const std::vector<std::vector<double>>& y_ranks);
+
 /// The samples grouped by stratum id, strata in ascending id order, samples in input order.
 std::vector<PairedStratum> GroupIntoStrata(std::span<const double> x, std::span<const double> y,
                                            std::span<const std::size_t> strata);

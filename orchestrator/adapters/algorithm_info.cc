@@ -67,7 +67,9 @@ AlgorithmInfo DescribeRoster(const RosterAlgorithm& algorithm) {
     return info;
   }
   if (!manifest) {
-    info.status = "not installed: scripts/install-slam.sh " + std::string(algorithm.upstream) + " && scripts/build.sh";
+    info.status = "not installed: scripts/install-slam.sh " + std::string(algorithm.upstream) +
+                  " && scripts/build.sh, or `slamsweep plan`/`run` of a sweep that uses it builds it first (from a "
+                  "build tree)";
     return info;
   }
   const std::string commit = manifest->value("commit", "");
@@ -77,7 +79,7 @@ AlgorithmInfo DescribeRoster(const RosterAlgorithm& algorithm) {
   try {
     driver = RosterDriver(algorithm);
   } catch (const evaluator::InputError& error) {
-    info.status += "; driver not built: scripts/build.sh";
+    info.status += "; driver not built: scripts/build.sh (or `slamsweep plan`/`run` of a sweep that uses it)";
     return info;
   }
   info.installed = true;

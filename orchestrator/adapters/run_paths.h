@@ -19,7 +19,10 @@ struct RunPaths {
   /// Where the program runs: its output folder. Its input is in ../input; the run's truth
   /// (reference.tum) and result are written into the run folder only after it has exited.
   std::filesystem::path ProgramWorkingDir() const { return RawDir(); }
+  /// Stage maps as separate images (run folders written before the stage animation).
   std::filesystem::path StagesDir() const { return root / "stages"; }
+  /// Every stage map, in build order, as one animated PNG.
+  std::filesystem::path StageAnimation() const { return root / "stages.png"; }
   std::filesystem::path MapYaml() const { return root / "map.yaml"; }
   std::filesystem::path TrajectoryTum() const { return root / "trajectory.tum"; }
   std::filesystem::path ReferenceTum() const { return root / "reference.tum"; }

@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/phase_times/phase_times.h"
 #include "orchestrator/store/group_summary.h"
 #include "orchestrator/store/result_files.h"
 #include "orchestrator/store/results_store.h"
@@ -84,16 +85,21 @@ void PlaceRunFolder(const fs::path& from, const fs::path& to) {
 class Merger {
  public:
   Merger(const fs::path& out, MergeReport& report)
-      : out_(out), store_(ResultsStore::Open(out / kStoreName)), report_(report) {}
+      : out_(out), store_(ResultsStore::Open(out / kStoreName)), report_(report),
+        recorded_(store_.RecordedIdentities()) {}
 
   void MergeInput(const fs::path& input) {
     ResultsStore in = ResultsStore::OpenExisting(input / kStoreName);
     std::map<std::int64_t, std::int64_t> sweep_ids;
     for (const StoredSweep& sweep : in.Sweeps()) sweep_ids[sweep.id] = store_.ImportSweep(sweep);
+    // One commit per input: every run folder is in place before the index that lists it is committed.
+    store_.BeginBatch();
     for (const StoredRun& run : in.Runs()) MergeRun(input, run, sweep_ids[run.sweep_id]);
+    store_.CommitBatch();
   }
 
   void WriteReports() {
+    const PhaseTimer phase("summary");
     const std::vector<StoredRun> runs = store_.Runs();
     // Shards built apart, or a rerun under a new build: their runs must never share a mean.
     std::set<std::string> split;
@@ -126,26 +132,28 @@ class Merger {
                                              (input / kStoreName).string(), run.run_id, run_dir, fallback));
       run_dir = fallback;
     }
-    const std::optional<StoredRun> existing = store_.FindRun(run.run_id);
-    if (!existing.has_value()) {
+    const auto found = recorded_.find(run.run_id);
+    if (found == recorded_.end()) {
       Take(input, run, run_dir, sweep_id);
       ++report_.runs_added;
       return;
     }
-    if (existing->result == run.result) {
+    // A copy: taking the incoming run below replaces the entry.
+    const ResultsStore::RecordedIdentity existing = found->second;
+    if (existing.result_digest == run.result_digest && existing.flags == run.flags) {
       ++report_.duplicates;
       // The store may know the run while its folder was lost (an interrupted earlier merge).
-      if (!fs::exists(out_ / existing->run_dir) && fs::exists(input / run_dir)) {
-        PlaceRunFolder(input / run_dir, out_ / existing->run_dir);
+      if (!fs::exists(out_ / existing.run_dir) && fs::exists(input / run_dir)) {
+        PlaceRunFolder(input / run_dir, out_ / existing.run_dir);
       }
       return;
     }
     const std::string kept_from = Origin(run.run_id);
-    const bool incoming_newer = run.finished_at > existing->finished_at;
+    const bool incoming_newer = run.finished_at > existing.finished_at;
     if (incoming_newer) Take(input, run, run_dir, sweep_id);
     report_.conflicts.push_back(fmt::format(
         "run {}: different results in {} (finished_at {}) and {} (finished_at {}); kept the newer one from {}",
-        run.run_id, kept_from, existing->finished_at.empty() ? "unknown" : existing->finished_at, input.string(),
+        run.run_id, kept_from, existing.finished_at.empty() ? "unknown" : existing.finished_at, input.string(),
         run.finished_at.empty() ? "unknown" : run.finished_at, incoming_newer ? input.string() : kept_from));
   }
 
@@ -157,7 +165,8 @@ class Merger {
                                              (input / run_dir).string()));
     }
     // The folder first, then the index: a recorded run always has its files.
-    store_.RecordRun(sweep_id, run.spec, run.result, run_dir);
+    store_.ImportRun(sweep_id, run, run_dir);
+    recorded_[run.run_id] = {run.result_digest, run.flags, run.finished_at, run_dir};
     origin_[run.run_id] = input.string();
   }
 
@@ -169,6 +178,8 @@ class Merger {
   fs::path out_;
   ResultsStore store_;
   MergeReport& report_;
+  /// Every run the merged store holds, kept up to date as runs are taken.
+  std::map<std::string, ResultsStore::RecordedIdentity> recorded_;
   std::map<std::string, std::string> origin_;
 };
 
@@ -192,8 +203,12 @@ MergeReport MergeResultDirs(const std::vector<fs::path>& inputs, const fs::path&
   Check(error, fmt::format("{}: cannot create folder", (out / "runs").string()));
   MergeReport report;
   Merger merger(out, report);
-  for (const fs::path& input : inputs) merger.MergeInput(input);
+  {
+    const PhaseTimer phase("merge_runs");
+    for (const fs::path& input : inputs) merger.MergeInput(input);
+  }
   merger.WriteReports();
+  FlushPhaseTimes("merge");
   return report;
 }
 

@@ -7,53 +7,15 @@
 #include <fmt/format.h>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/matrix/run_id.h"
 #include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/store/store_schema.h"
 
 namespace slamsweep::orchestrator {
 namespace {
 
 using evaluator::InputError;
 using nlohmann::json;
-
-// Version 1 of the schema. Whole run.json / result.json are kept beside the columns so that a later
-// report can read fields the columns do not have, and the store can be re-exported without the folders.
-constexpr const char* kSchemaV1 = R"sql(
-CREATE TABLE sweeps(
-  id INTEGER PRIMARY KEY,
-  name TEXT, config_path TEXT, config_sha TEXT, started_at TEXT, finished_at TEXT, status TEXT,
-  host TEXT, slamsweep_version TEXT, run_count INTEGER, command_line TEXT);
-CREATE TABLE runs(
-  run_id TEXT PRIMARY KEY,
-  sweep_id INTEGER, algorithm TEXT, adapter TEXT, parameters_json TEXT, sequence TEXT, noise TEXT,
-  iteration INTEGER, seed, spec_json TEXT NOT NULL,
-  status TEXT NOT NULL CHECK(status IN ('ok', 'failed')), failure_kind TEXT, reason TEXT,
-  exit_code INTEGER, signal INTEGER, wall_s REAL, cpu_s REAL, peak_rss_kb INTEGER,
-  started_at TEXT, finished_at TEXT, run_dir TEXT, result_json TEXT NOT NULL);
-CREATE INDEX runs_algorithm_sequence ON runs(algorithm, sequence);
-CREATE INDEX runs_sequence_algorithm ON runs(sequence, algorithm);
-CREATE TABLE metrics(
-  run_id TEXT NOT NULL, metric TEXT NOT NULL, statistic TEXT NOT NULL, value REAL, unit TEXT,
-  PRIMARY KEY(run_id, metric, statistic));
-CREATE TABLE metric_specs(
-  run_id TEXT NOT NULL, metric TEXT NOT NULL, spec_json TEXT,
-  PRIMARY KEY(run_id, metric));
-)sql";
-
-// Version 2: what makes rows comparable and results trustworthy, as columns a query can group by:
-// the parameters as "k=v;..." text (the comparison group), whether the program's odometry was the
-// reference, how the run is seeded, and the slamsweep revision that computed it.
-constexpr const char* kMigrationV2 = R"sql(
-ALTER TABLE runs ADD COLUMN parameters TEXT;
-ALTER TABLE runs ADD COLUMN odometry_is_reference INTEGER;
-ALTER TABLE runs ADD COLUMN seeding TEXT;
-ALTER TABLE runs ADD COLUMN slamsweep_revision TEXT;
-CREATE INDEX runs_group ON runs(sequence, noise, algorithm, parameters);
-)sql";
-
-// Version 3: the run's marks (RunFlags: odometry = reference, stale, unisolated) as "a;b" text.
-constexpr const char* kMigrationV3 = R"sql(
-ALTER TABLE runs ADD COLUMN flags TEXT;
-)sql";
 
 const json* Find(const json& object, const char* key) {
   if (!object.is_object()) return nullptr;
@@ -76,17 +38,6 @@ const json& Nested(const json& object, const char* outer, const char* inner) {
 std::string Dump(const json& value) { return value.dump(-1, ' ', false, json::error_handler_t::replace); }
 
 std::string NullableText(const SqliteStatement& row, int column) { return row.IsNull(column) ? "" : row.Text(column); }
-
-json ParseStored(const std::filesystem::path& file, const std::string& run_id, const char* column,
-                 const std::string& text) {
-  json parsed = json::parse(text, nullptr, false);
-  if (parsed.is_discarded()) {
-    throw InputError(fmt::format("{}: run {}: column {} does not hold valid JSON; the database was edited or is "
-                                 "damaged: re-record the run from its runs/ folder",
-                                 file.string(), run_id, column));
-  }
-  return parsed;
-}
 
 struct RunColumns {
   std::string run_id;
@@ -153,9 +104,66 @@ double Median(std::vector<double> values) {
   return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
+// run.json members that differ from run to run of a group; the rest of run.json is shared (a document).
+constexpr const char* kSpecOwnMembers[] = {"run_id", "iteration", "seed"};
+// result.json members kept as columns (read back as they are; absent ones come back as null).
+constexpr const char* kResultColumns[] = {"failure_kind", "reason", "exit_code", "signal", "wall_s",
+                                          "cpu_s", "peak_rss_kb", "started_at", "finished_at"};
+// result.json members a query needs beyond its columns, kept as one shared document per distinct value.
+constexpr const char* kResultSharedMembers[] = {"command", "outputs", "warnings", "odometry_is_reference"};
+// Where each of kResultColumns is in kRunColumns.
+constexpr int kResultColumnIndex[] = {19, 20, 21, 22, 9, 23, 24, 25, 10};
+
 constexpr const char* kRunColumns =
-    "run_id, sweep_id, spec_json, result_json, status, run_dir, algorithm, sequence, noise, iteration, wall_s, "
-    "finished_at, parameters, odometry_is_reference, seeding, flags";
+    "runs.id, run_id, sweep_id, status, run_dir, algorithm, sequence, noise, iteration, wall_s, finished_at, "
+    "parameters, odometry_is_reference, seeding, flags, spec_own, spec_doc.json, result_doc.json, result_digest, "
+    "failure_kind, reason, exit_code, signal, cpu_s, peak_rss_kb, started_at";
+
+// What a query needs of a metric's details: how it was measured (its "specification" or "parameters"),
+// not the numbers (those are the run's metric values; the whole details stay in result.json).
+json MetricSpecification(const json& details) {
+  json kept = json::object();
+  if (!details.is_object()) return kept;
+  for (const char* key : {"specification", "parameters"}) {
+    if (const auto it = details.find(key); it != details.end()) kept[key] = *it;
+  }
+  return kept;
+}
+
+// The identity of a result for merge: its whole text but the flags (compared on their own, since the
+// store adds flags to a recorded run without its file).
+std::int64_t ResultDigest(const json& result) {
+  json without_flags = result;
+  without_flags.erase("flags");
+  return static_cast<std::int64_t>(Fnv1a64(Dump(without_flags)));
+}
+
+// The metrics in the order the worker listed them; a metric listed twice keeps its last value and place,
+// as a JSON object with a repeated key would.
+std::vector<const json*> DistinctMetrics(const json& metrics) {
+  std::map<std::pair<std::string, std::string>, std::size_t> last;
+  for (std::size_t i = 0; i < metrics.size(); ++i) {
+    last[{metrics[i].at("metric").get<std::string>(), metrics[i].at("statistic").get<std::string>()}] = i;
+  }
+  std::vector<const json*> kept;
+  for (std::size_t i = 0; i < metrics.size(); ++i) {
+    if (last.at({metrics[i].at("metric").get<std::string>(), metrics[i].at("statistic").get<std::string>()}) == i) {
+      kept.push_back(&metrics[i]);
+    }
+  }
+  return kept;
+}
+
+json ParseDocument(const std::filesystem::path& file, const std::string& run_id, const char* what,
+                   const std::string& text) {
+  json parsed = json::parse(text, nullptr, false);
+  if (parsed.is_discarded()) {
+    throw InputError(fmt::format("{}: run {}: its {} is not valid JSON; the database was edited or is damaged: "
+                                 "record the run again from its runs/ folder",
+                                 file.string(), run_id, what));
+  }
+  return parsed;
+}
 
 }  // namespace
 
@@ -226,10 +234,15 @@ void ResultsStore::InitializeSchema() {
   SqliteTransaction transaction(db_);
   // Another process may have created or migrated the schema between the first read and the write lock.
   const std::int64_t locked_version = read_version();
-  if (locked_version == 0) db_.Execute(kSchemaV1);
-  if (locked_version < 2) db_.Execute(kMigrationV2);
-  if (locked_version < 3) db_.Execute(kMigrationV3);
-  db_.Execute(fmt::format("PRAGMA user_version = {}", kResultsSchemaVersion));
+  if (locked_version == kResultsSchemaVersion) {
+    transaction.Commit();
+    return;
+  }
+  CreateOrMigrateSchema(db_, locked_version, [this](const V3Run& run) {
+    const RunFlags flags = run.flags ? RunFlagsFromText(*run.flags, db_.file().string() + ": runs.flags")
+                                     : RunFlagsOf(run.spec, run.result);
+    WriteRun(run.sweep_id, run.spec, run.result, run.run_dir, flags);
+  });
   transaction.Commit();
 }
 
@@ -304,16 +317,115 @@ std::int64_t ResultsStore::ImportSweep(const StoredSweep& sweep) {
 
 void ResultsStore::RecordRun(std::int64_t sweep_id, const json& run_spec, const json& result,
                              const std::string& run_dir_relative) {
-  const RunColumns columns = ValidateRun(run_spec, result);
   const RunFlags flags = RunFlagsOf(run_spec, result);
-  SqliteTransaction transaction(db_);
+  WriteInTransaction([&] { WriteRun(sweep_id, run_spec, result, run_dir_relative, flags); });
+}
+
+void ResultsStore::WriteInTransaction(const std::function<void()>& write) {
+  try {
+    if (batch_) {
+      write();
+      return;
+    }
+    SqliteTransaction transaction(db_);
+    write();
+    transaction.Commit();
+  } catch (...) {
+    // Rolled back (or about to be, with the batch): ids cached meanwhile may name rows that never were.
+    metric_name_ids_.clear();
+    document_ids_.clear();
+    throw;
+  }
+}
+
+void ResultsStore::BeginBatch() {
+  if (batch_) throw InputError(db_.file().string() + ": a batch of writes is already open");
+  batch_ = std::make_unique<SqliteTransaction>(db_);
+}
+
+void ResultsStore::CommitBatch() {
+  if (!batch_) return;
+  std::unique_ptr<SqliteTransaction> batch = std::move(batch_);
+  try {
+    batch->Commit();
+  } catch (...) {
+    metric_name_ids_.clear();
+    document_ids_.clear();
+    throw;
+  }
+}
+
+SqliteStatement& ResultsStore::Cached(const std::string& sql) {
+  std::unique_ptr<SqliteStatement>& statement = statements_[sql];
+  if (!statement) statement = db_.PrepareKept(sql);
+  statement->Reset();
+  return *statement;
+}
+
+std::int64_t ResultsStore::Document(const json& value) {
+  const std::string text = Dump(value);
+  const auto digest = static_cast<std::int64_t>(Fnv1a64(text));
+  if (const auto found = document_ids_.find(digest); found != document_ids_.end() && found->second.second == text) {
+    return found->second.first;
+  }
+  const std::int64_t id = DocumentId(db_, value);
+  document_ids_[digest] = {id, text};
+  return id;
+}
+
+std::map<std::string, ResultsStore::RecordedIdentity> ResultsStore::RecordedIdentities() const {
+  std::map<std::string, RecordedIdentity> identities;
+  auto select = db_.Prepare("SELECT run_id, result_digest, flags, finished_at, run_dir FROM runs");
+  while (select.Step()) {
+    RecordedIdentity& identity = identities[select.Text(0)];
+    identity.result_digest = static_cast<std::uint64_t>(select.Int64(1));
+    identity.flags = RunFlagsFromText(NullableText(select, 2), db_.file().string() + ": runs.flags");
+    identity.finished_at = NullableText(select, 3);
+    identity.run_dir = NullableText(select, 4);
+  }
+  return identities;
+}
+
+void ResultsStore::ImportRun(std::int64_t sweep_id, const StoredRun& run, const std::string& run_dir_relative) {
+  WriteInTransaction([&] { WriteRun(sweep_id, run.spec, run.result, run_dir_relative, run.flags, run.result_digest); });
+}
+
+void ResultsStore::WriteRun(std::int64_t sweep_id, const json& run_spec, const json& result,
+                            const std::string& run_dir_relative, const RunFlags& flags,
+                            std::optional<std::uint64_t> result_digest) {
+  const RunColumns columns = ValidateRun(run_spec, result);
+  json spec_shared = run_spec;
+  json spec_own = json::object();
+  for (const char* key : kSpecOwnMembers) {
+    if (const auto it = spec_shared.find(key); it != spec_shared.end()) {
+      spec_own[key] = std::move(*it);
+      spec_shared.erase(key);
+    }
+  }
+  json result_shared = json::object();
+  for (const char* key : kResultSharedMembers) {
+    if (const json* value = Find(result, key); value != nullptr) result_shared[key] = *value;
+  }
+  const std::int64_t spec_document = Document(spec_shared);
+  const std::int64_t result_document = Document(result_shared);
   {
-    auto insert = db_.Prepare(
-        "INSERT OR REPLACE INTO runs(run_id, sweep_id, algorithm, adapter, parameters_json, sequence, noise, "
-        "iteration, seed, spec_json, status, failure_kind, reason, exit_code, signal, wall_s, cpu_s, peak_rss_kb, "
-        "started_at, finished_at, run_dir, result_json, parameters, odometry_is_reference, seeding, "
-        "slamsweep_revision, flags) "
-        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    // An earlier recording of this run id goes with its metric rows.
+    for (const char* table : {"metric_values", "metric_spec_refs"}) {
+      auto& remove = Cached(fmt::format("DELETE FROM {} WHERE run = (SELECT id FROM runs WHERE run_id = ?)", table));
+      remove.Bind(1, columns.run_id);
+      remove.Run();
+    }
+    auto& remove = Cached("DELETE FROM runs WHERE run_id = ?");
+    remove.Bind(1, columns.run_id);
+    remove.Run();
+  }
+  {
+    auto& insert = Cached(
+        "INSERT INTO runs(run_id, sweep_id, algorithm, adapter, parameters_json, sequence, noise, iteration, seed, "
+        "status, failure_kind, reason, exit_code, signal, wall_s, cpu_s, peak_rss_kb, started_at, finished_at, "
+        "run_dir, parameters, odometry_is_reference, seeding, slamsweep_revision, flags, spec_shared, spec_own, "
+        "result_shared, result_digest) "
+        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     const json& parameters = Nested(run_spec, "algorithm", "parameters");
     insert.Bind(1, columns.run_id).Bind(2, sweep_id);
     insert.BindJson(3, Nested(run_spec, "algorithm", "name")).BindJson(4, Nested(run_spec, "algorithm", "adapter"));
@@ -324,47 +436,60 @@ void ResultsStore::RecordRun(std::int64_t sweep_id, const json& run_spec, const 
     }
     insert.BindJson(6, Nested(run_spec, "sequence", "name")).BindJson(7, Nested(run_spec, "noise", "name"));
     insert.BindJson(8, FieldOrNull(run_spec, "iteration")).BindJson(9, FieldOrNull(run_spec, "seed"));
-    insert.Bind(10, std::string_view(Dump(run_spec)));
-    insert.Bind(11, columns.status);
-    int index = 12;
-    for (const char* key : {"failure_kind", "reason", "exit_code", "signal", "wall_s", "cpu_s", "peak_rss_kb",
-                            "started_at", "finished_at"}) {
-      insert.BindJson(index++, FieldOrNull(result, key));
-    }
-    insert.Bind(21, run_dir_relative).Bind(22, std::string_view(Dump(result)));
-    insert.BindJson(23, Nested(run_spec, "group", "parameters"));
-    insert.BindJson(24, OdometryIsReferenceOf(run_spec, result));
-    insert.BindJson(25, FieldOrNull(run_spec, "seeding"));
-    insert.BindJson(26, Nested(run_spec, "build", "slamsweep_revision"));
-    insert.Bind(27, RunFlagsText(flags));
+    insert.Bind(10, columns.status);
+    int index = 11;
+    for (const char* key : kResultColumns) insert.BindJson(index++, FieldOrNull(result, key));
+    insert.Bind(20, run_dir_relative);
+    // Runs planned before run.json named its group: the text from their parameters.
+    const json& group_parameters = Nested(run_spec, "group", "parameters");
+    insert.BindJson(21, group_parameters.is_null() ? json(ParametersText(parameters)) : group_parameters);
+    insert.BindJson(22, OdometryIsReferenceOf(run_spec, result));
+    insert.BindJson(23, FieldOrNull(run_spec, "seeding"));
+    insert.BindJson(24, Nested(run_spec, "build", "slamsweep_revision"));
+    insert.Bind(25, RunFlagsText(flags));
+    insert.Bind(26, spec_document).Bind(27, std::string_view(Dump(spec_own)));
+    insert.Bind(28, result_document);
+    insert.Bind(29, result_digest ? static_cast<std::int64_t>(*result_digest) : ResultDigest(result));
     insert.Run();
   }
+  const std::int64_t run = db_.LastInsertRowId();
   if (mid_transaction_hook_) mid_transaction_hook_();
-  for (const char* table : {"metrics", "metric_specs"}) {
-    auto remove = db_.Prepare(fmt::format("DELETE FROM {} WHERE run_id = ?", table));
-    remove.Bind(1, columns.run_id);
-    remove.Run();
-  }
   if (const json* metrics = Find(result, "metrics"); metrics != nullptr && metrics->is_array()) {
-    // A metric listed twice keeps its last value, as a JSON object with a repeated key would.
-    auto insert = db_.Prepare("INSERT OR REPLACE INTO metrics(run_id, metric, statistic, value, unit) "
-                              "VALUES(?, ?, ?, ?, ?)");
-    for (const json& m : *metrics) {
+    auto& insert = Cached("INSERT INTO metric_values(run, position, name, value) VALUES(?, ?, ?, ?)");
+    std::int64_t position = 0;
+    for (const json* m : DistinctMetrics(*metrics)) {
+      const json& unit = FieldOrNull(*m, "unit");
+      const std::tuple<std::string, std::string, std::string> key{
+          m->at("metric").get<std::string>(), m->at("statistic").get<std::string>(),
+          unit.is_string() ? unit.get<std::string>() : ""};
+      auto known = metric_name_ids_.find(key);
+      if (known == metric_name_ids_.end()) {
+        // Another process may have added it meanwhile: insert unless there, then read its id.
+        auto& add = Cached("INSERT OR IGNORE INTO metric_names(metric, statistic, unit) VALUES(?, ?, ?)");
+        add.Bind(1, std::get<0>(key)).Bind(2, std::get<1>(key)).Bind(3, std::get<2>(key));
+        add.Run();
+        auto& find = Cached("SELECT id FROM metric_names WHERE metric = ? AND statistic = ? AND unit = ?");
+        find.Bind(1, std::get<0>(key)).Bind(2, std::get<1>(key)).Bind(3, std::get<2>(key));
+        if (!find.Step()) throw InputError(db_.file().string() + ": metric name not recorded");
+        known = metric_name_ids_.emplace(key, find.Int64(0)).first;
+        // A statement left on a row keeps its read snapshot open, which would keep later writes (and a
+        // table drop during a conversion) from starting.
+        find.Reset();
+      }
       insert.Reset();
-      insert.Bind(1, columns.run_id).BindJson(2, m.at("metric")).BindJson(3, m.at("statistic"));
-      insert.BindJson(4, FieldOrNull(m, "value")).BindJson(5, FieldOrNull(m, "unit"));
+      insert.Bind(1, run).Bind(2, position++).Bind(3, known->second).BindJson(4, FieldOrNull(*m, "value"));
       insert.Run();
     }
   }
   if (const json* details = Find(result, "metric_details"); details != nullptr && details->is_object()) {
-    auto insert = db_.Prepare("INSERT INTO metric_specs(run_id, metric, spec_json) VALUES(?, ?, ?)");
-    for (const auto& [metric, spec] : details->items()) {
+    auto& insert = Cached("INSERT INTO metric_spec_refs(run, metric, spec) VALUES(?, ?, ?)");
+    for (const auto& [metric, detail] : details->items()) {
+      const std::int64_t spec = Document(MetricSpecification(detail));
       insert.Reset();
-      insert.Bind(1, columns.run_id).Bind(2, metric).Bind(3, std::string_view(Dump(spec)));
+      insert.Bind(1, run).Bind(2, metric).Bind(3, spec);
       insert.Run();
     }
   }
-  transaction.Commit();
 }
 
 std::optional<std::string> ResultsStore::RunStatus(const std::string& run_id) const {
@@ -384,17 +509,13 @@ std::vector<StoredRun> ResultsStore::Runs() const { return QueryRuns("", ""); }
 
 bool ResultsStore::AddRunFlags(const std::string& run_id, const RunFlags& added) {
   SqliteTransaction transaction(db_);
-  auto select = db_.Prepare("SELECT spec_json, result_json, flags FROM runs WHERE run_id = ?");
+  auto select = db_.Prepare("SELECT flags FROM runs WHERE run_id = ?");
   select.Bind(1, run_id);
   if (!select.Step()) return false;
-  const json spec = ParseStored(db_.file(), run_id, "spec_json", select.Text(0));
-  json result = ParseStored(db_.file(), run_id, "result_json", select.Text(1));
-  RunFlags flags = select.IsNull(2) ? RunFlagsOf(spec, result)
-                                    : RunFlagsFromText(select.Text(2), db_.file().string() + ": runs.flags");
+  RunFlags flags = RunFlagsFromText(select.IsNull(0) ? "" : select.Text(0), db_.file().string() + ": runs.flags");
   flags |= added;
-  result["flags"] = ToJson(flags);
-  auto update = db_.Prepare("UPDATE runs SET flags = ?, result_json = ? WHERE run_id = ?");
-  update.Bind(1, RunFlagsText(flags)).Bind(2, std::string_view(Dump(result))).Bind(3, run_id);
+  auto update = db_.Prepare("UPDATE runs SET flags = ? WHERE run_id = ?");
+  update.Bind(1, RunFlagsText(flags)).Bind(2, run_id);
   update.Run();
   transaction.Commit();
   return true;
@@ -402,7 +523,7 @@ bool ResultsStore::AddRunFlags(const std::string& run_id, const RunFlags& added)
 
 std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const std::string& run_id) const {
   std::vector<StoredRun> runs;
-  std::unordered_map<std::string, std::size_t> index_of;
+  std::unordered_map<std::int64_t, std::size_t> index_of;
   // Both reads see one snapshot, so a concurrent RecordRun cannot pair a run with another version's metrics.
   SqliteStatement begin = db_.Prepare("BEGIN");
   begin.Run();
@@ -416,44 +537,81 @@ std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const s
       }
     }
   } end_read{db_};
+  // Documents are shared by many runs: each is parsed once.
+  std::unordered_map<std::string, json> parsed_documents;
+  const auto document = [&](const std::string& text, const std::string& id, const char* what) -> const json& {
+    auto it = parsed_documents.find(text);
+    if (it == parsed_documents.end()) it = parsed_documents.emplace(text, ParseDocument(db_.file(), id, what, text)).first;
+    return it->second;
+  };
   {
     auto select = db_.Prepare(fmt::format(
-        "SELECT {} FROM runs {} ORDER BY sequence, algorithm, noise, iteration, run_id", kRunColumns, where));
+        "SELECT {} FROM runs JOIN documents AS spec_doc ON spec_doc.id = runs.spec_shared "
+        "JOIN documents AS result_doc ON result_doc.id = runs.result_shared {} "
+        "ORDER BY sequence, algorithm, noise, iteration, run_id",
+        kRunColumns, where));
     if (!where.empty()) select.Bind(1, run_id);
     while (select.Step()) {
       StoredRun run;
-      run.run_id = select.Text(0);
-      run.sweep_id = select.Int64(1);
-      run.spec = ParseStored(db_.file(), run.run_id, "spec_json", select.Text(2));
-      run.result = ParseStored(db_.file(), run.run_id, "result_json", select.Text(3));
-      run.status = select.Text(4);
-      run.run_dir = NullableText(select, 5);
-      run.algorithm = NullableText(select, 6);
-      run.sequence = NullableText(select, 7);
-      run.noise = NullableText(select, 8);
-      run.iteration = select.Int64(9);
-      run.wall_s = select.OptionalDouble(10);
-      run.finished_at = NullableText(select, 11);
-      // Runs recorded before the column existed: the text from their parameters.
-      run.parameters = select.IsNull(12) ? ParametersText(Nested(run.spec, "algorithm", "parameters"))
-                                         : select.Text(12);
-      run.odometry_is_reference = !select.IsNull(13) && select.Int64(13) != 0;
-      run.seeding = NullableText(select, 14);
-      // Runs recorded before the column existed: the flags their files imply.
-      run.flags = select.IsNull(15) ? RunFlagsOf(run.spec, run.result)
-                                    : RunFlagsFromText(select.Text(15), db_.file().string() + ": runs.flags");
-      index_of.emplace(run.run_id, runs.size());
+      const std::int64_t id = select.Int64(0);
+      run.run_id = select.Text(1);
+      run.sweep_id = select.Int64(2);
+      run.status = select.Text(3);
+      run.run_dir = NullableText(select, 4);
+      run.algorithm = NullableText(select, 5);
+      run.sequence = NullableText(select, 6);
+      run.noise = NullableText(select, 7);
+      run.iteration = select.Int64(8);
+      run.wall_s = select.OptionalDouble(9);
+      run.finished_at = NullableText(select, 10);
+      run.parameters = NullableText(select, 11);
+      run.odometry_is_reference = !select.IsNull(12) && select.Int64(12) != 0;
+      run.seeding = NullableText(select, 13);
+      run.flags = RunFlagsFromText(NullableText(select, 14), db_.file().string() + ": runs.flags");
+      run.spec = document(select.Text(16), run.run_id, "run.json");
+      run.spec.update(ParseDocument(db_.file(), run.run_id, "run.json", select.Text(15)));
+      run.result = document(select.Text(17), run.run_id, "result.json");
+      run.result_digest = static_cast<std::uint64_t>(select.Int64(18));
+      run.result["run_id"] = run.run_id;
+      run.result["status"] = run.status;
+      for (int i = 0; i < static_cast<int>(std::size(kResultColumns)); ++i) {
+        run.result[kResultColumns[i]] = select.Json(kResultColumnIndex[i]);
+      }
+      run.result["flags"] = ToJson(run.flags);
+      run.result["metrics"] = json::array();
+      run.result["metric_details"] = json::object();
+      index_of.emplace(id, runs.size());
       runs.push_back(std::move(run));
     }
   }
+  const std::string run_filter = where.empty() ? "" : "WHERE runs.run_id = ?1";
   auto metrics = db_.Prepare(fmt::format(
-      "SELECT run_id, metric, statistic, value, unit FROM metrics {} ORDER BY rowid", where));
+      "SELECT metric_values.run, metric, statistic, value, unit FROM metric_values "
+      "JOIN metric_names ON metric_names.id = metric_values.name JOIN runs ON runs.id = metric_values.run {} "
+      "ORDER BY metric_values.run, position",
+      run_filter));
   if (!where.empty()) metrics.Bind(1, run_id);
   while (metrics.Step()) {
-    const auto it = index_of.find(metrics.Text(0));
+    const auto it = index_of.find(metrics.Int64(0));
     if (it == index_of.end()) continue;
-    runs[it->second].metrics.push_back(
-        StoredMetric{metrics.Text(1), metrics.Text(2), metrics.OptionalDouble(3), NullableText(metrics, 4)});
+    StoredRun& run = runs[it->second];
+    StoredMetric metric{metrics.Text(1), metrics.Text(2), metrics.OptionalDouble(3), metrics.Text(4)};
+    run.result["metrics"].push_back({{"metric", metric.metric},
+                                     {"statistic", metric.statistic},
+                                     {"value", metric.value ? json(*metric.value) : json(nullptr)},
+                                     {"unit", metric.unit.empty() ? json(nullptr) : json(metric.unit)}});
+    run.metrics.push_back(std::move(metric));
+  }
+  auto specs = db_.Prepare(fmt::format(
+      "SELECT metric_spec_refs.run, metric, documents.json FROM metric_spec_refs "
+      "JOIN documents ON documents.id = metric_spec_refs.spec JOIN runs ON runs.id = metric_spec_refs.run {}",
+      run_filter));
+  if (!where.empty()) specs.Bind(1, run_id);
+  while (specs.Step()) {
+    const auto it = index_of.find(specs.Int64(0));
+    if (it == index_of.end()) continue;
+    StoredRun& run = runs[it->second];
+    run.result["metric_details"][specs.Text(1)] = document(specs.Text(2), run.run_id, "metric specification");
   }
   return runs;
 }

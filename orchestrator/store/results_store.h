@@ -4,20 +4,21 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "orchestrator/run/run_flags.h"
 #include "orchestrator/store/sqlite_db.h"
+#include "orchestrator/store/store_schema.h"
 
 namespace slamsweep::orchestrator {
 
-/// The schema version this build writes (PRAGMA user_version). A file with a higher version was
-/// written by a newer slamsweep and is refused rather than misread.
-inline constexpr int kResultsSchemaVersion = 3;
 
 /// What is known about a sweep when it starts.
 struct SweepInfo {
@@ -55,9 +56,16 @@ struct StoredMetric {
 struct StoredRun {
   std::string run_id;
   std::int64_t sweep_id = 0;
-  /// The whole run.json and result.json, as recorded.
+  /// run.json as recorded (the whole of it).
   nlohmann::json spec;
+  /// What the store keeps of result.json: run_id, status, failure_kind, reason, exit_code, signal, wall_s,
+  /// cpu_s, peak_rss_kb, started_at, finished_at, command, outputs, warnings, odometry_is_reference, flags,
+  /// metrics, and per metric_details entry its "specification"/"parameters". The run folder's result.json
+  /// has the rest (alignments, per-length statistics, map details).
   nlohmann::json result;
+  /// FNV-1a 64 of the whole result.json as recorded, flags left out: two recordings of a run agree when
+  /// their digests and flags do (merge).
+  std::uint64_t result_digest = 0;
   /// "ok" or "failed".
   std::string status;
   /// Relative to the output directory ("runs/<run-id>").
@@ -108,10 +116,28 @@ class ResultsStore {
   void RecordRun(std::int64_t sweep_id, const nlohmann::json& run_spec, const nlohmann::json& result,
                  const std::string& run_dir_relative);
 
+  /// Records (or replaces) a run read from another store (merge): its row as that store keeps it, digest and
+  /// flags included.
+  void ImportRun(std::int64_t sweep_id, const StoredRun& run, const std::string& run_dir_relative);
+
+  /// Between BeginBatch and CommitBatch, RecordRun and ImportRun write in one transaction (merge: a
+  /// thousand runs in one commit instead of a thousand). A batch not committed is rolled back.
+  void BeginBatch();
+  void CommitBatch();
+
+  /// What tells one recording of a run from another, for every recorded run at once (merge).
+  struct RecordedIdentity {
+    std::uint64_t result_digest = 0;
+    RunFlags flags;
+    std::string finished_at;
+    std::string run_dir;
+  };
+  std::map<std::string, RecordedIdentity> RecordedIdentities() const;
+
   /// "ok" / "failed", or empty when the run was never recorded.
   std::optional<std::string> RunStatus(const std::string& run_id) const;
   std::optional<StoredRun> FindRun(const std::string& run_id) const;
-  /// Adds `flags` to a recorded run (its column and its stored result.json's `flags`); false when the run
+  /// Adds `flags` to a recorded run (its flags column, which `result`'s flags mirror); false when the run
   /// was never recorded. The sweep marks a run it reuses under another build or evaluation "stale" this way.
   bool AddRunFlags(const std::string& run_id, const RunFlags& flags);
   /// Every run, ordered by sequence, algorithm, noise, iteration, run id.
@@ -128,9 +154,27 @@ class ResultsStore {
   explicit ResultsStore(SqliteDb db) : db_(std::move(db)) {}
   static ResultsStore OpenImpl(const std::filesystem::path& file, bool create);
   void InitializeSchema();
+  /// RecordRun's writes, inside the caller's transaction.
+  void WriteRun(std::int64_t sweep_id, const nlohmann::json& run_spec, const nlohmann::json& result,
+                const std::string& run_dir_relative, const RunFlags& flags,
+                std::optional<std::uint64_t> result_digest = std::nullopt);
   std::vector<StoredRun> QueryRuns(const std::string& where, const std::string& run_id) const;
 
+  /// Runs `write` in the open batch, else in a transaction of its own; a failure forgets the cached ids.
+  void WriteInTransaction(const std::function<void()>& write);
+  /// A prepared statement kept for the store's lifetime (reset before it is handed out).
+  SqliteStatement& Cached(const std::string& sql);
+  /// DocumentId through the cache of documents already seen.
+  std::int64_t Document(const nlohmann::json& value);
+
   SqliteDb db_;
+  // Declared after db_: statements are finalized before the connection closes.
+  std::map<std::string, std::unique_ptr<SqliteStatement>> statements_;
+  /// Ids of metric names and documents already seen: rows of both are never changed or deleted.
+  std::map<std::tuple<std::string, std::string, std::string>, std::int64_t> metric_name_ids_;
+  std::map<std::int64_t, std::pair<std::int64_t, std::string>> document_ids_;
+  /// The open batch transaction (BeginBatch); it refers to db_, so the store is not moved during a batch.
+  std::unique_ptr<SqliteTransaction> batch_;
   std::function<void()> mid_transaction_hook_;
 };
 

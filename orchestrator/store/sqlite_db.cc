@@ -187,6 +187,10 @@ void SqliteDb::Execute(std::string_view sql) {
 
 SqliteStatement SqliteDb::Prepare(std::string_view sql) const { return SqliteStatement(db_, sql, file_); }
 
+std::unique_ptr<SqliteStatement> SqliteDb::PrepareKept(std::string_view sql) const {
+  return std::make_unique<SqliteStatement>(db_, sql, file_);
+}
+
 std::int64_t SqliteDb::LastInsertRowId() const { return sqlite3_last_insert_rowid(db_); }
 
 SqliteTransaction::SqliteTransaction(SqliteDb& db) : db_(db) { db_.Execute("BEGIN IMMEDIATE"); }

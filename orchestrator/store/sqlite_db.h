@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -65,6 +66,8 @@ class SqliteDb {
   /// Runs one or more statements without results.
   void Execute(std::string_view sql);
   SqliteStatement Prepare(std::string_view sql) const;
+  /// A statement to keep and run many times (the store's cache of its most used statements).
+  std::unique_ptr<SqliteStatement> PrepareKept(std::string_view sql) const;
   std::int64_t LastInsertRowId() const;
   const std::filesystem::path& file() const { return file_; }
 

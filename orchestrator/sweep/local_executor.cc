@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <utility>
 
+#include "orchestrator/phase_times/phase_times.h"
 #include "orchestrator/sweep/worker_environment.h"
 
 namespace slamsweep::orchestrator {
@@ -27,6 +28,8 @@ std::vector<WorkerEnding> LocalExecutor::Endings(
   for (const auto& [id, outcome] : ended) {
     const auto found = run_ids_.find(id);
     if (found == run_ids_.end()) continue;
+    // The worker process as a whole (start-up included), beside the phases it times itself.
+    AddPhaseTime("worker_process", outcome.wall_s, outcome.cpu_s);
     WorkerEnding ending;
     ending.run_id = found->second;
     ending.interrupted = outcome.ending == ProcessEnding::kInterrupted ||

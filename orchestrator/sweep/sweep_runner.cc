@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "orchestrator/store/named_study.h"
+#include "orchestrator/phase_times/phase_times.h"
 #include "orchestrator/store/results_store.h"
 #include "orchestrator/sweep/output_lock.h"
 #include "orchestrator/sweep/run_folder.h"
@@ -39,7 +40,12 @@ class SweepLoop {
       if (executor_.Interrupted()) break;
       StartWhileAllowed();
       if (executor_.Running() == 0) break;  // failure budget exhausted and nothing left running
-      for (const WorkerEnding& ending : executor_.Wait()) Finish(ending, outcome);
+      std::vector<WorkerEnding> endings;
+      {
+        const PhaseTimer phase("wait");
+        endings = executor_.Wait();
+      }
+      for (const WorkerEnding& ending : endings) Finish(ending, outcome);
     }
     if (executor_.Interrupted()) {
       outcome.interrupted = true;
@@ -61,8 +67,11 @@ class SweepLoop {
            !executor_.Interrupted()) {
       const RunSpec& run = *queue_.front();
       queue_.pop_front();
+      std::optional<PhaseTimer> phase(std::in_place, "run_folder");
       const std::filesystem::path run_dir = PrepareRunFolder(settings_.output_dir, run);
+      phase.emplace("start");
       executor_.Start(run, run_dir);
+      phase.emplace("status");
       status_.Started(run.run_id);
     }
   }
@@ -70,8 +79,12 @@ class SweepLoop {
   void Finish(const WorkerEnding& ending, SweepOutcome& outcome) {
     const auto found = by_id_.find(ending.run_id);
     if (found == by_id_.end()) return;
-    const std::optional<FinishedRun> finished =
-        RecordWorkerEnding(*found->second, ending, settings_.output_dir, store_, sweep_id_);
+    std::optional<FinishedRun> finished;
+    {
+      const PhaseTimer phase("record");
+      finished = RecordWorkerEnding(*found->second, ending, settings_.output_dir, store_, sweep_id_);
+    }
+    const PhaseTimer phase("status");
     if (!finished) {
       ++outcome.not_started;
       return;
@@ -136,6 +149,7 @@ std::vector<const RunSpec*> LongestExpectedFirst(const std::vector<const RunSpec
 
 SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& settings, Executor& executor,
                       Status& status) {
+  std::optional<PhaseTimer> phase(std::in_place, "to_do");
   OutputLock lock(settings.output_dir);
   ResultsStore store = ResultsStore::Open(settings.output_dir / "results.sqlite");
   if (!settings.validity_study.empty()) WriteNamedStudy(ReadNamedStudy(settings.validity_study), settings.output_dir);
@@ -144,6 +158,7 @@ SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& set
   outcome.total = runs.size();
   const std::int64_t sweep_id = store.BeginSweep(SweepInfoFor(settings));
   const std::vector<const RunSpec*> to_run = RunsStillToDo(runs, settings, store, sweep_id, outcome);
+  phase.reset();
   status.Planned(to_run.size(), outcome.already_done);
 
   SweepLoop loop(settings, executor, status, store, sweep_id);
@@ -154,10 +169,13 @@ SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& set
   // The whole matrix, including runs finished by earlier sweeps, decides the summary and the exit code.
   std::set<std::string> matrix_ids;
   for (const RunSpec& run : runs) matrix_ids.insert(run.run_id);
+  phase.emplace("summary");
   const std::size_t failed_in_store = WriteSweepOutputs(store, matrix_ids, settings.output_dir);
   outcome.failed = std::max(outcome.failed, failed_in_store);
   store.FinishSweep(sweep_id, outcome.interrupted ? "interrupted" : (outcome.ExitCode() == 0 ? "ok" : "failed"),
                     static_cast<std::int64_t>(outcome.ok + outcome.failed));
+  phase.reset();
+  FlushPhaseTimes("sweep");
   return outcome;
 }
 

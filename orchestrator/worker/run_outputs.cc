@@ -1,14 +1,16 @@
 #include "orchestrator/worker/run_outputs.h"
 
-#include <cstdio>
+#include <algorithm>
 #include <filesystem>
+
+#include <opencv2/core.hpp>
 
 #include "evaluator/borders/vector_map.h"
 #include "evaluator/borders/vector_map_export.h"
 #include "evaluator/core/input_error.h"
+#include "evaluator/formats/map/compact_png.h"
 #include "evaluator/formats/map/image_file.h"
 #include "evaluator/formats/map/map_server_format.h"
-#include "evaluator/formats/map/png_image.h"
 #include "evaluator/formats/trajectory/output_file.h"
 #include "evaluator/formats/trajectory/tum_format.h"
 
@@ -17,10 +19,41 @@ namespace slamsweep::orchestrator {
 namespace ev = slamsweep::evaluator;
 namespace fs = std::filesystem;
 
+namespace {
+
+constexpr int kUnknownGrey = 205;
+
+// The stages on one canvas of the largest width and height, smaller ones centred on unknown cells (a
+// stage image carries no origin to align it by; the report's animations have always centred them).
+std::vector<cv::Mat> OnCommonCanvas(const std::vector<cv::Mat>& stages) {
+  cv::Size canvas(0, 0);
+  for (const cv::Mat& stage : stages) {
+    canvas.width = std::max(canvas.width, stage.cols);
+    canvas.height = std::max(canvas.height, stage.rows);
+  }
+  std::vector<cv::Mat> placed;
+  placed.reserve(stages.size());
+  for (const cv::Mat& stage : stages) {
+    if (stage.size() == canvas) {
+      placed.push_back(stage);
+      continue;
+    }
+    cv::Mat frame(canvas, CV_8UC1, cv::Scalar(kUnknownGrey));
+    stage.copyTo(frame(cv::Rect((canvas.width - stage.cols) / 2, (canvas.height - stage.rows) / 2, stage.cols,
+                                stage.rows)));
+    placed.push_back(frame);
+  }
+  return placed;
+}
+
+}  // namespace
+
 nlohmann::json WriteRunOutputs(const RunPaths& paths, const CollectedOutputs& collected,
                                const ev::Trajectory* reference, std::vector<std::string>& warnings) {
   nlohmann::json outputs = nlohmann::json::object();
-  ev::WriteMapServer(collected.map, paths.MapYaml());
+  ev::MapWriteOptions map_options;
+  map_options.trinary_png = true;
+  ev::WriteMapServer(collected.map, paths.MapYaml(), map_options);
   outputs["map"] = paths.MapYaml().filename().string();
   if (collected.trajectory) {
     ev::WriteTum(*collected.trajectory, paths.TrajectoryTum());
@@ -31,15 +64,13 @@ nlohmann::json WriteRunOutputs(const RunPaths& paths, const CollectedOutputs& co
     outputs["reference"] = paths.ReferenceTum().filename().string();
   }
 
-  nlohmann::json stages = nlohmann::json::array();
-  if (!collected.stages.empty()) fs::create_directories(paths.StagesDir());
-  for (std::size_t i = 0; i < collected.stages.size(); ++i) {
-    char name[32];
-    std::snprintf(name, sizeof(name), "stage_%04zu.png", i);
-    ev::WriteBinaryFile(paths.StagesDir() / name, ev::EncodeGreyPalettePng(collected.stages[i]));
-    stages.push_back("stages/" + std::string(name));
+  // One file for every stage: each change of the map is stored once, not once per stage image.
+  outputs["stages"] = nlohmann::json::array();
+  if (!collected.stages.empty()) {
+    ev::WriteBinaryFile(paths.StageAnimation(), ev::EncodeAnimatedGreyPng(OnCommonCanvas(collected.stages)));
+    outputs["stage_animation"] = paths.StageAnimation().filename().string();
+    outputs["stage_count"] = collected.stages.size();
   }
-  outputs["stages"] = stages;
 
   try {
     const ev::VectorMap vector_map = ev::Vectorize(collected.map, ev::VectorizeOptions{});

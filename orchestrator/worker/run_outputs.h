@@ -11,9 +11,11 @@
 
 namespace slamsweep::orchestrator {
 
-/// Writes a run's converted outputs in the run folder's fixed layout: map.pgm + map.yaml
-/// (map_saver trinary), trajectory.tum, reference.tum (when `reference`), stages/stage_NNNN.png and
-/// map.geojson (handout borders, default VectorizeOptions). Returns result.json's `outputs` object
+/// Writes a run's converted outputs in the run folder's fixed layout: map.png + map.yaml
+/// (map_saver trinary, as an 8-bit grey PNG), trajectory.tum, reference.tum (when `reference`),
+/// stages.png (every stage map, in build order, as one animated PNG; stages of different sizes centred on
+/// a canvas of the largest width and height, unknown around them) and map.geojson (handout borders,
+/// default VectorizeOptions). Returns result.json's `outputs` object
 /// (paths relative to the run folder; log.txt when it exists). A map or trajectory that cannot be
 /// written is an InputError; a vector map that cannot be made is a warning appended to `warnings`.
 nlohmann::json WriteRunOutputs(const RunPaths& paths, const CollectedOutputs& collected,

@@ -67,7 +67,8 @@ std::string NowIso8601Utc() {
 }
 
 void WriteJsonFileAtomically(const std::filesystem::path& file, const nlohmann::json& value) {
-  WriteFileAtomically(file, value.dump(2) + "\n");
+  // Compact: a run's record is read by programs (jq shows it to people), and indentation would be a third of it.
+  WriteFileAtomically(file, value.dump() + "\n");
 }
 
 }  // namespace slamsweep::orchestrator

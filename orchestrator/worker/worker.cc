@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -20,6 +21,7 @@
 #include "orchestrator/adapters/run_inputs.h"
 #include "orchestrator/adapters/run_paths.h"
 #include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/phase_times/phase_times.h"
 #include "orchestrator/process/interruption.h"
 #include "orchestrator/process/process_set.h"
 #include "orchestrator/reference_map/reference_map.h"
@@ -199,6 +201,7 @@ bool RunProgram(const RunSpec& spec, const RunPaths& paths, const Adapter& adapt
 /// (RunFailure, InputError) or recorded in `result`; the caller turns the rest into "internal".
 void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   const std::unique_ptr<Adapter> adapter = MakeAdapter(spec.algorithm.adapter);
+  std::optional<PhaseTimer> phase(std::in_place, "inputs");
   const RunInputs inputs = PrepareRunInputs(spec);
   result.warnings.insert(result.warnings.end(), inputs.warnings.begin(), inputs.warnings.end());
   result.noise = inputs.noise_record;
@@ -206,6 +209,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   result.flags.Set(RunFlag::kOdometryIsReference, inputs.odometry_is_reference);
   if (inputs.odometry_is_reference) result.warnings.push_back(std::string(kOdometryIsReferenceWarning));
   // The adapter gets the robot's part only; inputs.truth stays here until the program has exited.
+  phase.emplace("prepare");
   const PreparedRun prepared = adapter->Prepare(spec, inputs.robot, paths);
   result.command = prepared.argv;
   WriteCommandTxt(paths, prepared.argv);
@@ -221,10 +225,12 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
     process.log_cap_bytes = kLogCapBytes;
     process.timeout_s = spec.algorithm.timeout_s;
     process.memory_limit_mb = spec.algorithm.memory_limit_mb;
+    phase.emplace("program");
     if (!RunProgram(spec, paths, *adapter, process, result)) return;
   }
   if (InterruptionRequested()) return;
 
+  phase.emplace("collect");
   const auto collect_start = std::chrono::steady_clock::now();
   CollectedOutputs collected = adapter->Collect(spec, inputs.robot, paths);
   if (prepared.argv.empty()) {
@@ -236,6 +242,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
     result.warnings.push_back("map rendered from the trajectory and the scans (the program writes no map)");
   }
   const ev::Trajectory* reference = inputs.truth.reference ? &*inputs.truth.reference : nullptr;
+  phase.emplace("outputs");
   try {
     result.outputs = WriteRunOutputs(paths, collected, reference, result.warnings);
   } catch (const ev::InputError& error) {
@@ -251,6 +258,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   // The reference map is truth: read or rendered only now, after the program has exited, and
   // never into the run folder (orchestrator/reference_map: the catalog's file, or the clean scans
   // at the reference poses, cached per sequence beside runs/).
+  phase.emplace("reference_map");
   std::optional<ReferenceMap> reference_map;
   try {
     reference_map = LoadReferenceMap(spec, reference != nullptr, ReferenceMapCacheDir(paths.root));
@@ -264,6 +272,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
       result.warnings.push_back("reference map not cached: " + reference_map->cache_problem);
     }
   }
+  phase.emplace("metrics");
   result.metrics = ComputeRunMetrics(spec.evaluation, metric_inputs);
   RequireCoverage(spec.evaluation, result.metrics);
   if (result.metrics.segment_errors) {
@@ -296,7 +305,10 @@ int RunWorker(const fs::path& run_dir) {
     return kWorkerBadRunJson;
   }
 
-  RemoveAllButRunJson(paths);
+  {
+    const PhaseTimer phase("clean");
+    RemoveAllButRunJson(paths);
+  }
   RunResult result;
   result.run_id = spec.run_id;
   result.started_at = NowIso8601Utc();
@@ -322,11 +334,13 @@ int RunWorker(const fs::path& run_dir) {
   if (!result.outputs.contains("log") && fs::is_regular_file(paths.Log(), error)) result.outputs["log"] = "log.txt";
   result.finished_at = NowIso8601Utc();
   try {
+    const PhaseTimer phase("result");
     WriteJsonFileAtomically(paths.ResultJson(), ToJson(result));
   } catch (const std::exception& failure) {
     std::cerr << "slamsweep worker: " << failure.what() << "\n";
     return kWorkerBadRunJson;
   }
+  FlushPhaseTimes("worker");
   return kWorkerWroteResult;
 }
 

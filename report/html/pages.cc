@@ -1,4 +1,8 @@
+#include <algorithm>
+#include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "report/html/html.h"
 #include "report/html/number_format.h"
@@ -298,6 +302,49 @@ std::string RenderSequencePage(const SiteData& site, const SequenceModel& sequen
   return Page("Sequence " + sequence.title, root, body);
 }
 
+namespace {
+
+// A run's flat metrics, one row per metric and a column per statistic (in the worker's order), so a page of
+// a hundred statistics stays a short table. Every value is shown as it was before, with its unit.
+Html MetricsTable(const RunRecord& record) {
+  std::vector<std::string> metrics;
+  std::vector<std::string> statistics;
+  std::map<std::pair<std::string, std::string>, const FlatMetric*> values;
+  std::map<std::string, std::string> units;
+  for (const FlatMetric& metric : record.metrics) {
+    if (std::find(metrics.begin(), metrics.end(), metric.metric) == metrics.end()) metrics.push_back(metric.metric);
+    if (std::find(statistics.begin(), statistics.end(), metric.statistic) == statistics.end()) {
+      statistics.push_back(metric.statistic);
+    }
+    values[{metric.metric, metric.statistic}] = &metric;
+    // A count's unit says nothing about the metric's.
+    if (metric.statistic != "n" && units.count(metric.metric) == 0) units[metric.metric] = metric.unit;
+  }
+  Html header = Element("th", "", E("Metric")) + Element("th", "", E("Unit"));
+  for (const std::string& statistic : statistics) header += Element("th", "", E(statistic));
+  header += Element("th", "", E("Specification"));
+  Html rows;
+  for (const std::string& metric : metrics) {
+    Html cells = Element("td", "", E(metric)) + Element("td", "", E(units[metric]));
+    for (const std::string& statistic : statistics) {
+      const auto found = values.find({metric, statistic});
+      if (found == values.end()) {
+        cells += Element("td", "", E(""));
+        continue;
+      }
+      const FlatMetric& value = *found->second;
+      const bool other_unit = value.unit != units[metric] && !(statistic == "n" && value.unit == "count");
+      cells += Element("td", "", E(FormatNumber(value.value) + (other_unit ? " " + value.unit : "")));
+    }
+    cells += Element("td", "spec", E(MetricSpecLabel(record, metric)));
+    rows += Element("tr", "", cells);
+  }
+  return T("<table>\n<thead>") + Element("tr", "", header) + T("</thead>\n<tbody>\n") + rows +
+         T("</tbody>\n</table>\n");
+}
+
+}  // namespace
+
 std::string RenderRunPage(const SiteData& site, std::size_t run) {
   const RunRecord& record = site.model->runs[run];
   const RunArtifacts& artifacts = site.runs[run];
@@ -329,7 +376,10 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
       {"Finished", record.finished_at},
   });
   Html images;
-  if (artifacts.gif) {
+  if (!artifacts.animation.empty()) {
+    images += Element("figure", "map", Image(dir + artifacts.animation, "the map being built", "animation") +
+                                           Element("figcaption", "", E("Map being built (stage maps)")));
+  } else if (artifacts.gif) {
     images += Element("figure", "map", Image(dir + "stages.gif", "the map being built", "animation") +
                                            Element("figcaption", "", E("Map being built (stage maps)")));
   }
@@ -344,28 +394,26 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
   }
   if (!images.str().empty()) body += Element("div", "gallery", images);
   for (const std::string& note : artifacts.notes) body += Element("p", "note", E(note));
+  if (artifacts.figures_left_out > 0) {
+    body += Element("p", "note",
+                    E("This sweep has " + std::to_string(artifacts.figures_left_out) +
+                      " runs: their own figures are drawn for each table row's median run and for failed runs. "
+                      "`slamsweep report RESULT_DIR --run-figures all` draws this run's too."));
+  }
 
   body += Element("h2", "", E("Metrics"));
   if (record.metrics.empty()) {
     body += Element("p", "note", E("No metric was computed for this run."));
   } else {
-    Html rows;
-    for (const FlatMetric& metric : record.metrics) {
-      rows += Element("tr", "", Element("td", "", E(metric.metric)) + Element("td", "", E(metric.statistic)) +
-                                    Element("td", "", E(FormatNumber(metric.value))) +
-                                    Element("td", "", E(metric.unit)) +
-                                    Element("td", "spec", E(MetricSpecLabel(record, metric.metric))));
-    }
-    Html header;
-    for (const char* name : {"Metric", "Statistic", "Value", "Unit", "Specification"}) {
-      header += Element("th", "", E(name));
-    }
-    body += T("<table>\n<thead>") + Element("tr", "", header) + T("</thead>\n<tbody>\n") + rows +
-            T("</tbody>\n</table>\n");
+    body += MetricsTable(record);
   }
   if (!record.metric_details.empty()) {
-    body += Element("details", "", Element("summary", "", E("Full specification and statistics of every metric")) +
-                                       Element("pre", "", E(record.metric_details.dump(2))));
+    const bool linked = std::find(artifacts.downloads.begin(), artifacts.downloads.end(), "result.json") !=
+                        artifacts.downloads.end();
+    body += Element("p", "", linked ? T("Full specification and statistics of every metric: ") +
+                                          Link(dir + "result.json", E("result.json")) + T(" (metric_details).")
+                                    : E("Full specification and statistics of every metric: result.json "
+                                        "(metric_details) in the run folder."));
   }
   if (!record.warnings.empty()) {
     Html items;

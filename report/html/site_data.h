@@ -22,6 +22,10 @@ struct RunArtifacts {
   bool thumbnail = false;  ///< RunDir/thumbnail.png
   bool overlay = false;    ///< RunDir/trajectory.png
   bool gif = false;        ///< RunDir/stages.gif
+  std::string animation;   ///< RunDir/<name>: the worker's stage animation (an animated PNG), linked as it is
+  /// The run's own figures (overlay, thumbnail, GIF) were not drawn because the sweep has this many runs
+  /// (0: nothing left out).
+  std::size_t figures_left_out = 0;
   std::vector<std::string> notes;      ///< why an image or file is missing
   std::vector<std::string> downloads;  ///< file names copied into RunDir, in display order
   std::string log_tail;                ///< last lines of log.txt (raw text)

@@ -6,11 +6,13 @@
 #include <fstream>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <system_error>
 #include <thread>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/phase_times/phase_times.h"
 #include "report/html/metric_spec_page.h"
 #include "report/html/report_layout.h"
 #include "report/html/site_data.h"
@@ -35,8 +37,9 @@ constexpr const char* kMarker = ".slamsweep-report";
 
 // Files of a run folder (orchestrator/DESIGN.md) offered for download, in display order. Fixed
 // names only: paths named inside result.json are not trusted to stay inside the run folder.
-constexpr const char* kDownloads[] = {"map.pgm",   "map.yaml",    "trajectory.tum", "reference.tum", "map.geojson",
-                                      "log.txt",   "command.txt", "run.json",       "result.json", "rpe_segments.csv"};
+constexpr const char* kDownloads[] = {"map.png",     "map.pgm",  "map.yaml",    "trajectory.tum",
+                                      "reference.tum", "map.geojson", "stages.png", "log.txt",
+                                      "command.txt",   "run.json",    "result.json", "rpe_segments.csv"};
 
 void WriteTextFile(const fs::path& path, std::string_view content) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
@@ -77,6 +80,18 @@ bool IsSafeRelative(const std::string& text) {
     if (part == "..") return false;
   }
   return true;
+}
+
+// The final map's image: map.png since the worker writes PNG maps, map.pgm in older run folders.
+fs::path MapImage(const RunRecord& run) {
+  return IsRegularFile(run.dir / "map.png") ? run.dir / "map.png" : run.dir / "map.pgm";
+}
+
+// The run's stage animation (one animated PNG of every stage), when its folder has one.
+std::optional<fs::path> StageAnimation(const RunRecord& run) {
+  const std::string& name = run.outputs.stage_animation;
+  if (name.empty() || !IsSafeRelative(name) || !IsRegularFile(run.dir / name)) return std::nullopt;
+  return run.dir / name;
 }
 
 std::vector<fs::path> StagePaths(const RunRecord& run) {
@@ -230,6 +245,17 @@ void CopyDownloads(const RunRecord& run, const fs::path& run_out, RunArtifacts& 
       artifacts.downloads.push_back(name);
     }
   }
+  // The worker's stage animation is the page's animation as it is: no GIF to make.
+  if (const std::optional<fs::path> animation = StageAnimation(run)) {
+    std::error_code error;
+    const fs::path shown = run_out / animation->filename();
+    if (!IsRegularFile(shown)) LinkOrCopy(*animation, shown, error);
+    if (error) {
+      artifacts.notes.push_back("Map-building animation not shown: " + error.message());
+    } else {
+      artifacts.animation = animation->filename().string();
+    }
+  }
 }
 
 OverlaySettings OverlaySettingsOf(const RunRecord& run) {
@@ -256,6 +282,9 @@ void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const fs
       if (row.median_run) in_gallery[*row.median_run] = true;
     }
   }
+  // Beyond figures_for_every_run_up_to runs, a run's own figures are drawn for the runs the galleries show
+  // (each row's median run) and for failed runs; the other pages say how to draw theirs.
+  const bool every_run = options.run_figures_for_every_run || model.runs.size() <= options.figures_for_every_run_up_to;
   for (std::size_t i = 0; i < model.runs.size(); ++i) {
     const RunRecord& run = model.runs[i];
     const fs::path run_out = out_dir / layout.RunDir(i);
@@ -265,10 +294,18 @@ void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const fs
         if (!error.empty()) artifacts->notes.push_back(what + " not made: " + error);
       };
     };
-    const bool has_map = IsRegularFile(run.dir / "map.pgm");
+    const fs::path map_image = MapImage(run);
+    const bool has_map = IsRegularFile(map_image);
     const bool can_overlay = has_map && IsRegularFile(run.dir / "map.yaml") && IsRegularFile(run.dir / "trajectory.tum");
+    if (!every_run && !in_gallery[i] && run.status == RunStatus::kOk) {
+      if (has_map) artifacts->figures_left_out = model.runs.size();
+      if (!artifacts->animation.empty()) continue;
+      // Run folders without a stage animation: their GIF is a figure to draw as well.
+      if (!StagePaths(run).empty()) artifacts->figures_left_out = model.runs.size();
+      continue;
+    }
     if (has_map && (in_gallery[i] || !can_overlay)) {
-      jobs.push_back({[=] { artwork->Thumbnail(run.dir / "map.pgm", run_out / "thumbnail.png", options.thumbnail_px); },
+      jobs.push_back({[=] { artwork->Thumbnail(map_image, run_out / "thumbnail.png", options.thumbnail_px); },
                       [artifacts, run_out, n = note("Map thumbnail")](const std::string& error) {
                         artifacts->thumbnail = error.empty() && IsRegularFile(run_out / "thumbnail.png");
                         n(error);
@@ -287,7 +324,7 @@ void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const fs
                         n(error);
                       }});
     }
-    std::vector<fs::path> stages = StagePaths(run);
+    std::vector<fs::path> stages = artifacts->animation.empty() ? StagePaths(run) : std::vector<fs::path>();
     if (!stages.empty()) {
       jobs.push_back({[=] { artwork->StagesGif(stages, run_out / "stages.gif", options.gif); },
                       [artifacts, run_out, n = note("Map-building animation")](const std::string& error) {
@@ -317,14 +354,15 @@ void WritePaperFiles(const SweepModel& model, const ReportLayout& layout, const 
   }
 }
 
-// Copies RESULT_DIR/name into the report; false (and no stale copy left) when the sweep wrote none.
+// Links (else copies) RESULT_DIR/name into the report; false (and no stale copy left) when the sweep wrote none.
+// The sweep replaces these files by rename, never in place, so a link keeps the report's version.
 bool CopyResultFile(const fs::path& result_dir, const fs::path& out_dir, const char* name) {
   std::error_code error;
   if (!IsRegularFile(result_dir / name)) {
     fs::remove(out_dir / name, error);
     return false;
   }
-  fs::copy_file(result_dir / name, out_dir / name, fs::copy_options::overwrite_existing, error);
+  LinkOrCopy(result_dir / name, out_dir / name, error);
   return !error;
 }
 
@@ -353,7 +391,10 @@ ReportSummary CountImages(const fs::path& out_dir, bool drawing, SiteData& site)
 }  // namespace
 
 ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, const ReportOptions& options) {
-  const SweepModel model = BuildSweepModel(LoadRuns(result_dir), LoadSweepModelOptions(result_dir));
+  std::optional<orchestrator::PhaseTimer> phase(std::in_place, "load");
+  std::vector<RunRecord> records = LoadRuns(result_dir);
+  phase.emplace("model");
+  const SweepModel model = BuildSweepModel(std::move(records), LoadSweepModelOptions(result_dir));
   const ReportLayout layout(model);
   PrepareOutputDir(out_dir);
 
@@ -368,6 +409,7 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   site.title = model.sweep_name.empty() ? "slamsweep report — " + normal.filename().string() : model.sweep_name;
   site.runs.resize(model.runs.size());
 
+  phase.emplace("downloads");
   ParallelFor(model.runs.size(), options.jobs, [&](std::size_t i) {
     const RunRecord& run = model.runs[i];
     const fs::path run_out = out_dir / layout.RunDir(i);
@@ -378,6 +420,7 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
     site.runs[i].log_truncated = tail.truncated;
   });
 
+  phase.emplace("plan_images");
   std::vector<PlotRequest> plots = PlanPlots(model, layout, out_dir, site);
   std::vector<ScatterPlotJob> scatter_plots;
   ValiditySite validity = PlanValidity(model, *site.palette, out_dir, scatter_plots);
@@ -411,7 +454,9 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
     }
     PlanRunImages(model, layout, out_dir, options, site, jobs);
   }
+  phase.emplace("images");
   RunImageJobs(jobs, options.jobs);
+  phase.emplace("pages");
   ReportSummary summary = CountImages(out_dir, options.artwork != nullptr, site);
   CountValidityPlots(out_dir, options.artwork != nullptr, validity, summary);
   const auto [figures_made, figures_missing] = MarkViewFigures(out_dir, options.artwork != nullptr, figures_error, site);
@@ -446,6 +491,8 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
               [&](std::size_t i) { WriteTextFile(out_dir / layout.RunPage(i), RenderRunPage(site, i)); });
   summary.pages += model.runs.size();
   summary.runs = model.runs.size();
+  phase.reset();
+  orchestrator::FlushPhaseTimes("report");
   return summary;
 }
 

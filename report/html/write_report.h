@@ -31,6 +31,11 @@ struct ReportOptions {
   int thumbnail_px = 320;
   int overlay_px = 480;
   GifSettings gif;
+  /// A run's own figures (trajectory over the map, thumbnail, GIF from separate stage images) are drawn for
+  /// every run of a sweep of at most this many runs; above it only for the runs the galleries show (each
+  /// row's median run) and failed runs, unless run_figures_for_every_run (`--run-figures all`).
+  std::size_t figures_for_every_run_up_to = 500;
+  bool run_figures_for_every_run = false;
   /// Lines of log.txt shown on a run page (the whole log is downloadable).
   std::size_t log_tail_lines = 60;
   /// Nightly history pages and the comparison with the previous night (report/history); null: none.

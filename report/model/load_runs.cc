@@ -66,6 +66,36 @@ std::vector<std::string> OptionalStrings(const json& object, const char* key, co
   return out;
 }
 
+// RunRecord::metric_details: of each metric its specification and its top-level numbers and texts (pairs,
+// n, rmse...); of segment_rpe also its lengths with their mean drift and rotation (report/model/segment_model).
+json MetricDetailsTheReportReads(const json& details) {
+  json kept = json::object();
+  for (const auto& [metric, detail] : details.items()) {
+    json& entry = kept[metric] = json::object();
+    if (!detail.is_object()) continue;
+    for (const auto& [key, value] : detail.items()) {
+      if (key == "specification" || value.is_primitive()) entry[key] = value;
+    }
+    const auto lengths = detail.find("lengths");
+    if (metric != "segment_rpe" || lengths == detail.end() || !lengths->is_array()) continue;
+    json& kept_lengths = entry["lengths"] = json::array();
+    for (const json& length : *lengths) {
+      if (!length.is_object()) continue;
+      json item = json::object();
+      for (const char* key : {"length_m", "n"}) {
+        if (const auto value = length.find(key); value != length.end()) item[key] = *value;
+      }
+      for (const char* key : {"translation_pct", "rotation_deg_per_m"}) {
+        const auto statistics = length.find(key);
+        if (statistics == length.end() || !statistics->is_object()) continue;
+        if (const auto mean = statistics->find("mean"); mean != statistics->end()) item[key]["mean"] = *mean;
+      }
+      kept_lengths.push_back(std::move(item));
+    }
+  }
+  return kept;
+}
+
 void ReadRunSpec(const std::filesystem::path& file, RunRecord& run) {
   run.run_spec = ReadJsonFile(file);
   if (!run.run_spec.is_object()) throw InputError(file.string() + ": expected a JSON object");
@@ -159,6 +189,7 @@ void ReadResult(const std::filesystem::path& file, RunRecord& run) {
     run.outputs.vector_map = OptionalString(*it, "vector_map", file);
     run.outputs.log = OptionalString(*it, "log", file);
     run.outputs.stages = OptionalStrings(*it, "stages", file);
+    run.outputs.stage_animation = OptionalString(*it, "stage_animation", file);
   }
   if (const auto it = result.find("metrics"); it != result.end() && !it->is_null()) {
     run.metrics = FlatMetrics(*it, "metrics", file);
@@ -168,7 +199,9 @@ void ReadResult(const std::filesystem::path& file, RunRecord& run) {
       run.reference_floor = FlatMetrics(*floor, "reference_floor.metrics", file);
     }
   }
-  if (const auto it = result.find("metric_details"); it != result.end() && it->is_object()) run.metric_details = *it;
+  if (const auto it = result.find("metric_details"); it != result.end() && it->is_object()) {
+    run.metric_details = MetricDetailsTheReportReads(*it);
+  }
 }
 
 }  // namespace

@@ -37,6 +37,8 @@ struct RunOutputs {
   std::string vector_map;
   std::string log;
   std::vector<std::string> stages;
+  /// Every stage map as one animated PNG (run folders written since the stages are kept in one file).
+  std::string stage_animation;
 };
 
 /// One run of a sweep as the report sees it: run.json and result.json of runs/<id>/ (orchestrator/DESIGN.md).
@@ -76,6 +78,10 @@ struct RunRecord {
   /// result.json's reference_floor: the reference itself scored by the relations metric, exactly as
   /// the run's estimate (empty without reference or relations).
   std::vector<FlatMetric> reference_floor;
+  /// What the report reads of result.json's metric_details: per metric its "specification" and its top-level
+  /// numbers and texts, and of segment_rpe the mean drift and rotation per length. Nested details (alignment
+  /// matrices, map details, per-length statistics) stay in result.json, which the run page links: a sweep of
+  /// 10,000 runs is not held in memory twice over.
   nlohmann::json metric_details = nlohmann::json::object();
   nlohmann::json run_spec = nlohmann::json::object();  ///< run.json as read (the resolved configuration)
   std::vector<std::string> warnings;

@@ -10,6 +10,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli/sweep_loading.h"
+#include "evaluator/core/input_error.h"
+#include "evaluator/core/text_file.h"
 #include "tests/cli/run_cli.h"
 #include "tests/support/shared_data.h"
 
@@ -86,6 +89,32 @@ TEST(PlanCommand, MrptParametersWithoutASectionAreRefusedBeforeAnythingRuns) {
   EXPECT_EQ(plan.exit_code, 2);
   EXPECT_THAT(plan.err, HasSubstr("algorithm 'rbpf'"));
   EXPECT_THAT(plan.err, HasSubstr("sampleSize"));
+}
+
+TEST(PlanCommand, AMissingRosterAlgorithmIsNamedWithItsInstallCommandAndNotBuiltOutsideTheBuildsOwnPrefix) {
+  slamsweep::testing::TempDir dir;
+  const auto config = slamsweep::testing::WriteFile(
+      dir / "roster.yaml",
+      "name: roster\nalgorithms:\n  - {name: gm, adapter: gmapping}\n"
+      "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 40}\n");
+  // An empty roster prefix of the user's choosing: plan and run build only into the build's own prefix.
+  std::filesystem::create_directories(dir / "prefix");
+  ASSERT_EQ(setenv("SLAMSWEEP_SLAM_PREFIX", (dir / "prefix").c_str(), 1), 0);
+  const auto plan = RunCli({"plan", config.string()});
+  // The service loads sweeps without ever building (cli::LoadSweepText's default).
+  std::string service_error;
+  try {
+    cli::LoadSweepText(evaluator::ReadTextFile(config), config.string(), {}, {});
+  } catch (const evaluator::InputError& error) {
+    service_error = error.what();
+  }
+  unsetenv("SLAMSWEEP_SLAM_PREFIX");
+  EXPECT_EQ(plan.exit_code, 2);
+  EXPECT_THAT(plan.err, HasSubstr("algorithm 'gm'"));
+  EXPECT_THAT(plan.err, HasSubstr("scripts/install-slam.sh gmapping"));
+  EXPECT_THAT(plan.err, ::testing::Not(HasSubstr("building gmapping now")));
+  EXPECT_THAT(service_error, HasSubstr("scripts/install-slam.sh gmapping"));
+  EXPECT_TRUE(std::filesystem::is_empty(dir / "prefix")) << "nothing installed into a prefix the build does not own";
 }
 
 /// A sweep of the odometry baseline and a command that fails, on a short simulated sequence.

@@ -196,6 +196,12 @@ check_bad_arguments() {
   expect_log "BENCH_RUNS must be a positive integer, got '0'" "speed-check.sh names the bad BENCH_RUNS"
   expect_status 2 "speed-check.sh without a slamsweep program" env SLAMSWEEP_BIN="$work/no-slamsweep" \
     "$jobs_dir/speed-check.sh" "$work/speed-nobin"
+  expect_status 2 "scale-check.sh with two output folders" "$jobs_dir/scale-check.sh" "$work/a" "$work/b"
+  expect_log 'usage: jobs/scale-check.sh' "scale-check.sh prints its usage"
+  expect_status 2 "scale-check.sh with SCALE_SIZES=1k" env SCALE_SIZES=1k "$jobs_dir/scale-check.sh" "$work/scale-bad"
+  expect_log "SCALE_SIZES must be a comma-separated list of run counts, got '1k'" "scale-check.sh names the bad SCALE_SIZES"
+  expect_status 2 "scale-check.sh without a slamsweep program" env SLAMSWEEP_BIN="$work/no-slamsweep" \
+    "$jobs_dir/scale-check.sh" "$work/scale-nobin"
 }
 
 # nightly-compare.sh's handling of `slamsweep history` with a stand-in program (the real one is exercised in
@@ -617,7 +623,7 @@ case $case_name in
       "reportDir: 'out/report'" "keepAll: true" "name: 'ALGORITHMS'" "name: 'SEQUENCES'" "name: 'ITERATIONS'"
     check_jenkinsfile "$jobs_dir/Jenkinsfile.nightly" 4 "cron(" "jobs/run-shard.sh" "jobs/merge-shards.sh" \
       "jobs/nightly-compare.sh" "unstable(" "error(" "publishHTML" "junit testResults" "stage('Speed')" \
-      "jobs/speed-check.sh out/speed" "label 'slamsweep-bench'"
+      "jobs/speed-check.sh out/speed" "label 'slamsweep-bench'" "stage('Scale')" "jobs/scale-check.sh out/scale"
     check_jenkinsfile "$jobs_dir/Jenkinsfile.service" 2 "stage('Setup')" "stage('Sweep')" "stage('Publish')" \
       "jobs/submit-sweep.sh" "withCredentials" "junit testResults: 'out/junit.xml', allowEmptyResults: false" \
       "publishHTML" "name: 'SLAMSWEEP_SERVER'" "name: 'PRIORITY'"

@@ -34,6 +34,9 @@ struct MapWriteOptions {
     kScale,
   };
   Mode mode = Mode::kTrinary;
+  /// Trinary mode: the image as map_saver's P5 PGM, or as an 8-bit grey PNG of the same values (a few
+  /// kilobytes instead of one byte per cell; map_server reads both).
+  bool trinary_png = false;
   /// Trinary mode, map_saver's `--occ` and `--free`: a cell whose map_server value
   /// v = round(100 * p) is >= occupied_threshold_percent is occupied, one with 0 <= v <=
   /// free_threshold_percent is free, anything else unknown.

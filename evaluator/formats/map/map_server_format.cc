@@ -10,6 +10,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
+#include "evaluator/formats/map/compact_png.h"
 #include "evaluator/formats/map/image8.h"
 #include "evaluator/formats/map/image_file.h"
 #include "evaluator/formats/map/map_server_pixels.h"
@@ -116,12 +117,14 @@ void WriteMapServer(const OccupancyGrid& grid, const std::filesystem::path& yaml
   CheckGeometry(grid, yaml_path);
   if (!yaml_path.has_filename()) throw InputError(Located(yaml_path, 0, "expected a YAML file name, got a folder"));
   const bool scale = options.mode == MapWriteOptions::Mode::kScale;
-  const std::string image_name = yaml_path.stem().string() + (scale ? ".png" : ".pgm");
+  const std::string image_name = yaml_path.stem().string() + (scale || options.trinary_png ? ".png" : ".pgm");
   const std::filesystem::path image_path = yaml_path.parent_path() / image_name;
 
   // The image first, so that a YAML never names an image that is not there.
   if (scale) {
     WriteBinaryFile(image_path, EncodePng(ScaleImage(grid)));
+  } else if (options.trinary_png) {
+    WriteBinaryFile(image_path, EncodeCompactGreyPng(TrinaryImage(grid, options)));
   } else {
     WriteBinaryFile(image_path,
                     EncodePgm(TrinaryImage(grid, options),

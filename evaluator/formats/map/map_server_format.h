@@ -13,7 +13,8 @@ namespace slamsweep::evaluator {
 /// `image`) and the image path.
 OccupancyGrid ReadMapServer(const std::filesystem::path& yaml_path);
 
-/// Writes `grid` the way ROS map_saver does: `<stem>.pgm` (trinary) or `<stem>.png` (scale)
+/// Writes `grid` the way ROS map_saver does: `<stem>.pgm` (trinary; `<stem>.png` with trinary_png) or
+/// `<stem>.png` (scale)
 /// beside `yaml_path`, then the YAML with map_saver's keys in its order: image (the file name,
 /// relative to the YAML), resolution, origin [x, y, yaw], negate 0, occupied_thresh 0.65,
 /// free_thresh 0.196 (and `mode: scale`). Numbers are written with full precision, unlike

@@ -45,6 +45,31 @@ TEST(RandomTest, StandardNormalHasUnitVarianceAndZeroMean) {
   EXPECT_NEAR(static_cast<double>(beyond_two_sigma) / kCount, 0.0455, 0.003);
 }
 
+TEST(RandomTest, UniformIndexSamplerDrawsWhatUniformIndexDraws) {
+  // Counts where the remainder by multiplication is easy to get wrong: powers of two and their
+  // neighbours, counts with rejection thresholds near 2^63, and the largest count.
+  const std::uint64_t counts[] = {1,          2,          3,          7,          1000,       4096,
+                                  65537,      (1ull << 32) - 1,       (1ull << 32) + 5,      (1ull << 63) - 1,
+                                  1ull << 63, (1ull << 63) + 1,       0xffffffffffffffffull, 0x9e3779b97f4a7c15ull};
+  for (const std::uint64_t count : counts) {
+    SCOPED_TRACE(count);
+    RandomEngine reference(count), engine(count);
+    const UniformIndexSampler sampler(count);
+    for (int i = 0; i < 20000; ++i) ASSERT_EQ(sampler(engine), UniformIndex(reference, count)) << i;
+  }
+  // Remainders of values near 2^64 by large counts, where the engine seldom goes.
+  for (const std::uint64_t count : counts) {
+    if (count < 2) continue;
+    for (const std::uint64_t value : {std::uint64_t{0xffffffffffffffffull}, std::uint64_t{0xfffffffffffffffeull}, count - 1, count, count + 1}) {
+      const std::uint64_t threshold = (0 - count) % count;
+      if (value < threshold) continue;
+      // An engine whose next draw is `value`: mt19937_64 cannot be steered, so the sampler's remainder
+      // is checked against % through a sampler for the one value.
+      EXPECT_EQ(UniformIndexSampler::RemainderForTesting(count, value), value % count) << count << " " << value;
+    }
+  }
+}
+
 TEST(RandomTest, UniformIndexCoversTheRangeEvenly) {
   RandomEngine engine(3);
   std::vector<int> counts(7, 0);

@@ -10,8 +10,66 @@
 #include <map>
 #include <vector>
 
+#include "evaluator/noise/random.h"
+
 namespace slamsweep::evaluator {
 namespace {
+
+/// The bootstrap as first written: every resample copied and ranked by sorting (PooledRankCorrelation).
+/// The counting ranks of BootstrapPooledRankCorrelation must give exactly its interval.
+std::optional<BootstrapInterval> SortingBootstrap(const std::vector<PairedStratum>& strata,
+                                                  const BootstrapOptions& options) {
+  RandomEngine engine(options.seed);
+  std::vector<PairedStratum> resample = strata;
+  std::vector<double> replicates;
+  for (std::size_t r = 0; r < options.resamples; ++r) {
+    for (std::size_t s = 0; s < strata.size(); ++s) {
+      const std::size_t n = strata[s].x.size();
+      for (std::size_t k = 0; k < n; ++k) {
+        const auto drawn = static_cast<std::size_t>(UniformIndex(engine, n));
+        resample[s].x[k] = strata[s].x[drawn];
+        resample[s].y[k] = strata[s].y[drawn];
+      }
+    }
+    if (const std::optional<double> rho = PooledRankCorrelation(resample)) replicates.push_back(*rho);
+  }
+  if (replicates.empty() || static_cast<double>(replicates.size()) <
+                                options.min_defined_fraction * static_cast<double>(options.resamples)) {
+    return std::nullopt;
+  }
+  std::sort(replicates.begin(), replicates.end());
+  return BootstrapInterval{InterpolatedQuantile(replicates, (1.0 - options.confidence) / 2.0),
+                           InterpolatedQuantile(replicates, (1.0 + options.confidence) / 2.0), options.resamples,
+                           replicates.size()};
+}
+
+TEST(BootstrapTest, CountingRanksGiveExactlyTheIntervalOfSortingEveryResample) {
+  RandomEngine engine(5);
+  for (int c = 0; c < 30; ++c) {
+    SCOPED_TRACE(c);
+    // 1-4 strata of 1-40 pairs, many ties (few levels), -0.0 beside 0.0, some strata correlated.
+    std::vector<PairedStratum> strata(1 + UniformIndex(engine, 4));
+    for (PairedStratum& stratum : strata) {
+      const std::size_t n = 1 + UniformIndex(engine, 40);
+      const std::uint64_t levels = 2 + UniformIndex(engine, c % 3 == 0 ? 1000 : 6);
+      for (std::size_t k = 0; k < n; ++k) {
+        const double x = static_cast<double>(UniformIndex(engine, levels));
+        stratum.x.push_back(x == 0.0 && k % 2 == 0 ? -0.0 : x);
+        stratum.y.push_back(x * (c % 2) + static_cast<double>(UniformIndex(engine, levels)));
+      }
+    }
+    BootstrapOptions options;
+    options.resamples = 300;
+    options.seed = 100 + static_cast<std::uint64_t>(c);
+    const std::optional<BootstrapInterval> expected = SortingBootstrap(strata, options);
+    const std::optional<BootstrapInterval> interval = BootstrapPooledRankCorrelation(strata, options);
+    ASSERT_EQ(interval.has_value(), expected.has_value());
+    if (!expected) continue;
+    EXPECT_EQ(interval->low, expected->low);
+    EXPECT_EQ(interval->high, expected->high);
+    EXPECT_EQ(interval->defined, expected->defined);
+  }
+}
 
 TEST(InterpolatedQuantileTest, HandComputed) {
   const std::vector<double> sorted = {1, 2, 3, 4};

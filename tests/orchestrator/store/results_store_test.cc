@@ -55,8 +55,12 @@ TEST(ResultsStoreTest, CreatesSchemaAndReopens) {
   }
   EXPECT_EQ(QueryInt(file, "PRAGMA user_version"), kResultsSchemaVersion);
   EXPECT_EQ(QueryInt(file, "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name IN "
-                           "('sweeps', 'runs', 'metrics', 'metric_specs')"),
-            4);
+                           "('sweeps', 'runs', 'documents', 'metric_names', 'metric_values', 'metric_spec_refs')"),
+            6);
+  // The queries of the tables of schema versions 1-3 still work, as views.
+  EXPECT_EQ(QueryInt(file, "SELECT count(*) FROM sqlite_master WHERE type = 'view' AND name IN "
+                           "('metrics', 'metric_specs')"),
+            2);
   EXPECT_EQ(QueryInt(file, "SELECT count(*) FROM sqlite_master WHERE type = 'index' AND sql LIKE "
                            "'%(algorithm, sequence)%'"),
             1);
@@ -94,7 +98,15 @@ TEST(ResultsStoreTest, RunsCarryColumnsSpecResultAndMetrics) {
   const StoredRun& r1 = runs[1];
   EXPECT_EQ(r1.sweep_id, 7);
   EXPECT_EQ(r1.spec, spec);
-  EXPECT_EQ(r1.result, result);
+  // result.json's columns, command, outputs and warnings come back; of metric_details only how each metric
+  // was specified (the run folder keeps the rest).
+  for (const char* key : {"run_id", "status", "failure_kind", "reason", "exit_code", "signal", "wall_s", "cpu_s",
+                          "peak_rss_kb", "started_at", "finished_at", "outputs", "warnings"}) {
+    EXPECT_EQ(r1.result.at(key), result.at(key)) << key;
+  }
+  EXPECT_EQ(r1.result.at("flags"), nlohmann::json::array());
+  EXPECT_EQ(r1.result.at("metric_details"), (nlohmann::json{{"ape_trans", nlohmann::json::object()}}));
+  EXPECT_EQ(r1.result.at("metrics").size(), 3u);
   EXPECT_EQ(r1.algorithm, "icp-slam");
   EXPECT_EQ(r1.sequence, "intel");
   EXPECT_EQ(r1.noise, "clean");
@@ -113,7 +125,62 @@ TEST(ResultsStoreTest, RunsCarryColumnsSpecResultAndMetrics) {
   ASSERT_TRUE(found.has_value());
   EXPECT_EQ(found->metrics.size(), 3u);
   EXPECT_EQ(QueryInt(dir / "results.sqlite", "SELECT count(*) FROM metric_specs WHERE run_id = 'r1'"), 1);
+  EXPECT_EQ(QueryInt(dir / "results.sqlite", "SELECT count(*) FROM metrics WHERE run_id = 'r1'"), 3);
   EXPECT_EQ(QueryInt(dir / "results.sqlite", "SELECT seed FROM runs WHERE run_id = 'r1'"), 123456789);
+}
+
+TEST(ResultsStoreTest, WhatRunsShareIsKeptOnceAndTheMetricSpecificationWithoutTheNumbers) {
+  slamsweep::testing::TempDir dir;
+  const auto file = dir / "results.sqlite";
+  ResultsStore store = ResultsStore::Open(file);
+  nlohmann::json result = MakeOkResult("r0");
+  result["metric_details"] = {
+      {"ape_trans", {{"rmse", 0.12}, {"specification", {{"alignment", "se2"}, {"t_max_diff_s", 0.01}}}}},
+      {"paper_map", {{"corners", 17}, {"parameters", {{"occupied_threshold", 0.65}}}}}};
+  for (int i = 0; i < 20; ++i) {
+    const std::string id = fmt::format("r{}", i);
+    result["run_id"] = id;
+    result["metric_details"]["ape_trans"]["rmse"] = 0.1 + 0.01 * i;
+    store.RecordRun(1, MakeSpec(id, "icp-slam", "intel", i), result, "runs/" + id);
+  }
+  // One document for the runs' shared run.json, one for their command/outputs/warnings, one per distinct
+  // metric specification.
+  EXPECT_EQ(QueryInt(file, "SELECT count(*) FROM documents"), 4);
+  EXPECT_EQ(QueryInt(file, "SELECT count(*) FROM metric_names"), 3);
+  EXPECT_EQ(QueryInt(file, "SELECT count(*) FROM metric_values"), 60);
+  SqliteDb db = SqliteDb::Open(file, false);
+  auto spec = db.Prepare("SELECT spec_json FROM metric_specs WHERE run_id = 'r7' AND metric = 'ape_trans'");
+  ASSERT_TRUE(spec.Step());
+  EXPECT_EQ(nlohmann::json::parse(spec.Text(0)),
+            (nlohmann::json{{"specification", {{"alignment", "se2"}, {"t_max_diff_s", 0.01}}}}));
+  const std::optional<StoredRun> r7 = store.FindRun("r7");
+  ASSERT_TRUE(r7.has_value());
+  EXPECT_EQ(r7->spec, MakeSpec("r7", "icp-slam", "intel", 7));
+  EXPECT_EQ(r7->result.at("metric_details").at("paper_map"),
+            (nlohmann::json{{"parameters", {{"occupied_threshold", 0.65}}}}));
+}
+
+TEST(ResultsStoreTest, ResultDigestTellsRecordingsApartButNotTheirFlags) {
+  slamsweep::testing::TempDir dir;
+  ResultsStore store = ResultsStore::Open(dir / "results.sqlite");
+  store.RecordRun(1, MakeSpec("a"), MakeOkResult("a", 3.0), "runs/a");
+  store.RecordRun(1, MakeSpec("b"), MakeOkResult("b", 3.0), "runs/b");
+  const std::uint64_t a = store.FindRun("a")->result_digest;
+  // Another run id is another text.
+  EXPECT_NE(store.FindRun("b")->result_digest, a);
+  nlohmann::json flagged = MakeOkResult("a", 3.0);
+  flagged["flags"] = {"stale"};
+  store.RecordRun(1, MakeSpec("a"), flagged, "runs/a");
+  EXPECT_EQ(store.FindRun("a")->result_digest, a);
+  store.RecordRun(1, MakeSpec("a"), MakeOkResult("a", 3.5), "runs/a");
+  EXPECT_NE(store.FindRun("a")->result_digest, a);
+  // A run imported into another store keeps its digest and flags.
+  ResultsStore other = ResultsStore::Open(dir / "other.sqlite");
+  const StoredRun b = *store.FindRun("b");
+  other.ImportRun(1, b, "runs/b");
+  EXPECT_EQ(other.FindRun("b")->result_digest, b.result_digest);
+  EXPECT_EQ(other.FindRun("b")->spec, b.spec);
+  EXPECT_EQ(other.FindRun("b")->metrics.size(), b.metrics.size());
 }
 
 TEST(ResultsStoreTest, RecordRunReplacesTheRunAndAllItsMetrics) {
@@ -132,6 +199,9 @@ TEST(ResultsStoreTest, RecordRunReplacesTheRunAndAllItsMetrics) {
   EXPECT_EQ(store.Runs().size(), 1u);
   EXPECT_EQ(QueryInt(dir / "results.sqlite", "SELECT count(*) FROM metrics"), 1);
   EXPECT_EQ(QueryInt(dir / "results.sqlite", "SELECT count(*) FROM metric_specs"), 0);
+  // No row of the earlier recording is left behind, not even one no run refers to.
+  EXPECT_EQ(QueryInt(dir / "results.sqlite", "SELECT count(*) FROM metric_values"), 1);
+  EXPECT_EQ(QueryInt(dir / "results.sqlite", "SELECT count(*) FROM metric_spec_refs"), 0);
   // A failed re-run leaves no metrics of the earlier ok run behind.
   store.RecordRun(1, MakeSpec("r1"), MakeFailedResult("r1"), "runs/r1");
   EXPECT_EQ(store.RunStatus("r1"), "failed");
@@ -305,24 +375,57 @@ TEST(ResultsStoreTest, RunFlagsAreRecordedAddedAndReadBack) {
   EXPECT_EQ(column.Text(0), "odometry_is_reference;unisolated");
 }
 
-TEST(ResultsStoreTest, AVersion2StoreGainsTheFlagsColumnAndDerivesFlagsFromItsRuns) {
+// A results.sqlite as slamsweep wrote it with schema version 2 (version 1's tables plus the columns of
+// version 2), holding one run whose run.json says its odometry was the reference.
+void WriteVersion2Store(const std::filesystem::path& file) {
+  SqliteDb db = SqliteDb::Open(file, true);
+  db.Execute(R"sql(
+CREATE TABLE sweeps(id INTEGER PRIMARY KEY, name TEXT, config_path TEXT, config_sha TEXT, started_at TEXT,
+  finished_at TEXT, status TEXT, host TEXT, slamsweep_version TEXT, run_count INTEGER, command_line TEXT);
+CREATE TABLE runs(run_id TEXT PRIMARY KEY, sweep_id INTEGER, algorithm TEXT, adapter TEXT, parameters_json TEXT,
+  sequence TEXT, noise TEXT, iteration INTEGER, seed, spec_json TEXT NOT NULL,
+  status TEXT NOT NULL CHECK(status IN ('ok', 'failed')), failure_kind TEXT, reason TEXT, exit_code INTEGER,
+  signal INTEGER, wall_s REAL, cpu_s REAL, peak_rss_kb INTEGER, started_at TEXT, finished_at TEXT, run_dir TEXT,
+  result_json TEXT NOT NULL, parameters TEXT, odometry_is_reference INTEGER, seeding TEXT, slamsweep_revision TEXT);
+CREATE INDEX runs_algorithm_sequence ON runs(algorithm, sequence);
+CREATE INDEX runs_sequence_algorithm ON runs(sequence, algorithm);
+CREATE INDEX runs_group ON runs(sequence, noise, algorithm, parameters);
+CREATE TABLE metrics(run_id TEXT NOT NULL, metric TEXT NOT NULL, statistic TEXT NOT NULL, value REAL, unit TEXT,
+  PRIMARY KEY(run_id, metric, statistic));
+CREATE TABLE metric_specs(run_id TEXT NOT NULL, metric TEXT NOT NULL, spec_json TEXT, PRIMARY KEY(run_id, metric));
+INSERT INTO sweeps(id, name, status) VALUES(3, 'old', 'ok');
+PRAGMA user_version = 2;
+)sql");
+  nlohmann::json spec = MakeSpec("old");
+  spec["odometry_is_reference"] = true;
+  auto insert = db.Prepare(
+      "INSERT INTO runs(run_id, sweep_id, algorithm, sequence, noise, iteration, spec_json, status, wall_s, "
+      "run_dir, result_json) VALUES('old', 3, 'icp-slam', 'intel', 'clean', 0, ?, 'ok', 3.0, 'runs/old', ?)");
+  insert.Bind(1, std::string_view(spec.dump())).Bind(2, std::string_view(MakeOkResult("old").dump()));
+  insert.Run();
+  db.Execute("INSERT INTO metrics VALUES('old', 'ape_trans', 'rmse', 0.12, 'm')");
+}
+
+TEST(ResultsStoreTest, AVersion2StoreIsConvertedAndDerivesFlagsFromItsRuns) {
   slamsweep::testing::TempDir dir;
   const auto file = dir / "results.sqlite";
-  {
-    ResultsStore store = ResultsStore::Open(file);
-    nlohmann::json spec = MakeSpec("old");
-    spec["odometry_is_reference"] = true;
-    store.RecordRun(store.BeginSweep(SweepInfo{}), spec, MakeOkResult("old"), "runs/old");
-  }
-  {
-    // What a slamsweep of schema version 2 left: no flags column.
-    SqliteDb db = SqliteDb::Open(file, false);
-    db.Execute("ALTER TABLE runs DROP COLUMN flags");
-    db.Execute("PRAGMA user_version = 2");
-  }
+  WriteVersion2Store(file);
   ResultsStore reopened = ResultsStore::Open(file);
   EXPECT_EQ(QueryInt(file, "PRAGMA user_version"), kResultsSchemaVersion);
-  EXPECT_EQ(reopened.FindRun("old")->flags, RunFlags{RunFlag::kOdometryIsReference});
+  const std::optional<StoredRun> old = reopened.FindRun("old");
+  ASSERT_TRUE(old.has_value());
+  EXPECT_EQ(old->sweep_id, 3);
+  EXPECT_EQ(old->flags, RunFlags{RunFlag::kOdometryIsReference});
+  EXPECT_EQ(old->run_dir, "runs/old");
+  EXPECT_EQ(old->wall_s, 3.0);
+  // The metrics come from the recorded result.json, as when the run was recorded.
+  ASSERT_EQ(old->metrics.size(), 3u);
+  EXPECT_EQ(old->metrics[2].metric, "corners");
+  EXPECT_EQ(old->parameters, "ICP.maxIterations=80");
+  EXPECT_EQ(QueryInt(file, "SELECT count(*) FROM sqlite_master WHERE name = 'runs_v3'"), 0);
+  // Reopening a converted store changes nothing.
+  const std::uint64_t digest = old->result_digest;
+  EXPECT_EQ(ResultsStore::Open(file).FindRun("old")->result_digest, digest);
 }
 
 }  // namespace

@@ -140,9 +140,13 @@ TEST_F(WorkerTest, AProgramThatWritesItsOutputsGivesAnOkRunWithMetrics) {
   EXPECT_EQ(outputs["reference"], "reference.tum");
   EXPECT_EQ(outputs["vector_map"], "map.geojson");
   EXPECT_EQ(outputs["log"], "log.txt");
-  ASSERT_EQ(outputs["stages"].size(), spec_.evaluation.stages);
-  for (const nlohmann::json& stage : outputs["stages"]) EXPECT_TRUE(fs::exists(run_dir_ / stage.get<std::string>()));
-  for (const char* file : {"map.yaml", "map.pgm", "trajectory.tum", "reference.tum", "map.geojson", "command.txt"}) {
+  // Every stage in one animated PNG; no separate stage images, no uncompressed map.
+  EXPECT_EQ(outputs["stage_count"], spec_.evaluation.stages);
+  EXPECT_EQ(outputs["stage_animation"], "stages.png");
+  EXPECT_TRUE(outputs["stages"].empty());
+  EXPECT_FALSE(fs::exists(run_dir_ / "stages"));
+  EXPECT_FALSE(fs::exists(run_dir_ / "map.pgm"));
+  for (const char* file : {"map.yaml", "map.png", "stages.png", "trajectory.tum", "reference.tum", "map.geojson", "command.txt"}) {
     EXPECT_TRUE(fs::exists(run_dir_ / file)) << file;
   }
   EXPECT_EQ(ReadText(run_dir_ / "command.txt"), (tools_ / "program.sh").string() + "\n" + (run_dir_ / "raw").string() + "\n");
@@ -170,8 +174,9 @@ TEST_F(WorkerTest, WithoutADeclaredMapTheMapIsRenderedAndStageMapsComeFromTheGlo
   EXPECT_EQ(result["status"], "ok") << result.dump(2);
   EXPECT_NE(result["warnings"].dump().find("map rendered from the trajectory"), std::string::npos);
   // Two files match, in name order; the room's walls (0) stay occupied and its floor (254) free.
-  ASSERT_EQ(result["outputs"]["stages"].size(), 2u);
-  const cv::Mat stage = ev::ReadGreyImageFile(run_dir_ / result["outputs"]["stages"][0].get<std::string>());
+  ASSERT_EQ(result["outputs"]["stage_count"], 2u);
+  // The animation's first frame is a whole image (what a reader without APNG support shows): a.pgm.
+  const cv::Mat stage = ev::ReadGreyImageFile(run_dir_ / result["outputs"]["stage_animation"].get<std::string>());
   ASSERT_EQ(stage.rows, kMapSide);
   EXPECT_EQ(stage.at<std::uint8_t>(0, 0), 0);
   EXPECT_EQ(stage.at<std::uint8_t>(kMapSide / 2, kMapSide / 2), 254);
@@ -301,7 +306,7 @@ TEST_F(WorkerTest, TheOdometryBaselineRunsNoProgramAndIsScored) {
   EXPECT_GT(ape, 0.0);
   EXPECT_LT(ape, 1.0);
   EXPECT_EQ(Metric(result, "ape_trans", "n"), 60.0);
-  EXPECT_EQ(result["outputs"]["stages"].size(), spec_.evaluation.stages);
+  EXPECT_EQ(result["outputs"]["stage_count"], spec_.evaluation.stages);
   EXPECT_FALSE(std::isnan(Metric(result, "corners", "value")));
 }
 

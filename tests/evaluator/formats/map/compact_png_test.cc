@@ -1,0 +1,136 @@
+#include "evaluator/formats/map/compact_png.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "evaluator/core/input_error.h"
+#include "tests/support/shared_data.h"
+
+namespace slamsweep::evaluator {
+namespace {
+
+/// A trinary stage map that grows: column block `step` and the ones before it become known.
+cv::Mat Stage(int step) {
+  cv::Mat stage(40, 70, CV_8UC1, cv::Scalar(205));
+  for (int i = 0; i <= step; ++i) {
+    stage(cv::Rect(5 + 10 * i, 5, 8, 30)).setTo(254);
+    stage(cv::Rect(5 + 10 * i, 5, 8, 2)).setTo(0);
+  }
+  return stage;
+}
+
+/// The frames of `png` as Pillow composes them (tests/.../apng_frames.py); null with `why` when Pillow is missing.
+nlohmann::json DecodeWithPillow(const std::string& png, std::string& why) {
+  slamsweep::testing::TempDir dir;
+  slamsweep::testing::WriteFile(dir / "in.png", png);
+  const std::string command = std::string("/usr/bin/python3 '") + SLAMSWEEP_APNG_READER + "' '" +
+                              (dir / "in.png").string() + "' > '" + (dir / "out.json").string() + "' 2> '" +
+                              (dir / "err.txt").string() + "'";
+  if (std::system(command.c_str()) != 0) {
+    std::ifstream err(dir / "err.txt");
+    why = "python3 with Pillow (apt-get install python3-pil) could not read the PNG: " +
+          std::string(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
+    return nullptr;
+  }
+  std::ifstream in(dir / "out.json");
+  return nlohmann::json::parse(in);
+}
+
+std::vector<int> Pixels(const cv::Mat& grey) {
+  std::vector<int> pixels;
+  for (int row = 0; row < grey.rows; ++row) {
+    for (int col = 0; col < grey.cols; ++col) pixels.push_back(grey.at<std::uint8_t>(row, col));
+  }
+  return pixels;
+}
+
+TEST(CompactPngTest, GreyPngReadsBackAsTheSameValuesWithOpenCv) {
+  const cv::Mat map = Stage(5);
+  const std::string png = EncodeCompactGreyPng(map);
+  const std::vector<std::uint8_t> bytes(png.begin(), png.end());
+  const cv::Mat decoded = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+  ASSERT_EQ(decoded.type(), CV_8UC1);
+  EXPECT_EQ(cv::countNonZero(decoded != map), 0);
+  // A map of runs of three values: far smaller than its PGM (one byte a cell).
+  EXPECT_LT(png.size(), map.total() / 4);
+}
+
+TEST(CompactPngTest, AnimationDecodesToEveryFrameWithItsTiming) {
+  std::vector<cv::Mat> frames;
+  for (int step = 0; step < 6; ++step) frames.push_back(Stage(step));
+  frames.push_back(Stage(5));  // a stage where nothing changed
+  const std::string png = EncodeAnimatedGreyPng(frames, AnimatedPngTiming{15, 150});
+  // Viewers without APNG support show the first frame: the file is a PNG OpenCV reads as frame 0.
+  const std::vector<std::uint8_t> bytes(png.begin(), png.end());
+  const cv::Mat first = cv::imdecode(bytes, cv::IMREAD_GRAYSCALE);
+  ASSERT_FALSE(first.empty());
+  EXPECT_EQ(cv::countNonZero(first != frames.front()), 0);
+
+  std::string why;
+  const nlohmann::json decoded = DecodeWithPillow(png, why);
+  if (decoded.is_null()) {
+    if (slamsweep::testing::RunningInCi()) FAIL() << why;
+    GTEST_SKIP() << why;
+  }
+  ASSERT_EQ(decoded["frames"], frames.size());
+  EXPECT_EQ(decoded["width"], 70);
+  EXPECT_EQ(decoded["height"], 40);
+  EXPECT_EQ(decoded["loop"], 0);
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(decoded["pixels"][i].get<std::vector<int>>(), Pixels(frames[i]));
+    EXPECT_EQ(decoded["durations_ms"][i], i + 1 == frames.size() ? 1500 : 150);
+  }
+}
+
+TEST(CompactPngTest, AnUnchangedPartIsNotStoredAgain) {
+  // A robot driving along a 100 x 600 corridor: each of 12 stages sees the next 50 columns, walls at
+  // scattered cells.
+  std::vector<cv::Mat> frames;
+  cv::Mat map(100, 600, CV_8UC1, cv::Scalar(205));
+  for (int stage = 0; stage < 12; ++stage) {
+    for (int row = 0; row < map.rows; ++row) {
+      for (int col = 50 * stage; col < 50 * stage + 50; ++col) {
+        map.at<std::uint8_t>(row, col) = (row * 7919 + col * 104729) % 13 == 0 ? 0 : 254;
+      }
+    }
+    frames.push_back(map.clone());
+  }
+  std::size_t separate = 0;
+  for (const cv::Mat& frame : frames) separate += EncodeCompactGreyPng(frame).size();
+  // Less than half of the stages as separate PNG files (each of which holds every earlier stage again).
+  EXPECT_LT(2 * EncodeAnimatedGreyPng(frames).size(), separate);
+}
+
+TEST(CompactPngTest, BadFramesAreRefused) {
+  EXPECT_THROW(EncodeAnimatedGreyPng({}), InputError);
+  EXPECT_THROW(EncodeAnimatedGreyPng({Stage(0), cv::Mat(3, 3, CV_8UC1, cv::Scalar(0))}), InputError);
+  EXPECT_THROW(EncodeCompactGreyPng(cv::Mat(3, 3, CV_16UC1)), InputError);
+}
+
+TEST(CompactPngTest, EveryGreyLevelSurvivesAnAnimation) {
+  cv::Mat many(16, 16, CV_8UC1);
+  for (int i = 0; i < 256; ++i) many.at<std::uint8_t>(i / 16, i % 16) = static_cast<std::uint8_t>(i);
+  cv::Mat later = many.clone();
+  later(cv::Rect(3, 4, 5, 6)).setTo(7);
+  std::string why;
+  const nlohmann::json decoded = DecodeWithPillow(EncodeAnimatedGreyPng({many, later}), why);
+  if (decoded.is_null()) {
+    if (slamsweep::testing::RunningInCi()) FAIL() << why;
+    GTEST_SKIP() << why;
+  }
+  ASSERT_EQ(decoded["frames"], 2);
+  EXPECT_EQ(decoded["pixels"][0].get<std::vector<int>>(), Pixels(many));
+  EXPECT_EQ(decoded["pixels"][1].get<std::vector<int>>(), Pixels(later));
+}
+
+}  // namespace
+}  // namespace slamsweep::evaluator
