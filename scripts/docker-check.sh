@@ -15,7 +15,8 @@
 #   OUT_DIR        what the check copies out of the containers, its logs and times.txt (default out/docker-check)
 # Environment: SLAMSWEEP_SHARED (the data folder, default ../shared), SLAMSWEEP_PEERS (tarballs, default
 # $SLAMSWEEP_SHARED/peers), SLAMSWEEP_DOCKER_SCRATCH (the private daemon's folder, docker/daemon.sh),
-# SLAMSWEEP_DOCKER_KEEP=1 keeps the image and its build cache (a second run reuses the layers).
+# SLAMSWEEP_DOCKER_KEEP=1 keeps the image and its build cache (a second run reuses the layers);
+# SLAMSWEEP_DOCKER_IMAGE=TAG checks that image (built before, kept) instead of building one, and keeps it.
 # Exit code: 0 every check passed, 1 some failed; needs root (or a running daemon) and about 45 minutes
 # on 2 cores when nothing is cached. The ctest `docker_check` (label docker) runs it; the nightly job runs that.
 set -euo pipefail
@@ -26,7 +27,7 @@ out=${2:-$root/out/docker-check}
 shared=${SLAMSWEEP_SHARED:-$root/../shared}
 export SLAMSWEEP_PEERS=${SLAMSWEEP_PEERS:-$shared/peers}
 run_id="check-$$"
-tag="slamsweep-$run_id:latest"
+tag=${SLAMSWEEP_DOCKER_IMAGE:-slamsweep-$run_id:latest}
 volume="slamsweep-$run_id-results"
 project="slamsweep-$run_id"
 compose_file=$root/docker/compose.yaml
@@ -64,7 +65,9 @@ cleanup() {
   compose down --volumes --timeout 30 >/dev/null 2>&1
   "$docker_client" ps -aq --filter "label=slamsweep.check=$run_id" | xargs -r "$docker_client" rm -f >/dev/null
   "$docker_client" volume rm -f "$volume" >/dev/null 2>&1
-  if [[ "${SLAMSWEEP_DOCKER_KEEP:-0}" != 1 ]]; then
+  if [[ -n "${SLAMSWEEP_DOCKER_IMAGE:-}" ]]; then
+    echo "docker-check: keeping $tag (SLAMSWEEP_DOCKER_IMAGE: not built by this run)"
+  elif [[ "${SLAMSWEEP_DOCKER_KEEP:-0}" != 1 ]]; then
     "$docker_client" rmi "$tag" >/dev/null 2>&1
     # The build stage's layers and anything else this run built (newest first, until none goes).
     local leftover removed=1
@@ -91,15 +94,18 @@ in_image() {
 
 step "build"
 start=$(date +%s)
-if "$root/docker/build-image.sh" "$tag" >"$out/build.log" 2>&1; then
+if [[ -n "${SLAMSWEEP_DOCKER_IMAGE:-}" ]]; then
+  "$docker_client" image inspect "$tag" >/dev/null 2>&1 && pass "the image $tag is there (not built: SLAMSWEEP_DOCKER_IMAGE)" ||
+    { fail "no image $tag (SLAMSWEEP_DOCKER_IMAGE)"; echo "$passed passed, $failed failed"; exit 1; }
+elif "$root/docker/build-image.sh" "$tag" >"$out/build.log" 2>&1; then
   pass "the image builds ($(($(date +%s) - start)) s)"
+  echo "build_s $(($(date +%s) - start))" >>"$out/times.txt"
 else
   fail "the image does not build; the end of $out/build.log:"
   tail -n 30 "$out/build.log"
   echo "$passed passed, $failed failed"
   exit 1
 fi
-echo "build_s $(($(date +%s) - start))" >>"$out/times.txt"
 size=$("$docker_client" image inspect --format '{{.Size}}' "$tag")
 echo "image_mb $((size / 1000000))" >>"$out/times.txt"
 echo "docker-check: image $tag is $((size / 1000000)) MB"
