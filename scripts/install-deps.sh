@@ -25,8 +25,9 @@ build_packages=(
 )
 
 # Programs and data slamsweep runs or reads: the report's plots (gnuplot), MRPT's real SLAM programs
-# (mrpt-apps) and their sample dataset and configs (mrpt-common).
-run_programs=(gnuplot-nox mrpt-apps mrpt-common)
+# (mrpt-apps) and their sample dataset and configs (mrpt-common), the sandbox every SLAM program runs in
+# (bubblewrap: orchestrator/sandbox).
+run_programs=(gnuplot-nox mrpt-apps mrpt-common bubblewrap)
 
 # What the installed programs link (scripts/docker-check.sh runs ldd on each in the image: a library
 # missing here fails it) and run_programs; the package names are Debian 12's.
