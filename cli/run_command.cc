@@ -17,6 +17,7 @@
 #include "orchestrator/slurm/slurm_executor.h"
 #include "orchestrator/sweep/local_executor.h"
 #include "orchestrator/sweep/sweep_runner.h"
+#include "orchestrator/worker/program_sandbox.h"
 
 namespace slamsweep::cli {
 namespace {
@@ -29,6 +30,7 @@ struct RunOptions {
   std::string output;
   bool keep_going = false;
   bool reuse_stale = false;
+  bool allow_unisolated = false;
   std::string executor = "local";
   std::string slurm_partition;
   bool no_report = false;
@@ -50,13 +52,17 @@ std::string CommandLine(const RunOptions& options) {
   if (!options.output.empty()) line += " --output " + options.output;
   if (options.keep_going) line += " --keep-going";
   if (options.reuse_stale) line += " --reuse-stale";
+  if (options.allow_unisolated) line += " --allow-unisolated";
   if (options.executor != "local") line += " --executor " + options.executor;
   if (!options.slurm_partition.empty()) line += " --slurm-partition " + options.slurm_partition;
   return line;
 }
 
 int Run(const RunOptions& options, const Streams& streams, const std::string& command_line) {
-  const LoadedSweep sweep = LoadSweep(options.config, options.selection);
+  LoadedSweep sweep = LoadSweep(options.config, options.selection);
+  for (orchestrator::RunSpec& run : sweep.runs) run.allow_unisolated = options.allow_unisolated;
+  // Every reference is in the shared data folder: no program's sandbox may show it.
+  orchestrator::AddPrivateDirs({FindCatalog("").shared_root});
   orchestrator::SweepSettings settings;
   settings.name = sweep.config.name;
   settings.output_dir = options.output.empty() ? sweep.config.output_dir : std::filesystem::path(options.output);
@@ -116,6 +122,9 @@ void RegisterRunCommand(CLI::App& app, const Streams& streams, int& exit_code) {
   command->add_flag("-k,--keep-going", options->keep_going, "ignore the config's failure budget");
   command->add_flag("--reuse-stale", options->reuse_stale,
                     "reuse finished runs computed by another slamsweep revision, program build or evaluation setting (default: run them again)");
+  command->add_flag("--allow-unisolated", options->allow_unisolated,
+                    "where no sandbox can be made, run programs without one (their results marked unisolated) "
+                    "instead of failing the runs");
   command->add_flag("--no-report", options->no_report, "do not write the HTML report");
   command->add_option("--executor", options->executor, "where runs execute: local worker processes or one Slurm job array")
       ->check(CLI::IsMember({"local", "slurm"}));

@@ -27,6 +27,8 @@ struct ServeOptions {
   std::string token_file;
   std::vector<std::string> allow_roots;
   bool allow_commands = false;
+  bool allow_network = false;
+  bool allow_unisolated = false;
   double drain_timeout_s = 600.0;
   std::size_t max_body_kb = 256;
   std::uint64_t max_runs = 5000;
@@ -85,6 +87,9 @@ int Serve(const ServeOptions& options) {
   }
   if (service.allowed_roots.empty()) service.allowed_roots = DefaultAllowedRoots();
   service.allow_commands = options.allow_commands;
+  service.allow_network = options.allow_network;
+  service.allow_unisolated = options.allow_unisolated;
+  service.private_dirs = {FindCatalog("").shared_root};
   service.worker_program = orchestrator::WorkerProgram();
   if (!options.port_file.empty()) {
     service.on_listening = [file = options.port_file](int port) {
@@ -128,6 +133,11 @@ void RegisterServeCommand(CLI::App& app, const Streams& streams, int& exit_code)
                       "and the catalog's dataset folders)");
   command->add_flag("--allow-commands", options->allow_commands,
                     "accept sweeps with `adapter: command` (they run any program the sweep names)");
+  command->add_flag("--allow-network", options->allow_network,
+                    "accept sweeps whose algorithms ask for `network: true` (their programs reach the host's network)");
+  command->add_flag("--allow-unisolated", options->allow_unisolated,
+                    "where no sandbox can be made, run programs without one (their results marked unisolated) "
+                    "instead of failing the runs");
   command->add_option("--drain-timeout", options->drain_timeout_s,
                       "seconds running runs may finish after SIGTERM before they are stopped and queued again")
       ->check(CLI::NonNegativeNumber);

@@ -93,9 +93,12 @@ cleanup() {
 }
 trap cleanup EXIT
 
-# in_image ARGS...: a throw-away container of the image, marked for cleanup, without network.
+# in_image ARGS...: a throw-away container of the image, marked for cleanup, without network, with the
+# options compose.yaml gives it so that each SLAM program's sandbox can be made (docker/README.md).
 in_image() {
-  "$docker_client" run --rm --label "slamsweep.check=$run_id" --network none "$@"
+  "$docker_client" run --rm --label "slamsweep.check=$run_id" --network none \
+    --security-opt "seccomp=$root/docker/seccomp-sandbox.json" --security-opt systempaths=unconfined \
+    --security-opt apparmor=unconfined "$@"
 }
 
 step "build"

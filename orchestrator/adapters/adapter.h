@@ -53,6 +53,10 @@ class Adapter {
   /// kMissingOutput naming it (relative to the run folder), an unreadable one kCorruptOutput
   /// naming it with the reader's message.
   virtual CollectedOutputs Collect(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const = 0;
+
+  /// What the program reads besides input/, its own file and the system folders: the paths its
+  /// sandbox shows it read-only (orchestrator/worker/program_sandbox.h). Absolute; may not exist.
+  virtual std::vector<std::filesystem::path> ProgramReads(const RunSpec& spec) const;
   // What a run depends on (program files, seeding) is program_identity.h's: planning needs it
   // without the run-time code here.
 };

@@ -10,6 +10,8 @@
 
 namespace slamsweep::orchestrator {
 
+std::vector<std::filesystem::path> Adapter::ProgramReads(const RunSpec& /*spec*/) const { return {}; }
+
 std::unique_ptr<Adapter> MakeAdapter(std::string_view name) {
   if (name == "mrpt-icp-slam") return std::make_unique<IcpSlamAdapter>();
   if (name == "mrpt-rbpf-slam") return std::make_unique<RbpfSlamAdapter>();

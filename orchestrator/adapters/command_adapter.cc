@@ -110,6 +110,12 @@ PreparedRun CommandAdapter::Prepare(const RunSpec& spec, const ev::RobotLog& rob
   return prepared;
 }
 
+std::vector<fs::path> CommandAdapter::ProgramReads(const RunSpec& spec) const {
+  std::vector<fs::path> reads;
+  if (spec.algorithm.command) reads.assign(spec.algorithm.command->read_only.begin(), spec.algorithm.command->read_only.end());
+  return reads;
+}
+
 CollectedOutputs CommandAdapter::Collect(const RunSpec& spec, const ev::RobotLog& robot, const RunPaths& paths) const {
   const CommandDeclaration& declaration = Declaration(spec);
   const PlaceholderValues values = Values(spec, paths);

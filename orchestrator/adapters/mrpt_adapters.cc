@@ -38,6 +38,8 @@ std::string ReadTemplate(const fs::path& path, const std::string& adapter) {
 
 std::string RawlogName(const RunSpec& spec) { return SafeFileStem(spec.sequence.entry.name) + ".rawlog"; }
 
+constexpr const char* kMrptSharedData = "/usr/share/mrpt";
+
 /// Writes input/<seq>.rawlog and input/<ini_name>; returns argv {program, ../input/<ini_name>}.
 PreparedRun PrepareMrpt(const ev::RobotLog& robot, const RunPaths& paths, const std::string& rawlog_name,
                         const std::string& template_text, const std::vector<IniSetting>& settings,
@@ -95,6 +97,9 @@ CollectedOutputs IcpSlamAdapter::Collect(const RunSpec& spec, const ev::RobotLog
   return outputs;
 }
 
+// Both applications read only their ini file and rawlog (input/); MRPT's shared data is in /usr.
+std::vector<fs::path> IcpSlamAdapter::ProgramReads(const RunSpec& /*spec*/) const { return {kMrptSharedData}; }
+
 RbpfSlamAdapter::RbpfSlamAdapter(fs::path template_path) : template_path_(std::move(template_path)) {}
 
 PreparedRun RbpfSlamAdapter::Prepare(const RunSpec& spec, const ev::RobotLog& robot, const RunPaths& paths) const {
@@ -103,6 +108,8 @@ PreparedRun RbpfSlamAdapter::Prepare(const RunSpec& spec, const ev::RobotLog& ro
   return PrepareMrpt(robot, paths, rawlog, ReadTemplate(template_path_, "mrpt-rbpf-slam"), settings, "rbpf-slam",
                      "rbpf-slam.ini");
 }
+
+std::vector<fs::path> RbpfSlamAdapter::ProgramReads(const RunSpec& /*spec*/) const { return {kMrptSharedData}; }
 
 CollectedOutputs RbpfSlamAdapter::Collect(const RunSpec& spec, const ev::RobotLog& robot, const RunPaths& paths) const {
   CollectedOutputs outputs = CollectMrpt(robot, paths, "finalMap_mrpt__maps__COccupancyGridMap2D_00.png");

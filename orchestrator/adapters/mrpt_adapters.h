@@ -17,6 +17,7 @@ class IcpSlamAdapter : public Adapter {
   explicit IcpSlamAdapter(std::filesystem::path template_path = kIcpSlamTemplate);
   PreparedRun Prepare(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const override;
   CollectedOutputs Collect(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const override;
+  std::vector<std::filesystem::path> ProgramReads(const RunSpec& spec) const override;
 
  private:
   std::filesystem::path template_path_;
@@ -31,6 +32,7 @@ class RbpfSlamAdapter : public Adapter {
   explicit RbpfSlamAdapter(std::filesystem::path template_path = kRbpfSlamTemplate);
   PreparedRun Prepare(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const override;
   CollectedOutputs Collect(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const override;
+  std::vector<std::filesystem::path> ProgramReads(const RunSpec& spec) const override;
 
  private:
   std::filesystem::path template_path_;

@@ -69,6 +69,13 @@ fs::path RosterDriver(const RosterAlgorithm& algorithm) {
   }
 }
 
+std::vector<fs::path> RosterProgramReads(const RosterAlgorithm& algorithm) {
+  std::vector<fs::path> reads = {fs::absolute(RosterPrefix()).lexically_normal()};
+  // The driver's configuration beside it (Cartographer's Lua options), found from /proc/self/exe.
+  if (!algorithm.config_file.empty()) reads.push_back(RosterDriver(algorithm).parent_path() / algorithm.config_file);
+  return reads;
+}
+
 std::vector<fs::path> RosterProgramFiles(const RosterAlgorithm& algorithm) {
   const fs::path driver = RosterDriver(algorithm);
   std::vector<fs::path> files = {driver};

@@ -41,6 +41,10 @@ std::filesystem::path RosterPrefix();
 /// how to install it when it is nowhere.
 std::filesystem::path RosterDriver(const RosterAlgorithm& algorithm);
 
+/// What the driver reads besides its input: the installed upstreams (libraries, Cartographer's
+/// configuration files) and its config_file beside it (Cartographer's Lua options).
+std::vector<std::filesystem::path> RosterProgramReads(const RosterAlgorithm& algorithm);
+
 /// The files a run of the driver executes or reads as configuration: the driver, its config_file
 /// beside it, and the upstream's install manifest (which names the pinned commit). Throws InputError
 /// naming a missing one and how to install it.

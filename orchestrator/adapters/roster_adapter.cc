@@ -30,6 +30,10 @@ PreparedRun RosterAdapter::Prepare(const RunSpec& spec, const ev::RobotLog& robo
   return run;
 }
 
+std::vector<fs::path> RosterAdapter::ProgramReads(const RunSpec& /*spec*/) const {
+  return RosterProgramReads(algorithm_);
+}
+
 CollectedOutputs RosterAdapter::Collect(const RunSpec& spec, const ev::RobotLog& /*robot*/, const RunPaths& paths) const {
   CollectedOutputs outputs;
   outputs.map = ReadMapOutput(paths, paths.RawDir() / "map.yaml", "map");

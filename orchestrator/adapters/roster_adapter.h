@@ -18,6 +18,7 @@ class RosterAdapter : public Adapter {
 
   PreparedRun Prepare(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const override;
   CollectedOutputs Collect(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const override;
+  std::vector<std::filesystem::path> ProgramReads(const RunSpec& spec) const override;
 
  private:
   const RosterAlgorithm& algorithm_;

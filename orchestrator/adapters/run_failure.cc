@@ -20,6 +20,12 @@ std::string_view FailureKindName(FailureKind kind) {
       return "input_error";
     case FailureKind::kMemoryLimit:
       return "memory_limit";
+    case FailureKind::kProcessLimit:
+      return "process_limit";
+    case FailureKind::kDiskLimit:
+      return "disk_limit";
+    case FailureKind::kNotIsolated:
+      return "not_isolated";
     case FailureKind::kInterrupted:
       return "interrupted";
     case FailureKind::kInternal:

@@ -16,12 +16,15 @@ enum class FailureKind {
   kIncompleteTrajectory,  ///< the trajectory spans too little of the reference's time (evaluation.min_coverage)
   kInputError,
   kMemoryLimit,
+  kProcessLimit,
+  kDiskLimit,
+  kNotIsolated,
   kInterrupted,
   kInternal,
 };
 
 /// "timeout", "signal", "exit_code", "missing_output", "corrupt_output", "incomplete_trajectory",
-/// "input_error", "memory_limit", "interrupted", "internal".
+/// "input_error", "memory_limit", "process_limit", "disk_limit", "not_isolated", "interrupted", "internal".
 std::string_view FailureKindName(FailureKind kind);
 
 /// A failure of one run that an adapter detects (an output missing or unreadable). The worker

@@ -102,8 +102,30 @@ std::optional<DeclaredOutput> ParseDeclaredOutput(const std::filesystem::path& f
   return output;
 }
 
+/// `command.read_only`: folders and files, relative to the sweep file's folder or absolute, that
+/// exist and that the policy lets the file name; absolute and normalised in the run.
+std::vector<std::string> ParseReadOnly(const std::filesystem::path& file, const YAML::Node& node,
+                                       const std::string& path, const InputPolicy& policy) {
+  std::vector<std::string> paths;
+  if (!node.IsDefined() || node.IsNull()) return paths;
+  if (!node.IsSequence()) FailExpected(file, node, path, "a list of folders and files the program reads");
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string item_path = fmt::format("{}[{}]", path, i);
+    if (!node[i].IsScalar() || node[i].Scalar().empty()) FailExpected(file, node[i], item_path, "a path");
+    const std::filesystem::path resolved = (file.parent_path() / node[i].Scalar()).lexically_normal();
+    RequireAllowedPath(policy, file, node[i], item_path, "folder the program reads", resolved);
+    std::error_code error;
+    if (!std::filesystem::exists(resolved, error)) {
+      FailAt(file, node[i], fmt::format("{}: {} does not exist", item_path, resolved.string()));
+    }
+    if (resolved == resolved.root_path()) FailExpected(file, node[i], item_path, "a folder other than /");
+    paths.push_back(std::filesystem::absolute(resolved).lexically_normal().string());
+  }
+  return paths;
+}
+
 CommandDeclaration ParseCommand(const std::filesystem::path& file, const YAML::Node& node, const std::string& path,
-                                const std::set<std::string, std::less<>>& parameters) {
+                                const std::set<std::string, std::less<>>& parameters, const InputPolicy& policy) {
   YamlFields fields(file, node, path);
   CommandDeclaration command;
   const YAML::Node argv = fields.Get("argv");
@@ -130,6 +152,7 @@ CommandDeclaration ParseCommand(const std::filesystem::path& file, const YAML::N
   const std::uint64_t unknown = fields.Unsigned("stage_unknown_value", 205);
   if (unknown > 255) FailExpected(file, fields.Get("stage_unknown_value"), fields.PathOf("stage_unknown_value"), "a grey level 0..255");
   command.stage_unknown_value = static_cast<int>(unknown);
+  command.read_only = ParseReadOnly(file, fields.Get("read_only"), fields.PathOf("read_only"), policy);
   fields.Finish();
   if (!command.trajectory && !command.map) {
     FailAt(file, node, fmt::format("{}: expected a trajectory or a map output to score, got neither", path));
@@ -160,6 +183,20 @@ AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YA
     FailExpected(file, fields.Get("timeout_s"), fields.PathOf("timeout_s"), "a number of seconds > 0");
   }
   algorithm.memory_limit_mb = fields.Unsigned("memory_limit_mb", algorithm.memory_limit_mb);
+  algorithm.disk_limit_mb = fields.Unsigned("disk_limit_mb", algorithm.disk_limit_mb);
+  if (algorithm.disk_limit_mb == 0) FailExpected(file, fields.Get("disk_limit_mb"), fields.PathOf("disk_limit_mb"), "a number of MB >= 1");
+  algorithm.process_limit = fields.Unsigned("process_limit", algorithm.process_limit);
+  if (algorithm.process_limit < kMinProcessLimit) {
+    FailExpected(file, fields.Get("process_limit"), fields.PathOf("process_limit"),
+                 fmt::format("a number of processes and threads >= {}", kMinProcessLimit));
+  }
+  algorithm.network = fields.Bool("network", algorithm.network);
+  if (algorithm.network && !policy.allow_network) {
+    throw PolicyError(LocatedAt(file, fields.Get("network"),
+                                fmt::format("{}: this server gives programs no network (start it with --allow-network), "
+                                            "got network: true",
+                                            fields.PathOf("network"))));
+  }
   algorithm.parameters = ParseParameters(file, fields.Get("parameters"), fields.PathOf("parameters"));
   std::set<std::string, std::less<>> declared;
   for (const ParameterAxis& axis : algorithm.parameters) declared.insert(axis.name);
@@ -168,7 +205,7 @@ AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YA
     if (!command.IsDefined()) {
       FailAt(file, node, fmt::format("{}: missing (the command adapter needs argv and outputs)", fields.PathOf("command")));
     }
-    algorithm.command = ParseCommand(file, command, fields.PathOf("command"), declared);
+    algorithm.command = ParseCommand(file, command, fields.PathOf("command"), declared, policy);
   } else if (command.IsDefined()) {
     FailAt(file, command,
            fmt::format("{}: only the command adapter takes a command (adapter is {})", fields.PathOf("command"),

@@ -18,6 +18,8 @@ struct InputPolicy {
   std::vector<std::filesystem::path> allowed_roots;
   /// false: `adapter: command` is refused, since it runs any program the file names.
   bool allow_commands = true;
+  /// false: `network: true` is refused (a program reaching the network could fetch the answer).
+  bool allow_network = true;
 };
 
 /// A well-formed sweep file that asks for something its InputPolicy forbids. The message is

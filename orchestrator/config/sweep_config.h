@@ -32,6 +32,9 @@
 //       adapter: mrpt-icp-slam       # mrpt-icp-slam | mrpt-rbpf-slam | command | odometry
 //       timeout_s: 120               # default 600
 //       memory_limit_mb: 2048        # default 0 = none
+//       disk_limit_mb: 4096          # largest file, raw/ in total, private /tmp (default 4096)
+//       process_limit: 1024          # processes + threads in the sandbox at once (default 1024)
+//       network: false               # true: the host's network (`serve` needs --allow-network)
 //       parameters:                  # scalars; a LIST sweeps the parameter (cartesian product over lists)
 //         ICP.maxIterations: [40, 80]
 //     - name: my-slam                # configs/examples/command-adapter.yaml runs a real one
@@ -43,6 +46,7 @@
 //         map: {path: map.yaml, format: map_server}     # map_server | mrpt | pgm
 //         stage_maps: "stages/*.pgm"
 //         stage_unknown_value: 205
+//         read_only: [/opt/my-slam/config]  # what else it reads: its sandbox shows these, nothing more
 //       parameters: {particles: [30, 60]}
 //   sequences:
 //     - mrpt-telecom                 # a catalog name
@@ -94,6 +98,9 @@ struct AlgorithmConfig {
   std::vector<ParameterAxis> parameters;
   double timeout_s = 600.0;
   std::uint64_t memory_limit_mb = 0;
+  std::uint64_t disk_limit_mb = kDefaultDiskLimitMb;
+  std::uint64_t process_limit = kDefaultProcessLimit;
+  bool network = false;
   std::optional<CommandDeclaration> command;
 };
 

@@ -41,6 +41,9 @@ AlgorithmSpec Resolve(const AlgorithmConfig& algorithm, nlohmann::json parameter
   spec.parameters = std::move(parameters);
   spec.timeout_s = algorithm.timeout_s;
   spec.memory_limit_mb = algorithm.memory_limit_mb;
+  spec.disk_limit_mb = algorithm.disk_limit_mb;
+  spec.process_limit = algorithm.process_limit;
+  spec.network = algorithm.network;
   spec.command = algorithm.command;
   return spec;
 }

@@ -90,17 +90,21 @@ std::optional<DeclaredOutput> DeclaredOutputFromJson(const json* value, const st
 }
 
 json ToJson(const CommandDeclaration& command) {
-  return json{{"argv", command.argv},
-              {"input_format", command.input_format},
-              {"trajectory", command.trajectory ? ToJson(*command.trajectory) : json(nullptr)},
-              {"map", command.map ? ToJson(*command.map) : json(nullptr)},
-              {"stage_maps", command.stage_maps_glob},
-              {"stage_unknown_value", command.stage_unknown_value}};
+  json object = {{"argv", command.argv},
+                 {"input_format", command.input_format},
+                 {"trajectory", command.trajectory ? ToJson(*command.trajectory) : json(nullptr)},
+                 {"map", command.map ? ToJson(*command.map) : json(nullptr)},
+                 {"stage_maps", command.stage_maps_glob},
+                 {"stage_unknown_value", command.stage_unknown_value}};
+  // Only when declared: the command is part of the run id, which must not change for sweeps without it.
+  if (!command.read_only.empty()) object["read_only"] = command.read_only;
+  return object;
 }
 
 CommandDeclaration CommandFromJson(const json& value, const std::string& path) {
   json object = WithoutNulls(value, path);
   const json argv = Take(object, "argv");
+  const json read_only = Take(object, "read_only");
   if (argv.is_null()) throw InputError(Join(path, "argv") + ": missing; expected an array of strings");
   CommandDeclaration command;
   command.argv = StringList(argv, Join(path, "argv"));
@@ -112,6 +116,13 @@ CommandDeclaration CommandFromJson(const json& value, const std::string& path) {
   command.stage_maps_glob = fields.Text("stage_maps", "");
   command.stage_unknown_value = fields.Integer("stage_unknown_value", command.stage_unknown_value);
   fields.Finish();
+  if (!read_only.is_null()) command.read_only = StringList(read_only, Join(path, "read_only"));
+  for (std::size_t i = 0; i < command.read_only.size(); ++i) {
+    if (!std::filesystem::path(command.read_only[i]).is_absolute()) {
+      throw InputError(Join(path, "read_only") + "[" + std::to_string(i) + "]: expected an absolute path, got \"" +
+                       command.read_only[i] + "\"");
+    }
+  }
   if (command.stage_unknown_value < 0 || command.stage_unknown_value > 255) {
     throw InputError(Join(path, "stage_unknown_value") + ": expected a grey level in 0..255, got " +
                      std::to_string(command.stage_unknown_value));
@@ -125,6 +136,9 @@ json ToJson(const AlgorithmSpec& algorithm) {
               {"parameters", algorithm.parameters},
               {"timeout_s", algorithm.timeout_s},
               {"memory_limit_mb", algorithm.memory_limit_mb},
+              {"disk_limit_mb", algorithm.disk_limit_mb},
+              {"process_limit", algorithm.process_limit},
+              {"network", algorithm.network},
               {"command", algorithm.command ? ToJson(*algorithm.command) : json(nullptr)}};
 }
 
@@ -137,12 +151,20 @@ AlgorithmSpec AlgorithmFromJson(const json& value, const std::string& path) {
   algorithm.adapter = fields.Text("adapter", "");
   algorithm.timeout_s = fields.Number("timeout_s", algorithm.timeout_s);
   algorithm.memory_limit_mb = fields.Unsigned("memory_limit_mb", algorithm.memory_limit_mb);
+  algorithm.disk_limit_mb = fields.Unsigned("disk_limit_mb", algorithm.disk_limit_mb);
+  algorithm.process_limit = fields.Unsigned("process_limit", algorithm.process_limit);
+  algorithm.network = fields.Bool("network", algorithm.network);
   if (const json* command = fields.Object("command")) algorithm.command = CommandFromJson(*command, Join(path, "command"));
   fields.Finish();
   if (algorithm.name.empty()) throw InputError(Join(path, "name") + ": expected a non-empty name");
   if (algorithm.adapter.empty()) throw InputError(Join(path, "adapter") + ": expected an adapter name");
   if (!(algorithm.timeout_s > 0.0) || !std::isfinite(algorithm.timeout_s)) {
     throw InputError(Join(path, "timeout_s") + ": expected a finite number of seconds > 0");
+  }
+  if (algorithm.disk_limit_mb == 0) throw InputError(Join(path, "disk_limit_mb") + ": expected a number of MB >= 1");
+  if (algorithm.process_limit < kMinProcessLimit) {
+    throw InputError(Join(path, "process_limit") + ": expected at least " + std::to_string(kMinProcessLimit) +
+                     " processes and threads");
   }
   if (!parameters.is_null()) {
     if (!parameters.is_object()) Fail(Join(path, "parameters"), "an object of scalar values", parameters);
@@ -421,6 +443,7 @@ json ToJson(const RunSpec& spec) {
               {"seeding", SeedingName(spec.seeding)},
               {"seeded", spec.seeding != Seeding::kUnseeded},
               {"odometry_is_reference", spec.odometry_is_reference},
+              {"allow_unisolated", spec.allow_unisolated},
               {"sweep", spec.sweep},
               {"algorithm", ToJson(spec.algorithm)},
               {"sequence", ToJson(spec.sequence)},
@@ -452,6 +475,7 @@ RunSpec RunSpecFromJson(const json& value) {
     spec.seed = fields.Unsigned("seed", 0);
     const std::string seeding = fields.Text("seeding", std::string(SeedingName(spec.seeding)));
     spec.odometry_is_reference = fields.Bool("odometry_is_reference", false);
+    spec.allow_unisolated = fields.Bool("allow_unisolated", false);
     fields.Finish();
     spec.seeding = SeedingFromText(seeding, "seeding");
     if (!build.is_null()) spec.build = BuildFromJson(build, "build");

@@ -39,8 +39,19 @@ struct CommandDeclaration {
   std::string stage_maps_glob;
   /// Format of the stage maps: "pgm"/"png" images (0 occupied .. 255 free, `unknown_value` unknown).
   int stage_unknown_value = 205;
+  /// Absolute folders and files the program reads besides {input} (its data, configuration,
+  /// libraries outside /usr): the only other paths its sandbox shows, read-only.
+  std::vector<std::string> read_only;
   bool operator==(const CommandDeclaration&) const = default;
 };
+
+/// Default of an algorithm's `disk_limit_mb`: the largest file its program may write, the most its
+/// raw/ folder may hold and the size of its private /tmp.
+inline constexpr std::uint64_t kDefaultDiskLimitMb = 4096;
+/// Default of an algorithm's `process_limit`: processes and threads its sandbox may hold at once.
+inline constexpr std::uint64_t kDefaultProcessLimit = 1024;
+/// Fewer could not hold the sandbox's process 1 and a program with a thread or two.
+inline constexpr std::uint64_t kMinProcessLimit = 4;
 
 /// One algorithm with every parameter resolved to a single value.
 struct AlgorithmSpec {
@@ -52,6 +63,11 @@ struct AlgorithmSpec {
   double timeout_s = 600.0;
   /// 0 = no limit.
   std::uint64_t memory_limit_mb = 0;
+  /// The sandbox's limits (orchestrator/sandbox): a file and raw/ at most this size, /tmp as large.
+  std::uint64_t disk_limit_mb = kDefaultDiskLimitMb;
+  std::uint64_t process_limit = kDefaultProcessLimit;
+  /// The program may use the host's network (else only a loopback of its own).
+  bool network = false;
   std::optional<CommandDeclaration> command;
 };
 
@@ -166,6 +182,9 @@ struct RunSpec {
   /// The sequence's odometry is its reference and no odometry noise is applied (a corrected log,
   /// clean): the program is handed the answer, so the run is an upper bound, not a SLAM result.
   bool odometry_is_reference = false;
+  /// The sweep was told --allow-unisolated: where no sandbox can be made, the program runs without
+  /// one (its result marked "unisolated") instead of the run failing.
+  bool allow_unisolated = false;
 };
 
 /// "name=value;..." of scalar parameters, sorted by name (nlohmann's object order); text values as

@@ -10,10 +10,12 @@
 
 namespace slamsweep::orchestrator {
 
-/// The fields of /proc/PID/stat the memory limit needs.
+/// The fields of /proc/PID/stat the resource limits need.
 struct ProcStat {
   pid_t pid = 0;
+  pid_t parent = 0;
   pid_t process_group = 0;
+  std::int64_t threads = 0;
   std::int64_t rss_pages = 0;
 };
 
@@ -21,9 +23,22 @@ struct ProcStat {
 /// name may itself hold spaces and parentheses, so fields are counted from the LAST ')'.
 std::optional<ProcStat> ParseProcStat(std::string_view content);
 
-/// Summed resident memory (kB) of every live process in each of `process_groups`, from one scan of
-/// /proc. A group with no process left maps to 0. Limiting the group, not the child alone, catches a
-/// SLAM program whose memory lives in a helper process it started.
-std::map<pid_t, std::int64_t> GroupRssKb(const std::vector<pid_t>& process_groups);
+/// What a started child and everything it started hold now.
+struct GroupUsage {
+  std::int64_t rss_kb = 0;
+  /// Processes and threads.
+  std::int64_t tasks = 0;
+};
+
+/// The usage of each of `leaders` with every live process in its process group or descending from
+/// it (a process that left the group with setsid still counts, as does a sandbox's PID namespace,
+/// whose orphans its process 1 adopts), from one scan of /proc. A leader with nothing left maps to
+/// zeros. Limiting the group, not the child alone, catches a SLAM program whose memory lives in a
+/// helper process it started.
+std::map<pid_t, GroupUsage> GroupUsageOf(const std::vector<pid_t>& leaders);
+
+/// The same usage from given /proc/PID/stat records (GroupUsageOf reads them).
+std::map<pid_t, GroupUsage> GroupUsageOf(const std::vector<pid_t>& leaders, const std::vector<ProcStat>& processes,
+                                         std::int64_t page_kb);
 
 }  // namespace slamsweep::orchestrator

@@ -29,6 +29,15 @@ std::string MemoryReason(std::int64_t group_rss_kb, std::uint64_t limit_mb) {
   return fmt::format("peak memory {:.0f} MB above the {} MB limit", rss_mb, limit_mb);
 }
 
+std::string ProcessLimitReason(std::uint64_t limit) {
+  return fmt::format("reached the process limit: {} processes and threads at once (process_limit)", limit);
+}
+
+std::string SandboxFailureReason(int exit_code, const std::string& message) {
+  if (message.empty()) return fmt::format("the sandbox could not be set up (bwrap exited with {})", exit_code);
+  return fmt::format("the sandbox could not be set up (bwrap exited with {}: {})", exit_code, message);
+}
+
 std::string InterruptReason(int interrupt_signal, bool needed_kill, double grace_s) {
   if (interrupt_signal == 0) return fmt::format("stopped by the supervisor ({})", StopReason(needed_kill, grace_s));
   return fmt::format("interrupted by {} ({})", SignalName(interrupt_signal), StopReason(needed_kill, grace_s));

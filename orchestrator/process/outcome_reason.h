@@ -19,6 +19,10 @@ std::string StopReason(bool needed_kill, double grace_s);
 std::string TimeoutReason(double timeout_s, bool needed_kill, double grace_s);
 /// "peak memory 2.1 GB above the 2048 MB limit" (MB below 1 GB).
 std::string MemoryReason(std::int64_t group_rss_kb, std::uint64_t limit_mb);
+/// "reached the process limit: 512 processes and threads at once (process_limit)".
+std::string ProcessLimitReason(std::uint64_t limit);
+/// "the sandbox could not be set up (bwrap exited with 1: bwrap: No permissions to create new namespace)".
+std::string SandboxFailureReason(int exit_code, const std::string& message);
 /// "interrupted by SIGINT (SIGTERM)"; without an interrupting signal (the supervisor stopped the
 /// child on its own) "stopped by the supervisor (SIGTERM)".
 std::string InterruptReason(int interrupt_signal, bool needed_kill, double grace_s);

@@ -8,6 +8,7 @@ std::string_view EndingName(ProcessEnding ending) {
     case ProcessEnding::kSignaled: return "signaled";
     case ProcessEnding::kTimedOut: return "timed_out";
     case ProcessEnding::kMemoryLimit: return "memory_limit";
+    case ProcessEnding::kProcessLimit: return "process_limit";
     case ProcessEnding::kInterrupted: return "interrupted";
     case ProcessEnding::kFailedToStart: return "failed_to_start";
   }

@@ -7,9 +7,9 @@
 namespace slamsweep::orchestrator {
 
 /// How a child ended. Every ending is data for the caller; none is an exception.
-enum class ProcessEnding { kExited, kSignaled, kTimedOut, kMemoryLimit, kInterrupted, kFailedToStart };
+enum class ProcessEnding { kExited, kSignaled, kTimedOut, kMemoryLimit, kProcessLimit, kInterrupted, kFailedToStart };
 
-/// "exited", "signaled", "timed_out", "memory_limit", "interrupted", "failed_to_start".
+/// "exited", "signaled", "timed_out", "memory_limit", "process_limit", "interrupted", "failed_to_start".
 std::string_view EndingName(ProcessEnding ending);
 
 /// What happened to one child program.
@@ -31,6 +31,8 @@ struct ProcessOutcome {
   std::uint64_t log_bytes_written = 0;
   /// True when the middle of the output was left out of the log (see ProcessSpec::log_cap_bytes).
   bool log_truncated = false;
+  /// kFailedToStart because the sandbox could not be set up (no namespaces here, say), not the program.
+  bool sandbox_failed = false;
 
   /// Exited by itself with exit code 0.
   bool ok() const { return ending == ProcessEnding::kExited && exit_code == 0; }

@@ -6,9 +6,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <fcntl.h>
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cstring>
+#include <sstream>
 
 #include "orchestrator/process/group_memory.h"
 #include "orchestrator/process/outcome_reason.h"
@@ -30,6 +34,8 @@ constexpr std::size_t kReadBudgetBytes = 1 << 20;
 // After the child ended: what is still in the pipe, bounded because a grandchild outside the group
 // could keep writing forever.
 constexpr std::size_t kDrainBudgetBytes = 16 << 20;
+// Enough for bubblewrap's one-line message when it cannot set a sandbox up.
+constexpr std::size_t kOutputTailBytes = 512;
 
 Clock::time_point After(Clock::time_point now, double seconds) {
   // Clamped so that an absurd timeout (1e300 s) cannot overflow the clock's integer ticks.
@@ -59,6 +65,7 @@ ProcessSet::~ProcessSet() {
     SignalGroup(child.pid, SIGKILL);
     ::waitpid(child.pid, nullptr, 0);
     if (child.output_fd >= 0) ::close(child.output_fd);
+    if (child.status_fd >= 0) ::close(child.status_fd);
     child.log.Finish();
   }
   pthread_sigmask(SIG_SETMASK, &previous_mask_, nullptr);
@@ -92,7 +99,13 @@ ProcessSet::Id ProcessSet::Start(const ProcessSpec& spec) {
   child.timeout_s = spec.timeout_s;
   child.grace_s = std::max(0.0, spec.grace_s);
   child.memory_limit_mb = spec.memory_limit_mb;
+  child.sandboxed = spec.sandbox.has_value();
+  child.status_fd = spawned.status_fd;
+  if (child.status_fd >= 0) ::fcntl(child.status_fd, F_SETFL, ::fcntl(child.status_fd, F_GETFL) | O_NONBLOCK);
+  if (spec.sandbox) child.process_limit = spec.sandbox->process_limit;
   if (spec.timeout_s > 0) child.timeout_at = After(now, spec.timeout_s);
+  // A child's usage is first looked at one period after its start: a short run pays no scan of /proc.
+  child.first_usage_check = now + kMemoryPollPeriod;
   children_.emplace(id, std::move(child));
   return id;
 }
@@ -104,6 +117,12 @@ void ProcessSet::ReadOutput(Child& child, std::size_t max_bytes) {
     const ssize_t n = ::read(child.output_fd, buffer.data(), buffer.size());
     if (n > 0) {
       child.log.Append(std::string_view(buffer.data(), static_cast<std::size_t>(n)));
+      if (child.sandboxed) {
+        child.output_tail.append(buffer.data(), static_cast<std::size_t>(n));
+        if (child.output_tail.size() > kOutputTailBytes) {
+          child.output_tail.erase(0, child.output_tail.size() - kOutputTailBytes);
+        }
+      }
       total += static_cast<std::size_t>(n);
       continue;
     }
@@ -150,6 +169,10 @@ ProcessOutcome ProcessSet::Reap(Child& child) {
       outcome.ending = ProcessEnding::kMemoryLimit;
       outcome.reason = MemoryReason(child.over_limit_rss_kb, child.memory_limit_mb);
       break;
+    case StopCause::kProcesses:
+      outcome.ending = ProcessEnding::kProcessLimit;
+      outcome.reason = ProcessLimitReason(child.process_limit);
+      break;
     case StopCause::kTimeout:
       outcome.ending = ProcessEnding::kTimedOut;
       outcome.reason = TimeoutReason(child.timeout_s, child.sent_kill, child.grace_s);
@@ -161,12 +184,61 @@ ProcessOutcome ProcessSet::Reap(Child& child) {
     case StopCause::kNone:
       outcome.ending = WIFSIGNALED(status) ? ProcessEnding::kSignaled : ProcessEnding::kExited;
       outcome.reason = WIFSIGNALED(status) ? SignalReason(outcome.signal) : ExitReason(outcome.exit_code);
+      if (child.sandboxed) ReadSandboxStatus(child, status, outcome);
       break;
   }
+  if (child.status_fd >= 0) ::close(child.status_fd);
+  child.status_fd = -1;
   child.log.Finish();
   outcome.log_bytes_written = child.log.bytes_written();
   outcome.log_truncated = child.log.truncated();
   return outcome;
+}
+
+void ProcessSet::ReadSandboxStatus(Child& child, int monitor_status, ProcessOutcome& outcome) {
+  std::string lines;
+  std::array<char, 256> buffer;
+  ssize_t n;
+  while (child.status_fd >= 0) {
+    n = ::read(child.status_fd, buffer.data(), buffer.size());
+    if (n > 0) {
+      lines.append(buffer.data(), static_cast<std::size_t>(n));
+    } else if (!(n < 0 && errno == EINTR)) {
+      break;
+    }
+  }
+  std::istringstream in(lines);
+  std::string what;
+  long long value = 0;
+  while (in >> what >> value) {
+    if (what == "status") {
+      // The program's own wait status: bubblewrap's exit code cannot tell "killed by signal N" from
+      // "exit code 128 + N".
+      const int status = static_cast<int>(value);
+      outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      outcome.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+      outcome.ending = WIFSIGNALED(status) ? ProcessEnding::kSignaled : ProcessEnding::kExited;
+      outcome.reason = WIFSIGNALED(status) ? SignalReason(outcome.signal) : ExitReason(outcome.exit_code);
+      return;
+    }
+    if (what == "exec") {
+      outcome.ending = ProcessEnding::kFailedToStart;
+      outcome.exit_code = -1;
+      outcome.signal = 0;
+      outcome.reason =
+          StartFailureReason("the program", std::string(std::strerror(static_cast<int>(value))) + " (in its sandbox)");
+      return;
+    }
+  }
+  // No status: the sandbox never started the program. bubblewrap said why in its last line.
+  std::string message = child.output_tail;
+  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
+  if (const auto newline = message.rfind('\n'); newline != std::string::npos) message.erase(0, newline + 1);
+  outcome.ending = ProcessEnding::kFailedToStart;
+  outcome.sandbox_failed = true;
+  outcome.reason = SandboxFailureReason(WIFEXITED(monitor_status) ? WEXITSTATUS(monitor_status) : -1, message);
+  outcome.exit_code = -1;
+  outcome.signal = 0;
 }
 
 void ProcessSet::ReapEnded(std::vector<std::pair<Id, ProcessOutcome>>& ended) {
@@ -190,7 +262,7 @@ void ProcessSet::ReapEnded(std::vector<std::pair<Id, ProcessOutcome>>& ended) {
 void ProcessSet::Terminate(Child& child, StopCause cause, Clock::time_point now) {
   if (child.stop_cause != StopCause::kNone) return;  // already stopping; keep the first cause
   child.stop_cause = cause;
-  if (cause == StopCause::kMemory) {
+  if (cause == StopCause::kMemory || cause == StopCause::kProcesses) {
     SignalGroup(child.pid, SIGKILL);
     child.sent_kill = true;
     return;
@@ -213,18 +285,32 @@ Clock::time_point ProcessSet::EnforceLimits(Clock::time_point now) {
       }
     }
     if (child.timeout_at && child.stop_cause == StopCause::kNone) next = std::min(next, *child.timeout_at);
-    if (child.memory_limit_mb > 0 && child.stop_cause == StopCause::kNone) limited_groups.push_back(child.pid);
+    const bool limited = child.memory_limit_mb > 0 || child.process_limit > 0;
+    if (limited && child.stop_cause == StopCause::kNone) {
+      if (now >= child.first_usage_check) {
+        limited_groups.push_back(child.pid);
+      } else {
+        next = std::min(next, child.first_usage_check);
+      }
+    }
   }
   if (limited_groups.empty()) return next;
   if (now >= next_memory_poll_) {
     next_memory_poll_ = now + kMemoryPollPeriod;
-    const auto rss_kb = GroupRssKb(limited_groups);
+    const auto usage = GroupUsageOf(limited_groups);
     for (auto& [id, child] : children_) {
-      const auto found = rss_kb.find(child.pid);
-      if (child.memory_limit_mb == 0 || found == rss_kb.end()) continue;
-      if (static_cast<std::uint64_t>(found->second) > child.memory_limit_mb * 1024) {
-        child.over_limit_rss_kb = found->second;
+      const auto found = usage.find(child.pid);
+      if (found == usage.end() || child.stop_cause != StopCause::kNone) continue;
+      const GroupUsage& used = found->second;
+      if (child.memory_limit_mb > 0 && static_cast<std::uint64_t>(used.rss_kb) > child.memory_limit_mb * 1024) {
+        child.over_limit_rss_kb = used.rss_kb;
         Terminate(child, StopCause::kMemory, now);
+      }
+      // The kernel refuses the task beyond the limit (RLIMIT_NPROC in the sandbox); the count here also
+      // holds bubblewrap's monitor, outside the sandbox. A program at its limit is ended, as a fork
+      // bomb must be.
+      if (child.process_limit > 0 && static_cast<std::uint64_t>(used.tasks) > child.process_limit) {
+        Terminate(child, StopCause::kProcesses, now);
       }
     }
   }

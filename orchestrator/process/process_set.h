@@ -22,6 +22,8 @@ namespace slamsweep::orchestrator {
 /// its own process group, stdin /dev/null, output captured into its capped log, timeout
 /// (SIGTERM to the group, grace, SIGKILL), memory limit on the group, rusage from wait4().
 /// When a child ends, its whole group gets SIGKILL, so no background grandchild outlives its run.
+/// A sandboxed child (ProcessSpec::sandbox) is bubblewrap: its usage is counted over everything it
+/// started, its process limit is watched, and its status comes from the sandbox's process 1.
 ///
 /// Not thread-safe; use it from one thread. It blocks SIGCHLD in the constructing thread for its
 /// lifetime (signals are taken only inside ppoll). The destructor SIGKILLs and reaps what is left.
@@ -59,7 +61,7 @@ class ProcessSet {
   std::size_t running() const { return children_.size() + pending_.size(); }
 
  private:
-  enum class StopCause { kNone, kTimeout, kMemory, kInterrupt };
+  enum class StopCause { kNone, kTimeout, kMemory, kProcesses, kInterrupt };
   using Clock = std::chrono::steady_clock;
 
   struct Child {
@@ -68,10 +70,17 @@ class ProcessSet {
     int output_fd = -1;
     CappedLog log;
     Clock::time_point started;
+    Clock::time_point first_usage_check;
     std::optional<Clock::time_point> timeout_at;
     double timeout_s = 0;
     double grace_s = 0;
     std::uint64_t memory_limit_mb = 0;
+    /// Sandboxed children only: the status pipe of slamsweep-sandbox-init and what came through it.
+    bool sandboxed = false;
+    int status_fd = -1;
+    std::uint64_t process_limit = 0;
+    /// The end of the output, for the message of a sandbox that could not be set up.
+    std::string output_tail;
     StopCause stop_cause = StopCause::kNone;
     std::optional<Clock::time_point> kill_at;  // set once SIGTERM went to the group
     bool sent_kill = false;
@@ -83,6 +92,8 @@ class ProcessSet {
   /// Collects every child that has ended (non-blocking).
   void ReapEnded(std::vector<std::pair<Id, ProcessOutcome>>& ended);
   ProcessOutcome Reap(Child& child);
+  /// A sandboxed child's outcome from its status lines, when nothing stopped it.
+  static void ReadSandboxStatus(Child& child, int monitor_status, ProcessOutcome& outcome);
   /// Timeouts, grace expiry and memory limits; returns when it next needs to run.
   Clock::time_point EnforceLimits(Clock::time_point now);
   void Terminate(Child& child, StopCause cause, Clock::time_point now);

@@ -2,11 +2,12 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "orchestrator/process/file_system_view.h"
+#include "orchestrator/sandbox/sandbox_spec.h"
 
 namespace slamsweep::orchestrator {
 
@@ -32,8 +33,10 @@ struct ProcessSpec {
   std::vector<std::string> removed_env_prefixes;
   /// Added to (or replacing in) the runner's environment, after the removal.
   std::vector<std::pair<std::string, std::string>> extra_env;
-  /// Folders hidden from the child (and folders inside them it keeps); empty: it sees what the runner sees.
-  FileSystemView view;
+  /// Run the child in this sandbox (bubblewrap); absent: it sees and may do what the runner may. A
+  /// sandboxed child's memory and processes are counted over its whole PID namespace, its exact exit
+  /// status comes from the sandbox's process 1, and reaching `process_limit` ends it.
+  std::optional<SandboxSpec> sandbox;
 };
 
 }  // namespace slamsweep::orchestrator

@@ -4,17 +4,19 @@
 
 #include "orchestrator/process/spawn.h"
 
-#include "orchestrator/process/file_system_view.h"
+#include "orchestrator/sandbox/bwrap_command.h"
 
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/prctl.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 #include <exception>
+#include <optional>
 #include <system_error>
 
 #include <boost/process.hpp>
@@ -28,6 +30,12 @@ namespace {
 /// What the child does between fork and exec (async-signal-safe calls only).
 struct ChildSetup : bp::extend::handler {
   pid_t supervisor = 0;
+  /// The sandbox's status pipe, the one descriptor above 2 the child keeps; -1 for none.
+  int kept_fd = -1;
+  /// The user the child becomes before exec (a sandbox started by root); nullopt: the runner's.
+  std::optional<SandboxSpec::User> user;
+  /// A pids cgroup's cgroup.procs the child joins before exec; nullptr: none.
+  const char* cgroup_procs = nullptr;
 
   template <typename Executor>
   void on_exec_setup(Executor&) const {
@@ -45,30 +53,25 @@ struct ChildSetup : bp::extend::handler {
     // reach the program. Marked close-on-exec rather than closed: Boost's exec-error pipe must stay
     // open until exec, and the standard streams set up later by dup2 are below 3.
     ::close_range(3, ~0U, CLOSE_RANGE_CLOEXEC);
+    if (kept_fd >= 0) ::fcntl(kept_fd, F_SETFD, 0);
+    if (cgroup_procs != nullptr) {
+      // "0": the writing process; everything it starts from now on is counted there.
+      const int procs = ::open(cgroup_procs, O_WRONLY | O_CLOEXEC);
+      const bool joined = procs >= 0 && ::write(procs, "0", 1) == 1;
+      if (procs >= 0) ::close(procs);
+      if (!joined) ::_exit(126);
+    }
+    if (user) {
+      // Raw system calls: glibc's wrappers would signal every thread of the (vfork-shared) parent.
+      if (::syscall(SYS_setgroups, 0, nullptr) != 0 || ::syscall(SYS_setresgid, user->gid, user->gid, user->gid) != 0 ||
+          ::syscall(SYS_setresuid, user->uid, user->uid, user->uid) != 0) {
+        ::_exit(126);
+      }
+    }
+    // After the change of user, which clears it.
     ::prctl(PR_SET_PDEATHSIG, SIGTERM);
     // The supervisor may have died before prctl took effect; then nobody would send the signal.
     if (::getppid() != supervisor) ::_exit(127);
-  }
-
-  template <typename Executor>
-  void on_error(Executor& executor, const std::error_code&) const {
-    // Boost.Process does not reap a child whose exec failed; it has exited, so this does not block long.
-    if (executor.pid > 0) ::waitpid(executor.pid, nullptr, 0);
-  }
-};
-
-/// Enters the child's FileSystemView (after the standard streams are set up). Only with fork: a
-/// vfork child shares the runner's memory, and a user namespace needs a process of its own.
-struct ViewSetup : bp::extend::handler {
-  const PreparedFileSystemView* view = nullptr;
-
-  template <typename Executor>
-  void on_exec_setup(Executor& executor) const {
-    const char* step = "";
-    const int failure = ApplyFileSystemView(*view, &step);
-    if (failure == 0) return;
-    executor.set_error(std::error_code(failure, std::system_category()), step);
-    ::_exit(127);
   }
 
   template <typename Executor>
@@ -111,6 +114,7 @@ SpawnResult SpawnChild(const ProcessSpec& spec) {
     result.error = std::string("pipe: ") + std::strerror(errno);
     return result;
   }
+  int status_write = -1;
   try {
     // Close-on-exec ends: no other child (started later) inherits this child's pipe, which would
     // otherwise keep it open after the child ends. dup2 onto 1 and 2 clears the flag for the child.
@@ -125,40 +129,54 @@ SpawnResult SpawnChild(const ProcessSpec& spec) {
     }
     for (const std::string& name : removed) environment.erase(name);
     for (const auto& [name, value] : spec.extra_env) environment[name] = value;
-    const std::vector<std::string> args(spec.argv.begin() + 1, spec.argv.end());
     const std::string working_dir = spec.working_dir.empty() ? std::string(".") : spec.working_dir.string();
+    std::string executable = program;
+    std::vector<std::string> args(spec.argv.begin() + 1, spec.argv.end());
+    if (spec.sandbox) {
+      // bubblewrap starts the program (by the path resolved here, which the sandbox must show) under
+      // slamsweep-sandbox-init, which reports its exact status on this pipe.
+      int status_pipe[2];
+      if (::pipe2(status_pipe, O_CLOEXEC) != 0) throw std::system_error(errno, std::system_category(), "pipe");
+      result.status_fd = status_pipe[0];
+      status_write = status_pipe[1];
+      std::vector<std::string> program_argv = spec.argv;
+      program_argv.front() = program;
+      const std::vector<std::string> command = BwrapCommand(
+          *spec.sandbox, program_argv, std::filesystem::absolute(working_dir).lexically_normal(), status_write);
+      executable = command.front();
+      args.assign(command.begin() + 1, command.end());
+    }
     std::error_code ec;
-    bp::child child;
-    if (spec.view.empty()) {
-      // vfork: the supervisor links OpenCV and MRPT, and copying its page tables for every fork was the
-      // largest part of the per-run overhead (bench/sweep_bench). ChildSetup writes no shared memory.
-      child = bp::child(ChildSetup{{}, ::getpid()}, bp::posix::use_vfork, bp::exe = program, bp::args = args,
-                        bp::std_in < bp::null, (bp::std_out & bp::std_err) > pipe, bp::start_dir = working_dir,
-                        environment, ec);
-    } else {
-      // bp::start_dir changes directory after the handlers: inside the view, so a visible working
-      // folder is the bound one.
-      const PreparedFileSystemView view = PrepareFileSystemView(spec.view);
-      child = bp::child(ChildSetup{{}, ::getpid()}, bp::exe = program, bp::args = args, bp::std_in < bp::null,
-                        (bp::std_out & bp::std_err) > pipe, ViewSetup{{}, &view}, bp::start_dir = working_dir,
-                        environment, ec);
-      if (ec) {
-        result.error = "cannot hide the file system from the program: " + ec.message();
-        return result;
-      }
+    // vfork: the supervisor links OpenCV and MRPT, and copying its page tables for every fork was the
+    // largest part of the per-run overhead (bench/sweep_bench). ChildSetup writes no shared memory.
+    std::optional<SandboxSpec::User> user;
+    const char* cgroup_procs = nullptr;
+    if (spec.sandbox) {
+      user = spec.sandbox->user;
+      if (!spec.sandbox->pids_cgroup_procs.empty()) cgroup_procs = spec.sandbox->pids_cgroup_procs.c_str();
     }
+    bp::child child(ChildSetup{{}, ::getpid(), status_write, user, cgroup_procs}, bp::posix::use_vfork, bp::exe = executable,
+                    bp::args = args, bp::std_in < bp::null, (bp::std_out & bp::std_err) > pipe,
+                    bp::start_dir = working_dir, environment, ec);
+    if (status_write >= 0) ::close(status_write);
+    status_write = -1;
     if (ec || !child.valid()) {
-      result.error = ec ? ec.message() : "unknown error";
-      return result;  // `pipe` closes both ends
+      result.error = ec ? ec.message() : "unknown error";  // `pipe` closes both ends
+    } else {
+      // We reap with wait4() ourselves (rusage) and send TERM before KILL; Boost must not touch it.
+      child.detach();
+      result.pid = child.id();
+      result.output_fd = pipe.native_source();
+      pipe.assign_source(-1);
+      ::fcntl(result.output_fd, F_SETFL, ::fcntl(result.output_fd, F_GETFL) | O_NONBLOCK);
     }
-    // We reap with wait4() ourselves (rusage) and send TERM before KILL; Boost must not touch it.
-    child.detach();
-    result.pid = child.id();
-    result.output_fd = pipe.native_source();
-    pipe.assign_source(-1);
-    ::fcntl(result.output_fd, F_SETFL, ::fcntl(result.output_fd, F_GETFL) | O_NONBLOCK);
   } catch (const std::exception& error) {
     result.error = error.what();
+  }
+  if (status_write >= 0) ::close(status_write);
+  if (!result.error.empty() && result.status_fd >= 0) {
+    ::close(result.status_fd);
+    result.status_fd = -1;
   }
   return result;
 }

@@ -19,7 +19,7 @@
 #include "orchestrator/slurm/slurm_executor.h"
 #include "orchestrator/sweep/local_executor.h"
 #include "orchestrator/sweep/output_lock.h"
-#include "orchestrator/worker/program_view.h"
+#include "orchestrator/worker/program_sandbox.h"
 
 // Last: see http_api.h.
 #include <httplib.h>
@@ -109,12 +109,11 @@ int RunService(const ServiceOptions& options, const SweepPlanner& planner, const
   // blocked mask: the signals are taken inside the scheduler's waits alone.
   InterruptionGuard interruption;
   ::signal(SIGPIPE, SIG_IGN);  // a client that hangs up must not end the server
-  // Every sweep's results are in the data folder: the SLAM programs that workers start must not see
-  // it (orchestrator/worker/program_view). Set before any thread starts; workers inherit it.
-  const char* inherited_private = std::getenv(kPrivateDirsVariable);
-  const std::string private_dirs = options.data_dir.string() +
-                                   (inherited_private != nullptr && *inherited_private != '\0' ? std::string(":") + inherited_private : "");
-  ::setenv(kPrivateDirsVariable, private_dirs.c_str(), 1);
+  // Every sweep's results are in the data folder: no sandbox of a program that workers start may
+  // show it (orchestrator/worker/program_sandbox). Set before any thread starts; workers inherit it.
+  std::vector<std::filesystem::path> private_dirs = {options.data_dir};
+  private_dirs.insert(private_dirs.end(), options.private_dirs.begin(), options.private_dirs.end());
+  AddPrivateDirs(private_dirs);
   std::unique_ptr<Executor> executor = MakeExecutor(options);
 
   httplib::Server http;

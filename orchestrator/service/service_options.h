@@ -38,6 +38,12 @@ struct ServiceOptions {
   /// Folders submitted sweeps may read datasets from (InputPolicy::allowed_roots); never empty here.
   std::vector<std::filesystem::path> allowed_roots;
   bool allow_commands = false;
+  /// --allow-network: sweeps may give their programs the host's network (`network: true`).
+  bool allow_network = false;
+  /// --allow-unisolated: where no sandbox can be made, programs run without one (marked unisolated).
+  bool allow_unisolated = false;
+  /// Folders no program's sandbox may show besides the data folder (the shared data folder).
+  std::vector<std::filesystem::path> private_dirs;
   /// The slamsweep binary started as `PROGRAM worker RUN_DIR`.
   std::filesystem::path worker_program;
   /// Called once the server listens (the bound port), e.g. to print it; may be empty.

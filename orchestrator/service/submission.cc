@@ -94,6 +94,7 @@ SubmissionAnswer Submit(ApiContext& context, const httplib::Request& request) {
   PlanLimits limits;
   limits.policy.allowed_roots = options.allowed_roots;
   limits.policy.allow_commands = options.allow_commands;
+  limits.policy.allow_network = options.allow_network;
   limits.max_runs = options.limits.max_runs_per_sweep;
   PlannedSweep planned;
   std::optional<NamedStudy> named_study;
@@ -120,6 +121,7 @@ SubmissionAnswer Submit(ApiContext& context, const httplib::Request& request) {
       }
     }
   }
+  for (RunSpec& run : planned.runs) run.allow_unisolated = options.allow_unisolated;
   QueuedSweep sweep;
   sweep.name = planned.name;
   sweep.config_name = name;

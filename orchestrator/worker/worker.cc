@@ -3,6 +3,8 @@
 #include <signal.h>
 #include <sys/prctl.h>
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <exception>
 #include <fstream>
@@ -19,10 +21,13 @@
 #include "orchestrator/adapters/run_paths.h"
 #include "orchestrator/matrix/run_spec.h"
 #include "orchestrator/process/interruption.h"
-#include "orchestrator/process/file_system_view.h"
 #include "orchestrator/process/process_set.h"
 #include "orchestrator/reference_map/reference_map.h"
-#include "orchestrator/worker/program_view.h"
+#include "orchestrator/process/outcome_reason.h"
+#include "orchestrator/sandbox/pids_cgroup.h"
+#include "orchestrator/sandbox/sandbox_availability.h"
+#include "orchestrator/worker/program_sandbox.h"
+#include "orchestrator/worker/raw_folder.h"
 #include "orchestrator/worker/run_metrics.h"
 #include "orchestrator/worker/run_outputs.h"
 #include "orchestrator/worker/run_result.h"
@@ -109,6 +114,9 @@ bool RecordProcessOutcome(const ProcessOutcome& outcome, RunResult& result) {
     case ProcessEnding::kMemoryLimit:
       result.Fail(FailureKind::kMemoryLimit, outcome.reason);
       break;
+    case ProcessEnding::kProcessLimit:
+      result.Fail(FailureKind::kProcessLimit, outcome.reason);
+      break;
     case ProcessEnding::kInterrupted:
       result.Fail(FailureKind::kInterrupted, outcome.reason);
       break;
@@ -118,6 +126,73 @@ bool RecordProcessOutcome(const ProcessOutcome& outcome, RunResult& result) {
       break;
   }
   return result.ok();
+}
+
+/// "the program cannot be isolated here (...)": a failed run, unless the sweep allows unisolated runs.
+void RequireIsolationOrAllowed(const RunSpec& spec, const std::string& why) {
+  if (spec.allow_unisolated) return;
+  throw RunFailure(FailureKind::kNotIsolated,
+                   "the program cannot be isolated here (" + why +
+                       "); --allow-unisolated runs it without a sandbox, its result marked unisolated");
+}
+
+/// Runs the program in its sandbox (or, where none can be made and the sweep allows it, without one)
+/// and checks what it left in raw/. Returns false when the run cannot go on.
+bool RunProgram(const RunSpec& spec, const RunPaths& paths, const Adapter& adapter, ProcessSpec& process,
+                RunResult& result) {
+  const SandboxPrograms& programs = FindSandboxPrograms();
+  std::string unisolated = programs.missing;
+  std::optional<ProcessOutcome> outcome;
+  // Root counts the sandbox's processes in a pids cgroup of its own where it can make one.
+  std::unique_ptr<PidsCgroup> cgroup;
+  std::string no_cgroup;
+  if (unisolated.empty() && ::geteuid() == 0) cgroup = PidsCgroup::Create(spec.algorithm.process_limit, no_cgroup);
+  if (unisolated.empty()) {
+    process.sandbox = ProgramSandbox(spec, paths, adapter.ProgramReads(spec), process.argv.front(), programs,
+                                     cgroup ? cgroup->ProcsFile() : fs::path());
+    outcome = RunProcess(process);
+    if (outcome->sandbox_failed) unisolated = outcome->reason;
+  }
+  if (cgroup && outcome && !outcome->sandbox_failed && outcome->ending != ProcessEnding::kProcessLimit) {
+    // Exact, where the sampling of the running sandbox may miss a program that gave up at once.
+    if (const std::uint64_t refused = cgroup->Refusals(); refused > 0) {
+      result.Fail(FailureKind::kProcessLimit, fmt::format("{}: {} fork{} refused", ProcessLimitReason(spec.algorithm.process_limit),
+                                                           refused, refused == 1 ? "" : "s"));
+    }
+  }
+  if (!unisolated.empty()) {
+    RequireIsolationOrAllowed(spec, unisolated);
+    process.sandbox.reset();
+    result.flags.Set(RunFlag::kUnisolated);
+    result.warnings.push_back("unisolated: the program ran without a sandbox and could read every file this machine "
+                              "lets slamsweep read, the reference included (" + unisolated + ")");
+    outcome = RunProcess(process);
+  }
+  const std::uint64_t disk_limit_bytes = spec.algorithm.disk_limit_mb << 20;
+  if (process.sandbox && outcome->ending == ProcessEnding::kSignaled && outcome->signal == SIGXFSZ) {
+    // RLIMIT_FSIZE's signal: the program wrote a file of disk_limit_mb.
+    result.Fail(FailureKind::kDiskLimit, fmt::format("a file reached the disk limit of {} MB (disk_limit_mb): {}",
+                                                     spec.algorithm.disk_limit_mb, outcome->reason));
+  }
+  if (!RecordProcessOutcome(*outcome, result)) return false;
+  // Before anything in raw/ is read: no link may lead the worker out of it, no FIFO block it.
+  const RawFolderCheck raw = CheckRawFolder(paths.RawDir(), process.sandbox ? disk_limit_bytes : 0);
+  for (const std::string& removed : raw.removed) {
+    result.warnings.push_back("removed " + removed + " that the program left: outputs are plain files");
+  }
+  if (!raw.file_at_limit.empty()) {
+    result.Fail(FailureKind::kDiskLimit, fmt::format("{} reached the disk limit of {} MB (disk_limit_mb)",
+                                                     raw.file_at_limit, spec.algorithm.disk_limit_mb));
+    return false;
+  }
+  if (process.sandbox && raw.total_bytes > disk_limit_bytes) {
+    result.Fail(FailureKind::kDiskLimit, fmt::format("raw/ holds {:.0f} MB, more than the disk limit of {} MB "
+                                                     "(disk_limit_mb)",
+                                                     static_cast<double>(raw.total_bytes) / (1 << 20),
+                                                     spec.algorithm.disk_limit_mb));
+    return false;
+  }
+  return true;
 }
 
 /// Everything between a readable run.json and result.json. Failures of the run are thrown
@@ -146,15 +221,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
     process.log_cap_bytes = kLogCapBytes;
     process.timeout_s = spec.algorithm.timeout_s;
     process.memory_limit_mb = spec.algorithm.memory_limit_mb;
-    // The environment is not enough: a program could read the reference through a path it guessed.
-    if (const std::string& unavailable = FileSystemViewUnavailableReason(); unavailable.empty()) {
-      process.view = ProgramFileSystemView(spec, paths, prepared.argv.front(), result.warnings);
-    } else {
-      result.flags.Set(RunFlag::kUnisolated);
-      result.warnings.push_back("the program could read every file this machine lets slamsweep read (the reference "
-                                "included): a private mount namespace is not available here (" + unavailable + ")");
-    }
-    if (!RecordProcessOutcome(RunProcess(process), result)) return;
+    if (!RunProgram(spec, paths, *adapter, process, result)) return;
   }
   if (InterruptionRequested()) return;
 

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -32,36 +33,34 @@ std::string ReadAll(const std::filesystem::path& file) {
   return text.str();
 }
 
-std::size_t CountLines(const std::string& text, const std::string& line) {
-  std::size_t count = 0;
-  std::istringstream in(text);
-  for (std::string got; std::getline(in, got);) count += got == line ? 1 : 0;
-  return count;
-}
-
 /// A sweep folder with a fake SLAM program: `fast` runs copy the reference trajectory as their
-/// estimate at once; `slow` runs do the same but first sleep while the file `slow` exists.
+/// estimate at once; `slow` runs do the same but first sleep while the file control/slow exists
+/// (control/ is what the program declares it reads). Each run notes its start in raw/invocation.txt.
 class SweepProcessTest : public ::testing::Test {
  protected:
   void SetUp() override {
     program_ = testing::WriteFile(dir_ / "fake_slam.sh",
                                   "#!/bin/sh\n"
-                                  "echo \"$4\" >> \"$3/invocations.txt\"\n"
+                                  "echo \"$4\" >> \"$2/invocation.txt\"\n"
                                   "if [ \"$4\" = slow ] && [ -e \"$3/slow\" ]; then sleep 120; fi\n"
                                   "cp \"$1\" \"$2/traj.tum\"\n");
-    std::filesystem::permissions(program_, std::filesystem::perms::owner_all);
+    std::filesystem::permissions(program_, std::filesystem::perms::owner_all | std::filesystem::perms::group_read |
+                                               std::filesystem::perms::group_exec | std::filesystem::perms::others_read |
+                                               std::filesystem::perms::others_exec);
+    std::filesystem::create_directories(dir_ / "control");
     std::string algorithms;
     for (const std::string name : {"fast", "slow"}) {
       algorithms += "  - name: " + name + "\n    adapter: command\n    timeout_s: 300\n    command:\n" +
-                    "      argv: [" + program_.string() + ", \"{input}\", \"{output_dir}\", " + dir_.path().string() +
-                    ", " + name + "]\n      input_format: tum\n      trajectory: {path: traj.tum, format: tum}\n";
+                    "      argv: [" + program_.string() + ", \"{input}\", \"{output_dir}\", " + (dir_ / "control").string() +
+                    ", " + name + "]\n      input_format: tum\n      trajectory: {path: traj.tum, format: tum}\n" +
+                    "      read_only: [" + (dir_ / "control").string() + "]\n";
     }
     config_ = testing::WriteFile(dir_ / "sweep.yaml",
                                  "name: process-test\noutput: out\niterations: 2\nseed: 1\nworkers: 2\n"
                                  "evaluation: {stages: 4}\n"
                                  "algorithms:\n" + algorithms +
                                  "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 40}\n");
-    testing::WriteFile(dir_ / "slow", "");
+    testing::WriteFile(dir_ / "control" / "slow", "");
   }
 
   /// Starts `slamsweep run` with stdout/stderr to files; returns its pid.
@@ -83,13 +82,15 @@ class SweepProcessTest : public ::testing::Test {
     const auto deadline = Clock::now() + limit;
     while (Clock::now() < deadline) {
       std::size_t fast_results = 0;
+      std::size_t slow_running = 0;
       if (std::filesystem::exists(dir_ / "out" / "runs")) {
         for (const auto& entry : std::filesystem::directory_iterator(dir_ / "out" / "runs")) {
           const std::string name = entry.path().filename().string();
           if (name.rfind("fast-", 0) == 0 && std::filesystem::exists(entry.path() / "result.json")) ++fast_results;
+          if (name.rfind("slow-", 0) == 0 && std::filesystem::exists(entry.path() / "raw" / "invocation.txt")) ++slow_running;
         }
       }
-      if (fast_results == 2 && CountLines(ReadAll(dir_ / "invocations.txt"), "slow") >= 2) return true;
+      if (fast_results == 2 && slow_running >= 2) return true;
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
     return false;
@@ -119,16 +120,32 @@ TEST_F(SweepProcessTest, SigintEndsWith130KeepsFinishedRunsAndRemovesInterrupted
 TEST_F(SweepProcessTest, SigkillThenRunAgainLosesNothingAndRepeatsNoFinishedRun) {
   const pid_t pid = Start("first");
   ASSERT_TRUE(WaitUntilFastDoneAndSlowRunning(std::chrono::seconds(120))) << ReadAll(dir_ / "first.out");
+  // The finished runs' results as they are now: a repeated run would write new ones.
+  std::map<std::string, std::string> finished;
+  for (const auto& entry : std::filesystem::directory_iterator(dir_ / "out" / "runs")) {
+    if (std::filesystem::exists(entry.path() / "result.json")) {
+      finished[entry.path().filename().string()] = ReadAll(entry.path() / "result.json");
+    }
+  }
+  ASSERT_EQ(finished.size(), 2u);
   kill(pid, SIGKILL);
   waitpid(pid, nullptr, 0);
-  std::filesystem::remove(dir_ / "slow");
+  std::filesystem::remove(dir_ / "control" / "slow");
   // The killed orchestrator's workers stop with it (parent-death signal); give them a moment.
   std::this_thread::sleep_for(std::chrono::seconds(1));
   const pid_t again = Start("second");
   EXPECT_EQ(WaitExit(again, std::chrono::seconds(180)), 0) << ReadAll(dir_ / "second.out");
-  const std::string invocations = ReadAll(dir_ / "invocations.txt");
-  EXPECT_EQ(CountLines(invocations, "fast"), 2u) << "a finished run was repeated:\n" << invocations;
-  EXPECT_EQ(CountLines(invocations, "slow"), 4u) << invocations;
+  for (const auto& [run, result] : finished) {
+    EXPECT_EQ(ReadAll(dir_ / "out" / "runs" / run / "result.json"), result) << "a finished run was repeated: " << run;
+  }
+  // The killed slow runs started afresh (their folders emptied) and ran once more each.
+  std::size_t slow_runs = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir_ / "out" / "runs")) {
+    if (entry.path().filename().string().rfind("slow-", 0) != 0) continue;
+    ++slow_runs;
+    EXPECT_EQ(ReadAll(entry.path() / "raw" / "invocation.txt"), "slow\n") << entry.path();
+  }
+  EXPECT_EQ(slow_runs, 2u);
   const nlohmann::json summary = Summary();
   ASSERT_EQ(summary["runs"].size(), 4u);
   for (const auto& run : summary["runs"]) EXPECT_EQ(run["status"], "ok") << run.dump();

@@ -42,7 +42,8 @@ nlohmann::json ReadJson(const std::filesystem::path& file) { return nlohmann::js
 std::string EchoAlgorithm(const std::string& name, const std::string& field) {
   return "  - name: " + name + "\n    adapter: command\n    timeout_s: 60\n    command:\n      argv: [awk, -v, field=" +
          field + ", -v, \"out={output_dir}/trajectory.tum\", -f, " + Fixture("echo_pose.awk") +
-         ", \"{input}\"]\n      input_format: carmen\n      trajectory: {path: trajectory.tum, format: tum}\n";
+         ", \"{input}\"]\n      input_format: carmen\n      trajectory: {path: trajectory.tum, format: tum}\n"
+         "      read_only: [" + Fixture("") + "]\n";
 }
 
 /// The headline value of `metric` for each algorithm of a sequence x noise table in summary.json.
@@ -216,6 +217,45 @@ TEST(TrustTest, AChangedProgramIsRunAgainUnlessStaleResultsAreAllowed) {
   const auto rerun = RunCli({"run", file.string(), "--no-report"});
   EXPECT_THAT(rerun.out, HasSubstr("1 ok, 0 failed, 0 done earlier"));
   EXPECT_THAT(rerun.out, HasSubstr("was run again"));
+}
+
+TEST(TrustTest, AProgramThatCannotBeIsolatedFailsItsRunUnlessAllowedAndIsThenFlaggedEverywhere) {
+  testing::TempDir dir;
+  const auto file = testing::WriteFile(
+      dir / "open.yaml",
+      "name: open\noutput: out\nevaluation: {stages: 0}\nalgorithms:\n  - name: echo\n    adapter: command\n"
+      "    command:\n      argv: [" + Fixture("echo_tum.sh") + ", \"{input}\", \"{output_dir}\"]\n"
+      "      input_format: tum\n      trajectory: {path: trajectory.tum, format: tum}\n"
+      "sequences:\n  - name: floor\n    format: simulated\n    ground_truth: exact\n"
+      "    simulation: {floor_plan: {seed: 1, rooms_per_side: 1}, path: {rate_hz: 2.0}, noise_seed: 1}\n");
+  // A PATH with what the program calls but no bubblewrap: the workers started from here cannot make a sandbox.
+  std::filesystem::create_directories(dir / "bin");
+  for (const char* tool : {"cp", "pwd", "ls", "env", "sh"}) {
+    std::filesystem::create_symlink(std::filesystem::path("/usr/bin") / tool, dir / "bin" / tool);
+  }
+  const std::string path = std::getenv("PATH");
+  ::setenv("PATH", (dir.path() / "bin").c_str(), 1);
+  const auto refused = RunCli({"run", file.string(), "--no-report"});
+  const auto allowed = RunCli({"run", file.string(), "--no-report", "-o", (dir / "allowed").string(), "--allow-unisolated"});
+  ::setenv("PATH", path.c_str(), 1);
+
+  EXPECT_EQ(refused.exit_code, 1) << refused.out << refused.err;
+  const nlohmann::json failed = ReadJson(dir / "out" / "summary.json").at("runs").at(0);
+  EXPECT_EQ(failed.at("status"), "failed");
+  EXPECT_EQ(failed.at("failure_kind"), "not_isolated");
+  EXPECT_THAT(failed.at("reason").get<std::string>(), HasSubstr("bubblewrap (bwrap) is not installed"));
+
+  ASSERT_EQ(allowed.exit_code, 0) << allowed.out << allowed.err;
+  const auto out = dir / "allowed";
+  const nlohmann::json run = ReadJson(out / "summary.json").at("runs").at(0);
+  EXPECT_EQ(run.at("status"), "ok");
+  EXPECT_EQ(run.at("flags"), nlohmann::json::array({"unisolated"}));
+  const auto run_dir = out / "runs" / run.at("run_id").get<std::string>();
+  EXPECT_EQ(ReadJson(run_dir / "run.json").at("allow_unisolated"), true);
+  EXPECT_EQ(ReadJson(run_dir / "result.json").at("flags"), nlohmann::json::array({"unisolated"}));
+  EXPECT_THAT(ReadText(out / "runs.csv"), HasSubstr("unisolated"));
+  EXPECT_THAT(ReadText(out / "summary.csv"), HasSubstr("unisolated"));
+  EXPECT_THAT(ReadText(out / "junit.xml"), HasSubstr("<property name=\"flag\" value=\"unisolated\"/>"));
 }
 
 TEST(TrustTest, RbpfSlamWithTheSameSeedGivesTheSameTrajectory) {

@@ -136,6 +136,24 @@ check_dockerfile() {
   else
     fail "docker/compose.yaml missing or lacks the Dockerfile, the read-only datasets mount, the radish command or serve"
   fi
+  # Both services run SLAM programs in bubblewrap sandboxes: each needs the seccomp profile that allows
+  # user namespaces, mount and pivot_root, and a /proc the sandbox may mount afresh.
+  if python3 - "$compose" "$root/docker/seccomp-sandbox.json" <<'PY'
+import json, sys, yaml
+services = yaml.safe_load(open(sys.argv[1]))["services"]
+wanted = {"seccomp=./seccomp-sandbox.json", "systempaths=unconfined"}
+assert all(wanted <= set(service.get("security_opt", [])) for service in services.values()), services
+profile = json.load(open(sys.argv[2]))
+assert profile["defaultAction"] != "SCMP_ACT_ALLOW"
+allowed = {name for rule in profile["syscalls"] if rule["action"] == "SCMP_ACT_ALLOW" for name in rule["names"]}
+assert {"unshare", "clone", "mount", "pivot_root", "umount2"} <= allowed, allowed
+assert not {"open_by_handle_at", "kexec_load", "init_module"} & allowed
+PY
+  then
+    pass "compose.yaml: both services use docker/seccomp-sandbox.json (namespaces allowed, escapes refused) and systempaths=unconfined"
+  else
+    fail "compose.yaml or docker/seccomp-sandbox.json does not let the SLAM programs' sandbox be made"
+  fi
 }
 
 # The Docker check needs root or a daemon and most of an hour: CI leaves its ctest out by label (never by

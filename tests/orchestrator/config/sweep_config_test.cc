@@ -422,6 +422,41 @@ sequences: [lab]
               HasSubstr(Located(5, 14) + "algorithms[0].command: only the command adapter takes a command"));
 }
 
+TEST_F(SweepConfigTest, TheSandboxKeysAreCheckedAndAServerRefusesTheNetworkUnlessAllowed) {
+  std::filesystem::create_directories(dir_ / "tool-config");
+  const std::string head = "name: x\nsequences: [lab]\nalgorithms:\n  - name: a\n    adapter: command\n";
+  const std::string command = "    command:\n      argv: [true]\n      trajectory: {path: t.tum, format: tum}\n";
+  SweepConfig config = Parse(head + "    network: true\n    disk_limit_mb: 16\n    process_limit: 32\n" + command +
+                             "      read_only: [tool-config, /usr/share]\n");
+  const AlgorithmConfig& algorithm = config.algorithms.at(0);
+  EXPECT_TRUE(algorithm.network);
+  EXPECT_EQ(algorithm.disk_limit_mb, 16u);
+  EXPECT_EQ(algorithm.process_limit, 32u);
+  EXPECT_EQ(algorithm.command->read_only,
+            (std::vector<std::string>{(dir_ / "tool-config").string(), "/usr/share"}));
+  config = Parse(kMinimal);
+  EXPECT_FALSE(config.algorithms.at(0).network);
+  EXPECT_EQ(config.algorithms.at(0).disk_limit_mb, kDefaultDiskLimitMb);
+  EXPECT_EQ(config.algorithms.at(0).process_limit, kDefaultProcessLimit);
+
+  EXPECT_THAT(ErrorOf(head + command + "      read_only: [no-such-folder]\n"),
+              HasSubstr(Located(9, 19) + "algorithms[0].command.read_only[0]: " + (dir_ / "no-such-folder").string() +
+                        " does not exist"));
+  EXPECT_THAT(ErrorOf(head + command + "      read_only: /usr\n"),
+              HasSubstr(Located(9, 18) + "algorithms[0].command.read_only: expected a list of folders and files"));
+  EXPECT_THAT(ErrorOf(head + "    process_limit: 1\n" + command), HasSubstr(Located(6, 20) + "algorithms[0].process_limit: expected"));
+  EXPECT_THAT(ErrorOf(head + "    disk_limit_mb: 0\n" + command), HasSubstr(Located(6, 20) + "algorithms[0].disk_limit_mb: expected"));
+  EXPECT_THAT(ErrorOf(head + "    network: maybe\n" + command), HasSubstr("algorithms[0].network"));
+
+  // A submitted sweep: no network without --allow-network, no read_only outside the allowed roots.
+  context_.policy.allow_network = false;
+  context_.policy.allowed_roots = {dir_.path()};
+  EXPECT_NO_THROW(Parse(head + command + "      read_only: [tool-config]\n"));
+  EXPECT_THROW(Parse(head + "    network: true\n" + command), PolicyError);
+  EXPECT_THAT(ErrorOf(head + "    network: true\n" + command), HasSubstr("--allow-network"));
+  EXPECT_THROW(Parse(head + command + "      read_only: [/usr/share]\n"), PolicyError);
+}
+
 TEST_F(SweepConfigTest, DuplicateNamesAreErrors) {
   EXPECT_THAT(ErrorOf(R"(name: x
 algorithms:

@@ -115,6 +115,40 @@ TEST(RunSpecTest, RoundTripsEveryFieldThroughText) {
   EXPECT_EQ(ToJson(back), ToJson(spec));
 }
 
+TEST(RunSpecTest, TheSandboxFieldsRoundTripAndLeaveTheRunIdAloneUnlessDeclared) {
+  RunSpec spec = FullSpec();
+  const json identity = RunIdentity(spec);
+  EXPECT_FALSE(ToJson(spec)["algorithm"]["command"].contains("read_only"));
+  spec.algorithm.disk_limit_mb = 64;
+  spec.algorithm.process_limit = 16;
+  spec.algorithm.network = true;
+  spec.allow_unisolated = true;
+  // Resources, like the timeout: the same experiment.
+  EXPECT_EQ(RunIdentity(spec), identity);
+  spec.algorithm.command->read_only = {"/opt/slam/config"};
+  EXPECT_NE(RunIdentity(spec), identity);
+  const RunSpec back = RunSpecFromJson(json::parse(ToJson(spec).dump()));
+  EXPECT_EQ(back.algorithm.disk_limit_mb, 64u);
+  EXPECT_EQ(back.algorithm.process_limit, 16u);
+  EXPECT_TRUE(back.algorithm.network);
+  EXPECT_TRUE(back.allow_unisolated);
+  EXPECT_EQ(back.algorithm.command->read_only, (std::vector<std::string>{"/opt/slam/config"}));
+  // An older run.json without them reads with the defaults.
+  json old = ToJson(FullSpec());
+  old["algorithm"].erase("disk_limit_mb");
+  old["algorithm"].erase("process_limit");
+  old["algorithm"].erase("network");
+  old.erase("allow_unisolated");
+  const RunSpec defaults = RunSpecFromJson(old);
+  EXPECT_EQ(defaults.algorithm.disk_limit_mb, kDefaultDiskLimitMb);
+  EXPECT_EQ(defaults.algorithm.process_limit, kDefaultProcessLimit);
+  EXPECT_FALSE(defaults.algorithm.network);
+  EXPECT_FALSE(defaults.allow_unisolated);
+  json relative = ToJson(spec);
+  relative["algorithm"]["command"]["read_only"] = {"config"};
+  EXPECT_THROW(RunSpecFromJson(relative), evaluator::InputError);
+}
+
 TEST(RunSpecTest, SegmentLengthsRoundTripAsAutoOrAList) {
   RunSpec spec = FullSpec();
   EXPECT_EQ(ToJson(spec)["evaluation"]["rpe_segments_m"], "auto");

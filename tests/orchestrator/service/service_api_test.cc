@@ -162,6 +162,8 @@ TEST_F(ServiceApiTest, BadAndHostileRequestsGet4xxAndLeaveNothingBehind) {
       {"command adapter", "name: cmd\nalgorithms:\n  - name: c\n    adapter: command\n    command: {argv: [/bin/sh, "
                           "-c, \"touch /tmp/owned\"], trajectory: {path: t.tum, format: tum}}\n"
                           "sequences: [simulated-floor]\n", "name=x.yaml", 403},
+      {"network without --allow-network", "name: net\nalgorithms:\n  - {name: odometry, adapter: odometry, network: true}\n"
+                                          "sequences: [simulated-floor]\n", "name=x.yaml", 403},
       {"HTML in the sweep name", "name: \"<script>alert(1)</script>\"\n" + good.substr(good.find('\n') + 1),
        "name=x.yaml", 400},
       {"markup and shell in an algorithm name",

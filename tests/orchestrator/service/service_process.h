@@ -6,9 +6,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <mutex>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -32,13 +35,6 @@ inline std::string ReadAll(const fs::path& file) {
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
-}
-
-inline std::size_t CountLines(const std::string& text, const std::string& line) {
-  std::size_t count = 0;
-  std::istringstream in(text);
-  for (std::string got; std::getline(in, got);) count += got == line ? 1 : 0;
-  return count;
 }
 
 /// Runs PROGRAM ARGS... with stdout+stderr into `log`; returns its pid.
@@ -149,39 +145,91 @@ inline nlohmann::json WaitForSweep(const Server& server, std::int64_t id, const 
 /// invocation's algorithm name in DIR/invocations.txt and waits while DIR/slow-<name> exists.
 class FakeProgramSweep {
  public:
+  /// The program lives in `dir`; its control files (slow-<algorithm>, which make it wait) in dir/control,
+  /// the one folder besides its input it declares it reads. A SLAM program can write nowhere but its
+  /// raw/ folder, so its invocations are counted from outside: a watcher notes every process running
+  /// the script (each lives at least 0.2 s, 20 looks of the watcher).
   explicit FakeProgramSweep(const fs::path& dir) : dir_(dir) {
+    fs::create_directories(dir / "control");
     program_ = testing::WriteFile(dir / "fake_slam.sh",
                                   "#!/bin/sh\n"
-                                  "echo \"$4\" >> \"$3/invocations.txt\"\n"
+                                  "sleep 0.2\n"
                                   "while [ -e \"$3/slow-$4\" ]; do sleep 0.1; done\n"
                                   "cp \"$1\" \"$2/traj.tum\"\n");
-    fs::permissions(program_, fs::perms::owner_all);
+    fs::permissions(program_, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                  fs::perms::others_read | fs::perms::others_exec);
+    watcher_ = std::thread([this] {
+      while (!stop_) {
+        Look();
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+    });
   }
-  /// The YAML of a sweep `name` with the given algorithms (each a name the fake program logs).
+  ~FakeProgramSweep() {
+    stop_ = true;
+    watcher_.join();
+  }
+  FakeProgramSweep(const FakeProgramSweep&) = delete;
+  FakeProgramSweep& operator=(const FakeProgramSweep&) = delete;
+
+  /// The YAML of a sweep `name` with the given algorithms (each a name the fake program is started with).
   std::string Yaml(const std::string& name, const std::vector<std::string>& algorithms, int iterations) const {
     std::string text = "name: " + name + "\niterations: " + std::to_string(iterations) +
                        "\nseed: 1\nevaluation: {stages: 4}\nalgorithms:\n";
     for (const std::string& algorithm : algorithms) {
       text += "  - name: " + algorithm + "\n    adapter: command\n    timeout_s: 300\n    command:\n      argv: [" +
-              program_.string() + ", \"{input}\", \"{output_dir}\", " + dir_.string() + ", " + algorithm +
-              "]\n      input_format: tum\n      trajectory: {path: traj.tum, format: tum}\n";
+              program_.string() + ", \"{input}\", \"{output_dir}\", " + (dir_ / "control").string() + ", " +
+              algorithm + "]\n      input_format: tum\n      trajectory: {path: traj.tum, format: tum}\n" +
+              "      read_only: [" + (dir_ / "control").string() + "]\n";
     }
     return text + "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 40}\n";
   }
   std::size_t Invocations(const std::string& algorithm) const {
-    return CountLines(ReadAll(dir_ / "invocations.txt"), algorithm);
+    Look();
+    const std::lock_guard<std::mutex> lock(mutex_);
+    std::size_t count = 0;
+    for (const auto& [process, name] : seen_) count += name == algorithm ? 1 : 0;
+    return count;
   }
   void SetSlow(const std::string& algorithm, bool slow) const {
     if (slow) {
-      testing::WriteFile(dir_ / ("slow-" + algorithm), "");
+      testing::WriteFile(dir_ / "control" / ("slow-" + algorithm), "");
     } else {
-      fs::remove(dir_ / ("slow-" + algorithm));
+      fs::remove(dir_ / "control" / ("slow-" + algorithm));
     }
   }
 
  private:
+  /// Notes every shell running the script now: (pid, start time) -> its algorithm argument.
+  void Look() const {
+    std::error_code error;
+    for (fs::directory_iterator it("/proc", error), end; !error && it != end; it.increment(error)) {
+      const std::string pid = it->path().filename().string();
+      if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+      std::vector<std::string> argv;
+      std::stringstream cmdline(ReadAll(it->path() / "cmdline"));
+      for (std::string arg; std::getline(cmdline, arg, '\0');) argv.push_back(arg);
+      // The shell that runs the script: [/bin/sh, SCRIPT, input, output, control, algorithm].
+      if (argv.size() != 6 || argv[1] != program_.string() || !argv[0].ends_with("sh")) continue;
+      std::string stat = ReadAll(it->path() / "stat");
+      const auto close = stat.rfind(')');
+      if (close == std::string::npos) continue;
+      std::istringstream fields(stat.substr(close + 2));
+      std::string field, start_time;
+      for (int index = 3; index <= 22 && fields >> field; ++index) {
+        if (index == 22) start_time = field;
+      }
+      const std::lock_guard<std::mutex> lock(mutex_);
+      seen_.emplace(pid + "@" + start_time, argv[5]);
+    }
+  }
+
   fs::path dir_;
   fs::path program_;
+  mutable std::mutex mutex_;
+  mutable std::map<std::string, std::string> seen_;
+  std::atomic<bool> stop_{false};
+  std::thread watcher_;
 };
 
 /// POST /api/sweeps with `yaml`; returns the status and the JSON body.

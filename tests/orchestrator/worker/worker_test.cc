@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <string>
@@ -19,8 +20,7 @@
 #include "evaluator/formats/trajectory/segment_errors_csv.h"
 #include "evaluator/formats/trajectory/tum_format.h"
 #include "orchestrator/adapters/run_inputs.h"
-#include "orchestrator/process/file_system_view.h"
-#include "orchestrator/worker/program_view.h"
+#include "orchestrator/worker/program_sandbox.h"
 #include "tests/orchestrator/worker/run_spec_fixture.h"
 #include "tests/support/shared_data.h"
 
@@ -57,21 +57,23 @@ class WorkerTest : public ::testing::Test {
     ASSERT_TRUE(inputs.truth.reference);
     ev::Trajectory shifted = *inputs.truth.reference;
     for (ev::Pose& pose : shifted.mutable_poses()) pose.position.x() += kShiftM;
-    ev::WriteTum(shifted, dir_ / "estimate.tum");
+    ev::WriteTum(shifted, tools_ / "estimate.tum");
     // A 20 x 20 room: free inside, one ring of occupied wall cells (76 of 400).
     ev::OccupancyGrid room(kMapSide, kMapSide, 0.1, {}, 0.0f);
     for (int i = 0; i < kMapSide; ++i) {
       room.at(0, i) = room.at(kMapSide - 1, i) = room.at(i, 0) = room.at(i, kMapSide - 1) = 1.0f;
     }
-    ev::WriteMapServer(room, dir_ / "room.yaml");
+    ev::WriteMapServer(room, tools_ / "room.yaml");
     run_dir_ = dir_ / "runs" / "r1";
   }
 
-  /// Declares `script` (body of a /bin/sh script, $1 = the raw/ folder) as the run's program.
+  /// Declares `script` (body of a /bin/sh script run in the tools folder, $1 = the raw/ folder) as
+  /// the run's program; the tools folder with its canned outputs is what it declares it reads.
   void UseProgram(const std::string& body) {
     CommandDeclaration declaration;
-    declaration.argv = {WriteScript(dir_ / "program.sh", "cd '" + dir_.path().string() + "' || exit 9\n" + body).string(),
+    declaration.argv = {WriteScript(tools_ / "program.sh", "cd '" + tools_.path().string() + "' || exit 9\n" + body).string(),
                         "{output_dir}"};
+    declaration.read_only = {tools_.path().string()};
     declaration.trajectory = DeclaredOutput{"trajectory.tum", "tum"};
     declaration.map = DeclaredOutput{"map.yaml", "map_server"};
     spec_.algorithm.command = declaration;
@@ -86,7 +88,9 @@ class WorkerTest : public ::testing::Test {
   static constexpr const char* kWriteOutputs =
       "cp estimate.tum \"$1/trajectory.tum\" && cp room.yaml room.pgm \"$1/\" && mv \"$1/room.yaml\" \"$1/map.yaml\"";
 
+  /// The sweep's output folder (run_dir_ = dir_/runs/r1) and, apart from it, the program's own folder.
   slamsweep::testing::TempDir dir_;
+  slamsweep::testing::TempDir tools_;
   fs::path run_dir_;
   RunSpec spec_;
 };
@@ -141,7 +145,7 @@ TEST_F(WorkerTest, AProgramThatWritesItsOutputsGivesAnOkRunWithMetrics) {
   for (const char* file : {"map.yaml", "map.pgm", "trajectory.tum", "reference.tum", "map.geojson", "command.txt"}) {
     EXPECT_TRUE(fs::exists(run_dir_ / file)) << file;
   }
-  EXPECT_EQ(ReadText(run_dir_ / "command.txt"), (dir_ / "program.sh").string() + "\n" + (run_dir_ / "raw").string() + "\n");
+  EXPECT_EQ(ReadText(run_dir_ / "command.txt"), (tools_ / "program.sh").string() + "\n" + (run_dir_ / "raw").string() + "\n");
   EXPECT_EQ(ev::ReadMapServer(run_dir_ / "map.yaml").width, kMapSide);
   EXPECT_FALSE(fs::exists(run_dir_ / "result.json.tmp"));
 
@@ -213,7 +217,7 @@ TEST_F(WorkerTest, AMissingMapIsMissingOutputNamingTheFile) {
 }
 
 TEST_F(WorkerTest, AGarbageMapImageIsCorruptOutputNamingTheFile) {
-  slamsweep::testing::WriteFile(dir_ / "bad.yaml",
+  slamsweep::testing::WriteFile(tools_ / "bad.yaml",
                                 "image: map.png\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\n"
                                 "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
   UseProgram("cp estimate.tum \"$1/trajectory.tum\" && cp bad.yaml \"$1/map.yaml\" && "
@@ -275,8 +279,8 @@ TEST_F(WorkerTest, AnUnreadableRunJsonReturnsTwoAndWritesNothing) {
 TEST_F(WorkerTest, LeftoversOfAnEarlierAttemptAreRemoved) {
   UseProgram("cp estimate.tum \"$1/trajectory.tum\"");  // writes no map this time
   fs::create_directories(run_dir_ / "raw");
-  fs::copy_file(dir_ / "room.yaml", run_dir_ / "raw" / "map.yaml");
-  fs::copy_file(dir_ / "room.pgm", run_dir_ / "raw" / "room.pgm");
+  fs::copy_file(tools_ / "room.yaml", run_dir_ / "raw" / "map.yaml");
+  fs::copy_file(tools_ / "room.pgm", run_dir_ / "raw" / "room.pgm");
   slamsweep::testing::WriteFile(run_dir_ / "result.json.tmp", "half");
   const nlohmann::json result = Run();
   // The stale map of the earlier attempt must not be taken for this attempt's.
@@ -331,7 +335,7 @@ TEST_F(WorkerTest, EveryRunWithAReferenceIsScoredAgainstTheReferenceMap) {
 TEST_F(WorkerTest, TheReferenceMapIsOutOfTheProgramsReachUntilItHasExited) {
   UseProgram("{ ls -la \"$1/../input\" \"$1\" \"$1/..\"; env; "
              "[ -e '" + (dir_ / "reference_maps").string() + "' ] && echo CACHE-EXISTS; "
-             "cat \"$1\"/../input/* \"$1\"/* 2>/dev/null | cksum; } > seen.txt 2>&1; " +
+             "cat \"$1\"/../input/* \"$1\"/* 2>/dev/null | cksum; } > \"$1/seen.txt\" 2>&1; " +
              std::string(kWriteOutputs));
   const nlohmann::json result = Run();
   ASSERT_EQ(result["status"], "ok") << result.dump(2);
@@ -344,7 +348,7 @@ TEST_F(WorkerTest, TheReferenceMapIsOutOfTheProgramsReachUntilItHasExited) {
   // Rendered after the program, outside the run folder.
   EXPECT_TRUE(fs::exists(pgm));
   EXPECT_TRUE(yaml.lexically_relative(run_dir_).string().starts_with("..")) << yaml << " is inside the run folder";
-  const std::string seen = ReadText(dir_ / "seen.txt");
+  const std::string seen = ReadText(run_dir_ / "raw" / "seen.txt");
   EXPECT_EQ(seen.find("CACHE-EXISTS"), std::string::npos) << "the reference map existed while the program ran";
   EXPECT_EQ(seen.find("reference_map"), std::string::npos) << seen;
   EXPECT_EQ(seen.find(yaml.stem().string()), std::string::npos) << seen;
@@ -360,45 +364,32 @@ TEST_F(WorkerTest, TheReferenceMapIsOutOfTheProgramsReachUntilItHasExited) {
   }
 }
 
-TEST_F(WorkerTest, TheProgramSeesItsInputAndOutputFoldersButNoResultsAndNoReferenceFiles) {
-  if (const std::string& reason = FileSystemViewUnavailableReason(); !reason.empty()) {
-    if (slamsweep::testing::RunningInCi()) FAIL() << "no private mount namespace under CI: " << reason;
-    GTEST_SKIP() << "no private mount namespace here: " << reason;
-  }
-  // The program and its canned outputs live outside the sweep's folder, as an installed program does.
-  slamsweep::testing::TempDir tools;
-  fs::copy_file(dir_ / "estimate.tum", tools / "estimate.tum");
-  fs::copy_file(dir_ / "room.yaml", tools / "room.yaml");
-  fs::copy_file(dir_ / "room.pgm", tools / "room.pgm");
-  // The catalog's reference map, in a dataset folder; a service's private folder; an earlier run's truth.
+TEST_F(WorkerTest, TheProgramSeesWhatItDeclaresAndItsInputButNoResultsAndNoReferenceFiles) {
+  // The catalog's reference map, in a dataset folder; a private folder; an earlier run's truth; a
+  // file beside the program that it did not declare.
   slamsweep::testing::TempDir datasets;
-  fs::copy_file(dir_ / "room.yaml", datasets / "room.yaml");
-  fs::copy_file(dir_ / "room.pgm", datasets / "room.pgm");
+  fs::copy_file(tools_ / "room.yaml", datasets / "room.yaml");
+  fs::copy_file(tools_ / "room.pgm", datasets / "room.pgm");
   spec_.sequence.entry.reference_map_path = (datasets / "room.yaml").string();
   slamsweep::testing::TempDir private_dir;
   std::ofstream(private_dir / "queue.sqlite") << "other sweeps\n";
   fs::create_directories(dir_ / "runs" / "r0");
   std::ofstream(dir_ / "runs" / "r0" / "reference.tum") << "0 0 0 0 0 0 0 1\n";
   std::ofstream(dir_ / "results.sqlite") << "metrics\n";
+  slamsweep::testing::TempDir elsewhere;
+  std::ofstream(elsewhere / "notes.txt") << "not declared\n";
 
   const std::string out = dir_.path().string();
   std::string probes;
   const std::vector<std::string> hidden_files = {"\"$1/../run.json\"", "\"$1/../command.txt\"",
                                                  "\"$1/../../r0/reference.tum\"", "'" + out + "/runs/r0/reference.tum'",
                                                  "'" + out + "/results.sqlite'", "'" + (datasets / "room.yaml").string() + "'",
-                                                 "'" + (private_dir / "queue.sqlite").string() + "'"};
+                                                 "'" + (private_dir / "queue.sqlite").string() + "'",
+                                                 "'" + (elsewhere / "notes.txt").string() + "'", "/etc/shadow"};
   for (const std::string& file : hidden_files) {
     probes += "cat " + file + " >/dev/null 2>&1 && echo \"READ " + file + "\"\n";
   }
-  CommandDeclaration declaration;
-  declaration.argv = {WriteScript(tools / "program.sh", "cd '" + tools.path().string() + "' || exit 9\n{\n" + probes +
-                                                            "ls \"$1/../input\" >/dev/null && echo INPUT-OK\n} > \"$1/seen.txt\"\n" +
-                                                            kWriteOutputs)
-                          .string(),
-                      "{output_dir}"};
-  declaration.trajectory = DeclaredOutput{"trajectory.tum", "tum"};
-  declaration.map = DeclaredOutput{"map.yaml", "map_server"};
-  spec_.algorithm.command = declaration;
+  UseProgram("{\n" + probes + "ls \"$1/../input\" >/dev/null && echo INPUT-OK\n} > \"$1/seen.txt\"\n" + kWriteOutputs);
   ::setenv(kPrivateDirsVariable, private_dir.path().c_str(), 1);
   const nlohmann::json result = Run();
   ::unsetenv(kPrivateDirsVariable);
@@ -407,14 +398,68 @@ TEST_F(WorkerTest, TheProgramSeesItsInputAndOutputFoldersButNoResultsAndNoRefere
   const std::string seen = ReadText(run_dir_ / "raw" / "seen.txt");
   EXPECT_EQ(seen.find("READ"), std::string::npos) << seen;
   EXPECT_NE(seen.find("INPUT-OK"), std::string::npos) << seen;
-  for (const nlohmann::json& warning : result["warnings"]) {
-    EXPECT_EQ(warning.get<std::string>().find("could"), std::string::npos) << warning;
-  }
+  EXPECT_TRUE(result["flags"].empty()) << result["flags"];
   // The outputs reached the run folder, and the hidden reference map was used once the program had exited.
   EXPECT_NEAR(Metric(result, "ape_trans", "rmse"), kShiftM, 1e-9);
   EXPECT_EQ(result["metric_details"]["map_compare"]["reference_map"]["source"], "file")
       << result["metric_details"]["map_compare"];
   EXPECT_EQ(Metric(result, "map_chamfer", "value"), 0.0);
+}
+
+TEST_F(WorkerTest, AReadOnlyFolderHoldingTheReferenceOrTheResultsFailsTheRun) {
+  slamsweep::testing::TempDir datasets;
+  fs::copy_file(tools_ / "room.yaml", datasets / "room.yaml");
+  spec_.sequence.entry.reference_map_path = (datasets / "room.yaml").string();
+  for (const fs::path& shown : {datasets.path(), datasets.path().parent_path(), dir_.path(), dir_ / "runs"}) {
+    fs::create_directories(shown);
+    UseProgram(kWriteOutputs);
+    spec_.algorithm.command->read_only.push_back(shown.string());
+    const nlohmann::json result = Run();
+    EXPECT_EQ(result["failure_kind"], "input_error") << shown;
+    EXPECT_NE(result["reason"].get<std::string>().find(shown.string()), std::string::npos) << result["reason"];
+  }
+}
+
+TEST_F(WorkerTest, AReferenceUnderTheSystemFoldersIsCoveredWhileTheRestOfThemStaysVisible) {
+  // A dataset installed by a package, with its reference beside the log.
+  spec_.sequence.entry.reference_map_path = "/usr/share/slamsweep-test-dataset/map.yaml";
+  fs::create_directories(run_dir_ / "raw");
+  fs::create_directories(run_dir_ / "input");
+  const SandboxSpec sandbox =
+      ProgramSandbox(spec_, RunPaths{run_dir_}, {"/usr/share/mrpt"}, "/bin/true", FindSandboxPrograms());
+  EXPECT_EQ(sandbox.hidden, (std::vector<fs::path>{"/usr/share/slamsweep-test-dataset"}));
+  EXPECT_EQ(std::count(sandbox.read_only.begin(), sandbox.read_only.end(), fs::path("/usr/share/mrpt")), 0)
+      << "already visible under /usr";
+}
+
+TEST_F(WorkerTest, AProgramThatLeavesALinkOutOfRawIsNotFollowed) {
+  // A "trajectory" that is a link to the run's own reference, written after the program exits.
+  UseProgram("cp room.yaml room.pgm \"$1/\" && mv \"$1/room.yaml\" \"$1/map.yaml\" && "
+             "ln -s " + (tools_ / "estimate.tum").string() + " \"$1/trajectory.tum\"");
+  const nlohmann::json result = Run();
+  EXPECT_EQ(result["failure_kind"], "missing_output") << result.dump(2);
+  bool noted = false;
+  for (const nlohmann::json& warning : result["warnings"]) {
+    noted = noted || warning.get<std::string>().find("raw/trajectory.tum (a symbolic link)") != std::string::npos;
+  }
+  EXPECT_TRUE(noted) << result["warnings"];
+}
+
+TEST_F(WorkerTest, ProcessAndDiskLimitsEndTheRunNamingThem) {
+  spec_.algorithm.process_limit = 8;
+  // A fork bomb holds what it started and keeps trying.
+  UseProgram("/usr/bin/python3 -c 'import os, time\nfor i in range(12):\n  try:\n    if os.fork() == 0: "
+             "time.sleep(10); os._exit(0)\n  except OSError: pass\ntime.sleep(10)'; " + std::string(kWriteOutputs));
+  nlohmann::json result = Run();
+  EXPECT_EQ(result["failure_kind"], "process_limit") << result.dump(2);
+  EXPECT_NE(result["reason"].get<std::string>().find("process_limit"), std::string::npos) << result["reason"];
+
+  spec_.algorithm.process_limit = kDefaultProcessLimit;
+  spec_.algorithm.disk_limit_mb = 1;
+  UseProgram("head -c 2000000 /dev/zero > \"$1/big\"; " + std::string(kWriteOutputs));
+  result = Run();
+  EXPECT_EQ(result["failure_kind"], "disk_limit") << result.dump(2);
+  EXPECT_NE(result["reason"].get<std::string>().find("disk_limit_mb"), std::string::npos) << result["reason"];
 }
 
 TEST_F(WorkerTest, InterruptionStopsTheProgramAndLeavesNoResult) {

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "orchestrator/adapters/run_paths.h"
+#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/sandbox/sandbox_availability.h"
+#include "orchestrator/sandbox/sandbox_spec.h"
+
+namespace slamsweep::orchestrator {
+
+/// Set by `slamsweep run` and `serve` for their workers: more folders (':'-separated) that no
+/// sandbox may show, such as the shared data folder with every reference, or the service's data
+/// folder with every other sweep's results.
+inline constexpr const char* kPrivateDirsVariable = "SLAMSWEEP_PRIVATE_DIRS";
+
+/// Appends `folders` to SLAMSWEEP_PRIVATE_DIRS in this process's environment, for the workers it
+/// starts: the shared data folder (`slamsweep run`), the service's data folder (`slamsweep serve`).
+/// Call before any thread starts.
+void AddPrivateDirs(const std::vector<std::filesystem::path>& folders);
+
+/// The sandbox a run's program runs in: read-only its own file, input/ and `reads` (what its adapter
+/// knows it reads: the roster's installed libraries, Cartographer's Lua file, a command's
+/// `read_only`), writable raw/ (its working folder), with the algorithm's disk and process limits
+/// and network. When this process is root, the process limit is `pids_cgroup_procs` (the sandbox's
+/// own pids cgroup) or, where none could be made, the sandbox runs as `nobody`, who is given raw/ and
+/// input/ (RLIMIT_NPROC does not bind root). Throws InputError when one of those paths would show the run's truth: the sweep's
+/// output folder (every run's reference.tum and result.json, results.sqlite, the reference-map
+/// cache), the folders of the catalog files with the sequence's reference (the corrected log, the
+/// relations, a reference map) or a folder of SLAMSWEEP_PRIVATE_DIRS. Such a folder inside the system
+/// paths every sandbox shows (a dataset under /usr/share) is covered by an empty one instead.
+SandboxSpec ProgramSandbox(const RunSpec& spec, const RunPaths& paths, const std::vector<std::filesystem::path>& reads,
+                           const std::string& program, const SandboxPrograms& programs,
+                           const std::filesystem::path& pids_cgroup_procs = {});
+
+}  // namespace slamsweep::orchestrator

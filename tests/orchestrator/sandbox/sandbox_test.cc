@@ -1,0 +1,211 @@
+// The sandbox: the bubblewrap command it builds, and real programs run in it through RunProcess
+// (exact status, what exists for them, their network, their process limit, their memory counted
+// over everything they started).
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "orchestrator/process/process_set.h"
+#include "orchestrator/sandbox/bwrap_command.h"
+#include "orchestrator/sandbox/pids_cgroup.h"
+#include "orchestrator/sandbox/sandbox_availability.h"
+#include "tests/orchestrator/process/process_test_util.h"
+#include "tests/support/shared_data.h"
+
+namespace slamsweep::orchestrator {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::ReadAll;
+using ::slamsweep::testing::TempDir;
+
+/// The index of `item` in `argv`, or argv.size().
+std::size_t Find(const std::vector<std::string>& argv, const std::vector<std::string>& items) {
+  for (std::size_t i = 0; i + items.size() <= argv.size(); ++i) {
+    if (std::equal(items.begin(), items.end(), argv.begin() + static_cast<long>(i))) return i;
+  }
+  return argv.size();
+}
+
+TEST(BwrapCommandTest, IsolatesEverythingAndShowsOnlyWhatItIsGiven) {
+  SandboxSpec spec;
+  spec.bwrap_program = "/usr/bin/bwrap";
+  spec.init_program = "/opt/slamsweep/slamsweep-sandbox-init";
+  spec.read_only = {"/data/run/input", "/opt/tool/bin/slam", "/usr/share/mrpt"};
+  spec.writable = {"/data/run/raw"};
+  spec.process_limit = 64;
+  spec.file_size_limit_bytes = 8 << 20;
+  const std::vector<std::string> argv = BwrapCommand(spec, {"/opt/tool/bin/slam", "--in", "x"}, "/data/run/raw", 7);
+  EXPECT_EQ(argv.front(), "/usr/bin/bwrap");
+  for (const std::vector<std::string>& option :
+       std::vector<std::vector<std::string>>{{"--unshare-user"}, {"--unshare-pid"}, {"--unshare-net"}, {"--unshare-ipc"},
+                                             {"--disable-userns"}, {"--die-with-parent"}, {"--new-session"},
+                                             {"--as-pid-1"}, {"--cap-drop", "ALL"}, {"--proc", "/proc"},
+                                             {"--dev", "/dev"}, {"--size", "8388608", "--tmpfs", "/tmp"},
+                                             {"--ro-bind", "/data/run/input", "/data/run/input"},
+                                             {"--ro-bind", "/opt/tool/bin/slam", "/opt/tool/bin/slam"},
+                                             {"--bind", "/data/run/raw", "/data/run/raw"},
+                                             {"--remount-ro", "/"}, {"--chdir", "/data/run/raw"}}) {
+    EXPECT_LT(Find(argv, option), argv.size()) << option.front();
+  }
+  // Already visible under /usr: not bound again.
+  EXPECT_EQ(Find(argv, {"--ro-bind", "/usr/share/mrpt", "/usr/share/mrpt"}), argv.size());
+  // Nothing of the host's home, temporary or service folders.
+  for (const char* hidden : {"/home", "/root", "/var", "/run", "/etc/shadow", "/etc/ssh"}) {
+    EXPECT_EQ(std::count(argv.begin(), argv.end(), hidden), 0) << hidden;
+  }
+  // The run's folders go on top of the private /tmp, and the root is read-only once all is bound.
+  EXPECT_LT(Find(argv, {"--tmpfs", "/tmp"}), Find(argv, {"--bind", "/data/run/raw", "/data/run/raw"}));
+  EXPECT_LT(Find(argv, {"--bind", "/data/run/raw", "/data/run/raw"}), Find(argv, {"--remount-ro", "/"}));
+  const std::size_t init = Find(argv, {"--", "/opt/slamsweep/slamsweep-sandbox-init"});
+  ASSERT_LT(init, argv.size());
+  EXPECT_EQ(std::vector<std::string>(argv.begin() + static_cast<long>(init) + 1, argv.end()),
+            (std::vector<std::string>{"/opt/slamsweep/slamsweep-sandbox-init", "--status-fd", "7", "--process-limit",
+                                      "64", "--file-size-limit", "8388608", "--", "/opt/tool/bin/slam", "--in", "x"}));
+
+  // A folder under /usr with a reference in it: an empty read-only tmpfs, after /usr is bound.
+  spec.hidden = {"/usr/share/data/truth"};
+  const std::vector<std::string> masked = BwrapCommand(spec, {"/bin/true"}, "/data/run/raw", 7);
+  EXPECT_LT(Find(masked, {"--ro-bind", "/usr", "/usr"}), Find(masked, {"--tmpfs", "/usr/share/data/truth"}));
+  EXPECT_LT(Find(masked, {"--remount-ro", "/usr/share/data/truth"}), masked.size());
+  spec.hidden.clear();
+
+  spec.network = true;
+  const std::vector<std::string> networked = BwrapCommand(spec, {"/bin/true"}, "/data/run/raw", 7);
+  EXPECT_EQ(Find(networked, {"--unshare-net"}), networked.size());
+  spec.read_only = {"relative/path"};
+  EXPECT_THROW(BwrapCommand(spec, {"/bin/true"}, "/data/run/raw", 7), std::invalid_argument);
+}
+
+class SandboxedProcessTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const SandboxPrograms& programs = FindSandboxPrograms();
+    if (!programs.missing.empty()) {
+      if (::slamsweep::testing::RunningInCi()) FAIL() << programs.missing;
+      GTEST_SKIP() << programs.missing;
+    }
+    fs::create_directories(dir_ / "raw");
+    ::chmod(dir_.path().c_str(), 0755);
+    ::chmod((dir_ / "raw").c_str(), 0777);
+    sandbox_.bwrap_program = programs.bwrap;
+    sandbox_.init_program = programs.init;
+    sandbox_.writable = {dir_ / "raw"};
+    sandbox_.process_limit = 32;
+    sandbox_.file_size_limit_bytes = 1 << 20;
+    if (::geteuid() == 0) sandbox_.user = SandboxSpec::User{65534, 65534};
+  }
+
+  ProcessOutcome Run(const std::string& script, double timeout_s = 60) {
+    ProcessSpec spec = testing::Sh(script, dir_ / "log.txt");
+    spec.working_dir = dir_ / "raw";
+    spec.sandbox = sandbox_;
+    spec.timeout_s = timeout_s;
+    return RunProcess(spec);
+  }
+
+  std::string Log() { return ReadAll(dir_ / "log.txt"); }
+
+  TempDir dir_;
+  SandboxSpec sandbox_;
+};
+
+TEST_F(SandboxedProcessTest, TheExactStatusComesBackWhetherSignalledOrExitedWith128PlusN) {
+  ProcessOutcome outcome = Run("kill -SEGV $$");
+  EXPECT_EQ(outcome.ending, ProcessEnding::kSignaled) << outcome.reason << Log();
+  EXPECT_EQ(outcome.signal, SIGSEGV);
+  outcome = Run("exit 139");
+  EXPECT_EQ(outcome.ending, ProcessEnding::kExited) << outcome.reason << Log();
+  EXPECT_EQ(outcome.exit_code, 139);
+  outcome = Run("echo hello > out.txt");
+  EXPECT_TRUE(outcome.ok()) << outcome.reason << Log();
+  EXPECT_EQ(ReadAll(dir_ / "raw" / "out.txt"), "hello\n");
+  // The program's own time and memory, through bubblewrap and the sandbox's process 1.
+  outcome = Run("i=0; while [ $i -lt 200000 ]; do i=$((i+1)); done");
+  EXPECT_GT(outcome.cpu_s, 0.05) << outcome.reason;
+  EXPECT_GT(outcome.peak_rss_kb, 500);
+}
+
+TEST_F(SandboxedProcessTest, OnlyTheSystemAndTheGivenFoldersExistInAnOwnNamespaceWithoutNetwork) {
+  std::ofstream(dir_ / "secret.txt") << "truth\n";
+  const ProcessOutcome outcome = Run(
+      "ls / | tr '\\n' ' '; echo; for p in " + (dir_ / "secret.txt").string() +
+      " /home /root /var /etc/shadow; do [ -e $p ] && echo VISIBLE $p; done; "
+      "echo pids $(ls /proc | grep -c '^[0-9]'); grep -c : /proc/net/dev; id -u; "
+      "grep CapEff /proc/self/status; echo x > /etc/x 2>/dev/null && echo WROTE-ETC; true");
+  EXPECT_TRUE(outcome.ok()) << outcome.reason << Log();
+  const std::string log = Log();
+  EXPECT_EQ(log.find("VISIBLE"), std::string::npos) << log;
+  EXPECT_EQ(log.find("WROTE-ETC"), std::string::npos) << log;
+  // The shell, a subshell or two, ls and the sandbox's process 1: a handful, not the host's.
+  EXPECT_NE(log.find("pids "), std::string::npos) << log;
+  EXPECT_LT(std::stoi(log.substr(log.find("pids ") + 5)), 8) << log;
+  // Loopback only: the header line of /proc/net/dev has no ':', so the count is of interfaces.
+  EXPECT_NE(log.find("\n1\n"), std::string::npos) << log;
+  EXPECT_NE(log.find("CapEff:\t0000000000000000"), std::string::npos) << log;
+}
+
+TEST_F(SandboxedProcessTest, AForkStormEndsAtTheProcessLimitAndNothingOutlivesTheRun) {
+  // Like a fork bomb, it holds what it started and keeps trying.
+  const ProcessOutcome outcome = Run(
+      "(setsid sleep 300 &); exec /usr/bin/python3 -c 'import os, time\n"
+      "for i in range(100):\n"
+      "  try:\n"
+      "    if os.fork() == 0: time.sleep(30); os._exit(0)\n"
+      "  except OSError: pass\n"
+      "time.sleep(30)'",
+      60);
+  EXPECT_EQ(outcome.ending, ProcessEnding::kProcessLimit) << outcome.reason << Log();
+  EXPECT_NE(outcome.reason.find("process_limit"), std::string::npos) << outcome.reason;
+  EXPECT_LT(outcome.wall_s, 30.0);
+}
+
+TEST_F(SandboxedProcessTest, APidsCgroupCountsEveryForkItRefusesWhereOneCanBeMade) {
+  std::string why;
+  std::unique_ptr<PidsCgroup> cgroup = PidsCgroup::Create(16, why);
+  if (!cgroup) {
+    // The fallback (RLIMIT_NPROC, the other tests here) is what such a machine uses; say why.
+    EXPECT_FALSE(why.empty());
+    std::cout << "no pids cgroup here: " << why << "\n";
+    return;
+  }
+  const fs::path folder = cgroup->ProcsFile().parent_path();
+  sandbox_.user.reset();
+  sandbox_.process_limit = 0;
+  sandbox_.pids_cgroup_procs = cgroup->ProcsFile();
+  // Gives up at once on its first refused fork: no sampling would see it, the cgroup does.
+  const ProcessOutcome outcome = Run("i=0; while [ $i -lt 40 ]; do sleep 30 & i=$((i+1)); done");
+  EXPECT_FALSE(outcome.ok()) << Log();
+  EXPECT_GE(cgroup->Refusals(), 1u);
+  cgroup.reset();
+  EXPECT_FALSE(fs::exists(folder)) << "the cgroup is removed with its object";
+}
+
+TEST_F(SandboxedProcessTest, AFileOverTheLimitEndsTheWriterWithSigxfsz) {
+  const ProcessOutcome outcome = Run("exec head -c 2000000 /dev/zero > big");
+  EXPECT_EQ(outcome.ending, ProcessEnding::kSignaled) << outcome.reason << Log();
+  EXPECT_EQ(outcome.signal, SIGXFSZ);
+  EXPECT_EQ(fs::file_size(dir_ / "raw" / "big"), 1u << 20);
+}
+
+TEST_F(SandboxedProcessTest, MemoryIsCountedOverEverythingTheProgramStarted) {
+  ProcessSpec spec = testing::Sh("setsid sh -c 'head -c 300000000 /dev/zero | tail -c 300000000 >/dev/null; sleep 30' & wait",
+                                 dir_ / "log.txt");
+  spec.working_dir = dir_ / "raw";
+  spec.sandbox = sandbox_;
+  spec.memory_limit_mb = 100;
+  spec.timeout_s = 60;
+  const ProcessOutcome outcome = RunProcess(spec);
+  EXPECT_EQ(outcome.ending, ProcessEnding::kMemoryLimit) << outcome.reason << Log();
+}
+
+}  // namespace
+}  // namespace slamsweep::orchestrator
