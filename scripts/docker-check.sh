@@ -54,9 +54,12 @@ step "packages: docker.io, debootstrap, docker-compose"
 step "daemon"
 eval "$("$root/docker/daemon.sh" start)"
 images_before=$("$docker_client" images -aq --no-trunc | sort -u)
+# From docker/: docker-compose 1.29 reads security_opt's seccomp profile relative to the working folder
+# (not the compose file's): from docker/, compose.yaml's ./seccomp-sandbox.json is found whichever reads it.
 compose() {
-  SLAMSWEEP_IMAGE=${compose_image:-$tag} SLAMSWEEP_DATASETS=$shared/datasets SLAMSWEEP_LISTEN=127.0.0.1:$port \
-    docker-compose --project-name "$project" --file "$compose_file" "$@"
+  (cd "$(dirname "$compose_file")" &&
+    SLAMSWEEP_IMAGE=${compose_image:-$tag} SLAMSWEEP_DATASETS=$shared/datasets SLAMSWEEP_LISTEN=127.0.0.1:$port \
+      docker-compose --project-name "$project" --file "$compose_file" "$@")
 }
 port=0
 compose_image=""
