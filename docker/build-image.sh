@@ -7,7 +7,7 @@
 # usage: docker/build-image.sh [TAG] [docker build options...]     (default TAG slamsweep:latest)
 #   SLAMSWEEP_PEERS  the folder of pinned tarballs (default ../shared/peers beside the repository)
 #   DOCKER_HOST      the daemon (docker/daemon.sh start prints it)
-# Prints the build's duration; docker build's own output goes to stdout.
+# Prints the build's duration; docker build's own output goes to stdout, each line with its time.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 docker_client=/usr/bin/docker
@@ -36,5 +36,7 @@ fi
 revision=$(git -C "$root" describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)
 echo "$revision" >"$root/docker/revision"
 start=$(date +%s)
-"$docker_client" build --network host -f "$root/docker/Dockerfile" -t "$tag" "$@" "$root"
+# Each line of docker build's output with the time it came: how long each step took, in the log.
+"$docker_client" build --network host -f "$root/docker/Dockerfile" -t "$tag" "$@" "$root" 2>&1 |
+  while IFS= read -r line; do printf '%(%H:%M:%S)T %s\n' -1 "$line"; done
 echo "build-image: built $tag ($revision) in $(($(date +%s) - start)) s"

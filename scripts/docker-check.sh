@@ -7,7 +7,9 @@
 #   - the quick-start sweep with the shared data read-only and a results volume: every run ok, its report
 #     and junit.xml copied to the host;
 #   - docker-compose up of `slamsweep serve` on the host's loopback, `slamsweep submit --wait` from the
-#     host running every roster driver, `down` leaving the results volume and its results intact.
+#     host running every roster driver, `down` leaving the results volume and its results intact;
+#   - where the checkout has the sandbox, its hostile program run by a sweep in the `slamsweep` service's
+#     container (compose.yaml's seccomp profile and options, no privileges): nothing escapes.
 # Then it removes the containers, volumes and images it made and stops the daemon it started.
 #
 # usage: scripts/docker-check.sh [SLAMSWEEP_BIN] [OUT_DIR]
@@ -15,7 +17,9 @@
 #   OUT_DIR        what the check copies out of the containers, its logs and times.txt (default out/docker-check)
 # Environment: SLAMSWEEP_SHARED (the data folder, default ../shared), SLAMSWEEP_PEERS (tarballs, default
 # $SLAMSWEEP_SHARED/peers), SLAMSWEEP_DOCKER_SCRATCH (the private daemon's folder, docker/daemon.sh),
-# SLAMSWEEP_DOCKER_KEEP=1 keeps the image and its build cache (a second run reuses the layers).
+# SLAMSWEEP_DOCKER_KEEP=1 keeps the image and its build cache (a second run reuses the layers);
+# SLAMSWEEP_HOSTILE the sandbox's hostile program (default beside SLAMSWEEP_BIN's build, tests/...);
+# SLAMSWEEP_DOCKER_IMAGE=TAG checks that image (built before, kept) instead of building one, and keeps it.
 # Exit code: 0 every check passed, 1 some failed; needs root (or a running daemon) and about 45 minutes
 # on 2 cores when nothing is cached. The ctest `docker_check` (label docker) runs it; the nightly job runs that.
 set -euo pipefail
@@ -26,7 +30,7 @@ out=${2:-$root/out/docker-check}
 shared=${SLAMSWEEP_SHARED:-$root/../shared}
 export SLAMSWEEP_PEERS=${SLAMSWEEP_PEERS:-$shared/peers}
 run_id="check-$$"
-tag="slamsweep-$run_id:latest"
+tag=${SLAMSWEEP_DOCKER_IMAGE:-slamsweep-$run_id:latest}
 volume="slamsweep-$run_id-results"
 project="slamsweep-$run_id"
 compose_file=$root/docker/compose.yaml
@@ -50,11 +54,16 @@ step "packages: docker.io, debootstrap, docker-compose"
 step "daemon"
 eval "$("$root/docker/daemon.sh" start)"
 images_before=$("$docker_client" images -aq --no-trunc | sort -u)
+# From docker/: docker-compose 1.29 reads security_opt's seccomp profile relative to the working folder
+# (not the compose file's): from docker/, compose.yaml's ./seccomp-sandbox.json is found whichever reads it.
 compose() {
-  SLAMSWEEP_IMAGE=$tag SLAMSWEEP_DATASETS=$shared/datasets SLAMSWEEP_LISTEN=127.0.0.1:$port \
-    docker-compose --project-name "$project" --file "$compose_file" "$@"
+  (cd "$(dirname "$compose_file")" &&
+    SLAMSWEEP_IMAGE=${compose_image:-$tag} SLAMSWEEP_DATASETS=$shared/datasets SLAMSWEEP_LISTEN=127.0.0.1:$port \
+      docker-compose --project-name "$project" --file "$compose_file" "$@")
 }
 port=0
+compose_image=""
+hostile_tag="slamsweep-$run_id-hostile:latest"
 
 # Containers, volumes and images this run made; the daemon when it started it. Runs on any exit.
 cleanup() {
@@ -64,7 +73,10 @@ cleanup() {
   compose down --volumes --timeout 30 >/dev/null 2>&1
   "$docker_client" ps -aq --filter "label=slamsweep.check=$run_id" | xargs -r "$docker_client" rm -f >/dev/null
   "$docker_client" volume rm -f "$volume" >/dev/null 2>&1
-  if [[ "${SLAMSWEEP_DOCKER_KEEP:-0}" != 1 ]]; then
+  "$docker_client" rmi "$hostile_tag" >/dev/null 2>&1
+  if [[ -n "${SLAMSWEEP_DOCKER_IMAGE:-}" ]]; then
+    echo "docker-check: keeping $tag (SLAMSWEEP_DOCKER_IMAGE: not built by this run)"
+  elif [[ "${SLAMSWEEP_DOCKER_KEEP:-0}" != 1 ]]; then
     "$docker_client" rmi "$tag" >/dev/null 2>&1
     # The build stage's layers and anything else this run built (newest first, until none goes).
     local leftover removed=1
@@ -94,15 +106,18 @@ in_image() {
 
 step "build"
 start=$(date +%s)
-if "$root/docker/build-image.sh" "$tag" >"$out/build.log" 2>&1; then
+if [[ -n "${SLAMSWEEP_DOCKER_IMAGE:-}" ]]; then
+  "$docker_client" image inspect "$tag" >/dev/null 2>&1 && pass "the image $tag is there (not built: SLAMSWEEP_DOCKER_IMAGE)" ||
+    { fail "no image $tag (SLAMSWEEP_DOCKER_IMAGE)"; echo "$passed passed, $failed failed"; exit 1; }
+elif "$root/docker/build-image.sh" "$tag" >"$out/build.log" 2>&1; then
   pass "the image builds ($(($(date +%s) - start)) s)"
+  echo "build_s $(($(date +%s) - start))" >>"$out/times.txt"
 else
   fail "the image does not build; the end of $out/build.log:"
   tail -n 30 "$out/build.log"
   echo "$passed passed, $failed failed"
   exit 1
 fi
-echo "build_s $(($(date +%s) - start))" >>"$out/times.txt"
 size=$("$docker_client" image inspect --format '{{.Size}}' "$tag")
 echo "image_mb $((size / 1000000))" >>"$out/times.txt"
 echo "docker-check: image $tag is $((size / 1000000)) MB"
@@ -191,6 +206,40 @@ kept=$(in_image -v "${project}_results:/results" --entrypoint /bin/sh "$tag" -c 
   'ls /results/service/queue.sqlite && find /results/service -name summary.json | head -n 1' 2>&1 || true)
 [[ "$kept" == *queue.sqlite*summary.json* ]] && pass "the results volume outlives down (queue and results kept)" ||
   fail "the results volume lost the service's data: $kept"
+
+step "the sandbox's hostile program as a SLAM program in a container"
+# The sandbox's own test (a real sweep whose command-adapter program tries to escape), run inside the
+# container of the `slamsweep` service with compose.yaml's security options, never --privileged.
+hostile_script=$root/tests/orchestrator/sandbox/hostile_sweep_test.py
+hostile=${SLAMSWEEP_HOSTILE:-$(dirname "$slamsweep")/tests/orchestrator/sandbox/slamsweep-hostile}
+if [[ ! -f "$hostile_script" ]]; then
+  echo "docker-check: this checkout has no sandbox (no $hostile_script): nothing to run"
+elif [[ ! -x "$hostile" ]]; then
+  fail "the hostile program $hostile is not built (cmake --build build --target slamsweep-hostile)"
+else
+  # Its settings, not its comments (which say "without --privileged").
+  grep -v '^[[:space:]]*#' "$compose_file" | grep -qE 'privileged|cap_add' && fail "compose.yaml asks for privileges" ||
+    pass "compose.yaml asks for no privileges or capabilities"
+  grep -q 'seccomp=' "$compose_file" && pass "compose.yaml names a seccomp profile" ||
+    fail "compose.yaml names no seccomp profile"
+  # The test is Python; the image has none: an image of its own adds it, removed at cleanup.
+  compose_image=$tag
+  if ! in_image --entrypoint /bin/sh "$tag" -c 'command -v python3' >/dev/null 2>&1; then
+    printf 'FROM %s\nUSER root\nRUN apt-get update && apt-get install -y --no-install-recommends python3 && rm -rf /var/lib/apt/lists/*\nUSER slamsweep\n' "$tag" |
+      "$docker_client" build --network host -t "$hostile_tag" - >"$out/hostile-image.log" 2>&1 &&
+      compose_image=$hostile_tag || fail "no image with python3 for the hostile test (see $out/hostile-image.log)"
+  fi
+  status=0
+  compose run --rm --no-deps -T \
+    -v "$shared/reference:/data/reference:ro" \
+    -v "$hostile:/opt/hostile/slamsweep-hostile:ro" -v "$hostile_script:/opt/hostile/hostile_sweep_test.py:ro" \
+    --entrypoint python3 slamsweep /opt/hostile/hostile_sweep_test.py --slamsweep /opt/slamsweep/bin/slamsweep \
+    --hostile /opt/hostile/slamsweep-hostile --shared /data --workdir /home/slamsweep >"$out/hostile.log" 2>&1 || status=$?
+  compose_image=""
+  tail -n 5 "$out/hostile.log"
+  ((status == 0)) && pass "the hostile program, run by a sweep in the container, escaped nowhere" ||
+    fail "the hostile program's test exited $status in the container (see $out/hostile.log)"
+fi
 
 echo "docker-check: times and size in $out/times.txt"
 echo "$passed passed, $failed failed"

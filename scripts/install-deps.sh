@@ -35,8 +35,9 @@ runtime_packages=(
   libstdc++6 zlib1g libboost-filesystem1.74.0 libboost-iostreams1.74.0 libdeflate0 libfmt9 libssl3 libyaml-cpp0.7
   libspdlog1.10 libsqlite3-0 libcpp-httplib0.11 libgif7 libpng16-16 libopencv-core406 libopencv-imgproc406
   libmrpt-obs2.5 librosbag-storage4d libroscpp-serialization0d librostime1d libcpp-common0d
-  # the Cartographer driver
-  libabsl20220623 libcholmod3 libcxsparse3 libgoogle-glog0v6 liblua5.3-0 libprotobuf32
+  # the Cartographer driver (Ceres, linked statically, brings ATLAS's BLAS and LAPACK: libceres-dev
+  # depends on libatlas-base-dev)
+  libabsl20220623 libcholmod3 libcxsparse3 libgoogle-glog0v6 liblua5.3-0 libprotobuf32 libatlas3-base liblapack3
   "${run_programs[@]}"
 )
 
