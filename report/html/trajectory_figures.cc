@@ -1,5 +1,7 @@
 #include "report/html/trajectory_figures.h"
 
+#include "report/html/view_pages.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -66,35 +68,6 @@ PathSeries SeriesOf(const evaluator::Trajectory& trajectory, std::string label, 
   return series;
 }
 
-SeriesStyle StyleOf(const SiteData& site, const SequenceModel& sequence, std::size_t row) {
-  SeriesStyle style;
-  const std::string& name = sequence.rows[row].name;
-  if (site.palette != nullptr) {
-    const AlgorithmStyle algorithm = site.palette->StyleOf(name);
-    style.rgb = algorithm.rgb;
-    style.point_type = algorithm.point_type;
-  }
-  for (std::size_t r = 0; r < row; ++r) style.variant += sequence.rows[r].name == name ? 1 : 0;
-  return style;
-}
-
-std::string TableFolderOf(const ReportLayout& layout, const std::string& key) {
-  std::string page = layout.SequencePage(key);
-  page.resize(page.size() - std::string_view(".html").size());
-  return page + "/";
-}
-
-void Add(TableViews& views, std::vector<FigureJob>& figures, const fs::path& out_dir, const std::string& id,
-         const std::string& path, PathFigure figure) {
-  PlotArtifact artifact;
-  artifact.metric = id;
-  artifact.title = figure.title;
-  artifact.path = path;
-  artifact.note = "no image maker configured";
-  views.figures[id] = artifact;
-  figures.push_back({std::move(figure), out_dir / path});
-}
-
 }  // namespace
 
 std::string PathErrorFigureId(std::size_t row) { return fmt::format("trajectories/error/{}", row); }
@@ -124,7 +97,7 @@ void PlanTrajectoryFigures(const fs::path& out_dir, SiteData& site, std::vector<
         together.series.insert(together.series.begin(), std::move(reference));
         have_reference = true;
       }
-      const SeriesStyle style = StyleOf(site, sequence, r);
+      const SeriesStyle style = RowStyle(site, sequence, r);
       together.series.push_back(SeriesOf(aligned->estimate, row.algorithm, style));
 
       PathFigure error;
@@ -143,16 +116,16 @@ void PlanTrajectoryFigures(const fs::path& out_dir, SiteData& site, std::vector<
       errors.emplace_back(r, std::move(error));
     }
     if (!have_reference) continue;
-    const std::string folder = TableFolderOf(*site.layout, sequence.key);
+    const std::string folder = TableFolder(*site.layout, sequence.key);
     std::error_code error_code;
     fs::create_directories(out_dir / folder, error_code);
     if (error_code) {
       throw evaluator::InputError((out_dir / folder).string() + ": cannot create folder (" + error_code.message() + ")");
     }
     TableViews& views = site.views[sequence.key];
-    Add(views, figures, out_dir, kTrajectoriesFigureId, folder + "trajectories.png", std::move(together));
+    AddFigure(views, figures, out_dir, kTrajectoriesFigureId, folder + "trajectories.png", std::move(together));
     for (auto& [row, figure] : errors) {
-      Add(views, figures, out_dir, PathErrorFigureId(row), folder + fmt::format("path-error-{}.png", row), std::move(figure));
+      AddFigure(views, figures, out_dir, PathErrorFigureId(row), folder + fmt::format("path-error-{}.png", row), std::move(figure));
     }
   }
 }

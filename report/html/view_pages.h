@@ -43,6 +43,14 @@ std::string ParameterFigureId(std::size_t sweep, std::size_t slice, std::size_t 
 /// of rows of the same algorithm before it in the table.
 SeriesStyle RowStyle(const SiteData& site, const SequenceModel& sequence, std::size_t row);
 
+/// "sequences/<table>/": the folder of a table's extra pages and figures, beside its page
+/// "sequences/<table>.html" (a folder and a .html file never share a name, and <table> is unique).
+std::string TableFolder(const ReportLayout& layout, const std::string& table_key);
+
+/// Adds a figure to a table's views: its artefact (not made until drawn) and its job.
+void AddFigure(TableViews& views, std::vector<FigureJob>& figures, const std::filesystem::path& out_dir,
+               const std::string& id, const std::string& path, ViewFigure figure);
+
 /// The style sheet rules of these pages and of the palette, appended to style.css.
 std::string ViewStyleSheet();
 

@@ -17,26 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// "sequences/<table>/": the folder of a table's extra pages and figures, beside its page
-/// "sequences/<table>.html" (a folder and a .html file never share a name, and <table> is unique).
-std::string TableFolder(const ReportLayout& layout, const std::string& table_key) {
-  std::string page = layout.SequencePage(table_key);
-  page.resize(page.size() - std::string_view(".html").size());
-  return page + "/";
-}
-
-/// Adds a figure: its artefact (not made until drawn) and its job.
-void AddFigure(TableViews& views, std::vector<FigureJob>& figures, const fs::path& out_dir, const std::string& id,
-               const std::string& path, ViewFigure figure) {
-  PlotArtifact artifact;
-  artifact.metric = id;
-  artifact.title = FigureTitle(figure);
-  artifact.path = path;
-  artifact.note = "no image maker configured";
-  views.figures[id] = artifact;
-  figures.push_back({std::move(figure), out_dir / path});
-}
-
 BoxplotFigure SegmentBoxplot(const SiteData& site, const SequenceModel& sequence, const SegmentTable& table,
                              std::optional<BoxSummary> SegmentCell::* box, const std::string& what,
                              const std::string& unit) {
@@ -152,6 +132,26 @@ HeatmapFigure ParameterHeatmap(const SequenceModel& sequence, const ParameterSwe
 }
 
 }  // namespace
+
+/// "sequences/<table>/": the folder of a table's extra pages and figures, beside its page
+/// "sequences/<table>.html" (a folder and a .html file never share a name, and <table> is unique).
+std::string TableFolder(const ReportLayout& layout, const std::string& table_key) {
+  std::string page = layout.SequencePage(table_key);
+  page.resize(page.size() - std::string_view(".html").size());
+  return page + "/";
+}
+
+/// Adds a figure: its artefact (not made until drawn) and its job.
+void AddFigure(TableViews& views, std::vector<FigureJob>& figures, const std::filesystem::path& out_dir, const std::string& id,
+               const std::string& path, ViewFigure figure) {
+  PlotArtifact artifact;
+  artifact.metric = id;
+  artifact.title = FigureTitle(figure);
+  artifact.path = path;
+  artifact.note = "no image maker configured";
+  views.figures[id] = artifact;
+  figures.push_back({std::move(figure), out_dir / path});
+}
 
 void Artwork::Figures(const std::vector<FigureJob>& figures) {
   if (!figures.empty()) throw std::runtime_error("this image maker draws no figures of the segment-length and parameter pages");
