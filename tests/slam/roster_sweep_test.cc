@@ -65,16 +65,16 @@ TEST(RosterSweepTest, CiBuildsTheRosterItPromises) {
 
 // The roster test's input, stated once. intel's first kRosterScans scans (the test's CPU budget: about
 // 3 CPU-minutes for all of it), kDraws seeded draws of mild odometry noise, the error is the ATE (se2
-// RMSE) against intel's corrected poses. kOdometry is the odometry the noise is drawn around.
+// RMSE) against intel's corrected poses. kOdometry is the odometry the noise is drawn on.
 constexpr int kRosterScans = 200;
 constexpr int kDraws = 10;
 constexpr double kSignificance = 0.05;  // one-sided sign test: 9 wins of 10 draws
 constexpr const char* kSequence = "intel-200";
 constexpr const char* kNoise = "mild-odometry";
-// The corrected log's own odometry, which equals its reference (set explicitly: the catalog's default
-// is now the robot's recorded odometry). Saying "recorded" here means measuring
-// roster_expected_failures.json again: its entries name the odometry they were measured on.
-constexpr std::string_view kOdometry = "reference";
+// The robot's recorded wheel odometry (the catalog's default on corrected logs), with the noise drawn on top.
+// Changing it means measuring roster_expected_failures.json again: its entries name the odometry they
+// were measured on.
+constexpr std::string_view kOdometry = "recorded";
 
 /// The ATE of every draw of `algorithm` (NaN for a failed run), by iteration.
 std::vector<double> AteByDraw(const nlohmann::json& summary, const std::string& algorithm) {
