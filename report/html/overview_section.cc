@@ -45,8 +45,12 @@ Html DotPlot(const RankedEntry& entry, const Scale& scale) {
   return T(svg);
 }
 
-std::string IntervalText(const RankedEntry& entry) {
+std::string IntervalText(const RankedEntry& entry, const AlgorithmRow& row) {
   if (entry.summary.n == 0) return "n/a";
+  // A published figure's spread is over the log's relations, not over runs.
+  if (row.kind == RowKind::kPublished && entry.summary.std) {
+    return FormatNumber(entry.summary.mean) + " ± " + FormatNumber(*entry.summary.std) + " (over relations)";
+  }
   if (!entry.interval) return FormatNumber(entry.summary.mean) + " (one value)";
   return FormatNumber(entry.summary.mean) + " [" + FormatNumber(entry.interval->low) + ", " +
          FormatNumber(entry.interval->high) + "]";
@@ -96,8 +100,9 @@ Html OverviewSection(const SiteData& site, const std::vector<TableSignificance>&
       const AlgorithmRow& row = table.rows[entry.row];
       rows += Element("tr", entry.rank ? (*entry.rank == 1 ? "best" : "") : "beside",
                       Element("td", "", E(entry.rank ? std::to_string(*entry.rank) : "–")) +
-                          Element("td", "", E(row.algorithm)) + Element("td", "num", E(IntervalText(entry))) +
-                          Element("td", "num", E(fmt::format("{} / {}", entry.n_ok, entry.n_runs))) +
+                          Element("td", "", E(row.algorithm)) + Element("td", "num", E(IntervalText(entry, row))) +
+                          Element("td", "num", E(entry.n_runs == 0 ? std::string("–")
+                                                                   : fmt::format("{} / {}", entry.n_ok, entry.n_runs))) +
                           Element("td", "", DotPlot(entry, scale)) +
                           Element("td", "", E(entry.unranked_because)));
     }

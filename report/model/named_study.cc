@@ -9,6 +9,7 @@ namespace slamsweep::report {
 
 SweepModelOptions LoadSweepModelOptions(const std::filesystem::path& result_dir) {
   SweepModelOptions options;
+  options.published = LoadDefaultPublishedFigures();
   const std::filesystem::path file = result_dir / orchestrator::kNamedStudyFile;
   if (!std::filesystem::exists(file)) return options;
   const orchestrator::NamedStudy named = orchestrator::ReadNamedStudy(file);

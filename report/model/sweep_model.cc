@@ -231,6 +231,49 @@ std::optional<AlgorithmRow> ReferenceFloorRow(const std::vector<RunRecord>& runs
   return std::nullopt;
 }
 
+/// The published rows of a table: figures for the log whose relations file the table's runs were scored
+/// against, when they ran the whole log (no max_scans cut). A figure fills the relations columns it has
+/// (translation in m, rotation in deg); its std is the published spread over the relations, not over runs.
+std::vector<AlgorithmRow> PublishedRows(const std::vector<RunRecord>& runs, const std::vector<std::size_t>& all,
+                                        const SequenceModel& sequence, const std::vector<PublishedFigure>& published) {
+  std::string log;
+  for (std::size_t index : all) {
+    const json* spec = Find(runs[index].run_spec, "sequence");
+    const json* relations = spec ? Find(*spec, "relations") : nullptr;
+    const json* max_scans = spec ? Find(*spec, "max_scans") : nullptr;
+    if (relations == nullptr || !relations->is_string() || (max_scans != nullptr && !max_scans->is_null())) continue;
+    log = std::filesystem::path(relations->get<std::string>()).stem().string();
+    break;
+  }
+  std::vector<AlgorithmRow> rows;
+  if (log.empty()) return rows;
+  for (const PublishedFigure& figure : published) {
+    if (figure.sequence != log) continue;
+    AlgorithmRow row;
+    row.kind = RowKind::kPublished;
+    row.name = "published: " + figure.label;
+    row.algorithm = "published: " + figure.label + " [" + figure.source + (figure.verified ? "" : ", unverified") + "]";
+    row.parameters = figure.citation;
+    bool any = false;
+    for (const MetricColumn& column : sequence.trajectory_columns) {
+      MetricCell cell;
+      const auto& value = column.metric == "relations_trans" && column.statistic == "mean" && column.unit == "m"   ? figure.trans_abs
+                          : column.metric == "relations_rot" && column.statistic == "mean" && column.unit == "deg" ? figure.rot_abs
+                                                                                                                    : std::nullopt;
+      if (value) {
+        cell.values = {value->first};
+        cell.summary = ComputeMeanStd(cell.values);
+        cell.summary.std = value->second;
+        any = true;
+      }
+      row.trajectory_cells.push_back(std::move(cell));
+    }
+    row.map_cells.resize(sequence.map_columns.size());
+    if (any) rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
 void Count(const RunRecord& run, RunCounts& counts) {
   ++counts.total;
   switch (run.status) {
@@ -363,6 +406,9 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions&
     }
     if (std::optional<AlgorithmRow> floor = ReferenceFloorRow(model.runs, all, sequence)) {
       sequence.rows.push_back(std::move(*floor));
+    }
+    for (AlgorithmRow& row : PublishedRows(model.runs, all, sequence, options.published)) {
+      sequence.rows.push_back(std::move(row));
     }
     WithholdUnsupportedBest(sequence, model, options);
     MarkBest(sequence.rows, sequence.trajectory_columns, &AlgorithmRow::trajectory_cells);

@@ -7,6 +7,7 @@
 
 #include "evaluator/validity/metric_validity.h"
 #include "report/model/mean_std.h"
+#include "report/model/published_figures.h"
 #include "report/model/run_record.h"
 
 namespace slamsweep::report {
@@ -116,6 +117,9 @@ struct SweepModelOptions {
   /// sweep's own runs study no other sequence.
   std::optional<evaluator::ValidityStudy> named_study;
   std::string named_study_source;  ///< where it came from, for notes
+  /// Published relations errors (configs/published.yaml) drawn as rows beside a table whose runs score a whole
+  /// log against that log's relations file; never ranked.
+  std::vector<PublishedFigure> published;
 };
 
 /// The whole sweep, ready to render.

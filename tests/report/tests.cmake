@@ -8,8 +8,10 @@ if(TARGET report_html)
     PUBLIC report_html evaluator_core nlohmann_json::nlohmann_json
     PRIVATE evaluator_map_formats evaluator_trajectory_formats opencv_core opencv_imgproc opencv_imgcodecs fmt::fmt)
 
-  slamsweep_add_test(report_model_test SOURCES model_test.cc best_marks_test.cc significance_test.cc LIBS report_model orchestrator_store
+  slamsweep_add_test(report_model_test SOURCES model_test.cc best_marks_test.cc significance_test.cc published_rows_test.cc LIBS report_model orchestrator_store
                      report_test_fixture)
+  # The shipped configs/published.yaml is read by a test too.
+  target_compile_definitions(report_model_test PRIVATE SLAMSWEEP_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   slamsweep_add_test(report_html_test SOURCES html_test.cc LIBS report_html)
   slamsweep_add_test(report_write_test SOURCES write_report_test.cc LIBS report_html report_test_fixture)
   # The segment-length and parameter pages: their models, figures as planned, pages.
