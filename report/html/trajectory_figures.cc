@@ -34,19 +34,14 @@ struct AlignedRun {
 // The run's trajectory aligned onto its reference as its ATE was computed (the run's evaluation settings).
 std::optional<AlignedRun> Align(const RunRecord& run) {
   if (run.status != RunStatus::kOk || run.outputs.trajectory.empty() || run.outputs.reference.empty()) return std::nullopt;
-  std::string align = "se2";
-  double t_max_diff_s = 0.01;
-  if (const auto evaluation = run.run_spec.find("evaluation"); evaluation != run.run_spec.end() && evaluation->is_object()) {
-    if (const auto a = evaluation->find("align"); a != evaluation->end() && a->is_string()) align = a->get<std::string>();
-    if (const auto t = evaluation->find("t_max_diff_s"); t != evaluation->end() && t->is_number()) t_max_diff_s = t->get<double>();
-  }
+  const OverlaySettings settings = OverlaySettingsOf(run);
   AlignedRun aligned;
   aligned.reference = evaluator::ReadTum(run.dir / run.outputs.reference);
   aligned.estimate = evaluator::ReadTum(run.dir / run.outputs.trajectory);
-  const evaluator::Association pairs = evaluator::Associate(aligned.reference, aligned.estimate, {.t_max_diff_s = t_max_diff_s});
+  const evaluator::Association pairs = evaluator::Associate(aligned.reference, aligned.estimate, {.t_max_diff_s = settings.t_max_diff_s});
   aligned.paired_reference = pairs.reference;
   aligned.paired_estimate = pairs.estimate;
-  const evaluator::AlignmentMode mode = evaluator::ParseAlignmentMode(align);
+  const evaluator::AlignmentMode mode = evaluator::ParseAlignmentMode(settings.align);
   if (mode != evaluator::AlignmentMode::kNone) {
     if (const auto alignment = evaluator::ComputeAlignment(pairs.reference, pairs.estimate, {.mode = mode})) {
       aligned.estimate = evaluator::ApplyAlignment(aligned.estimate, *alignment);
@@ -69,6 +64,19 @@ PathSeries SeriesOf(const evaluator::Trajectory& trajectory, std::string label, 
 }
 
 }  // namespace
+
+OverlaySettings OverlaySettingsOf(const RunRecord& run) {
+  OverlaySettings settings;
+  const auto evaluation = run.run_spec.find("evaluation");
+  if (evaluation == run.run_spec.end() || !evaluation->is_object()) return settings;
+  if (const auto align = evaluation->find("align"); align != evaluation->end() && align->is_string()) {
+    settings.align = align->get<std::string>();
+  }
+  if (const auto t = evaluation->find("t_max_diff_s"); t != evaluation->end() && t->is_number()) {
+    settings.t_max_diff_s = t->get<double>();
+  }
+  return settings;
+}
 
 std::string PathErrorFigureId(std::size_t row) { return fmt::format("trajectories/error/{}", row); }
 

@@ -4,10 +4,15 @@
 #include <string>
 #include <vector>
 
+#include "report/html/artwork.h"
 #include "report/html/site_data.h"
 #include "report/plots/figure_types.h"
 
 namespace slamsweep::report {
+
+/// How a run's trajectory is aligned for pictures: the run's own evaluation settings (run.json `evaluation`:
+/// align, t_max_diff_s), so a picture agrees with the ATE it illustrates.
+OverlaySettings OverlaySettingsOf(const RunRecord& run);
 
 /// The id of a table's figure of every row's trajectory over the reference, in TableViews::figures.
 inline constexpr const char* kTrajectoriesFigureId = "trajectories/together";

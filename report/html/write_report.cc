@@ -258,19 +258,6 @@ void CopyDownloads(const RunRecord& run, const fs::path& run_out, RunArtifacts& 
   }
 }
 
-OverlaySettings OverlaySettingsOf(const RunRecord& run) {
-  OverlaySettings settings;
-  const auto evaluation = run.run_spec.find("evaluation");
-  if (evaluation == run.run_spec.end() || !evaluation->is_object()) return settings;
-  if (const auto align = evaluation->find("align"); align != evaluation->end() && align->is_string()) {
-    settings.align = align->get<std::string>();
-  }
-  if (const auto t = evaluation->find("t_max_diff_s"); t != evaluation->end() && t->is_number()) {
-    settings.t_max_diff_s = t->get<double>();
-  }
-  return settings;
-}
-
 void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const fs::path& out_dir,
                    const ReportOptions& options, SiteData& site, std::vector<ImageJob>& jobs) {
   Artwork* artwork = options.artwork;
