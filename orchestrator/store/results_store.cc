@@ -228,7 +228,7 @@ void ResultsStore::InitializeSchema() {
                                  db_.file().string()));
   }
   // WAL lets readers (status, report) work while a sweep writes; it is a property of the file, kept once set.
-  db_.Execute("PRAGMA journal_mode = WAL");
+  db_.ExecuteRetryingWhileBusy("PRAGMA journal_mode = WAL");
   db_.Execute("PRAGMA synchronous = NORMAL");
   if (version == kResultsSchemaVersion) return;
   SqliteTransaction transaction(db_);

@@ -2,7 +2,9 @@
 
 #include <sqlite3.h>
 
+#include <chrono>
 #include <limits>
+#include <thread>
 #include <utility>
 
 #include <fmt/format.h>
@@ -182,6 +184,23 @@ void SqliteDb::Execute(std::string_view sql) {
     sqlite3_free(error);
     throw InputError(DescribeSqliteError(file_, sqlite3_extended_errcode(db_), message,
                                          fmt::format("running '{}'", text.substr(0, 60))));
+  }
+}
+
+void SqliteDb::ExecuteRetryingWhileBusy(std::string_view sql) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(kBusyTimeoutMs);
+  const std::string text(sql);
+  while (true) {
+    char* error = nullptr;
+    const int rc = sqlite3_exec(db_, text.c_str(), nullptr, nullptr, &error);
+    if (rc == SQLITE_OK) return;
+    const std::string message = error != nullptr ? error : sqlite3_errstr(rc);
+    sqlite3_free(error);
+    if ((rc & 0xff) != SQLITE_BUSY || std::chrono::steady_clock::now() >= deadline) {
+      throw InputError(DescribeSqliteError(file_, sqlite3_extended_errcode(db_), message,
+                                           fmt::format("running '{}'", text.substr(0, 60))));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
 }
 

@@ -65,6 +65,9 @@ class SqliteDb {
 
   /// Runs one or more statements without results.
   void Execute(std::string_view sql);
+  /// Execute, tried again while SQLite answers "busy" without waiting (two connections that both
+  /// hold a read lock and want the write lock), up to the same time as any other wait.
+  void ExecuteRetryingWhileBusy(std::string_view sql);
   SqliteStatement Prepare(std::string_view sql) const;
   /// A statement to keep and run many times (the store's cache of its most used statements).
   std::unique_ptr<SqliteStatement> PrepareKept(std::string_view sql) const;

@@ -90,6 +90,25 @@ TEST(ResultsStoreProcessesTest, ProcessKilledBeforeItsFirstRecordLeavesNoHalfRun
   EXPECT_EQ(count.Int64(0), 0);
 }
 
+TEST(ResultsStoreProcessesTest, ProcessesCreatingOneStoreAtOnceAllOpenIt) {
+  // Switching a new file to WAL takes an exclusive lock; two openers that both hold a read lock
+  // deadlock, and SQLite answers one of them "busy" at once instead of waiting.
+  for (int round = 0; round < 40; ++round) {
+    slamsweep::testing::TempDir dir;
+    const auto file = dir / "results.sqlite";
+    const auto opener = [&file] {
+      ResultsStore::Open(file);
+      return 0;
+    };
+    const pid_t a = Spawn(opener);
+    const pid_t b = Spawn(opener);
+    const pid_t c = Spawn(opener);
+    ASSERT_EQ(Wait(a), 0) << "round " << round;
+    ASSERT_EQ(Wait(b), 0) << "round " << round;
+    ASSERT_EQ(Wait(c), 0) << "round " << round;
+  }
+}
+
 TEST(ResultsStoreProcessesTest, TwoProcessesRecordingAtOnceLoseNothing) {
   slamsweep::testing::TempDir dir;
   const auto file = dir / "results.sqlite";
