@@ -11,30 +11,6 @@ namespace {
 
 using evaluator::InputError;
 
-// Tells a history file from a results.sqlite (both are slamsweep SQLite files with a user_version).
-constexpr std::int64_t kHistoryApplicationId = 0x534C4853;  // "SLHS"
-
-// Samples are kept as a JSON array per series: a night is read and written whole, never queried by value.
-constexpr const char* kSchemaV1 = R"sql(
-CREATE TABLE nights(
-  id INTEGER PRIMARY KEY,
-  label TEXT NOT NULL UNIQUE,
-  result_dir TEXT NOT NULL, sweep_id INTEGER NOT NULL, sweep_name TEXT, started_at TEXT, recorded_at TEXT,
-  report_index TEXT,
-  UNIQUE(result_dir, sweep_id));
-CREATE TABLE samples(
-  night_id INTEGER NOT NULL REFERENCES nights(id),
-  algorithm TEXT NOT NULL, sequence TEXT NOT NULL, noise TEXT NOT NULL, metric TEXT NOT NULL,
-  statistic TEXT NOT NULL, unit TEXT, values_json TEXT NOT NULL,
-  PRIMARY KEY(night_id, algorithm, sequence, noise, metric, statistic));
-CREATE INDEX samples_series ON samples(algorithm, sequence, noise, metric, statistic);
-CREATE TABLE cells(
-  night_id INTEGER NOT NULL REFERENCES nights(id),
-  algorithm TEXT NOT NULL, sequence TEXT NOT NULL, noise TEXT NOT NULL,
-  ok_runs INTEGER NOT NULL, failed_runs INTEGER NOT NULL,
-  PRIMARY KEY(night_id, algorithm, sequence, noise));
-)sql";
-
 constexpr const char* kNightColumns =
     "SELECT id, label, result_dir, sweep_id, sweep_name, started_at, recorded_at, report_index FROM nights";
 
@@ -109,13 +85,15 @@ void HistoryStore::InitializeSchema() {
                                  db_.file().string(), version, kHistorySchemaVersion));
   }
   db_.Execute("PRAGMA journal_mode = WAL");
-  if (tables == 0) {
-    SqliteTransaction transaction(db_);
-    db_.Execute(kSchemaV1);
-    db_.Execute(fmt::format("PRAGMA application_id = {}; PRAGMA user_version = {}", kHistoryApplicationId,
-                            kHistorySchemaVersion));
-    transaction.Commit();
+  if (version == kHistorySchemaVersion) return;
+  SqliteTransaction transaction(db_);
+  // Another process may have created or migrated the schema between the first read and the write lock.
+  const std::int64_t locked_version = pragma("PRAGMA user_version");
+  const std::int64_t locked_tables = pragma("SELECT count(*) FROM sqlite_master WHERE type = 'table'");
+  if (locked_version != kHistorySchemaVersion) {
+    CreateOrMigrateHistorySchema(db_, locked_tables == 0 ? 0 : locked_version);
   }
+  transaction.Commit();
 }
 
 HistoryStore::RecordOutcome HistoryStore::Record(const Night& night) {
@@ -139,26 +117,28 @@ HistoryStore::RecordOutcome HistoryStore::Record(const Night& night) {
   insert.Run();
   const std::int64_t id = db_.LastInsertRowId();
   auto sample = db_.Prepare(
-      "INSERT INTO samples(night_id, algorithm, sequence, noise, metric, statistic, unit, values_json) "
-      "VALUES(?, ?, ?, ?, ?, ?, ?, ?)");
+      "INSERT INTO samples(night_id, algorithm, sequence, noise, odometry, metric, statistic, unit, values_json) "
+      "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?)");
   for (const SampleSeries& s : night.series) {
     sample.Reset();
     sample.Bind(1, id)
         .Bind(2, s.algorithm)
         .Bind(3, s.sequence)
         .Bind(4, s.noise)
-        .Bind(5, s.metric)
-        .Bind(6, s.statistic)
-        .Bind(7, s.unit)
-        .Bind(8, nlohmann::json(s.values).dump());
+        .Bind(5, s.odometry)
+        .Bind(6, s.metric)
+        .Bind(7, s.statistic)
+        .Bind(8, s.unit)
+        .Bind(9, nlohmann::json(s.values).dump());
     sample.Run();
   }
   auto cell = db_.Prepare(
-      "INSERT INTO cells(night_id, algorithm, sequence, noise, ok_runs, failed_runs) VALUES(?, ?, ?, ?, ?, ?)");
+      "INSERT INTO cells(night_id, algorithm, sequence, noise, odometry, ok_runs, failed_runs) "
+      "VALUES(?, ?, ?, ?, ?, ?, ?)");
   for (const CellCounts& c : night.cells) {
     cell.Reset();
-    cell.Bind(1, id).Bind(2, c.algorithm).Bind(3, c.sequence).Bind(4, c.noise).Bind(5, c.ok_runs).Bind(6,
-                                                                                                         c.failed_runs);
+    cell.Bind(1, id).Bind(2, c.algorithm).Bind(3, c.sequence).Bind(4, c.noise).Bind(5, c.odometry);
+    cell.Bind(6, c.ok_runs).Bind(7, c.failed_runs);
     cell.Run();
   }
   transaction.Commit();
@@ -206,33 +186,35 @@ Night HistoryStore::Load(std::int64_t night_id) const {
   night.started_at = entry.started_at;
   night.report_index = entry.report_index;
   auto samples = db_.Prepare(
-      "SELECT algorithm, sequence, noise, metric, statistic, unit, values_json FROM samples WHERE night_id = ? "
-      "ORDER BY algorithm, sequence, noise, metric, statistic");
+      "SELECT algorithm, sequence, noise, odometry, metric, statistic, unit, values_json FROM samples "
+      "WHERE night_id = ? ORDER BY algorithm, sequence, noise, odometry, metric, statistic");
   samples.Bind(1, night_id);
   while (samples.Step()) {
-    night.series.push_back({samples.Text(0), samples.Text(1), samples.Text(2), samples.Text(3), samples.Text(4),
-                            NullableText(samples, 5), ParseValues(db_.file(), samples.Text(6))});
+    night.series.push_back({{samples.Text(0), samples.Text(1), samples.Text(2), samples.Text(3), samples.Text(4),
+                             samples.Text(5), NullableText(samples, 6)},
+                            ParseValues(db_.file(), samples.Text(7))});
   }
   auto cells = db_.Prepare(
-      "SELECT algorithm, sequence, noise, ok_runs, failed_runs FROM cells WHERE night_id = ? "
-      "ORDER BY algorithm, sequence, noise");
+      "SELECT algorithm, sequence, noise, odometry, ok_runs, failed_runs FROM cells WHERE night_id = ? "
+      "ORDER BY algorithm, sequence, noise, odometry");
   cells.Bind(1, night_id);
   while (cells.Step()) {
-    night.cells.push_back({cells.Text(0), cells.Text(1), cells.Text(2), cells.Int64(3), cells.Int64(4)});
+    night.cells.push_back(
+        {cells.Text(0), cells.Text(1), cells.Text(2), cells.Text(3), cells.Int64(4), cells.Int64(5)});
   }
   return night;
 }
 
-std::vector<HistoryPoint> HistoryStore::Series(const std::string& algorithm, const std::string& sequence,
-                                               const std::string& noise, const std::string& metric,
-                                               const std::string& statistic) const {
+std::vector<HistoryPoint> HistoryStore::Series(const SeriesKey& key) const {
   auto select = db_.Prepare(
       "SELECT n.id, n.label, n.result_dir, n.sweep_id, n.sweep_name, n.started_at, n.recorded_at, n.report_index, "
       "s.values_json, COALESCE(c.failed_runs, 0) FROM samples s JOIN nights n ON n.id = s.night_id "
       "LEFT JOIN cells c ON c.night_id = s.night_id AND c.algorithm = s.algorithm AND c.sequence = s.sequence AND "
-      "c.noise = s.noise "
-      "WHERE s.algorithm = ? AND s.sequence = ? AND s.noise = ? AND s.metric = ? AND s.statistic = ? ORDER BY n.id");
-  select.Bind(1, algorithm).Bind(2, sequence).Bind(3, noise).Bind(4, metric).Bind(5, statistic);
+      "c.noise = s.noise AND c.odometry = s.odometry "
+      "WHERE s.algorithm = ? AND s.sequence = ? AND s.noise = ? AND s.odometry = ? AND s.metric = ? AND "
+      "s.statistic = ? ORDER BY n.id");
+  select.Bind(1, key.algorithm).Bind(2, key.sequence).Bind(3, key.noise).Bind(4, key.odometry);
+  select.Bind(5, key.metric).Bind(6, key.statistic);
   std::vector<HistoryPoint> points;
   while (select.Step()) {
     points.push_back({ReadEntry(select), ParseValues(db_.file(), select.Text(8)), select.Int64(9)});
@@ -242,13 +224,13 @@ std::vector<HistoryPoint> HistoryStore::Series(const std::string& algorithm, con
 
 std::vector<SeriesKey> HistoryStore::SeriesKeys() const {
   auto select = db_.Prepare(
-      "SELECT algorithm, sequence, noise, metric, statistic, unit FROM samples WHERE rowid IN (SELECT max(rowid) "
-      "FROM samples GROUP BY algorithm, sequence, noise, metric, statistic) "
-      "ORDER BY algorithm, sequence, noise, metric, statistic");
+      "SELECT algorithm, sequence, noise, odometry, metric, statistic, unit FROM samples WHERE rowid IN (SELECT "
+      "max(rowid) FROM samples GROUP BY algorithm, sequence, noise, odometry, metric, statistic) "
+      "ORDER BY algorithm, sequence, noise, odometry, metric, statistic");
   std::vector<SeriesKey> keys;
   while (select.Step()) {
-    keys.push_back({select.Text(0), select.Text(1), select.Text(2), select.Text(3), select.Text(4),
-                    NullableText(select, 5)});
+    keys.push_back({select.Text(0), select.Text(1), select.Text(2), select.Text(3), select.Text(4), select.Text(5),
+                    NullableText(select, 6)});
   }
   return keys;
 }

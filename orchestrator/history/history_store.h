@@ -6,13 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "orchestrator/history/history_schema.h"
 #include "orchestrator/history/night.h"
 #include "orchestrator/store/sqlite_db.h"
 
 namespace slamsweep::orchestrator {
-
-/// The history schema version this build writes (PRAGMA user_version).
-inline constexpr int kHistorySchemaVersion = 1;
 
 /// A night without its samples (the history's table of contents).
 struct NightEntry {
@@ -34,12 +32,14 @@ struct HistoryPoint {
 };
 
 /// The history database (its own SQLite file, e.g. /var/lib/slamsweep/history.sqlite): one row per recorded
-/// sweep ("night") with the iteration samples of every algorithm x sequence x noise x metric x statistic, so
+/// sweep ("night") with the iteration samples of every algorithm x sequence x noise x odometry mode x metric x
+/// statistic, so
 /// that nights can be plotted and compared long after their output directories are gone.
 class HistoryStore {
  public:
-  /// Opens `file`, creating it (and its folder) when missing. Throws InputError naming the file when it is not a
-  /// slamsweep history database (e.g. a results.sqlite), is corrupt, or has a newer schema version.
+  /// Opens `file`, creating it (and its folder) when missing, migrating an older schema (history_schema.h). Throws
+  /// InputError naming the file when it is not a slamsweep history database (e.g. a results.sqlite), is corrupt,
+  /// or has a newer schema version.
   static HistoryStore Open(const std::filesystem::path& file);
   /// As Open, but a missing file is an InputError (for commands that only read).
   static HistoryStore OpenExisting(const std::filesystem::path& file);
@@ -60,15 +60,13 @@ class HistoryStore {
   std::optional<NightEntry> FindByLabel(const std::string& label) const;
   /// The night recorded for this result directory (absolute, normalised) and sweep id, or none.
   std::optional<NightEntry> FindByKey(const std::filesystem::path& result_dir, std::int64_t sweep_id) const;
-  /// Every distinct series of every night, ordered by algorithm, sequence, noise, metric, statistic (unit: the
-  /// latest night's).
+  /// Every distinct series of every night, ordered by algorithm, sequence, noise, odometry, metric, statistic
+  /// (unit: the latest night's).
   std::vector<SeriesKey> SeriesKeys() const;
   /// A whole night with its samples and counts. Throws InputError for an unknown id.
   Night Load(std::int64_t night_id) const;
   /// One series across all nights in recorded order (nights without it are left out).
-  std::vector<HistoryPoint> Series(const std::string& algorithm, const std::string& sequence,
-                                   const std::string& noise, const std::string& metric,
-                                   const std::string& statistic) const;
+  std::vector<HistoryPoint> Series(const SeriesKey& key) const;
 
  private:
   explicit HistoryStore(SqliteDb db) : db_(std::move(db)) {}

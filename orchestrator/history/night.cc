@@ -8,15 +8,16 @@
 #include <fmt/format.h>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/history/series_odometry.h"
 #include "orchestrator/matrix/run_spec.h"
 #include "orchestrator/store/results_store.h"
 
 namespace slamsweep::orchestrator {
 namespace {
 
-/// Orders a night's series: algorithm, sequence, noise, metric, statistic.
-using SeriesOrder = std::tuple<std::string, std::string, std::string, std::string, std::string>;
-using CellKey = std::tuple<std::string, std::string, std::string>;
+/// Orders a night's series: algorithm, sequence, noise, odometry, metric, statistic.
+using SeriesOrder = std::tuple<std::string, std::string, std::string, std::string, std::string, std::string>;
+using CellKey = std::tuple<std::string, std::string, std::string, std::string>;
 
 }  // namespace
 
@@ -55,21 +56,25 @@ Night ReadNight(const std::filesystem::path& result_dir, const std::string& labe
   for (const StoredRun& run : store.Runs()) {
     // Runs with other parameter values are another series: never pooled into one sample.
     const std::string algorithm = AlgorithmLabel(run.algorithm, run.parameters);
-    CellCounts& cell = cells[{algorithm, run.sequence, run.noise}];
+    // Nor are runs on the recorded odometry pooled with runs handed the reference.
+    const std::string odometry = OdometryModeOfRunJson(run.spec);
+    CellCounts& cell = cells[{algorithm, run.sequence, run.noise, odometry}];
     cell.algorithm = algorithm;
     cell.sequence = run.sequence;
     cell.noise = run.noise;
+    cell.odometry = odometry;
     if (run.status != "ok") {
       ++cell.failed_runs;
       continue;
     }
     ++cell.ok_runs;
     for (const StoredMetric& metric : run.metrics) {
-      SampleSeries& s = series[{algorithm, run.sequence, run.noise, metric.metric, metric.statistic}];
+      SampleSeries& s = series[{algorithm, run.sequence, run.noise, odometry, metric.metric, metric.statistic}];
       if (s.metric.empty()) {
         s.algorithm = algorithm;
         s.sequence = run.sequence;
         s.noise = run.noise;
+        s.odometry = odometry;
         s.metric = metric.metric;
         s.statistic = metric.statistic;
         s.unit = metric.unit;
@@ -83,15 +88,18 @@ Night ReadNight(const std::filesystem::path& result_dir, const std::string& labe
 }
 
 bool SameSeries(const SeriesKey& a, const SeriesKey& b) {
-  return a.algorithm == b.algorithm && a.sequence == b.sequence && a.noise == b.noise && a.metric == b.metric &&
-         a.statistic == b.statistic;
+  return a.algorithm == b.algorithm && a.sequence == b.sequence && a.noise == b.noise &&
+         a.odometry == b.odometry && a.metric == b.metric && a.statistic == b.statistic;
 }
 
-const SampleSeries* FindSeries(const Night& night, const std::string& algorithm, const std::string& sequence,
-                               const std::string& noise, const std::string& metric, const std::string& statistic) {
-  const SeriesKey wanted{algorithm, sequence, noise, metric, statistic, ""};
+std::string SeriesName(const SeriesKey& key) {
+  return fmt::format("{} / {} / {} / {} odometry: {}.{}", key.algorithm, key.sequence, key.noise, key.odometry,
+                     key.metric, key.statistic);
+}
+
+const SampleSeries* FindSeries(const Night& night, const SeriesKey& key) {
   const auto it = std::find_if(night.series.begin(), night.series.end(),
-                               [&](const SampleSeries& s) { return SameSeries(s, wanted); });
+                               [&](const SampleSeries& s) { return SameSeries(s, key); });
   return it == night.series.end() ? nullptr : &*it;
 }
 

@@ -7,13 +7,17 @@
 
 namespace slamsweep::orchestrator {
 
-/// The identity of a series across nights: algorithm (with its parameters) x sequence x noise x metric
-/// x statistic (and the unit its values carry): a comparison group and one of its metrics.
+/// The identity of a series across nights: algorithm (with its parameters) x sequence x noise x odometry mode x
+/// metric x statistic (and the unit its values carry): a comparison group and one of its metrics.
 struct SeriesKey {
-  /// AlgorithmLabel: the name, with "[k=v;...]" when the run has parameters.
+  /// AlgorithmLabel: the name, with "[k=v;...]" when the run has parameters (so every parameter setting of a
+  /// parameter sweep is a series of its own).
   std::string algorithm;
   std::string sequence;
   std::string noise;
+  /// "recorded" or "reference" (OdometryModeOfRunJson); "unknown" or "mixed" for series recorded before the
+  /// history kept the mode (series_odometry.h), which are never compared.
+  std::string odometry;
   std::string metric;
   std::string statistic;
   std::string unit;
@@ -22,6 +26,9 @@ struct SeriesKey {
 /// Whether two keys name the same series (the unit follows from the metric).
 bool SameSeries(const SeriesKey& a, const SeriesKey& b);
 
+/// "<algorithm> / <sequence> / <noise> / <odometry> odometry: <metric>.<statistic>", for messages and tables.
+std::string SeriesName(const SeriesKey& key);
+
 /// One series of a sweep: the values of every ok run (one per iteration, in iteration order) — the
 /// samples a regression test compares.
 struct SampleSeries : SeriesKey {
@@ -29,12 +36,14 @@ struct SampleSeries : SeriesKey {
   std::vector<double> values;
 };
 
-/// The run counts of one comparison group (algorithm with parameters x sequence x noise).
+/// The run counts of one comparison group (algorithm with parameters x sequence x noise x odometry mode).
 struct CellCounts {
   /// AlgorithmLabel, as SeriesKey::algorithm.
   std::string algorithm;
   std::string sequence;
   std::string noise;
+  /// As SeriesKey::odometry.
+  std::string odometry;
   std::int64_t ok_runs = 0;
   std::int64_t failed_runs = 0;
 };
@@ -53,7 +62,7 @@ struct Night {
   std::string started_at;
   /// RESULT_DIR/report/index.html (it may not exist: the sweep may have run with --no-report).
   std::filesystem::path report_index;
-  /// Ordered by algorithm, sequence, noise, metric, statistic.
+  /// Ordered by algorithm, sequence, noise, odometry, metric, statistic.
   std::vector<SampleSeries> series;
   std::vector<CellCounts> cells;
 };
@@ -63,8 +72,7 @@ struct Night {
 /// readable results database or no sweep in it.
 Night ReadNight(const std::filesystem::path& result_dir, const std::string& label);
 
-/// The series of `night` with these keys, or null.
-const SampleSeries* FindSeries(const Night& night, const std::string& algorithm, const std::string& sequence,
-                               const std::string& noise, const std::string& metric, const std::string& statistic);
+/// The series of `night` with this key (SameSeries), or null.
+const SampleSeries* FindSeries(const Night& night, const SeriesKey& key);
 
 }  // namespace slamsweep::orchestrator

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/history/series_odometry.h"
 #include "orchestrator/store/junit_xml.h"
 
 namespace slamsweep::orchestrator {
@@ -25,8 +26,13 @@ double Median(std::vector<double> values) {
 // NaN (an empty sample's median) is not JSON; null says "no value".
 json NumberOrNull(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
 
-std::string FindingName(const Finding& f) {
-  return fmt::format("{} / {} / {}: {}.{}", f.algorithm, f.sequence, f.noise, f.metric, f.statistic);
+std::string NotComparableReason(const Finding& f) {
+  if (!IsComparableOdometryMode(f.odometry)) {
+    return fmt::format("odometry mode {}: recorded before the history kept the mode, so its runs may have had "
+                       "either; not compared",
+                       f.odometry);
+  }
+  return fmt::format("no samples to compare (baseline n = {}, current n = {})", f.baseline_n, f.current_n);
 }
 
 std::string DescribeFinding(const Finding& f) {
@@ -84,19 +90,21 @@ Comparison CompareNights(const Night& baseline, const Night& current, const Regr
   comparison.current_label = current.label;
   comparison.options = options;
 
-  using Key = std::tuple<std::string, std::string, std::string, std::string, std::string>;
+  using Key = std::tuple<std::string, std::string, std::string, std::string, std::string, std::string>;
   std::set<Key> keys;
   for (const Night* night : {&baseline, &current}) {
     for (const SampleSeries& s : night->series) {
       std::string statistic = ComparedStatistic(*night, s.metric);
-      if (s.statistic == statistic) keys.insert({s.algorithm, s.sequence, s.noise, s.metric, statistic});
+      if (s.statistic == statistic) keys.insert({s.algorithm, s.sequence, s.noise, s.odometry, s.metric, statistic});
     }
   }
-  for (const auto& [algorithm, sequence, noise, metric, statistic] : keys) {
-    const SampleSeries* before = FindSeries(baseline, algorithm, sequence, noise, metric, statistic);
-    const SampleSeries* after = FindSeries(current, algorithm, sequence, noise, metric, statistic);
-    Finding f{algorithm, sequence, noise, metric, statistic, "", 0, 0, std::nan(""), std::nan(""), {}, 0.0,
-              Verdict::kNotComparable};
+  for (const auto& [algorithm, sequence, noise, odometry, metric, statistic] : keys) {
+    // The odometry mode is part of the key: a night on recorded odometry is never the baseline of one on the
+    // reference, or the other way round.
+    const SeriesKey key{algorithm, sequence, noise, odometry, metric, statistic, ""};
+    const SampleSeries* before = FindSeries(baseline, key);
+    const SampleSeries* after = FindSeries(current, key);
+    Finding f{key, 0, 0, std::nan(""), std::nan(""), {}, 0.0, Verdict::kNotComparable};
     f.unit = after != nullptr ? after->unit : before->unit;
     if (before != nullptr) {
       f.baseline_n = before->values.size();
@@ -106,7 +114,7 @@ Comparison CompareNights(const Night& baseline, const Night& current, const Regr
       f.current_n = after->values.size();
       f.current_median = Median(after->values);
     }
-    if (f.baseline_n > 0 && f.current_n > 0) {
+    if (f.baseline_n > 0 && f.current_n > 0 && IsComparableOdometryMode(f.odometry)) {
       f.test = evaluator::MannWhitneyU(after->values, before->values);
       f.cliffs_delta = evaluator::CliffsDelta(after->values, before->values);
       const bool significant = f.test.p_value < options.alpha && std::abs(f.cliffs_delta) >= options.min_effect;
@@ -128,6 +136,7 @@ json ComparisonToJson(const Comparison& comparison) {
     findings.push_back({{"algorithm", f.algorithm},
                         {"sequence", f.sequence},
                         {"noise", f.noise},
+                        {"odometry", f.odometry},
                         {"metric", f.metric},
                         {"statistic", f.statistic},
                         {"unit", f.unit},
@@ -165,18 +174,17 @@ std::string RenderComparisonJUnit(const Comparison& comparison) {
                      XmlEscape(comparison.baseline_label), XmlEscape(comparison.current_label));
   for (const Finding& f : comparison.findings) {
     xml += fmt::format("    <testcase classname=\"{}\" name=\"{}\"",
-                       XmlEscape(fmt::format("{}.{}.{}", f.algorithm, f.sequence, f.noise)),
+                       XmlEscape(fmt::format("{}.{}.{}.{}", f.algorithm, f.sequence, f.noise, f.odometry)),
                        XmlEscape(fmt::format("{}.{}", f.metric, f.statistic)));
     switch (f.verdict) {
       case Verdict::kRegression:
         xml += fmt::format(">\n      <failure type=\"regression\" message=\"{}\"/>\n    </testcase>\n",
-                           XmlEscape(FindingName(f) + " worse than " + comparison.baseline_label + ": " +
+                           XmlEscape(SeriesName(f) + " worse than " + comparison.baseline_label + ": " +
                                      DescribeFinding(f)));
         break;
       case Verdict::kNotComparable:
         xml += fmt::format(">\n      <skipped message=\"{}\"/>\n    </testcase>\n",
-                           XmlEscape(fmt::format("no samples to compare (baseline n = {}, current n = {})",
-                                                 f.baseline_n, f.current_n)));
+                           XmlEscape(NotComparableReason(f)));
         break;
       default:
         xml += fmt::format(">\n      <system-out>{}</system-out>\n    </testcase>\n",

@@ -28,14 +28,16 @@ enum class Verdict {
   kUnchanged,
   kRegression,
   kImprovement,
-  /// One of the nights has no sample of this series (every run failed, or the cell is new or gone).
+  /// One of the nights has no sample of this series (every run failed, or the cell is new or gone), or the
+  /// series' odometry mode is unknown (recorded before the history kept it).
   kNotComparable,
 };
 
 /// "unchanged", "regression", "improvement", "not_comparable".
 std::string_view VerdictName(Verdict verdict);
 
-/// The comparison of one algorithm x sequence x noise x metric between a baseline night and the current one.
+/// The comparison of one algorithm x sequence x noise x odometry mode x metric between a baseline night and the
+/// current one.
 /// Its statistic is "rmse" for trajectory metrics, "value" for map metrics.
 struct Finding : SeriesKey {
   std::size_t baseline_n = 0;
@@ -54,7 +56,7 @@ struct Comparison {
   std::string baseline_label;
   std::string current_label;
   RegressionOptions options;
-  /// Ordered by algorithm, sequence, noise, metric.
+  /// Ordered by algorithm, sequence, noise, odometry, metric.
   std::vector<Finding> findings;
 
   std::size_t Count(Verdict verdict) const;
@@ -69,15 +71,18 @@ inline constexpr int kRegressionExitCode = 3;
 /// the statistics `night` has; empty when the night has neither.
 std::string ComparedStatistic(const Night& night, const std::string& metric);
 
-/// Compares every algorithm x sequence x noise x metric present in either night (statistic per ComparedStatistic):
-/// a regression when p < alpha, |delta| >= min_effect and the current samples are larger; an improvement when
-/// smaller. Throws InputError naming the field when `options` are out of range.
+/// Compares every algorithm x sequence x noise x odometry mode x metric present in either night (statistic per
+/// ComparedStatistic), only with the other night's series of the same mode: a regression when p < alpha,
+/// |delta| >= min_effect and the current samples are larger; an improvement when smaller. A series whose mode is
+/// unknown or mixed (IsComparableOdometryMode) is not comparable. Throws InputError naming the field when
+/// `options` are out of range.
 Comparison CompareNights(const Night& baseline, const Night& current, const RegressionOptions& options);
 
 /// {"baseline", "current", "alpha", "min_effect", "counts": {...}, "findings": [...]}.
 nlohmann::json ComparisonToJson(const Comparison& comparison);
 
-/// JUnit XML: one testsuite "regressions", one testcase per finding (classname "<algorithm>.<sequence>.<noise>",
+/// JUnit XML: one testsuite "regressions", one testcase per finding (classname
+/// "<algorithm>.<sequence>.<noise>.<odometry>",
 /// name "<metric>.<statistic>"); a regression is a <failure type="regression">, a finding that could not be
 /// compared is <skipped>.
 std::string RenderComparisonJUnit(const Comparison& comparison);

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "orchestrator/history/series_odometry.h"
 #include "report/html/number_format.h"
 #include "report/html/safe_name.h"
 #include "report/plots/algorithm_palette.h"
@@ -39,8 +40,10 @@ Html E(std::string_view text) { return Html::Escape(text); }
 
 std::string Num(double value) { return fmt::format("{:.4g}", value); }
 
+// The odometry mode is in every title: the series of one cell on recorded and on reference odometry are two pages.
 std::string SeriesTitle(const orchestrator::SeriesKey& key) {
-  return fmt::format("{} on {} ({}): {} {}", key.algorithm, key.sequence, key.noise, key.metric, key.statistic);
+  return fmt::format("{} on {} ({}, {} odometry): {} {}", key.algorithm, key.sequence, key.noise, key.odometry,
+                     key.metric, key.statistic);
 }
 
 Html NightName(const std::string& label, const std::string& href, bool current) {
@@ -64,20 +67,22 @@ Html Header(std::initializer_list<std::string_view> names) {
 Html FindingsTable(const std::vector<const Finding*>& findings, const std::string& unit_note) {
   Html rows;
   for (const Finding* f : findings) {
-    rows += Row({E(f->algorithm), E(f->sequence), E(f->noise), E(f->metric + "." + f->statistic),
+    rows += Row({E(f->algorithm), E(f->sequence), E(f->noise), E(f->odometry), E(f->metric + "." + f->statistic),
                  E(Num(f->baseline_median) + " → " + Num(f->current_median) + (f->unit.empty() ? "" : " " + f->unit)),
                  E(fmt::format("{} / {}", f->baseline_n, f->current_n)), E(fmt::format("{:.3g}", f->test.p_value)),
                  E(fmt::format("{:+.2f}", f->cliffs_delta))});
   }
   return T("<table>\n") + Element("caption", "", E(unit_note)) +
-         Header({"algorithm", "sequence", "noise", "metric", "median before → now", "n", "p", "Cliff's delta"}) +
+         Header({"algorithm", "sequence", "noise", "odometry", "metric", "median before → now", "n", "p",
+                 "Cliff's delta"}) +
          Element("tbody", "", rows) + T("</table>\n");
 }
 
 }  // namespace
 
 std::string HistoryPageStem(const orchestrator::SeriesKey& key) {
-  return "history/" + SafeFileName(key.algorithm + "-" + key.sequence + "-" + key.noise + "-" + key.metric);
+  return "history/" + SafeFileName(key.algorithm + "-" + key.sequence + "-" + key.noise + "-" + key.odometry + "-" +
+                                   key.metric);
 }
 
 NightPoint SummarizeNight(const std::vector<double>& values) {
@@ -114,6 +119,13 @@ std::string RenderHistoryPage(const HistorySeriesPage& page) {
             T("</figure>\n");
   } else {
     body += Element("p", "note", E("No plot: " + (page.plot_note.empty() ? "not drawn" : page.plot_note)));
+  }
+  if (!orchestrator::IsComparableOdometryMode(page.key.odometry)) {
+    body += Element("p", "note",
+                    E("Odometry mode " + page.key.odometry +
+                      ": these nights were recorded before the history kept the odometry mode and their result "
+                      "directories cannot say it (or their runs had both modes), so their points may mix runs on "
+                      "the recorded odometry with runs handed the reference. They are shown, never compared."));
   }
   const std::string unit = page.key.unit.empty() ? "" : " (" + page.key.unit + ")";
   Html rows;

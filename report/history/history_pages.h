@@ -29,7 +29,7 @@ struct NightPoint {
   bool current = false;
 };
 
-/// One algorithm x sequence x noise x metric across nights.
+/// One algorithm x sequence x noise x odometry mode x metric across nights.
 struct HistorySeriesPage {
   orchestrator::SeriesKey key;
   /// Relative to the report root: "history/<safe name>.html".
@@ -63,7 +63,8 @@ struct HistorySection {
   std::string comparison_note;
 };
 
-/// "history/<algorithm>-<sequence>-<noise>-<metric>" made safe as a file name (SafeFileName), without extension.
+/// "history/<algorithm>-<sequence>-<noise>-<odometry>-<metric>" made safe as a file name (SafeFileName), without
+/// extension.
 std::string HistoryPageStem(const orchestrator::SeriesKey& key);
 
 /// The summary of one night's samples (mean, min, max, sample standard deviation when n >= 2).

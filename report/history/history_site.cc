@@ -96,8 +96,7 @@ class HistorySite final : public SiteExtension {
       const std::string stem = HistoryPageStem(key);
       page.page = stem + ".html";
       page.plot = stem + ".png";
-      for (const orchestrator::HistoryPoint& point :
-           store.Series(key.algorithm, key.sequence, key.noise, key.metric, key.statistic)) {
+      for (const orchestrator::HistoryPoint& point : store.Series(key)) {
         NightPoint night = SummarizeNight(point.values);
         night.label = point.night.label;
         night.started_at = point.night.started_at;
@@ -107,15 +106,15 @@ class HistorySite final : public SiteExtension {
         page.nights.push_back(std::move(night));
       }
       if (current && !current_recorded) {
-        if (const auto* s = orchestrator::FindSeries(*current, key.algorithm, key.sequence, key.noise, key.metric,
-                                                     key.statistic)) {
+        if (const auto* s = orchestrator::FindSeries(*current, key)) {
           NightPoint night = SummarizeNight(s->values);
           night.label = current->label + " (not recorded)";
           night.started_at = current->started_at;
           night.current = true;
           night.report_href = "../index.html";
           for (const auto& cell : current->cells) {
-            if (cell.algorithm == key.algorithm && cell.sequence == key.sequence && cell.noise == key.noise) {
+            if (cell.algorithm == key.algorithm && cell.sequence == key.sequence && cell.noise == key.noise &&
+                cell.odometry == key.odometry) {
               night.failed_runs = cell.failed_runs;
             }
           }

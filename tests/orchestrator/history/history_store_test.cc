@@ -25,12 +25,12 @@ TEST(ReadNightTest, SamplesPerSeriesAndFailedRuns) {
   ASSERT_EQ(night.cells.size(), 1u);
   EXPECT_EQ(night.cells[0].ok_runs, 4);
   EXPECT_EQ(night.cells[0].failed_runs, 1);
-  const SampleSeries* rmse = FindSeries(night, "icp-slam", "intel", "noisy", "ape_trans", "rmse");
+  const SampleSeries* rmse = FindSeries(night, {"icp-slam", "intel", "noisy", "recorded", "ape_trans", "rmse", ""});
   ASSERT_NE(rmse, nullptr);
   EXPECT_EQ(rmse->values, ape);  // ok runs only, iteration order
   EXPECT_EQ(rmse->unit, "m");
-  ASSERT_NE(FindSeries(night, "icp-slam", "intel", "noisy", "corners", "value"), nullptr);
-  EXPECT_EQ(FindSeries(night, "icp-slam", "intel", "clean", "corners", "value"), nullptr);
+  ASSERT_NE(FindSeries(night, {"icp-slam", "intel", "noisy", "recorded", "corners", "value", ""}), nullptr);
+  EXPECT_EQ(FindSeries(night, {"icp-slam", "intel", "clean", "recorded", "corners", "value", ""}), nullptr);
   EXPECT_EQ(ReadNight(dir / "night", "my-label").label, "my-label");
 }
 
@@ -93,7 +93,7 @@ TEST(HistoryStoreTest, RecordIsIdempotentAndRoundTrips) {
   third.seed = 3;
   testing::WriteSyntheticSweep(dir / "night3", third);
   EXPECT_EQ(PreviousNight(reopened, ReadNight(dir / "night3", ""))->label, "2026-11-21T02:00:00Z");
-  const auto series = reopened.Series("icp-slam", "intel", "noisy", "ape_trans", "rmse");
+  const auto series = reopened.Series({"icp-slam", "intel", "noisy", "recorded", "ape_trans", "rmse", ""});
   ASSERT_EQ(series.size(), 2u);
   EXPECT_EQ(series[0].values.size(), 10u);
   EXPECT_EQ(series[1].night.label, "2026-11-21T02:00:00Z");

@@ -34,17 +34,42 @@ struct SyntheticSweep {
   std::string started_at = "2026-11-20T02:00:00Z";
   /// Iterations (0-based) whose run failed.
   std::vector<int> failed_iterations;
+  /// run.json's group.odometry, as the planner writes it; empty: a run.json from before the odometry mode
+  /// existed (no group.odometry).
+  std::string odometry = "recorded";
+  /// run.json's sequence.ground_truth ("corrected_poses": a corrected log, where the odometry mode applies).
+  std::string ground_truth = "relations";
+  /// run.json's algorithm.parameters (a parameter sweep's setting).
+  nlohmann::json parameters = nlohmann::json::object();
 };
 
+/// "k=v;..." as the planner writes group.parameters (names sorted, numbers as JSON writes them).
+inline std::string SyntheticParametersText(const nlohmann::json& parameters) {
+  std::string text;
+  for (const auto& [name, value] : parameters.items()) {
+    if (!text.empty()) text += ';';
+    text += name + "=" + (value.is_string() ? value.get<std::string>() : value.dump());
+  }
+  return text;
+}
+
 inline nlohmann::json SyntheticSpec(const SyntheticSweep& sweep, const std::string& run_id, int iteration) {
-  return {{"run_id", run_id},
+  nlohmann::json spec = {
+          {"run_id", run_id},
           {"sweep", sweep.name},
-          {"algorithm", {{"name", sweep.algorithm}, {"adapter", "mrpt-icp-slam"}, {"parameters", nlohmann::json::object()}}},
-          {"sequence", {{"name", sweep.sequence}, {"format", "carmen"}, {"ground_truth", "relations"}}},
+          {"algorithm", {{"name", sweep.algorithm}, {"adapter", "mrpt-icp-slam"}, {"parameters", sweep.parameters}}},
+          {"sequence", {{"name", sweep.sequence}, {"format", "carmen"}, {"ground_truth", sweep.ground_truth}}},
           {"noise", {{"name", sweep.noise}, {"odometry", {{"alpha1", sweep.odometry_sigma}}}, {"range", nullptr}}},
           {"iteration", iteration},
           {"seed", sweep.seed * 1000 + static_cast<std::uint32_t>(iteration)},
           {"thresholds", nlohmann::json::array()}};
+  // A run.json from before the mode existed has a group without "odometry".
+  spec["group"] = {{"sequence", sweep.sequence},
+                   {"algorithm", sweep.algorithm},
+                   {"parameters", SyntheticParametersText(sweep.parameters)},
+                   {"noise", sweep.noise}};
+  if (!sweep.odometry.empty()) spec["group"]["odometry"] = sweep.odometry;
+  return spec;
 }
 
 /// Writes the sweep into `dir` (created) and returns the APE rmse samples of its ok runs.
@@ -61,8 +86,8 @@ inline std::vector<double> WriteSyntheticSweep(const std::filesystem::path& dir,
   std::normal_distribution<double> corner_noise(0.0, 2.0);
   std::vector<double> ape;
   for (int i = 0; i < sweep.iterations; ++i) {
-    const std::string run_id = sweep.algorithm + "-" + sweep.sequence + "-" + sweep.noise + "-i" + std::to_string(i) +
-                               "-" + std::to_string(sweep.seed);
+    const std::string run_id = sweep.algorithm + "-" + sweep.sequence + "-" + sweep.noise + "-" + sweep.odometry +
+                               SyntheticParametersText(sweep.parameters) + "-i" + std::to_string(i) + "-" + std::to_string(sweep.seed);
     const nlohmann::json spec = SyntheticSpec(sweep, run_id, i);
     nlohmann::json result = {{"run_id", run_id},
                              {"status", "ok"},

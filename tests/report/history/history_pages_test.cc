@@ -97,9 +97,9 @@ TEST_F(HistoryReportTest, PagesRenderAndLinksResolve) {
   EXPECT_NE(index.find("1 regressions, 0 improvements"), std::string::npos) << index;
   EXPECT_NE(index.find("<caption>Regressions</caption>"), std::string::npos);
 
-  const fs::path ape_page = report / (HistoryPageStem({"icp-slam", "intel", "noisy", "ape_trans", "rmse", "m"}) + ".html");
+  const fs::path ape_page = report / (HistoryPageStem({"icp-slam", "intel", "noisy", "recorded", "ape_trans", "rmse", "m"}) + ".html");
   ASSERT_TRUE(fs::is_regular_file(ape_page)) << ape_page;
-  EXPECT_TRUE(fs::is_regular_file(report / (HistoryPageStem({"icp-slam", "intel", "noisy", "corners", "value", ""}) +
+  EXPECT_TRUE(fs::is_regular_file(report / (HistoryPageStem({"icp-slam", "intel", "noisy", "recorded", "corners", "value", ""}) +
                                             ".html")));
   const std::string page = testing::ReadAll(ape_page);
   // monday's report exists: linked relatively; tuesday's does not: named only; tonight's: this report.
@@ -130,7 +130,7 @@ TEST_F(HistoryReportTest, WithoutComparisonOrEarlierNight) {
   const std::string index = testing::ReadAll(dir_ / "night3/report/index.html");
   EXPECT_EQ(index.find("Compared with night"), std::string::npos);
   const std::string page = testing::ReadAll(
-      dir_ / "night3/report" / (HistoryPageStem({"icp-slam", "intel", "noisy", "ape_trans", "rmse", "m"}) + ".html"));
+      dir_ / "night3/report" / (HistoryPageStem({"icp-slam", "intel", "noisy", "recorded", "ape_trans", "rmse", "m"}) + ".html"));
   EXPECT_NE(page.find("No plot: images were not requested"), std::string::npos);
 
   // A history with nothing before tonight: the comparison is a note, not an error.
@@ -166,7 +166,7 @@ TEST_F(HistoryReportTest, BadHistoryFileIsInputError) {
 
 TEST(HistoryPagesTest, EscapesEverythingAndSummarizes) {
   HistorySeriesPage page;
-  page.key = {"<script>alert(1)</script>", "seq\"&", "n'", "ape_trans", "rmse", "m"};
+  page.key = {"<script>alert(1)</script>", "seq\"&", "n'", "recorded", "ape_trans", "rmse", "m"};
   page.page = HistoryPageStem(page.key) + ".html";
   page.plot = HistoryPageStem(page.key) + ".png";
   NightPoint night = SummarizeNight({1.0, 2.0, 3.0, 6.0});
