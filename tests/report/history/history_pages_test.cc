@@ -164,6 +164,86 @@ TEST_F(HistoryReportTest, BadHistoryFileIsInputError) {
   EXPECT_THROW(MakeHistorySite(options), evaluator::InputError);
 }
 
+// Nights on the recorded odometry and nights handed the reference: a page per mode, titled with it, and the
+// comparison finds the regression within the reference nights only.
+TEST(HistoryOdometryPagesTest, APagePerModeAndNoComparisonAcrossModes) {
+  TempDir dir;
+  orchestrator::testing::SyntheticSweep night;
+  night.iterations = 6;
+  night.odometry = "recorded";
+  orchestrator::testing::WriteSyntheticSweep(dir / "monday", night);
+  night.odometry = "reference";
+  night.odometry_sigma *= 2.0;  // worse than monday, but another mode: never its regression
+  night.seed = 2;
+  night.started_at = "2026-11-21T02:00:00Z";
+  orchestrator::testing::WriteSyntheticSweep(dir / "tuesday", night);
+  night.odometry_sigma *= 2.0;  // tonight, on the reference again: a regression against tuesday
+  night.seed = 3;
+  night.started_at = "2026-11-22T02:00:00Z";
+  orchestrator::testing::WriteSyntheticSweep(dir / "tonight", night);
+  {
+    orchestrator::HistoryStore store = orchestrator::HistoryStore::Open(dir / "history.sqlite");
+    store.Record(orchestrator::ReadNight(dir / "monday", "monday"));
+    store.Record(orchestrator::ReadNight(dir / "tuesday", "tuesday"));
+  }
+  HistorySiteOptions history;
+  history.history_file = dir / "history.sqlite";
+  history.result_dir = dir / "tonight";
+  history.compare_previous = true;
+  history.draw_plots = false;
+  std::unique_ptr<SiteExtension> site = MakeHistorySite(history);
+  ReportOptions options;
+  options.jobs = 1;
+  options.history = site.get();
+  WriteReport(dir / "tonight", dir / "tonight/report", options);
+  const fs::path report = dir / "tonight/report";
+
+  const fs::path recorded_page =
+      report / (HistoryPageStem({"icp-slam", "intel", "noisy", "recorded", "ape_trans", "rmse", "m"}) + ".html");
+  const fs::path reference_page =
+      report / (HistoryPageStem({"icp-slam", "intel", "noisy", "reference", "ape_trans", "rmse", "m"}) + ".html");
+  ASSERT_NE(recorded_page, reference_page);
+  ASSERT_TRUE(fs::is_regular_file(recorded_page)) << recorded_page;
+  ASSERT_TRUE(fs::is_regular_file(reference_page)) << reference_page;
+  const std::string recorded = testing::ReadAll(recorded_page);
+  const std::string reference = testing::ReadAll(reference_page);
+  EXPECT_NE(recorded.find("icp-slam on intel (noisy, recorded odometry): ape_trans rmse"), std::string::npos)
+      << recorded;
+  EXPECT_NE(reference.find("icp-slam on intel (noisy, reference odometry): ape_trans rmse"), std::string::npos);
+  // Each page holds its own mode's nights only.
+  EXPECT_NE(recorded.find(">monday<"), std::string::npos);
+  EXPECT_EQ(recorded.find("tuesday"), std::string::npos);
+  EXPECT_EQ(recorded.find("not recorded"), std::string::npos);
+  EXPECT_EQ(reference.find("monday"), std::string::npos);
+  EXPECT_NE(reference.find("<td>tuesday</td>"), std::string::npos) << reference;
+  EXPECT_NE(reference.find("(not recorded)"), std::string::npos);
+  std::size_t history_pages = 0;
+  for (const auto& entry : fs::directory_iterator(report / "history")) history_pages += entry.path().extension() == ".html";
+  EXPECT_EQ(history_pages, 4u);  // ape_trans and corners, in each mode
+
+  // Compared with tuesday (the previous night): the reference series regressed; monday's recorded series has no
+  // counterpart tonight.
+  const std::string index = testing::ReadAll(report / "index.html");
+  EXPECT_NE(index.find("Compared with night tuesday"), std::string::npos);
+  EXPECT_NE(index.find("1 regressions, 0 improvements"), std::string::npos) << index;
+  EXPECT_NE(index.find("<th>odometry</th>"), std::string::npos);
+  EXPECT_NE(index.find("<td>reference</td>"), std::string::npos);
+  EXPECT_EQ(index.find("<td>recorded</td>"), std::string::npos);
+  std::size_t checked = 0;
+  EXPECT_EQ(UnresolvedLinks(report, &checked), std::vector<std::string>{});
+}
+
+TEST(HistoryPagesTest, UnknownModeIsSaidOnItsPage) {
+  HistorySeriesPage page;
+  page.key = {"icp-slam", "intel", "noisy", "unknown", "ape_trans", "rmse", "m"};
+  page.page = HistoryPageStem(page.key) + ".html";
+  const std::string html = RenderHistoryPage(page);
+  EXPECT_NE(html.find("(noisy, unknown odometry)"), std::string::npos) << html;
+  EXPECT_NE(html.find("Odometry mode unknown: these nights were recorded before the history kept"), std::string::npos);
+  page.key.odometry = "recorded";
+  EXPECT_EQ(RenderHistoryPage(page).find("Odometry mode"), std::string::npos);
+}
+
 TEST(HistoryPagesTest, EscapesEverythingAndSummarizes) {
   HistorySeriesPage page;
   page.key = {"<script>alert(1)</script>", "seq\"&", "n'", "recorded", "ape_trans", "rmse", "m"};
