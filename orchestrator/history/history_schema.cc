@@ -1,6 +1,5 @@
 #include "orchestrator/history/history_schema.h"
 
-#include <map>
 #include <string>
 
 #include <fmt/format.h>
@@ -43,55 +42,35 @@ ALTER TABLE cells RENAME TO cells_v1;
 DROP INDEX IF EXISTS samples_series;
 )sql");
   db.Execute(kSeriesTablesV2);
-  std::map<std::int64_t, std::map<NightCell, std::string>> modes_of_night;
+  // The mode of every cell whose night's result directory still says it; any other row gets "unknown".
+  db.Execute("CREATE TEMP TABLE cell_modes(night_id INTEGER, algorithm TEXT, sequence TEXT, noise TEXT, "
+             "odometry TEXT, PRIMARY KEY(night_id, algorithm, sequence, noise))");
   {
     auto nights = db.Prepare("SELECT id, result_dir, sweep_id FROM nights ORDER BY id");
+    auto insert = db.Prepare("INSERT INTO cell_modes VALUES(?, ?, ?, ?, ?)");
     while (nights.Step()) {
-      modes_of_night[nights.Int64(0)] = OdometryModesOfResultDir(nights.Text(1), nights.Int64(2));
-    }
-  }
-  const auto mode_of = [&](std::int64_t night, const NightCell& cell) {
-    const auto& modes = modes_of_night[night];
-    const auto found = modes.find(cell);
-    return found == modes.end() ? std::string(kOdometryUnknown) : found->second;
-  };
-  {
-    auto select = db.Prepare(
-        "SELECT night_id, algorithm, sequence, noise, metric, statistic, unit, values_json FROM samples_v1 "
-        "ORDER BY rowid");
-    auto insert = db.Prepare(
-        "INSERT INTO samples(night_id, algorithm, sequence, noise, odometry, metric, statistic, unit, values_json) "
-        "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?)");
-    while (select.Step()) {
-      const std::int64_t night = select.Int64(0);
-      insert.Reset();
-      insert.Bind(1, night).Bind(2, select.Text(1)).Bind(3, select.Text(2)).Bind(4, select.Text(3));
-      insert.Bind(5, mode_of(night, {select.Text(1), select.Text(2), select.Text(3)}));
-      insert.Bind(6, select.Text(4)).Bind(7, select.Text(5));
-      if (select.IsNull(6)) {
-        insert.BindNull(8);
-      } else {
-        insert.Bind(8, select.Text(6));
+      for (const auto& [cell, mode] : OdometryModesOfResultDir(nights.Text(1), nights.Int64(2))) {
+        const auto& [algorithm, sequence, noise] = cell;
+        insert.Reset();
+        insert.Bind(1, nights.Int64(0)).Bind(2, algorithm).Bind(3, sequence).Bind(4, noise).Bind(5, mode);
+        insert.Run();
       }
-      insert.Bind(9, select.Text(7));
-      insert.Run();
     }
   }
-  {
-    auto select = db.Prepare(
-        "SELECT night_id, algorithm, sequence, noise, ok_runs, failed_runs FROM cells_v1 ORDER BY rowid");
-    auto insert = db.Prepare(
-        "INSERT INTO cells(night_id, algorithm, sequence, noise, odometry, ok_runs, failed_runs) "
-        "VALUES(?, ?, ?, ?, ?, ?, ?)");
-    while (select.Step()) {
-      const std::int64_t night = select.Int64(0);
-      insert.Reset();
-      insert.Bind(1, night).Bind(2, select.Text(1)).Bind(3, select.Text(2)).Bind(4, select.Text(3));
-      insert.Bind(5, mode_of(night, {select.Text(1), select.Text(2), select.Text(3)}));
-      insert.Bind(6, select.Int64(4)).Bind(7, select.Int64(5));
-      insert.Run();
-    }
-  }
+  const std::string mode_of_row = fmt::format(
+      "COALESCE((SELECT m.odometry FROM cell_modes m WHERE m.night_id = v.night_id AND m.algorithm = v.algorithm "
+      "AND m.sequence = v.sequence AND m.noise = v.noise), '{}')",
+      kOdometryUnknown);
+  db.Execute(fmt::format(
+      "INSERT INTO samples(night_id, algorithm, sequence, noise, odometry, metric, statistic, unit, values_json) "
+      "SELECT night_id, algorithm, sequence, noise, {}, metric, statistic, unit, values_json FROM samples_v1 v "
+      "ORDER BY rowid",
+      mode_of_row));
+  db.Execute(fmt::format(
+      "INSERT INTO cells(night_id, algorithm, sequence, noise, odometry, ok_runs, failed_runs) "
+      "SELECT night_id, algorithm, sequence, noise, {}, ok_runs, failed_runs FROM cells_v1 v ORDER BY rowid",
+      mode_of_row));
+  db.Execute("DROP TABLE cell_modes;");
   db.Execute("DROP TABLE samples_v1; DROP TABLE cells_v1;");
 }
 

@@ -28,8 +28,8 @@ json NumberOrNull(double value) { return std::isfinite(value) ? json(value) : js
 
 std::string NotComparableReason(const Finding& f) {
   if (!IsComparableOdometryMode(f.odometry)) {
-    return fmt::format("odometry mode {}: recorded before the history kept the mode, so its runs may have had "
-                       "either; not compared",
+    return fmt::format("odometry mode {}: the series' runs cannot say which odometry they got, or had both "
+                       "(recorded before the history kept the mode); not compared",
                        f.odometry);
   }
   return fmt::format("no samples to compare (baseline n = {}, current n = {})", f.baseline_n, f.current_n);

@@ -44,6 +44,21 @@ std::vector<std::string> UnresolvedLinks(const fs::path& root, std::size_t* chec
   return broken;
 }
 
+// RESULT_DIR/report with the history pages of `history_file`.
+ReportSummary WriteHistoryReport(const fs::path& result_dir, const fs::path& history_file, bool compare_previous,
+                                 bool draw_plots) {
+  HistorySiteOptions history;
+  history.history_file = history_file;
+  history.result_dir = result_dir;
+  history.compare_previous = compare_previous;
+  history.draw_plots = draw_plots;
+  std::unique_ptr<SiteExtension> site = MakeHistorySite(history);
+  ReportOptions options;
+  options.jobs = 1;
+  options.history = site.get();
+  return WriteReport(result_dir, result_dir / "report", options);
+}
+
 class HistoryReportTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -67,16 +82,7 @@ class HistoryReportTest : public ::testing::Test {
   }
 
   ReportSummary Write(bool compare_previous, bool draw_plots) {
-    HistorySiteOptions history;
-    history.history_file = dir_ / "history.sqlite";
-    history.result_dir = dir_ / "night3";
-    history.compare_previous = compare_previous;
-    history.draw_plots = draw_plots;
-    std::unique_ptr<SiteExtension> site = MakeHistorySite(history);
-    ReportOptions options;
-    options.jobs = 1;
-    options.history = site.get();
-    return WriteReport(dir_ / "night3", dir_ / "night3/report", options);
+    return WriteHistoryReport(dir_ / "night3", dir_ / "history.sqlite", compare_previous, draw_plots);
   }
 
   TempDir dir_;
@@ -186,16 +192,7 @@ TEST(HistoryOdometryPagesTest, APagePerModeAndNoComparisonAcrossModes) {
     store.Record(orchestrator::ReadNight(dir / "monday", "monday"));
     store.Record(orchestrator::ReadNight(dir / "tuesday", "tuesday"));
   }
-  HistorySiteOptions history;
-  history.history_file = dir / "history.sqlite";
-  history.result_dir = dir / "tonight";
-  history.compare_previous = true;
-  history.draw_plots = false;
-  std::unique_ptr<SiteExtension> site = MakeHistorySite(history);
-  ReportOptions options;
-  options.jobs = 1;
-  options.history = site.get();
-  WriteReport(dir / "tonight", dir / "tonight/report", options);
+  WriteHistoryReport(dir / "tonight", dir / "history.sqlite", /*compare_previous=*/true, /*draw_plots=*/false);
   const fs::path report = dir / "tonight/report";
 
   const fs::path recorded_page =
