@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "report/html/html.h"
+#include "report/html/map_figures.h"
 #include "report/html/number_format.h"
 #include "report/html/overview_section.h"
 #include "report/html/site_data.h"
@@ -292,6 +293,7 @@ std::string RenderSequencePage(const SiteData& site, const SequenceModel& sequen
   body += Element("h2", "", E("Metric plots"));
   body += Plots(site, sequence, root);
   body += TrajectoriesSection(site, sequence, root);
+  body += MapsComparedSection(site, sequence, root);
   body += Element("h2", "", E("Map gallery"));
   if (!sequence.has_reference) {
     body += Element("p", "note", E("No reference trajectory: each map is the median run by corner count."));
