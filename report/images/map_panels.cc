@@ -113,7 +113,7 @@ std::optional<WorldWindow> KnownExtent(const OccupancyGrid& grid, const MapPlace
 }
 
 PanelGeometry ChoosePanelGeometry(const WorldWindow& window, int max_side_px, double margin_fraction) {
-  if (max_side_px < 16) throw evaluator::InputError("map panel: expected at least 16 pixels, got " + std::to_string(max_side_px));
+  if (max_side_px < 1) throw evaluator::InputError("map panel: expected at least 1 pixel, got " + std::to_string(max_side_px));
   if (!(window.Width() > 0.0 && window.Height() > 0.0) || !std::isfinite(window.Width() + window.Height())) {
     throw evaluator::InputError("map panel: the maps have no extent to draw");
   }

@@ -33,7 +33,7 @@ std::optional<WorldWindow> KnownExtent(const evaluator::OccupancyGrid& grid, con
 
 /// `window` widened by `margin_fraction` of its longer side on each side, drawn so that its longer side
 /// is `max_side_px` pixels: one metres-per-pixel for every panel of the window. Throws InputError for an
-/// empty window or max_side_px < 16.
+/// empty window or max_side_px < 1.
 PanelGeometry ChoosePanelGeometry(const WorldWindow& window, int max_side_px, double margin_fraction = 0.03);
 
 /// The map as a grey image of the panel (map_saver's greys: free white, occupied black, p as
