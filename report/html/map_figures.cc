@@ -252,10 +252,10 @@ Html MapsComparedSection(const SiteData& site, const SequenceModel& sequence, st
                     Element("span", "wall-key wall-run-only", E("■")) + E(" only in the run · ") +
                         Element("span", "wall-key wall-reference-only", E("■")) + E(" only in the reference · ") +
                         Element("span", "wall-key wall-both", E("■")) +
-                        E(fmt::format(" in both (an occupied cell with one of the other map within {} cells, the match "
-                                      "radius of the scores below) · white: free · grey: unknown. Scores as the run's "
-                                      "result.json gives them.",
-                                      radius)));
+                        E(fmt::format(" in both (an occupied cell within {} {} of an occupied cell of the other map, the "
+                                      "match radius of the scores below) · white: free · grey: unknown. Scores as the "
+                                      "run's result.json gives them.",
+                                      radius, radius == 1 ? "cell" : "cells")));
     body += Element("div", "gallery maps", differences);
   }
   return body;

@@ -22,6 +22,11 @@ if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/plots_images/CMakeLists.txt)
   add_subdirectory(plots_images)
 endif()
 
+# "Maps compared" on the sequence pages: planning with the fake image maker, and real panels.
+if(TARGET report)
+  slamsweep_add_test(report_maps_test SOURCES maps_compared_test.cc LIBS report report_test_fixture opencv_core opencv_imgcodecs)
+endif()
+
 # Headless Chromium against a local server sending Jenkins' CSP (skipped without chromium).
 if(TARGET report)
   slamsweep_add_test(report_browser_test SOURCES browser_test.cc LIBS report report_test_fixture)
