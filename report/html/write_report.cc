@@ -446,7 +446,11 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
     for (PlannedMapComparison& planned : map_comparisons) {
       Artwork* artwork = options.artwork;
       auto drawn = std::make_shared<MapComparisonDrawn>();
-      jobs.push_back({[artwork, &planned, drawn] { *drawn = artwork->MapComparison(planned.job); },
+      jobs.push_back({[artwork, &planned, drawn] {
+                        // Its own total in $SLAMSWEEP_PHASE_TIMES (inside "images"): what the maps cost the report.
+                        const orchestrator::PhaseTimer timer("maps_compared");
+                        *drawn = artwork->MapComparison(planned.job);
+                      },
                       [&site, &planned, drawn](const std::string& error) {
                         MapsCompared& maps = site.maps_compared[planned.table_key];
                         maps.attempted = error.empty();

@@ -52,14 +52,25 @@ MapComparisonDrawn WriteMapComparison(const MapComparisonJob& job) {
   }
   std::vector<std::optional<OccupancyGrid>> maps(job.panels.size());
   for (std::size_t i = 0; i < job.panels.size(); ++i) {
+    const MapPanelRequest& request = job.panels[i];
     try {
-      maps[i] = evaluator::ReadMap(job.panels[i].map_file);
+      OccupancyGrid map = evaluator::ReadMap(request.map_file);
+      // Cropped to its known cells on the lattice its scores used (the reference's cells), when it has one.
+      double later_resolution_m = map.resolution_m;
+      if (!request.reference_map_file.empty() && !request.difference_png.empty()) {
+        try {
+          later_resolution_m = reference_of(request.reference_map_file)->resolution_m / request.placement.scale;
+        } catch (const std::exception& error) {
+          drawn.panels[i].difference_note = error.what();
+        }
+      }
+      maps[i] = KnownPart(std::move(map), later_resolution_m);
     } catch (const std::exception& error) {
       drawn.panels[i].note = error.what();
       continue;
     }
     if (table_reference) continue;  // the reference's window
-    if (const auto extent = KnownExtent(*maps[i], job.panels[i].placement)) window = window ? window->Union(*extent) : *extent;
+    if (const auto extent = KnownExtent(*maps[i], request.placement)) window = window ? window->Union(*extent) : *extent;
   }
   if (!window) {
     throw evaluator::InputError("maps compared: no map has a known cell" +
@@ -85,7 +96,7 @@ MapComparisonDrawn WriteMapComparison(const MapComparisonJob& job) {
       out.note = error.what();
       continue;
     }
-    if (request.reference_map_file.empty() || request.difference_png.empty()) continue;
+    if (request.reference_map_file.empty() || request.difference_png.empty() || !out.difference_note.empty()) continue;
     try {
       const WallDifference difference =
           CompareWalls(*maps[i], request.placement, *reference_of(request.reference_map_file), request.match);

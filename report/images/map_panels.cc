@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/map/canvas_crop.h"
 #include "evaluator/map_compare/map_resample.h"
 
 namespace slamsweep::report {
@@ -22,17 +23,19 @@ struct Point {
   double x, y;
 };
 
-Point Place(const MapPlacement& p, double x, double y) {
-  const double c = std::cos(p.yaw_rad), s = std::sin(p.yaw_rad);
-  return {p.x_m + p.scale * (c * x - s * y), p.y_m + p.scale * (s * x + c * y)};
-}
-
-/// The inverse of Place: from the common frame back to the map's own world coordinates.
-Point Unplace(const MapPlacement& p, double x, double y) {
-  const double c = std::cos(p.yaw_rad), s = std::sin(p.yaw_rad);
-  const double dx = (x - p.x_m) / p.scale, dy = (y - p.y_m) / p.scale;
-  return {c * dx + s * dy, -s * dx + c * dy};
-}
+/// A placement with its rotation's cosine and sine computed once (panels apply it to every pixel).
+struct Rigid {
+  explicit Rigid(const MapPlacement& placement)
+      : p(placement), c(std::cos(placement.yaw_rad)), s(std::sin(placement.yaw_rad)) {}
+  Point Place(double x, double y) const { return {p.x_m + p.scale * (c * x - s * y), p.y_m + p.scale * (s * x + c * y)}; }
+  /// The inverse of Place: from the common frame back to the map's own world coordinates.
+  Point Unplace(double x, double y) const {
+    const double dx = (x - p.x_m) / p.scale, dy = (y - p.y_m) / p.scale;
+    return {c * dx + s * dy, -s * dx + c * dy};
+  }
+  MapPlacement p;
+  double c, s;
+};
 
 /// The cell of `grid` holding the map-world point, as (row from the top, column); false outside the grid.
 bool CellOf(const OccupancyGrid& grid, const Point& world, int& row, int& col) {
@@ -105,11 +108,33 @@ std::optional<WorldWindow> KnownExtent(const OccupancyGrid& grid, const MapPlace
   const double y0 = grid.origin.y_m + (grid.height - 1 - bottom) * grid.resolution_m;
   const double y1 = grid.origin.y_m + (grid.height - top) * grid.resolution_m;
   WorldWindow box{1e300, 1e300, -1e300, -1e300};
+  const Rigid rigid(placement);
   for (const auto& [x, y] : {Point{x0, y0}, Point{x1, y0}, Point{x0, y1}, Point{x1, y1}}) {
-    const Point p = Place(placement, x, y);
+    const Point p = rigid.Place(x, y);
     box = box.Union({p.x, p.y, p.x, p.y});
   }
   return box;
+}
+
+OccupancyGrid KnownPart(OccupancyGrid grid, double later_resolution_m) {
+  evaluator::CellWindow window = evaluator::KnownCellsWindow(grid, 1);
+  const double ratio = later_resolution_m / grid.resolution_m;
+  const long coarser = std::lround(ratio);
+  const bool whole_multiple = coarser >= 1 && std::abs(ratio - coarser) < 1e-6 * ratio;
+  const bool whole_fraction = ratio < 1.0 && std::abs(1.0 / ratio - std::lround(1.0 / ratio)) < 1e-6 / ratio;
+  if (!whole_multiple && !whole_fraction) return grid;
+  if (whole_multiple && coarser > 1) {
+    // Left column and bottom edge down to multiples of the coarser cell, counted from the lower-left corner.
+    const int k = static_cast<int>(coarser);
+    const int left = window.col - window.col % k;
+    const int below = grid.height - (window.row + window.height);
+    const int new_below = below - below % k;
+    window.width += window.col - left;
+    window.col = left;
+    window.height += below - new_below;
+  }
+  if (window == evaluator::CellWindow{0, 0, grid.width, grid.height}) return grid;
+  return evaluator::CropGrid(std::move(grid), window);
 }
 
 PanelGeometry ChoosePanelGeometry(const WorldWindow& window, int max_side_px, double margin_fraction) {
@@ -137,13 +162,14 @@ cv::Mat RenderMapPanel(const OccupancyGrid& grid, const MapPlacement& placement,
                                    : OccupancyGrid();
   const OccupancyGrid& shown = merged.cells.empty() ? grid : merged;
   cv::Mat grey(panel.height_px, panel.width_px, CV_8U, cv::Scalar(kUnknownGrey));
+  const Rigid rigid(placement);
   for (int r = 0; r < panel.height_px; ++r) {
     auto* out = grey.ptr<unsigned char>(r);
     const double y = panel.window.max_y - (r + 0.5) * panel.metres_per_pixel;
     for (int c = 0; c < panel.width_px; ++c) {
       const double x = panel.window.min_x + (c + 0.5) * panel.metres_per_pixel;
       int row = 0, col = 0;
-      if (CellOf(shown, Unplace(placement, x, y), row, col)) out[c] = Grey(shown.at(row, col));
+      if (CellOf(shown, rigid.Unplace(x, y), row, col)) out[c] = Grey(shown.at(row, col));
     }
   }
   return grey;
@@ -175,11 +201,12 @@ WallDifference CompareWalls(const OccupancyGrid& run, const MapPlacement& placem
   for (int r = 0; r < reference.height; ++r) {
     for (int c = 0; c < reference.width; ++c) reference_class.at<unsigned char>(row0 + r, col0 + c) = Classify(reference.at(r, c), options);
   }
+  const Rigid rigid(placement);
   for (int r = 0; r < height; ++r) {
     const double y = out.origin_y_m + (height - 1 - r + 0.5) * res;
     for (int c = 0; c < width; ++c) {
       int row = 0, col = 0;
-      if (CellOf(resampled, Unplace(placement, out.origin_x_m + (c + 0.5) * res, y), row, col)) {
+      if (CellOf(resampled, rigid.Unplace(out.origin_x_m + (c + 0.5) * res, y), row, col)) {
         run_class.at<unsigned char>(r, c) = Classify(resampled.at(row, col), options);
       }
     }

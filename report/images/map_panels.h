@@ -31,6 +31,13 @@ struct PanelGeometry {
 /// when the grid has no known cell.
 std::optional<WorldWindow> KnownExtent(const evaluator::OccupancyGrid& grid, const MapPlacement& placement);
 
+/// The known part of `grid` with one cell to spare (evaluator KnownCellsWindow and CropGrid), so that the
+/// steps below touch the map's cells, not its unknown padding. When the map will be brought to
+/// `later_resolution_m` cells (a whole multiple or fraction of its own), the crop's lower-left corner stays on
+/// that coarser lattice of the uncropped map, so the cells merged are the ones the map scores merged; for any
+/// other ratio the grid is returned whole. A grid without a known cell is returned whole.
+evaluator::OccupancyGrid KnownPart(evaluator::OccupancyGrid grid, double later_resolution_m);
+
 /// `window` widened by `margin_fraction` of its longer side on each side, drawn so that its longer side
 /// is `max_side_px` pixels: one metres-per-pixel for every panel of the window. Throws InputError for an
 /// empty window or max_side_px < 1.

@@ -135,6 +135,33 @@ TEST(CompareWallsTest, TheRunIsPlacedAndBroughtToTheReferenceCellSize) {
   EXPECT_EQ(difference.counts.reference_only, 2u);
 }
 
+TEST(KnownPartTest, CropsToTheKnownCellsOnTheLatticeTheScoresUsed) {
+  // 1 x 1 m of 0.05 m cells, known only in columns 6..9 (x in [0.3, 0.5)), a wall in column 7 (x in
+  // [0.35, 0.4)). With one cell to spare the crop would start at column 5; kept on the 0.1 m lattice of the
+  // uncropped map it starts at column 4, so the wall still merges into the 0.1 m cell x in [0.3, 0.4).
+  OccupancyGrid run(20, 20, 0.05);
+  for (int r = 0; r < 20; ++r) {
+    for (int c = 6; c <= 9; ++c) run.at(r, c) = c == 7 ? 1.0f : 0.0f;
+  }
+  const OccupancyGrid cropped = KnownPart(run, 0.1);
+  EXPECT_EQ(cropped.width, 7);  // columns 4..10: one to spare on the right
+  EXPECT_EQ(cropped.height, 20);
+  EXPECT_NEAR(cropped.origin.x_m, 0.2, 1e-12);
+  OccupancyGrid reference(10, 10, 0.1, {}, 0.0f);
+  for (int r = 0; r < 10; ++r) reference.at(r, 3) = 1.0f;
+  const WallDifference whole = CompareWalls(run, {}, reference, {.match_radius_cells = 0});
+  const WallDifference part = CompareWalls(cropped, {}, reference, {.match_radius_cells = 0});
+  EXPECT_EQ(whole.counts.both, 10u);
+  EXPECT_EQ(part.counts.both, 10u);
+  EXPECT_EQ(part.counts.run_only, 0u);
+  EXPECT_EQ(part.counts.reference_only, 0u);
+  // Cells of 0.03 m cannot be kept on 0.1 m cells: the grid stays whole.
+  OccupancyGrid odd(20, 20, 0.03);
+  odd.at(5, 5) = 1.0f;
+  EXPECT_EQ(KnownPart(odd, 0.1).width, 20);
+  EXPECT_EQ(KnownPart(odd, 0.03).width, 3);
+}
+
 TEST(RenderDifferencePanelTest, ThreeColoursAndLoneWallsKeptOnCoarsePixels) {
   const WallDifference difference = CompareWalls(WallRow(4, 8), {}, WallRow(2, 6), {.match_radius_cells = 0});
   const cv::Mat one = RenderDifferencePanel(difference, ChoosePanelGeometry({0.0, 0.0, 10.0, 10.0}, 10, 0.0));
