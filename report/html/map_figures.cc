@@ -189,7 +189,8 @@ Html MapsComparedSection(const SiteData& site, const SequenceModel& sequence, st
   const auto found = site.maps_compared.find(sequence.key);
   if (found == site.maps_compared.end()) return {};
   const MapsCompared& maps = found->second;
-  Html body = Element("h2", "", E("Maps compared"));
+  // An anchor, so that a link (or a screenshot) can go straight to the maps.
+  Html body = Html::Trusted("<h2 id=\"maps-compared\">") + E("Maps compared") + Html::Trusted("</h2>");
   if (!maps.attempted) return body + Element("p", "note", E("Maps not drawn (" + maps.error + ")."));
   const MapComparisonDrawn& drawn = maps.drawn;
   const std::string by = sequence.rows.empty() || sequence.rows[maps.panels.front().row].median_by.empty()

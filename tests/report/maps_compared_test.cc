@@ -64,8 +64,8 @@ TEST_F(MapsComparedTest, EachRowsMedianRunPlacedByItsMapScoresTransform) {
 TEST_F(MapsComparedTest, ThePageShowsPanelsDifferencesLegendAndScores) {
   Write(&fake_);
   const std::string page = ReadAll(dir_ / "report/sequences/intel-clean.html");
-  ASSERT_NE(page.find("<h2>Maps compared</h2>"), std::string::npos);
-  SCOPED_TRACE(page.substr(page.find("<h2>Maps compared</h2>"), 4000));
+  ASSERT_NE(page.find("<h2 id=\"maps-compared\">Maps compared</h2>"), std::string::npos);
+  SCOPED_TRACE(page.substr(page.find("<h2 id=\"maps-compared\">Maps compared</h2>"), 4000));
   for (const char* image : {"intel-clean/map-reference.png", "intel-clean/map-0.png", "intel-clean/map-1.png",
                             "intel-clean/map-difference-0.png", "intel-clean/map-difference-1.png"}) {
     EXPECT_NE(page.find(image), std::string::npos) << image;
@@ -85,7 +85,7 @@ TEST_F(MapsComparedTest, ThePageShowsPanelsDifferencesLegendAndScores) {
   }
   EXPECT_EQ(page.find("style="), std::string::npos);
   const std::string other = ReadAll(dir_ / "report/sequences/mit-no-ref-clean.html");
-  EXPECT_NE(other.find("<h2>Maps compared</h2>"), std::string::npos);
+  EXPECT_NE(other.find("<h2 id=\"maps-compared\">Maps compared</h2>"), std::string::npos);
   EXPECT_NE(other.find("as recorded"), std::string::npos);
   EXPECT_EQ(other.find("Walls against the reference map"), std::string::npos);
 }
