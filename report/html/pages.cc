@@ -394,6 +394,13 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
     images += Element("figure", "map", Image(dir + "thumbnail.png", "final map", "thumbnail") +
                                            Element("figcaption", "", E("Final map")));
   }
+  if (artifacts.path_error_made) {
+    images += Element("figure", "figure-small",
+                      Image(root + artifacts.path_error, "translation error along the path", "figure-small") +
+                          Element("figcaption", "", E("Translation error along the path: the trajectory aligned onto "
+                                                      "the reference as its ATE was computed, coloured by the error "
+                                                      "at every associated pose")));
+  }
   if (!images.str().empty()) body += Element("div", "gallery", images);
   for (const std::string& note : artifacts.notes) body += Element("p", "note", E(note));
   if (artifacts.figures_left_out > 0) {

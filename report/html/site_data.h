@@ -27,6 +27,10 @@ struct RunArtifacts {
   /// The run's own figures (overlay, thumbnail, GIF) were not drawn because the sweep has this many runs
   /// (0: nothing left out).
   std::size_t figures_left_out = 0;
+  /// The run's trajectory coloured by its translation error along the path (path relative to the report root;
+  /// empty without one): a median run shows its table's figure, other runs get their own.
+  std::string path_error;
+  bool path_error_made = false;
   std::vector<std::string> notes;      ///< why an image or file is missing
   std::vector<std::string> downloads;  ///< file names copied into RunDir, in display order
   std::string log_tail;                ///< last lines of log.txt (raw text)

@@ -416,6 +416,8 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   std::vector<FigureJob> figures;
   PlanViewPages(out_dir, site, figures);
   PlanTrajectoryFigures(out_dir, site, figures);
+  PlanRunPathErrorFigures(out_dir, site, figures,
+                          options.run_figures_for_every_run || model.runs.size() <= options.figures_for_every_run_up_to);
   std::vector<PlannedMapComparison> map_comparisons = PlanMapComparisons(out_dir, site);
   std::string figures_error;
   std::vector<ImageJob> jobs;
@@ -468,6 +470,10 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   const auto [figures_made, figures_missing] = MarkViewFigures(out_dir, options.artwork != nullptr, figures_error, site);
   summary.images += figures_made;
   summary.images_missing += figures_missing;
+  const auto [run_figures_made, run_figures_missing] =
+      MarkRunPathErrorFigures(out_dir, options.artwork != nullptr, figures_error, site);
+  summary.images += run_figures_made;
+  summary.images_missing += run_figures_missing;
   for (const auto& [table, maps] : site.maps_compared) {
     summary.images += maps.drawn.reference_made;
     for (const MapPanelDrawn& panel : maps.drawn.panels) {
