@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
@@ -196,12 +197,16 @@ Html MapsComparedSection(const SiteData& site, const SequenceModel& sequence, st
   const std::string by = sequence.rows.empty() || sequence.rows[maps.panels.front().row].median_by.empty()
                              ? "the first successful run"
                              : "median run by " + sequence.rows[maps.panels.front().row].median_by;
+  const bool any_placed = std::any_of(maps.panels.begin(), maps.panels.end(),
+                                      [](const MapPanelShown& panel) { return panel.placement.starts_with("placed"); });
   body += Element(
       "p", "note",
       E(fmt::format("Each row's {} (the run of the gallery and the trajectories), every panel the same {} x {} m "
-                    "window at {} m per pixel, in the reference's frame where the run was aligned to it{}.",
+                    "window at {} m per pixel, {}{}.",
                     by, FormatNumber(drawn.window_width_m), FormatNumber(drawn.window_height_m),
                     FormatNumber(drawn.metres_per_pixel),
+                    any_placed ? "in the reference's frame where the run was aligned to it"
+                               : "each map in its own frame (no reference to align it to)",
                     maps.reference_path.empty() ? "" : " (the window is the reference map's known area)")));
   const auto run_caption = [&](const MapPanelShown& panel) {
     const AlgorithmRow& row = sequence.rows[panel.row];
@@ -219,7 +224,9 @@ Html MapsComparedSection(const SiteData& site, const SequenceModel& sequence, st
   Html differences;
   for (std::size_t i = 0; i < maps.panels.size(); ++i) {
     const MapPanelShown& panel = maps.panels[i];
-    const MapPanelDrawn& made = i < drawn.panels.size() ? drawn.panels[i] : panel.drawn;
+    MapPanelDrawn not_drawn;
+    not_drawn.note = "the image maker returned no panel";
+    const MapPanelDrawn& made = i < drawn.panels.size() ? drawn.panels[i] : not_drawn;
     if (!made.made) {
       panels += Element("p", "note", run_caption(panel) + E(": map not drawn (" + made.note + ")"));
       continue;

@@ -71,7 +71,6 @@ struct MapPanelShown {
   std::string placement;        ///< how the map was placed in the common frame, for the caption
   MapScores scores;
   int match_radius_cells = 0;
-  MapPanelDrawn drawn;
 };
 
 /// A table's "Maps compared": the median runs' maps at one scale and, where a reference map exists, their
