@@ -261,8 +261,10 @@ Html MapsComparedSection(const SiteData& site, const SequenceModel& sequence, st
                         Element("span", "wall-key wall-reference-only", E("■")) + E(" only in the reference · ") +
                         Element("span", "wall-key wall-both", E("■")) +
                         E(fmt::format(" in both (an occupied cell within {} {} of an occupied cell of the other map, the "
-                                      "match radius of the scores below) · white: free · grey: unknown. Scores as the "
-                                      "run's result.json gives them.",
+                                      "match radius of the scores below) · white: free · grey: unknown. The cell counts "
+                                      "are recomputed from the run's map file (8-bit grey levels); the scores are the "
+                                      "run's result.json, computed on the program's map before it was written, so a "
+                                      "cell near a threshold can count differently.",
                                       radius, radius == 1 ? "cell" : "cells")));
     body += Element("div", "gallery maps", differences);
   }
@@ -270,8 +272,8 @@ Html MapsComparedSection(const SiteData& site, const SequenceModel& sequence, st
 }
 
 std::string_view MapsComparedStyleSheet() {
-  return R"(img.map-panel { width: 380px; max-width: 100%; height: auto; }
-figure.map-panel { max-width: 390px; }
+  return R"(img.map-panel { width: 360px; max-width: 100%; height: auto; }
+figure.map-panel { max-width: 370px; }
 ul.map-scores { margin: 0.2em 0; padding-left: 1.2em; font-size: 0.9em; }
 p.map-counts { margin: 0.2em 0; font-size: 0.9em; }
 .wall-key { font-size: 1.2em; }
