@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "report/images/map_comparison_types.h"
 #include "report/plots/figure_types.h"
 #include "report/plots/scatter_plot.h"
 
@@ -62,6 +63,9 @@ class Artwork {
   /// The default draws none (the pages then say the figures are missing), so an image maker written before
   /// these pages still builds.
   virtual void Figures(const std::vector<FigureJob>& figures);
+  /// Draws one table's "Maps compared" panels and difference images (report/images/map_comparison.h), one
+  /// call per table. The default draws none (the page then says the maps are missing).
+  virtual MapComparisonDrawn MapComparison(const MapComparisonJob& job);
   /// An animated GIF of the stage maps, in order.
   virtual void StagesGif(const std::vector<std::filesystem::path>& stage_pngs, const std::filesystem::path& gif,
                          const GifSettings& settings) = 0;

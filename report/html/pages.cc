@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "report/html/html.h"
+#include "report/html/map_figures.h"
 #include "report/html/number_format.h"
 #include "report/html/overview_section.h"
 #include "report/html/site_data.h"
@@ -292,6 +293,7 @@ std::string RenderSequencePage(const SiteData& site, const SequenceModel& sequen
   body += Element("h2", "", E("Metric plots"));
   body += Plots(site, sequence, root);
   body += TrajectoriesSection(site, sequence, root);
+  body += MapsComparedSection(site, sequence, root);
   body += Element("h2", "", E("Map gallery"));
   if (!sequence.has_reference) {
     body += Element("p", "note", E("No reference trajectory: each map is the median run by corner count."));
@@ -391,6 +393,13 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
   } else if (artifacts.thumbnail) {
     images += Element("figure", "map", Image(dir + "thumbnail.png", "final map", "thumbnail") +
                                            Element("figcaption", "", E("Final map")));
+  }
+  if (artifacts.path_error_made) {
+    images += Element("figure", "figure-small",
+                      Image(root + artifacts.path_error, "translation error along the path", "figure-small") +
+                          Element("figcaption", "", E("Translation error along the path: the trajectory aligned onto "
+                                                      "the reference as its ATE was computed, coloured by the error "
+                                                      "at every associated pose")));
   }
   if (!images.str().empty()) body += Element("div", "gallery", images);
   for (const std::string& note : artifacts.notes) body += Element("p", "note", E(note));

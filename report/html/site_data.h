@@ -9,6 +9,7 @@
 
 #include "report/html/html.h"
 #include "report/html/report_layout.h"
+#include "report/images/map_comparison_types.h"
 #include "report/model/parameter_model.h"
 #include "report/model/segment_model.h"
 #include "report/model/significance.h"
@@ -26,6 +27,10 @@ struct RunArtifacts {
   /// The run's own figures (overlay, thumbnail, GIF) were not drawn because the sweep has this many runs
   /// (0: nothing left out).
   std::size_t figures_left_out = 0;
+  /// The run's trajectory coloured by its translation error along the path (path relative to the report root;
+  /// empty without one): a median run shows its table's figure, other runs get their own.
+  std::string path_error;
+  bool path_error_made = false;
   std::vector<std::string> notes;      ///< why an image or file is missing
   std::vector<std::string> downloads;  ///< file names copied into RunDir, in display order
   std::string log_tail;                ///< last lines of log.txt (raw text)
@@ -52,6 +57,33 @@ struct TableViews {
   std::map<std::string, PlotArtifact> figures;
 };
 
+/// A run's map-vs-reference scores from result.json (metric_details.map_compare), absent when not scored.
+struct MapScores {
+  std::optional<double> f1, accuracy, completeness, chamfer_m, iou_occupied, iou_free;
+};
+
+/// One row's panel of a table's "Maps compared" (report/html/map_figures.h).
+struct MapPanelShown {
+  std::size_t row = 0;  ///< in SequenceModel::rows
+  std::size_t run = 0;  ///< in SweepModel::runs: the row's median run
+  std::string path;     ///< the map panel, relative to the report root
+  std::string difference_path;  ///< the difference image; empty without a reference map
+  std::string placement;        ///< how the map was placed in the common frame, for the caption
+  MapScores scores;
+  int match_radius_cells = 0;
+};
+
+/// A table's "Maps compared": the median runs' maps at one scale and, where a reference map exists, their
+/// differences from it.
+struct MapsCompared {
+  std::string reference_path;    ///< the reference map's panel; empty without a reference map
+  std::string reference_source;  ///< result.json reference_map.source ("rendered", "file", ...)
+  std::vector<MapPanelShown> panels;
+  MapComparisonDrawn drawn;
+  bool attempted = false;  ///< the drawing ran (else `error` says why not)
+  std::string error;
+};
+
 /// Everything the page renderers read. Pages are pure functions of it.
 struct SiteData {
   const SweepModel* model = nullptr;
@@ -72,6 +104,7 @@ struct SiteData {
   /// One colour and marker per algorithm in every plot and table of the report.
   const AlgorithmPalette* palette = nullptr;
   std::map<std::string, TableViews> views;  ///< by table key (SequenceModel::key)
+  std::map<std::string, MapsCompared> maps_compared;  ///< by table key, tables with at least one map
 };
 
 /// The pages. `root` is the relative path back to the report root ("" or "../").

@@ -1,5 +1,6 @@
 #include "report/html/standard_artwork.h"
 
+#include "report/images/map_comparison.h"
 #include "report/images/stages_gif.h"
 #include "report/images/thumbnail.h"
 #include "report/images/trajectory_overlay.h"
@@ -33,6 +34,8 @@ class StandardArtwork final : public Artwork {
   void ScatterPlots(const std::vector<ScatterPlotJob>& plots) override { WriteScatterPlots(plots); }
 
   void Figures(const std::vector<FigureJob>& figures) override { WriteViewFigures(figures); }
+
+  MapComparisonDrawn MapComparison(const MapComparisonJob& job) override { return WriteMapComparison(job); }
 
   void StagesGif(const std::vector<std::filesystem::path>& stage_pngs, const std::filesystem::path& gif,
                  const GifSettings& settings) override {

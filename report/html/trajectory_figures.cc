@@ -63,6 +63,25 @@ PathSeries SeriesOf(const evaluator::Trajectory& trajectory, std::string label, 
   return series;
 }
 
+// The run coloured by its translation error at every associated pose, over the associated reference poses.
+PathFigure ErrorFigure(const AlignedRun& aligned, const std::string& row_label, const std::string& run_id,
+                       SeriesStyle style) {
+  PathFigure error;
+  error.title = row_label + " (" + run_id + "): translation error along the path";
+  error.colour_label = "translation error (m)";
+  PathSeries reference = SeriesOf(aligned.paired_reference, "reference", {});
+  reference.reference = true;
+  error.series.push_back(std::move(reference));
+  PathSeries path = SeriesOf(aligned.paired_estimate, row_label, style);
+  const std::size_t stride = Stride(aligned.paired_estimate.size());
+  for (std::size_t i = 0; i < aligned.paired_estimate.size(); i += stride) {
+    path.colour_values.push_back(
+        (aligned.paired_estimate.poses()[i].position - aligned.paired_reference.poses()[i].position).head<2>().norm());
+  }
+  error.series.push_back(std::move(path));
+  return error;
+}
+
 }  // namespace
 
 OverlaySettings OverlaySettingsOf(const RunRecord& run) {
@@ -108,19 +127,7 @@ void PlanTrajectoryFigures(const fs::path& out_dir, SiteData& site, std::vector<
       const SeriesStyle style = RowStyle(site, sequence, r);
       together.series.push_back(SeriesOf(aligned->estimate, row.algorithm, style));
 
-      PathFigure error;
-      error.title = row.algorithm + " (" + run.run_id + "): translation error along the path";
-      error.colour_label = "translation error (m)";
-      PathSeries reference = SeriesOf(aligned->paired_reference, "reference", {});
-      reference.reference = true;
-      error.series.push_back(std::move(reference));
-      PathSeries path = SeriesOf(aligned->paired_estimate, row.algorithm, style);
-      const std::size_t stride = Stride(aligned->paired_estimate.size());
-      for (std::size_t i = 0; i < aligned->paired_estimate.size(); i += stride) {
-        path.colour_values.push_back(
-            (aligned->paired_estimate.poses()[i].position - aligned->paired_reference.poses()[i].position).head<2>().norm());
-      }
-      error.series.push_back(std::move(path));
+      PathFigure error = ErrorFigure(*aligned, row.algorithm, run.run_id, style);
       errors.emplace_back(r, std::move(error));
     }
     if (!have_reference) continue;
@@ -136,6 +143,61 @@ void PlanTrajectoryFigures(const fs::path& out_dir, SiteData& site, std::vector<
       AddFigure(views, figures, out_dir, PathErrorFigureId(row), folder + fmt::format("path-error-{}.png", row), std::move(figure));
     }
   }
+}
+
+void PlanRunPathErrorFigures(const fs::path& out_dir, SiteData& site, std::vector<FigureJob>& figures, bool every_run) {
+  const SweepModel& model = *site.model;
+  for (const SequenceModel& sequence : model.sequences) {
+    if (!sequence.has_reference) continue;
+    const auto views = site.views.find(sequence.key);
+    for (std::size_t r = 0; r < sequence.rows.size(); ++r) {
+      const AlgorithmRow& row = sequence.rows[r];
+      for (const std::size_t index : row.runs) {
+        RunArtifacts& artifacts = site.runs[index];
+        if (row.median_run == index) {
+          if (views == site.views.end()) continue;
+          const auto figure = views->second.figures.find(PathErrorFigureId(r));
+          if (figure != views->second.figures.end()) artifacts.path_error = figure->second.path;
+          continue;
+        }
+        if (!every_run) continue;
+        const RunRecord& run = model.runs[index];
+        std::optional<AlignedRun> aligned;
+        try {
+          aligned = Align(run);
+        } catch (const evaluator::InputError& error) {
+          artifacts.notes.push_back(std::string("Translation error along the path not made: ") + error.what());
+          continue;
+        }
+        if (!aligned || aligned->paired_estimate.empty()) continue;
+        artifacts.path_error = site.layout->RunDir(index) + "path-error.png";
+        figures.push_back({ErrorFigure(*aligned, row.algorithm, run.run_id, RowStyle(site, sequence, r)),
+                           out_dir / artifacts.path_error});
+      }
+    }
+  }
+}
+
+std::pair<std::size_t, std::size_t> MarkRunPathErrorFigures(const fs::path& out_dir, bool drawing,
+                                                            const std::string& error, SiteData& site) {
+  std::size_t made = 0, missing = 0;
+  for (std::size_t i = 0; i < site.runs.size(); ++i) {
+    RunArtifacts& artifacts = site.runs[i];
+    if (artifacts.path_error.empty()) continue;
+    std::error_code error_code;
+    artifacts.path_error_made = fs::is_regular_file(out_dir / artifacts.path_error, error_code);
+    // A median run's figure is its table's, counted with the table's figures.
+    const bool own = artifacts.path_error.starts_with(site.layout->RunDir(i));
+    if (!own) continue;
+    if (artifacts.path_error_made) {
+      ++made;
+    } else if (drawing) {
+      ++missing;
+      artifacts.notes.push_back("Translation error along the path not made: " +
+                                (error.empty() ? std::string("the figure file is missing") : error));
+    }
+  }
+  return {made, missing};
 }
 
 Html TrajectoriesSection(const SiteData& site, const SequenceModel& sequence, std::string_view root) {

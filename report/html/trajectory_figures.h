@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "report/html/artwork.h"
@@ -25,6 +26,19 @@ std::string PathErrorFigureId(std::size_t row);
 /// algorithm palette, and per row one figure of that run coloured by its translation error along the path.
 /// Figures go to TableViews::figures (drawn by Artwork::Figures with the other view figures).
 void PlanTrajectoryFigures(const std::filesystem::path& out_dir, SiteData& site, std::vector<FigureJob>& figures);
+
+/// Plans, for every successful run with a reference trajectory, its trajectory coloured by its translation error
+/// along the path (site.runs[i].path_error): a row's median run reuses its table's figure (planned by
+/// PlanTrajectoryFigures, which must run first); other runs get RunDir/path-error.png, appended to `figures` to
+/// be drawn in the same batch. With `every_run` false (a sweep beyond the report's every-run figure limit) only
+/// the median runs get one.
+void PlanRunPathErrorFigures(const std::filesystem::path& out_dir, SiteData& site, std::vector<FigureJob>& figures,
+                             bool every_run);
+
+/// After drawing: marks the runs' path-error figures whose PNG exists, notes why the others are missing
+/// (`error` from the figure batch), and returns how many were drawn for runs alone and how many are missing.
+std::pair<std::size_t, std::size_t> MarkRunPathErrorFigures(const std::filesystem::path& out_dir, bool drawing,
+                                                            const std::string& error, SiteData& site);
 
 /// The sequence page's "Trajectories" section: the figures planned above (with why one is missing).
 Html TrajectoriesSection(const SiteData& site, const SequenceModel& sequence, std::string_view root);

@@ -5,6 +5,7 @@
 #include <exception>
 #include <fstream>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -13,6 +14,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "orchestrator/phase_times/phase_times.h"
+#include "report/html/map_figures.h"
 #include "report/html/metric_spec_page.h"
 #include "report/html/report_layout.h"
 #include "report/html/site_data.h"
@@ -414,6 +416,9 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   std::vector<FigureJob> figures;
   PlanViewPages(out_dir, site, figures);
   PlanTrajectoryFigures(out_dir, site, figures);
+  PlanRunPathErrorFigures(out_dir, site, figures,
+                          options.run_figures_for_every_run || model.runs.size() <= options.figures_for_every_run_up_to);
+  std::vector<PlannedMapComparison> map_comparisons = PlanMapComparisons(out_dir, site);
   std::string figures_error;
   std::vector<ImageJob> jobs;
   if (options.artwork != nullptr) {
@@ -439,6 +444,22 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
       jobs.push_back({[artwork, &figures] { artwork->Figures(figures); },
                       [&figures_error](const std::string& error) { figures_error = error; }});
     }
+    // One job per table: its panels share one window and scale, so they are drawn together.
+    for (PlannedMapComparison& planned : map_comparisons) {
+      Artwork* artwork = options.artwork;
+      auto drawn = std::make_shared<MapComparisonDrawn>();
+      jobs.push_back({[artwork, &planned, drawn] {
+                        // Its own total in $SLAMSWEEP_PHASE_TIMES (inside "images"): what the maps cost the report.
+                        const orchestrator::PhaseTimer timer("maps_compared");
+                        *drawn = artwork->MapComparison(planned.job);
+                      },
+                      [&site, &planned, drawn](const std::string& error) {
+                        MapsCompared& maps = site.maps_compared[planned.table_key];
+                        maps.attempted = error.empty();
+                        maps.error = error;
+                        if (error.empty()) maps.drawn = *drawn;
+                      }});
+    }
     PlanRunImages(model, layout, out_dir, options, site, jobs);
   }
   phase.emplace("images");
@@ -449,12 +470,24 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   const auto [figures_made, figures_missing] = MarkViewFigures(out_dir, options.artwork != nullptr, figures_error, site);
   summary.images += figures_made;
   summary.images_missing += figures_missing;
+  const auto [run_figures_made, run_figures_missing] =
+      MarkRunPathErrorFigures(out_dir, options.artwork != nullptr, figures_error, site);
+  summary.images += run_figures_made;
+  summary.images_missing += run_figures_missing;
+  for (const auto& [table, maps] : site.maps_compared) {
+    summary.images += maps.drawn.reference_made;
+    for (const MapPanelDrawn& panel : maps.drawn.panels) {
+      summary.images += static_cast<std::size_t>(panel.made) + panel.difference_made;
+      summary.images_missing += static_cast<std::size_t>(!panel.made) + !panel.difference_note.empty();
+    }
+    if (!maps.attempted && options.artwork != nullptr) summary.images_missing += maps.panels.size();
+  }
 
   // The sweep's own tables, as the orchestrator wrote them: one computation of every aggregate.
   site.has_summary_json = CopyResultFile(result_dir, out_dir, "summary.json");
   site.has_summary_csv = CopyResultFile(result_dir, out_dir, "summary.csv");
   site.has_runs_csv = CopyResultFile(result_dir, out_dir, "runs.csv");
-  WriteTextFile(out_dir / "style.css", std::string(StyleSheet()) + ViewStyleSheet());
+  WriteTextFile(out_dir / "style.css", std::string(StyleSheet()) + ViewStyleSheet() + std::string(MapsComparedStyleSheet()));
   WritePaperFiles(model, layout, out_dir, site);
   if (options.history != nullptr) site.history_section = options.history->Write(out_dir, summary);
   validity.has_csv = CopyResultFile(result_dir, out_dir, "validity.csv");

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <set>
 
 #include <cartographer/common/time.h>
 #include <cartographer/mapping/map_builder.h>
@@ -76,10 +77,13 @@ class Cartographer : public Algorithm {
     // The local SLAM result of each scan, in the trajectory's local frame (written as the scans go,
     // so a stopped run keeps them; replaced by the optimised poses at the end).
     std::map<std::size_t, carto::transform::Rigid3d> local_poses;
+    // The yaw-rate gyro below is fed only where the options ask for IMU data (Cartographer refuses it otherwise).
+    const bool use_imu = options_.trajectory_builder.trajectory_builder_2d_options().use_imu_data();
+    std::set<SensorId> sensors = {SensorId{SensorId::SensorType::RANGE, kScanSensor},
+                                  SensorId{SensorId::SensorType::ODOMETRY, kOdometrySensor}};
+    if (use_imu) sensors.insert(SensorId{SensorId::SensorType::IMU, kImuSensor});
     const int trajectory_id = map_builder->AddTrajectoryBuilder(
-        {SensorId{SensorId::SensorType::RANGE, kScanSensor}, SensorId{SensorId::SensorType::ODOMETRY, kOdometrySensor},
-         SensorId{SensorId::SensorType::IMU, kImuSensor}},
-        options_.trajectory_builder,
+        sensors, options_.trajectory_builder,
         [&](int, carto::common::Time time, carto::transform::Rigid3d local_pose, carto::sensor::RangeData,
             std::unique_ptr<const carto::mapping::TrajectoryBuilderInterface::InsertionResult>) {
           const auto found = scan_by_ticks.find(carto::common::ToUniversal(time));
@@ -97,8 +101,10 @@ class Cartographer : public Algorithm {
       const double previous = i > 0 ? robot.scans[i - 1].stamp_s : stamp - 1.0;
       const double turn = i > 0 ? std::remainder(robot.odometry.poses()[i].Yaw() - robot.odometry.poses()[i - 1].Yaw(), 2 * M_PI) : 0.0;
       const double interval = std::max(stamp - previous, 1e-3);
-      builder->AddSensorData(kImuSensor, carto::sensor::ImuData{ToTime(previous + 1e-4), Eigen::Vector3d(0, 0, 9.81),
-                                                                Eigen::Vector3d(0, 0, turn / interval)});
+      if (use_imu) {
+        builder->AddSensorData(kImuSensor, carto::sensor::ImuData{ToTime(previous + 1e-4), Eigen::Vector3d(0, 0, 9.81),
+                                                                  Eigen::Vector3d(0, 0, turn / interval)});
+      }
       builder->AddSensorData(kOdometrySensor, carto::sensor::OdometryData{ToTime(stamp), Rigid(robot.odometry.poses()[i])});
       builder->AddSensorData(kScanSensor, ToPointCloud(robot.scans[i]));
       if (const auto found = local_poses.find(i); found != local_poses.end()) {

@@ -1,6 +1,7 @@
 // The report in a real browser: headless Chromium loads pages from a local server that sends
 // Jenkins' default Content-Security-Policy. No CSP violation may be logged and every <img> of a
-// page must have been fetched with status 200. The index's screenshot is kept as an artifact.
+// page must have been fetched with status 200. Screenshots of the pages are kept as artefacts in
+// SLAMSWEEP_ARTIFACT_DIR (build/artefacts/report-screenshots/), named in the test output.
 #include <gtest/gtest.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -14,6 +15,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -48,6 +50,9 @@ class BrowserTest : public ::testing::Test {
       if (slamsweep::testing::RunningInCi()) FAIL() << why;
       GTEST_SKIP() << why;
     }
+    std::error_code error;
+    fs::create_directories(SLAMSWEEP_ARTIFACT_DIR, error);
+    ASSERT_FALSE(error) << SLAMSWEEP_ARTIFACT_DIR << ": " << error.message();
     testing::WriteFixtureSweep(dir_ / "sweep", Runs());
     artwork_ = MakeStandardArtwork();
     ReportOptions options;
@@ -99,6 +104,7 @@ TEST_F(BrowserTest, PagesLoadUnderJenkinsCsp) {
   CheckPage("index.html", screenshot);
   EXPECT_TRUE(fs::exists(screenshot));
   std::cout << "screenshot of the index: " << screenshot.string() << "\n";
+  std::cout << "screenshots of the report are kept in " << SLAMSWEEP_ARTIFACT_DIR << "\n";
   RecordProperty("screenshot", screenshot.string());
   EXPECT_FALSE(testing::ImageSources(dir_ / "report/index.html").empty());
   CheckPage("sequences/intel-clean.html");
@@ -148,6 +154,41 @@ TEST_F(ViewsBrowserTest, SegmentAndParameterPagesLoadUnderJenkinsCsp) {
     std::cout << "screenshot of " << page << ": " << screenshot.string() << "\n";
     RecordProperty(std::string("screenshot ") + page, screenshot.string());
   }
+  EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
+}
+
+// The sequence page's "Maps compared" (report/html/map_figures.h), drawn by the real image maker: the browser
+// must find and fetch every map panel and difference image; the page's screenshot is kept as an artefact.
+class MapsBrowserTest : public BrowserTest {
+ protected:
+  std::vector<testing::FixtureRun> Runs() const override { return testing::MapsFixtureRuns(); }
+};
+
+TEST_F(MapsBrowserTest, MapPanelsLoadUnderJenkinsCsp) {
+  const fs::path screenshot = fs::path(SLAMSWEEP_ARTIFACT_DIR) / "report_maps_screenshot.png";
+  fs::remove(screenshot);
+  // A window as tall as the page: the maps come after the tables, plots and trajectories.
+  CheckPage("sequences/intel-clean.html", screenshot, 5200);
+  EXPECT_TRUE(fs::exists(screenshot));
+  std::cout << "screenshot of the maps compared (sequences/intel-clean.html): " << screenshot.string() << "\n";
+  RecordProperty("screenshot maps", screenshot.string());
+  // The DOM as the browser built it: the reference, one map per row and one difference per row.
+  const ChromiumPage dom = LoadInHeadlessChromium(base_url_ + "sequences/intel-clean.html", dir_.path(), "maps-dom", {});
+  ASSERT_TRUE(dom.finished);
+  std::size_t panels = 0;
+  for (std::size_t at = dom.dom.find("class=\"map-panel\" src="); at != std::string::npos;
+       at = dom.dom.find("class=\"map-panel\" src=", at + 1)) {
+    ++panels;
+  }
+  EXPECT_EQ(panels, 5u) << "the page shows no (or not every) map panel";
+  const std::vector<std::string> images = testing::ImageSources(dir_ / "report/sequences/intel-clean.html");
+  std::size_t drawn = 0;
+  for (const std::string& src : images) {
+    if (src.find("/map-") == std::string::npos) continue;
+    ++drawn;
+    EXPECT_GT(fs::file_size(dir_ / "report/sequences" / src), 200u) << src;  // a real PNG, not a placeholder
+  }
+  EXPECT_EQ(drawn, 5u);
   EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
 }
 

@@ -46,6 +46,31 @@ void FakeArtwork::Figures(const std::vector<FigureJob>& jobs) {
   for (const FigureJob& job : jobs) WritePng(job.png, 90);
 }
 
+MapComparisonDrawn FakeArtwork::MapComparison(const MapComparisonJob& job) {
+  {
+    std::lock_guard lock(map_mutex);
+    map_comparisons.push_back(job);
+  }
+  MapComparisonDrawn drawn;
+  drawn.metres_per_pixel = 0.05;
+  drawn.window_width_m = 4.0;
+  drawn.window_height_m = 3.0;
+  if (!job.reference_png.empty()) {
+    WritePng(job.reference_png, 150);
+    drawn.reference_made = true;
+  }
+  for (const MapPanelRequest& request : job.panels) {
+    MapPanelDrawn& panel = drawn.panels.emplace_back();
+    WritePng(request.png, 170);
+    panel.made = true;
+    if (request.difference_png.empty()) continue;
+    WritePng(request.difference_png, 180);
+    panel.difference_made = true;
+    panel.counts = WallCounts{1, 2, 3};
+  }
+  return drawn;
+}
+
 void FakeArtwork::StagesGif(const std::vector<fs::path>& stage_pngs, const fs::path& gif, const GifSettings&) {
   if (stage_pngs.empty()) throw std::runtime_error("no stages");
   {

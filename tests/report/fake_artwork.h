@@ -17,6 +17,8 @@ class FakeArtwork : public Artwork {
   void Plots(const std::vector<PlotRequest>& plots) override;
   void ScatterPlots(const std::vector<ScatterPlotJob>& plots) override;
   void Figures(const std::vector<FigureJob>& figures) override;
+  /// Tiny PNGs for every panel, difference and the reference; counts 1, 2, 3; 0.05 m per pixel.
+  MapComparisonDrawn MapComparison(const MapComparisonJob& job) override;
   void StagesGif(const std::vector<std::filesystem::path>& stage_pngs, const std::filesystem::path& gif,
                  const GifSettings& settings) override;
   void Thumbnail(const std::filesystem::path& map_image, const std::filesystem::path& png, int max_side_px) override;
@@ -28,6 +30,8 @@ class FakeArtwork : public Artwork {
   std::vector<PlotRequest> plots;  ///< written by Plots (called once, from one thread)
   std::vector<ScatterPlotJob> scatter_plots;  ///< written by ScatterPlots (called once, from one thread)
   std::vector<FigureJob> figures;  ///< written by Figures (called once, from one thread)
+  std::mutex map_mutex;
+  std::vector<MapComparisonJob> map_comparisons;  ///< every job given to MapComparison
   std::atomic<int> gifs{0};
   std::mutex stages_mutex;
   std::vector<std::filesystem::path> stages;  ///< every stage image given to StagesGif

@@ -102,6 +102,28 @@ std::string ParametersTextOf(const json& parameters) {
   return text;
 }
 
+/// metric_details.map_compare as orchestrator/worker/run_metrics.cc writes it, against
+/// reference_maps/<sequence>.yaml (written here once: the room with no wall moved).
+json MapCompareDetails(const FixtureRun& run, const fs::path& dir) {
+  const fs::path reference = dir / "reference_maps" / (Readable(run.sequence) + ".yaml");
+  if (!fs::exists(reference)) {
+    fs::create_directories(reference.parent_path());
+    ev::WriteMapServer(RoomGrid(0), reference);
+  }
+  const double chamfer = *run.map_chamfer_m;
+  return {{"chamfer_m", chamfer},
+          {"f1", 1.0 / (1.0 + chamfer)},
+          {"accuracy", 1.0 / (1.0 + 0.5 * chamfer)},
+          {"completeness", 1.0 / (1.0 + 2.0 * chamfer)},
+          {"iou_occupied", 0.5},
+          {"iou_free", 0.9},
+          {"placement", "ATE alignment"},
+          {"transform", {{"x_m", 2.0 * chamfer}, {"y_m", 0.0}, {"yaw_rad", 0.0}}},
+          {"specification", {{"occupied_threshold", 0.65}, {"free_threshold", 0.196}, {"match_radius_cells", 1},
+                             {"alignment", "given"}}},
+          {"reference_map", {{"file", fs::absolute(reference).string()}, {"source", "rendered"}, {"resolution_m", 0.1}}}};
+}
+
 }  // namespace
 
 FixtureRun MakeRun(std::string algorithm, std::string sequence, int iteration) {
@@ -162,7 +184,7 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
     json details = json::object();
     json outputs = {{"log", "log.txt"}};
     if (run.ok) {
-      ev::WriteMapServer(RoomGrid(run.iteration % 3), run_dir / "map.yaml");
+      ev::WriteMapServer(RoomGrid(run.room_shift >= 0 ? run.room_shift : run.iteration % 3), run_dir / "map.yaml");
       ev::WriteTum(Circle(1.0, 0.02 * (run.iteration + 1)), run_dir / "trajectory.tum");
       outputs["map"] = "map.yaml";
       outputs["trajectory"] = "trajectory.tum";
@@ -200,6 +222,7 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
       if (run.map_chamfer_m) {
         metrics.push_back(Metric("map_chamfer", "value", *run.map_chamfer_m, "m"));
         metrics.push_back(Metric("map_f1", "value", 1.0 / (1.0 + *run.map_chamfer_m), "ratio"));
+        if (run.map_compare_details) details["map_compare"] = MapCompareDetails(run, dir);
       }
     }
     result["outputs"] = outputs;
@@ -304,6 +327,29 @@ std::vector<FixtureRun> ViewsFixtureRuns() {
   no_reference.corners = 30.0;
   no_reference.occupied_ratio = 0.07;
   runs.push_back(no_reference);
+  return runs;
+}
+
+std::vector<FixtureRun> MapsFixtureRuns() {
+  std::vector<FixtureRun> runs;
+  for (int i = 0; i < 3; ++i) {
+    FixtureRun close = MakeRun("gmapping", "intel", i);
+    close.ape_rmse_m = 0.05 + 0.01 * i;
+    close.map_chamfer_m = 0.02 + 0.01 * i;
+    close.room_shift = i % 2;
+    close.map_compare_details = true;
+    runs.push_back(close);
+    FixtureRun off = MakeRun("hector", "intel", i);
+    off.ape_rmse_m = 0.3 + 0.1 * i;
+    off.map_chamfer_m = 0.1;  // placed 0.2 m off by the transform
+    off.room_shift = 6;
+    off.map_compare_details = true;
+    runs.push_back(off);
+    FixtureRun no_reference = MakeRun("gmapping", "mit-no-ref", i);
+    no_reference.with_reference = false;
+    no_reference.corners = 30.0 - i;
+    runs.push_back(no_reference);
+  }
   return runs;
 }
 

@@ -28,6 +28,11 @@ struct FixtureRun {
   std::optional<double> corners;
   std::optional<double> enclosed_areas;
   std::optional<double> map_chamfer_m;  ///< map versus reference (written with the other map_compare scores)
+  /// With map_chamfer_m: result.json's map_compare details as the worker writes them (scores, the placement
+  /// transform, the thresholds and the reference map file, reference_maps/<sequence>.yaml: the room unshifted).
+  bool map_compare_details = false;
+  /// The map's moved wall (RoomGrid); -1: iteration % 3.
+  int room_shift = -1;
   std::string log = "scan 1\nscan 2\n";
   int stages = 3;
   /// Folder name; empty -> made from algorithm, sequence, parameters and iteration like the orchestrator does.
@@ -69,5 +74,10 @@ std::vector<FixtureRun> ValidityFixtureRuns();
 /// over ICP.maxIterations (20, 40, 80; 40 is best), "rbpf-slam" over particles x resample (2 x 2), 2-3
 /// iterations each, and a hostile algorithm name.
 std::vector<FixtureRun> ViewsFixtureRuns();
+
+/// A sweep for "Maps compared": on "intel" (reference trajectory and reference map) gmapping (3 iterations,
+/// its map close to the reference) and hector (3 iterations, a wall 6 cells off, placed 0.2 m off), each with
+/// map_compare details; on "mit-no-ref" gmapping without any reference.
+std::vector<FixtureRun> MapsFixtureRuns();
 
 }  // namespace slamsweep::report::testing

@@ -22,12 +22,18 @@ if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/plots_images/CMakeLists.txt)
   add_subdirectory(plots_images)
 endif()
 
-# Headless Chromium against a local server sending Jenkins' CSP (skipped without chromium).
+# "Maps compared" on the sequence pages: planning with the fake image maker, and real panels.
+if(TARGET report)
+  slamsweep_add_test(report_maps_test SOURCES maps_compared_test.cc LIBS report report_test_fixture opencv_core opencv_imgcodecs)
+endif()
+
+# Headless Chromium against a local server sending Jenkins' CSP (skipped without chromium, failing under CI).
+# Its screenshots are kept in build/artefacts/report-screenshots/ for a person (or CI) to look at.
 if(TARGET report)
   slamsweep_add_test(report_browser_test SOURCES browser_test.cc LIBS report report_test_fixture)
   target_compile_definitions(report_browser_test PRIVATE
     SLAMSWEEP_CSP_SERVER="${CMAKE_CURRENT_SOURCE_DIR}/csp_server.py"
-    SLAMSWEEP_ARTIFACT_DIR="${CMAKE_CURRENT_BINARY_DIR}")
+    SLAMSWEEP_ARTIFACT_DIR="${CMAKE_BINARY_DIR}/artefacts/report-screenshots")
 endif()
 
 # `slamsweep report` through its registration function (cli/report_command.cc compiled here,

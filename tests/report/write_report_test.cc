@@ -424,7 +424,9 @@ TEST_F(WriteReportTest, DrawsEveryRowsTrajectoryOverTheReferenceAndEachPathsErro
   for (const FigureJob& job : artwork_.figures) {
     if (const auto* path = std::get_if<PathFigure>(&job.figure)) paths.push_back(path);
   }
-  ASSERT_EQ(paths.size(), 1u + 3u);
+  // The figure of every row, one per median run, then one per other successful run on intel (gmapping's
+  // iterations 0 and 2, the hostile name's iteration 1: its iteration 2 failed).
+  ASSERT_EQ(paths.size(), 1u + 3u + 3u);
   const PathFigure& together = *paths[0];
   ASSERT_EQ(together.series.size(), 1u + 3u);
   EXPECT_TRUE(together.series[0].reference);
@@ -446,6 +448,38 @@ TEST_F(WriteReportTest, DrawsEveryRowsTrajectoryOverTheReferenceAndEachPathsErro
   EXPECT_NE(page.find("intel-clean/path-error-0.png"), std::string::npos);
   EXPECT_EQ(ReadAll(dir_ / "report" / "sequences" / "mit-no-ref-clean.html").find("<h2>Trajectories</h2>"),
             std::string::npos);
+}
+
+TEST_F(WriteReportTest, EveryRunPageShowsItsErrorAlongThePath) {
+  Write();
+  const fs::path report = dir_ / "report";
+  // A run that is not its row's median run has its own figure, drawn in the figure batch.
+  const std::string other = ReadAll(report / "runs/gmapping-intel-clean-i0-0000abcd.html");
+  EXPECT_NE(other.find("src=\"../runs/gmapping-intel-clean-i0-0000abcd/path-error.png\""), std::string::npos);
+  EXPECT_TRUE(fs::is_regular_file(report / "runs/gmapping-intel-clean-i0-0000abcd/path-error.png"));
+  std::size_t own = 0;
+  for (const FigureJob& job : artwork_.figures) {
+    if (job.png.filename() == "path-error.png") {
+      ++own;
+      EXPECT_NE(FigureTitle(job.figure).find("-i"), std::string::npos) << "the title names the run";
+    }
+  }
+  EXPECT_EQ(own, 3u);
+  // The median run (iteration 1) shows its table's figure, not a second drawing of it.
+  const std::string median = ReadAll(report / "runs/gmapping-intel-clean-i1-0000abcd.html");
+  EXPECT_NE(median.find("src=\"../sequences/intel-clean/path-error-"), std::string::npos);
+  EXPECT_FALSE(fs::exists(report / "runs/gmapping-intel-clean-i1-0000abcd/path-error.png"));
+  // Without a reference there is no error to colour by.
+  EXPECT_EQ(ReadAll(report / "runs/gmapping-mit-no-ref-clean-i0-0000abcd.html").find("path-error"), std::string::npos);
+  EXPECT_TRUE(testing::BrokenLinks(report).empty());
+}
+
+TEST_F(WriteReportTest, BeyondTheEveryRunLimitOnlyMedianRunsGetTheErrorAlongThePath) {
+  options_.figures_for_every_run_up_to = 2;
+  Write();
+  for (const FigureJob& job : artwork_.figures) EXPECT_NE(job.png.filename(), "path-error.png") << job.png;
+  EXPECT_EQ(ReadAll(dir_ / "report/runs/gmapping-intel-clean-i0-0000abcd.html").find("path-error"), std::string::npos);
+  EXPECT_NE(ReadAll(dir_ / "report/runs/gmapping-intel-clean-i1-0000abcd.html").find("path-error"), std::string::npos);
 }
 
 TEST_F(WriteReportTest, TheIndexOpensWithTheRankedOverviewAndItsVerdict) {

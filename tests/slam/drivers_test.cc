@@ -174,5 +174,23 @@ TEST(GmappingSeedTest, AnotherSeedDrawsOtherParticles) {
   EXPECT_NE(ReadText(dir / "1" / "trajectory.tum"), ReadText(dir / "2" / "trajectory.tum"));
 }
 
+TEST(CartographerImuTest, WithoutImuDataTheYawRateGyroIsNotFedAndTheRunStillWorks) {
+  const std::vector<std::string> built = Built();
+  if (std::find(built.begin(), built.end(), "cartographer") == built.end()) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("cartographer not built: scripts/install-slam.sh cartographer && scripts/build.sh");
+  SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
+  testing::TempDir dir;
+  const fs::path input = NoisyIntelInput(dir.path());
+  const std::string driver = std::string(SLAMSWEEP_SLAM_DRIVER_DIR) + "/slamsweep-slam-cartographer";
+  for (const char* imu : {"true", "false"}) {
+    const ProgramRun run = RunProgram({driver, "--input", input.string(), "--output-dir", (dir / imu).string(),
+                                       "--seed", "1", "--stages", "0",
+                                       std::string("trajectory_builder.trajectory_builder_2d.use_imu_data=") + imu},
+                                      dir / "out.txt", 300);
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+  }
+  // Cartographer refuses IMU data it was told not to expect; and the gyro changes the motion prior.
+  EXPECT_NE(ReadText(dir / "true" / "trajectory.tum"), ReadText(dir / "false" / "trajectory.tum"));
+}
+
 }  // namespace
 }  // namespace slamsweep
