@@ -39,7 +39,7 @@ struct RunOptions {
 };
 
 /// The invocation as recorded with the sweep, to reproduce it.
-std::string CommandLine(const RunOptions& options) {
+std::string ReproducingCommandLine(const RunOptions& options) {
   std::string line = "slamsweep run " + options.config;
   if (options.jobs > 0) line += fmt::format(" --jobs {}", options.jobs);
   if (!options.selection.shard.empty()) line += " --shard " + options.selection.shard;
@@ -133,7 +133,7 @@ void RegisterRunCommand(CLI::App& app, const Streams& streams, int& exit_code) {
   command->add_option("--executor", options->executor, "where runs execute: local worker processes or one Slurm job array")
       ->check(CLI::IsMember({"local", "slurm"}));
   command->add_option("--slurm-partition", options->slurm_partition, "Slurm partition (default: the cluster's default)");
-  command->callback([options, &streams, &exit_code] { exit_code = Run(*options, streams, CommandLine(*options)); });
+  command->callback([options, &streams, &exit_code] { exit_code = Run(*options, streams, ReproducingCommandLine(*options)); });
 }
 
 }  // namespace slamsweep::cli

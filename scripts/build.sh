@@ -6,7 +6,15 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build_dir=${SLAMSWEEP_BUILD_DIR:-$root/build}
-cmake -S "$root" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSLAMSWEEP_WERROR=ON "$@" >/dev/null
+# A compiler cache beside the roster's builds, outside the clone: a fresh clone (CI's) or another
+# worktree compiles only what changed. Paths are taken relative to the clone, so its location does not matter.
+launcher=()
+if [[ -z "${CMAKE_CXX_COMPILER_LAUNCHER:-}" ]] && command -v ccache >/dev/null; then
+  export CCACHE_DIR=${CCACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/slamsweep/ccache}
+  export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$root}
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+cmake -S "$root" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSLAMSWEEP_WERROR=ON "${launcher[@]}" "$@" >/dev/null
 targets=()
 [[ -n "${SLAMSWEEP_BUILD_TARGETS:-}" ]] && read -r -a targets <<< "$SLAMSWEEP_BUILD_TARGETS"
 if ((${#targets[@]} > 0)); then

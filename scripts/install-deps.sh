@@ -46,11 +46,12 @@ packages=(
   "${run_programs[@]}"
   # headless Chromium checks the report in tests; python3-* write the test bags
   chromium python3-rosbag python3-sensor-msgs python3-nav-msgs python3-tf2-msgs
-  # tests and benchmarks (hyperfine: bench/cli, whole-process times); python3-scipy is the
+  # tests and benchmarks (ccache: scripts/build.sh's compiler cache, so the test command's build of a fresh
+  # clone compiles only what changed; hyperfine: bench/cli, whole-process times); python3-scipy is the
   # independent reference for the Spearman rank correlation of the metric validity study and the
   # rank tests; python3-statsmodels for the Holm correction (tests/evaluator/statistics); python3-pil reads
   # the stage animations back (tests/evaluator/formats/map)
-  libgtest-dev libgmock-dev libbenchmark-dev shellcheck hyperfine python3-scipy python3-statsmodels python3-pil
+  libgtest-dev libgmock-dev libbenchmark-dev shellcheck ccache hyperfine python3-scipy python3-statsmodels python3-pil
   # the service tests: /metrics parsed by the Prometheus project's own parser; wrk drives bench/service/load_test.sh
   python3-prometheus-client wrk
   # the Slurm executor's test: a real one-node cluster on localhost (jobs/slurm/local-cluster.sh)

@@ -3,6 +3,8 @@
 #include <fast_float/fast_float.h>
 #include <zlib.h>
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <memory>
@@ -165,5 +167,12 @@ void TextRecord::RequireFields(std::size_t count, std::string_view layout) const
 }
 
 void TextRecord::Fail(std::string_view message) const { throw InputError(Located(file_, line_number_, message)); }
+
+std::string AsciiLowercase(std::string_view text) {
+  std::string lower(text);
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return lower;
+}
 
 }  // namespace slamsweep::evaluator

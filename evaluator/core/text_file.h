@@ -70,6 +70,9 @@ void ForEachRecord(const std::filesystem::path& file, std::string_view content, 
 template <typename Visitor>
 void ForEachDataLine(std::string_view content, Visitor&& visitor, std::string_view comment_prefix = "#");
 
+/// `text` with A-Z turned to a-z (names and extensions in files; no locale).
+std::string AsciiLowercase(std::string_view text);
+
 std::vector<std::string_view> SplitFields(std::string_view line, std::string_view separators);
 
 /// The quick path of readers of number columns: one pass over `content` that calls

@@ -85,4 +85,10 @@ void JsonFields::Finish() const {
   }
 }
 
+void RequireNoiseField(const std::string& prefix, bool ok, const char* field, double value, const char* expected) {
+  if (!ok) {
+    throw InputError(prefix + field + " = " + std::to_string(value) + ", expected " + expected);
+  }
+}
+
 }  // namespace slamsweep::evaluator

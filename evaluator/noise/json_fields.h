@@ -13,6 +13,9 @@ namespace slamsweep::evaluator {
 /// InputError naming its full path ("odometry_noise.alpha1: expected a number, got \"x\""), a
 /// missing field keeps its default, and Finish() rejects any field nobody asked for, so a
 /// typo in a sweep file stops the sweep instead of silently running with defaults.
+/// Throws InputError "<prefix><field> = <value>, expected <expected>" unless `ok`.
+void RequireNoiseField(const std::string& prefix, bool ok, const char* field, double value, const char* expected);
+
 class JsonFields {
  public:
   /// `path` names the object in messages ("odometry_noise"); throws unless `object` is an object.

@@ -10,13 +10,7 @@
 namespace slamsweep::evaluator {
 namespace {
 
-constexpr const char* kModelName = "odometry_motion_model";
-
-void Require(const std::string& prefix, bool ok, const char* field, double value, const char* expected) {
-  if (!ok) {
-    throw InputError(prefix + field + " = " + std::to_string(value) + ", expected " + expected);
-  }
-}
+constexpr const char* kOdometryModelName = "odometry_motion_model";
 
 // Driving backwards decomposes into a half turn, a translation and another half turn; that is
 // not half a turn of heading uncertainty, so the variance uses the smaller of |rot| and pi - |rot|.
@@ -35,13 +29,13 @@ PlanarPose ToPlanar(const Pose& pose) { return {pose.position.x(), pose.position
 
 void CheckFields(const OdometryNoise& noise, const std::string& prefix) {
   const char* non_negative = "a finite number >= 0";
-  Require(prefix, std::isfinite(noise.alpha1) && noise.alpha1 >= 0.0, "alpha1", noise.alpha1, non_negative);
-  Require(prefix, std::isfinite(noise.alpha2) && noise.alpha2 >= 0.0, "alpha2", noise.alpha2, non_negative);
-  Require(prefix, std::isfinite(noise.alpha3) && noise.alpha3 >= 0.0, "alpha3", noise.alpha3, non_negative);
-  Require(prefix, std::isfinite(noise.alpha4) && noise.alpha4 >= 0.0, "alpha4", noise.alpha4, non_negative);
-  Require(prefix, std::isfinite(noise.drift_heading_rad_per_m), "drift_heading_rad_per_m",
+  RequireNoiseField(prefix, std::isfinite(noise.alpha1) && noise.alpha1 >= 0.0, "alpha1", noise.alpha1, non_negative);
+  RequireNoiseField(prefix, std::isfinite(noise.alpha2) && noise.alpha2 >= 0.0, "alpha2", noise.alpha2, non_negative);
+  RequireNoiseField(prefix, std::isfinite(noise.alpha3) && noise.alpha3 >= 0.0, "alpha3", noise.alpha3, non_negative);
+  RequireNoiseField(prefix, std::isfinite(noise.alpha4) && noise.alpha4 >= 0.0, "alpha4", noise.alpha4, non_negative);
+  RequireNoiseField(prefix, std::isfinite(noise.drift_heading_rad_per_m), "drift_heading_rad_per_m",
           noise.drift_heading_rad_per_m, "a finite number");
-  Require(prefix, std::isfinite(noise.scale_error) && noise.scale_error > -1.0, "scale_error", noise.scale_error,
+  RequireNoiseField(prefix, std::isfinite(noise.scale_error) && noise.scale_error > -1.0, "scale_error", noise.scale_error,
           "a finite number > -1");
 }
 
@@ -114,7 +108,7 @@ Trajectory ApplyOdometryNoise(const Trajectory& reference, const OdometryNoise& 
 }
 
 void to_json(nlohmann::json& out, const OdometryNoise& noise) {
-  out = nlohmann::json{{"model", kModelName},
+  out = nlohmann::json{{"model", kOdometryModelName},
                        {"alpha1", noise.alpha1},
                        {"alpha2", noise.alpha2},
                        {"alpha3", noise.alpha3},
@@ -125,9 +119,9 @@ void to_json(nlohmann::json& out, const OdometryNoise& noise) {
 
 OdometryNoise OdometryNoiseFromJson(const nlohmann::json& in, const std::string& path) {
   JsonFields fields(in, path);
-  const std::string model = fields.Text("model", kModelName);
-  if (model != kModelName) {
-    throw InputError(fields.PathOf("model") + ": expected \"" + kModelName + "\", got \"" + model + "\"");
+  const std::string model = fields.Text("model", kOdometryModelName);
+  if (model != kOdometryModelName) {
+    throw InputError(fields.PathOf("model") + ": expected \"" + kOdometryModelName + "\", got \"" + model + "\"");
   }
   OdometryNoise noise;
   noise.alpha1 = fields.Number("alpha1", 0.0);

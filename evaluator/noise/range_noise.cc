@@ -10,22 +10,16 @@
 namespace slamsweep::evaluator {
 namespace {
 
-constexpr const char* kModelName = "range_noise";
+constexpr const char* kRangeModelName = "range_noise";
 
 bool IsProbability(double value) { return std::isfinite(value) && value >= 0.0 && value <= 1.0; }
 
-void Require(const std::string& prefix, bool ok, const char* field, double value, const char* expected) {
-  if (!ok) {
-    throw InputError(prefix + field + " = " + std::to_string(value) + ", expected " + expected);
-  }
-}
-
 void CheckFields(const RangeNoise& noise, const std::string& prefix) {
-  Require(prefix, std::isfinite(noise.sigma_m) && noise.sigma_m >= 0.0, "sigma_m", noise.sigma_m,
+  RequireNoiseField(prefix, std::isfinite(noise.sigma_m) && noise.sigma_m >= 0.0, "sigma_m", noise.sigma_m,
           "a finite number >= 0");
-  Require(prefix, IsProbability(noise.dropout_probability), "dropout_probability", noise.dropout_probability,
+  RequireNoiseField(prefix, IsProbability(noise.dropout_probability), "dropout_probability", noise.dropout_probability,
           "a probability in [0, 1]");
-  Require(prefix, IsProbability(noise.short_reading_probability), "short_reading_probability",
+  RequireNoiseField(prefix, IsProbability(noise.short_reading_probability), "short_reading_probability",
           noise.short_reading_probability, "a probability in [0, 1]");
 }
 
@@ -76,7 +70,7 @@ std::vector<LaserScan> ApplyRangeNoise(std::span<const LaserScan> scans, const R
 }
 
 void to_json(nlohmann::json& out, const RangeNoise& noise) {
-  out = nlohmann::json{{"model", kModelName},
+  out = nlohmann::json{{"model", kRangeModelName},
                        {"sigma_m", noise.sigma_m},
                        {"dropout_probability", noise.dropout_probability},
                        {"short_reading_probability", noise.short_reading_probability}};
@@ -84,9 +78,9 @@ void to_json(nlohmann::json& out, const RangeNoise& noise) {
 
 RangeNoise RangeNoiseFromJson(const nlohmann::json& in, const std::string& path) {
   JsonFields fields(in, path);
-  const std::string model = fields.Text("model", kModelName);
-  if (model != kModelName) {
-    throw InputError(fields.PathOf("model") + ": expected \"" + kModelName + "\", got \"" + model + "\"");
+  const std::string model = fields.Text("model", kRangeModelName);
+  if (model != kRangeModelName) {
+    throw InputError(fields.PathOf("model") + ": expected \"" + kRangeModelName + "\", got \"" + model + "\"");
   }
   RangeNoise noise;
   noise.sigma_m = fields.Number("sigma_m", 0.0);

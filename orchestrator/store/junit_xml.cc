@@ -8,6 +8,7 @@
 
 #include "orchestrator/files/atomic_file.h"
 #include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/store/json_lookup.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -75,13 +76,6 @@ std::string Text(const json& value) {
   if (value.is_null()) return {};
   if (value.is_string()) return value.get<std::string>();
   return value.dump(-1, ' ', false, json::error_handler_t::replace);
-}
-
-const json& FieldOrNull(const json& object, const char* key) {
-  static const json kNull;
-  if (!object.is_object()) return kNull;
-  const auto it = object.find(key);
-  return it == object.end() ? kNull : *it;
 }
 
 std::string Seconds(double seconds) { return fmt::format("{:.3f}", seconds); }

@@ -10,6 +10,7 @@
 #include "orchestrator/matrix/run_id.h"
 #include "orchestrator/matrix/run_spec.h"
 #include "orchestrator/store/store_schema.h"
+#include "orchestrator/store/json_lookup.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -21,17 +22,6 @@ const json* Find(const json& object, const char* key) {
   if (!object.is_object()) return nullptr;
   const auto it = object.find(key);
   return it == object.end() ? nullptr : &*it;
-}
-
-// A field for a column: whatever JSON value is there (null when missing); BindJson stores any type.
-const json& FieldOrNull(const json& object, const char* key) {
-  static const json kNull;
-  const json* found = Find(object, key);
-  return found != nullptr ? *found : kNull;
-}
-
-const json& Nested(const json& object, const char* outer, const char* inner) {
-  return FieldOrNull(FieldOrNull(object, outer), inner);
 }
 
 // Invalid UTF-8 (a reason quoting a program's garbled output) is replaced rather than refusing the whole run.

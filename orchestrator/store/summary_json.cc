@@ -2,22 +2,12 @@
 
 #include "orchestrator/files/atomic_file.h"
 #include "orchestrator/store/group_summary.h"
+#include "orchestrator/store/json_lookup.h"
 
 namespace slamsweep::orchestrator {
 namespace {
 
 using nlohmann::json;
-
-const json& FieldOrNull(const json& object, const char* key) {
-  static const json kNull;
-  if (!object.is_object()) return kNull;
-  const auto it = object.find(key);
-  return it == object.end() ? kNull : *it;
-}
-
-const json& Nested(const json& object, const char* outer, const char* inner) {
-  return FieldOrNull(FieldOrNull(object, outer), inner);
-}
 
 /// What ATE and RPE measure against, by the sequence's ground_truth kind.
 std::string ReferenceMeaning(const json& ground_truth) {

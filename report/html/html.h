@@ -30,6 +30,12 @@ class Html {
   std::string html_;
 };
 
+/// Short names for page code: T for the report's own markup, E for text read from files.
+namespace html_shorthand {
+inline Html T(std::string_view markup) { return Html::Trusted(markup); }
+inline Html E(std::string_view text) { return Html::Escape(text); }
+}  // namespace html_shorthand
+
 /// A named value for RenderTemplate.
 struct TemplateField {
   std::string_view name;

@@ -13,6 +13,7 @@
 #include "report/html/artwork.h"
 #include "report/html/number_format.h"
 #include "report/html/view_pages.h"
+#include "report/html/safe_name.h"
 
 namespace slamsweep::report {
 namespace {
@@ -20,12 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-Html E(std::string_view text) { return Html::Escape(text); }
-
-bool IsRegularFile(const fs::path& path) {
-  std::error_code error;
-  return fs::symlink_status(path, error).type() == fs::file_type::regular;
-}
+using html_shorthand::E;
 
 const json* Find(const json& object, const char* key) {
   if (!object.is_object()) return nullptr;
@@ -83,9 +79,9 @@ fs::path ReferenceMapOf(const RunRecord& run, const json& details, std::string& 
   if (file == nullptr || !file->is_string() || file->get<std::string>().empty()) return {};
   if (const json* from = Find(*reference, "source"); from && from->is_string()) source = from->get<std::string>();
   const fs::path recorded = file->get<std::string>();
-  if (IsRegularFile(recorded)) return recorded;
+  if (IsRegularFileNoFollow(recorded)) return recorded;
   const fs::path moved = run.dir.parent_path().parent_path() / "reference_maps" / recorded.filename();
-  return IsRegularFile(moved) ? moved : fs::path();
+  return IsRegularFileNoFollow(moved) ? moved : fs::path();
 }
 
 MapScores ScoresOf(const json& details) {
@@ -145,7 +141,7 @@ std::vector<PlannedMapComparison> PlanMapComparisons(const fs::path& out_dir, Si
       const AlgorithmRow& row = sequence.rows[r];
       if (!row.median_run) continue;
       const RunRecord& run = model.runs[*row.median_run];
-      if (run.status != RunStatus::kOk || !IsRegularFile(run.dir / "map.yaml")) continue;
+      if (run.status != RunStatus::kOk || !IsRegularFileNoFollow(run.dir / "map.yaml")) continue;
       const json details = MetricDetails(run);
       MapPanelShown shown;
       shown.row = r;

@@ -10,8 +10,8 @@
 namespace slamsweep::report {
 namespace {
 
-Html T(std::string_view markup) { return Html::Trusted(markup); }
-Html E(std::string_view text) { return Html::Escape(text); }
+using html_shorthand::E;
+using html_shorthand::T;
 
 struct Scale {
   double low = 0.0;

@@ -32,8 +32,8 @@ constexpr std::string_view kPageTemplate = R"(<!DOCTYPE html>
 </html>
 )";
 
-Html T(std::string_view markup) { return Html::Trusted(markup); }
-Html E(std::string_view text) { return Html::Escape(text); }
+using html_shorthand::E;
+using html_shorthand::T;
 
 std::string Page(std::string_view title, std::string_view root, const Html& body) { return RenderPage(title, root, body); }
 

@@ -5,10 +5,10 @@
 namespace slamsweep::report {
 namespace {
 
-Html T(std::string_view markup) { return Html::Trusted(markup); }
-Html E(std::string_view text) { return Html::Escape(text); }
+using html_shorthand::E;
+using html_shorthand::T;
 
-constexpr std::string_view kRoot = "../../";
+constexpr std::string_view kParametersPageRoot = "../../";
 
 /// The drawn parameters' values of a row of the slice: "0.5" for one parameter (its name heads the
 /// column), "a=1, b=fast" for two.
@@ -82,7 +82,7 @@ Html Figures(const TableViews& views, const SequenceModel& sequence, std::size_t
     const auto found = views.figures.find(ParameterFigureId(sweep, slice, c));
     if (found == views.figures.end()) continue;
     const PlotArtifact& figure = found->second;
-    Html body = figure.made ? ImageElement(std::string(kRoot) + figure.path, figure.title, "figure-small")
+    Html body = figure.made ? ImageElement(std::string(kParametersPageRoot) + figure.path, figure.title, "figure-small")
                             : Element("p", "note", E("Figure not available: " + figure.note));
     figures += Element("figure", "figure-small", body + Element("figcaption", "", E(figure.title)));
   }
@@ -93,7 +93,7 @@ Html Figures(const TableViews& views, const SequenceModel& sequence, std::size_t
 
 std::string RenderParametersPage(const SiteData& site, const SequenceModel& sequence, const TableViews& views) {
   const ParameterTable& table = *views.parameters;
-  Html body = Element("p", "", Link(std::string(kRoot) + site.layout->SequencePage(sequence.key),
+  Html body = Element("p", "", Link(std::string(kParametersPageRoot) + site.layout->SequencePage(sequence.key),
                                     E("Back to the tables of " + sequence.title)));
   body += Element("p", "",
                   E("Which parameter value to ship: each metric of the tables against the values of the parameters an "
@@ -121,7 +121,7 @@ std::string RenderParametersPage(const SiteData& site, const SequenceModel& sequ
       body += Figures(views, sequence, s, slice);
     }
   }
-  return RenderPage("Parameters: " + sequence.title, kRoot, body);
+  return RenderPage("Parameters: " + sequence.title, kParametersPageRoot, body);
 }
 
 }  // namespace slamsweep::report

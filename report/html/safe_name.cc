@@ -36,4 +36,9 @@ std::string SafeFileName(std::string_view text) {
   return out + suffix;
 }
 
+bool IsRegularFileNoFollow(const std::filesystem::path& path) {
+  std::error_code error;
+  return std::filesystem::symlink_status(path, error).type() == std::filesystem::file_type::regular;
+}
+
 }  // namespace slamsweep::report

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <string_view>
 
@@ -10,5 +11,9 @@ namespace slamsweep::report {
 /// hash of the original are appended, so "a/b" and "a_b" stay distinct. Never empty, never
 /// "." or "..", never a path.
 std::string SafeFileName(std::string_view text);
+
+/// Whether `path` itself is a regular file; a symbolic link is not followed, so a link in a run
+/// folder cannot bring a file from elsewhere into the report.
+bool IsRegularFileNoFollow(const std::filesystem::path& path);
 
 }  // namespace slamsweep::report

@@ -5,16 +5,16 @@
 namespace slamsweep::report {
 namespace {
 
-Html T(std::string_view markup) { return Html::Trusted(markup); }
-Html E(std::string_view text) { return Html::Escape(text); }
+using html_shorthand::E;
+using html_shorthand::T;
 
-constexpr std::string_view kRoot = "../../";
+constexpr std::string_view kSegmentPageRoot = "../../";
 
 Html Figure(const TableViews& views, const std::string& id, std::string_view caption) {
   const auto found = views.figures.find(id);
   if (found == views.figures.end()) return {};
   const PlotArtifact& figure = found->second;
-  Html body = figure.made ? ImageElement(std::string(kRoot) + figure.path, figure.title, "figure")
+  Html body = figure.made ? ImageElement(std::string(kSegmentPageRoot) + figure.path, figure.title, "figure")
                           : Element("p", "note", E("Figure not available: " + figure.note));
   return Element("figure", "figure", body + Element("figcaption", "", E(caption)));
 }
@@ -56,7 +56,7 @@ Html LengthTable(const SiteData& site, const SequenceModel& sequence, const Segm
 
 std::string RenderSegmentPage(const SiteData& site, const SequenceModel& sequence, const TableViews& views) {
   const SegmentTable& table = *views.segments;
-  Html body = Element("p", "", Link(std::string(kRoot) + site.layout->SequencePage(sequence.key),
+  Html body = Element("p", "", Link(std::string(kSegmentPageRoot) + site.layout->SequencePage(sequence.key),
                                     E("Back to the tables of " + sequence.title)));
   body += Element(
       "p", "",
@@ -92,7 +92,7 @@ std::string RenderSegmentPage(const SiteData& site, const SequenceModel& sequenc
           Figure(views, SegmentFigureId("rotation"), "Rotation error of every segment (deg/m), per segment length") +
           Figure(views, SegmentFigureId("drift"),
                  "Translation drift (%) against segment length: mean ± std over runs of each run's mean drift"));
-  return RenderPage("Drift over segment lengths: " + sequence.title, kRoot, body);
+  return RenderPage("Drift over segment lengths: " + sequence.title, kSegmentPageRoot, body);
 }
 
 }  // namespace slamsweep::report

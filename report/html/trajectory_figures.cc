@@ -17,7 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Html E(std::string_view text) { return Html::Escape(text); }
+using html_shorthand::E;
 
 /// A gnuplot datablock of 100k points is slow to draw and no sharper at 900 px: every k-th pose.
 constexpr std::size_t kMaxPathPoints = 4000;

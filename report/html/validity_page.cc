@@ -19,8 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 namespace ev = slamsweep::evaluator;
 
-Html T(std::string_view markup) { return Html::Trusted(markup); }
-Html E(std::string_view text) { return Html::Escape(text); }
+using html_shorthand::E;
+using html_shorthand::T;
 
 /// "n2" before "n10": digit runs compare as numbers, so graded noise names keep their order.
 bool NaturalLess(const std::string& a, const std::string& b) {

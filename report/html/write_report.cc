@@ -25,6 +25,7 @@
 #include "report/model/load_runs.h"
 #include "report/model/named_study.h"
 #include "report/model/sweep_model.h"
+#include "report/html/safe_name.h"
 
 namespace slamsweep::report {
 
@@ -70,11 +71,6 @@ void PrepareOutputDir(const fs::path& out_dir) {
   WriteTextFile(out_dir / kMarker, "made by slamsweep report\n");
 }
 
-bool IsRegularFile(const fs::path& path) {
-  std::error_code error;
-  return fs::symlink_status(path, error).type() == fs::file_type::regular;
-}
-
 bool IsSafeRelative(const std::string& text) {
   const fs::path path(text);
   if (text.empty() || path.is_absolute()) return false;
@@ -86,25 +82,25 @@ bool IsSafeRelative(const std::string& text) {
 
 // The final map's image: map.png since the worker writes PNG maps, map.pgm in older run folders.
 fs::path MapImage(const RunRecord& run) {
-  return IsRegularFile(run.dir / "map.png") ? run.dir / "map.png" : run.dir / "map.pgm";
+  return IsRegularFileNoFollow(run.dir / "map.png") ? run.dir / "map.png" : run.dir / "map.pgm";
 }
 
 // The run's stage animation (one animated PNG of every stage), when its folder has one.
 std::optional<fs::path> StageAnimation(const RunRecord& run) {
   const std::string& name = run.outputs.stage_animation;
-  if (name.empty() || !IsSafeRelative(name) || !IsRegularFile(run.dir / name)) return std::nullopt;
+  if (name.empty() || !IsSafeRelative(name) || !IsRegularFileNoFollow(run.dir / name)) return std::nullopt;
   return run.dir / name;
 }
 
 std::vector<fs::path> StagePaths(const RunRecord& run) {
   std::vector<fs::path> stages;
   for (const std::string& stage : run.outputs.stages) {
-    if (IsSafeRelative(stage) && IsRegularFile(run.dir / stage)) stages.push_back(run.dir / stage);
+    if (IsSafeRelative(stage) && IsRegularFileNoFollow(run.dir / stage)) stages.push_back(run.dir / stage);
   }
   if (!stages.empty() || !run.outputs.stages.empty()) return stages;
   std::error_code error;
   for (fs::directory_iterator it(run.dir / "stages", error), end; !error && it != end; it.increment(error)) {
-    if (it->path().extension() == ".png" && IsRegularFile(it->path())) stages.push_back(it->path());
+    if (it->path().extension() == ".png" && IsRegularFileNoFollow(it->path())) stages.push_back(it->path());
   }
   std::sort(stages.begin(), stages.end());
   return stages;
@@ -238,7 +234,7 @@ void LinkOrCopy(const fs::path& from, const fs::path& to, std::error_code& error
 
 void CopyDownloads(const RunRecord& run, const fs::path& run_out, RunArtifacts& artifacts) {
   for (const char* name : kDownloads) {
-    if (!IsRegularFile(run.dir / name)) continue;
+    if (!IsRegularFileNoFollow(run.dir / name)) continue;
     std::error_code error;
     LinkOrCopy(run.dir / name, run_out / name, error);
     if (error) {
@@ -251,7 +247,7 @@ void CopyDownloads(const RunRecord& run, const fs::path& run_out, RunArtifacts& 
   if (const std::optional<fs::path> animation = StageAnimation(run)) {
     std::error_code error;
     const fs::path shown = run_out / animation->filename();
-    if (!IsRegularFile(shown)) LinkOrCopy(*animation, shown, error);
+    if (!IsRegularFileNoFollow(shown)) LinkOrCopy(*animation, shown, error);
     if (error) {
       artifacts.notes.push_back("Map-building animation not shown: " + error.message());
     } else {
@@ -284,8 +280,8 @@ void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const fs
       };
     };
     const fs::path map_image = MapImage(run);
-    const bool has_map = IsRegularFile(map_image);
-    const bool can_overlay = has_map && IsRegularFile(run.dir / "map.yaml") && IsRegularFile(run.dir / "trajectory.tum");
+    const bool has_map = IsRegularFileNoFollow(map_image);
+    const bool can_overlay = has_map && IsRegularFileNoFollow(run.dir / "map.yaml") && IsRegularFileNoFollow(run.dir / "trajectory.tum");
     if (!every_run && !in_gallery[i] && run.status == RunStatus::kOk) {
       if (has_map) artifacts->figures_left_out = model.runs.size();
       if (!artifacts->animation.empty()) continue;
@@ -296,12 +292,12 @@ void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const fs
     if (has_map && (in_gallery[i] || !can_overlay)) {
       jobs.push_back({[=] { artwork->Thumbnail(map_image, run_out / "thumbnail.png", options.thumbnail_px); },
                       [artifacts, run_out, n = note("Map thumbnail")](const std::string& error) {
-                        artifacts->thumbnail = error.empty() && IsRegularFile(run_out / "thumbnail.png");
+                        artifacts->thumbnail = error.empty() && IsRegularFileNoFollow(run_out / "thumbnail.png");
                         n(error);
                       }});
     }
     if (can_overlay) {
-      const fs::path reference = IsRegularFile(run.dir / "reference.tum") ? run.dir / "reference.tum" : fs::path();
+      const fs::path reference = IsRegularFileNoFollow(run.dir / "reference.tum") ? run.dir / "reference.tum" : fs::path();
       OverlaySettings overlay = OverlaySettingsOf(run);
       overlay.max_side_px = options.overlay_px;
       jobs.push_back({[=] {
@@ -309,7 +305,7 @@ void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const fs
                                                    run_out / "trajectory.png", overlay);
                       },
                       [artifacts, run_out, n = note("Trajectory over the map")](const std::string& error) {
-                        artifacts->overlay = error.empty() && IsRegularFile(run_out / "trajectory.png");
+                        artifacts->overlay = error.empty() && IsRegularFileNoFollow(run_out / "trajectory.png");
                         n(error);
                       }});
     }
@@ -317,7 +313,7 @@ void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const fs
     if (!stages.empty()) {
       jobs.push_back({[=] { artwork->StagesGif(stages, run_out / "stages.gif", options.gif); },
                       [artifacts, run_out, n = note("Map-building animation")](const std::string& error) {
-                        artifacts->gif = error.empty() && IsRegularFile(run_out / "stages.gif");
+                        artifacts->gif = error.empty() && IsRegularFileNoFollow(run_out / "stages.gif");
                         n(error);
                       }});
     }
@@ -335,7 +331,7 @@ void WritePaperFiles(const SweepModel& model, const ReportLayout& layout, const 
       WriteTextFile(files / "rmse.txt", RmseText(sequence, row));
       WriteTextFile(files / "corners.txt", MapMetricText(sequence, row, "corners"));
       WriteTextFile(files / "occupied_ratio.txt", MapMetricText(sequence, row, "occupied_to_free_unknown"));
-      if (row.median_run && IsRegularFile(model.runs[*row.median_run].dir / "trajectory.tum")) {
+      if (row.median_run && IsRegularFileNoFollow(model.runs[*row.median_run].dir / "trajectory.tum")) {
         LinkOrCopy(model.runs[*row.median_run].dir / "trajectory.tum", files / "pose_log.tum", error);
         if (!error) site.pose_logs.insert({row.algorithm, sequence.key});
       }
@@ -347,7 +343,7 @@ void WritePaperFiles(const SweepModel& model, const ReportLayout& layout, const 
 // The sweep replaces these files by rename, never in place, so a link keeps the report's version.
 bool CopyResultFile(const fs::path& result_dir, const fs::path& out_dir, const char* name) {
   std::error_code error;
-  if (!IsRegularFile(result_dir / name)) {
+  if (!IsRegularFileNoFollow(result_dir / name)) {
     fs::remove(out_dir / name, error);
     return false;
   }
@@ -361,7 +357,7 @@ ReportSummary CountImages(const fs::path& out_dir, bool drawing, SiteData& site)
   ReportSummary summary;
   for (auto& [sequence, artifacts] : site.plots) {
     for (PlotArtifact& plot : artifacts) {
-      plot.made = IsRegularFile(out_dir / plot.path);
+      plot.made = IsRegularFileNoFollow(out_dir / plot.path);
       if (plot.made) plot.note.clear();
       if (plot.made) {
         ++summary.images;

@@ -13,13 +13,13 @@
 #include "report/images/frame_selection.h"
 #include "report/images/grey_gif_writer.h"
 #include "report/images/image_header.h"
+#include "report/images/map_greys.h"
 
 namespace slamsweep::report {
 namespace {
 
 using evaluator::InputError;
 
-constexpr int kUnknownGrey = 205;
 constexpr std::size_t kComfortFrames = 8;
 constexpr int kComfortSidePx = 120;
 constexpr int kMinSidePx = 8;

@@ -8,11 +8,11 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/map/image_file.h"
 #include "report/images/area_shrink.h"
+#include "report/images/map_greys.h"
 
 namespace slamsweep::report {
 namespace {
 
-constexpr int kUnknownGrey = 205;
 
 cv::Mat GreyOf(const cv::Mat& image) {
   if (image.channels() == 1) return image;

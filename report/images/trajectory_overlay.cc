@@ -12,6 +12,7 @@
 #include "evaluator/formats/trajectory/tum_format.h"
 #include "report/images/area_shrink.h"
 #include "report/images/overlay_alignment.h"
+#include "report/images/map_greys.h"
 
 namespace slamsweep::report {
 namespace {
@@ -19,7 +20,6 @@ namespace {
 using evaluator::OccupancyGrid;
 using evaluator::Trajectory;
 
-constexpr int kUnknownGrey = 205;
 /// Sub-pixel precision of the drawn lines: 4 fractional bits.
 constexpr int kShift = 4;
 constexpr double kShiftScale = 1 << kShift;

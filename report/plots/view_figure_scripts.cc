@@ -13,8 +13,8 @@
 namespace slamsweep::report {
 namespace {
 
-std::string Number(double value) { return fmt::format("{}", value); }
-std::string Colour(std::uint32_t rgb) { return fmt::format("'#{:06X}'", rgb); }
+std::string GnuplotNumber(double value) { return fmt::format("{}", value); }
+std::string GnuplotColour(std::uint32_t rgb) { return fmt::format("'#{:06X}'", rgb); }
 
 /// The common head of every figure: terminal, output, title, axis labels.
 std::string Head(const std::string& title, const std::string& x_label, const std::string& y_label,
@@ -135,7 +135,7 @@ std::string BoxplotScript(const BoxplotFigure& figure, const std::filesystem::pa
   std::string script = Head(title, figure.x_label, figure.y_label, png, index, width, 500 + key.extra_height_px);
   script += key.command;
   script += "set grid ytics\nset border 3\nset ytics nomirror\nset yrange [0:*]\n";
-  script += fmt::format("set xrange [0.5:{}]\n", Number(static_cast<double>(categories) + 0.5));
+  script += fmt::format("set xrange [0.5:{}]\n", GnuplotNumber(static_cast<double>(categories) + 0.5));
   std::string tics;
   for (std::size_t k = 0; k < categories; ++k) {
     tics += fmt::format("{}{} {}", k == 0 ? "" : ", ", GnuplotQuoted(figure.categories[k]), k + 1);
@@ -144,7 +144,7 @@ std::string BoxplotScript(const BoxplotFigure& figure, const std::filesystem::pa
   // Thin separators between the categories.
   for (std::size_t k = 1; k < categories; ++k) {
     script += fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead linecolor rgb '#DDDDDD'\n",
-                          Number(static_cast<double>(k) + 0.5));
+                          GnuplotNumber(static_cast<double>(k) + 0.5));
   }
 
   std::string clauses;
@@ -155,11 +155,11 @@ std::string BoxplotScript(const BoxplotFigure& figure, const std::filesystem::pa
     for (std::size_t k = 0; k < categories && k < series.boxes.size(); ++k) {
       if (!series.boxes[k]) continue;
       const BoxStats& b = *series.boxes[k];
-      rows += fmt::format("{} {} {} {} {} {} {}\n", Number(static_cast<double>(k + 1) + offset), Number(b.q1),
-                          Number(b.whisker_low), Number(b.whisker_high), Number(b.q3), Number(b.median), Number(b.mean));
+      rows += fmt::format("{} {} {} {} {} {} {}\n", GnuplotNumber(static_cast<double>(k + 1) + offset), GnuplotNumber(b.q1),
+                          GnuplotNumber(b.whisker_low), GnuplotNumber(b.whisker_high), GnuplotNumber(b.q3), GnuplotNumber(b.median), GnuplotNumber(b.mean));
     }
     const std::string name = fmt::format("$box_{}_{}", index, s);
-    const std::string colour = Colour(series.style.rgb);
+    const std::string colour = GnuplotColour(series.style.rgb);
     if (rows.empty()) {
       // Still in the key, so that the legend lists every row of the table.
       clauses += fmt::format("{}NaN with boxes {} fillcolor rgb {} linecolor rgb {} title {}", clauses.empty() ? "" : ", ",
@@ -167,7 +167,7 @@ std::string BoxplotScript(const BoxplotFigure& figure, const std::filesystem::pa
       continue;
     }
     script += Datablock(name, rows);
-    const std::string width_column = fmt::format("({})", Number(box_width));
+    const std::string width_column = fmt::format("({})", GnuplotNumber(box_width));
     clauses += fmt::format(
         "{}{} using 1:2:3:4:5:{} with candlesticks whiskerbars 0.6 {} fillcolor rgb {} linecolor rgb {} linewidth 1.3 "
         "title {}",
@@ -216,13 +216,13 @@ std::string LineFigureScript(const LineFigure& figure, const std::filesystem::pa
       tics += fmt::format("{}{} {}", i == 0 ? "" : ", ", GnuplotQuoted(figure.x_tics[i]), i);
     }
     script += "set xtics (" + tics + ")\n";
-    script += fmt::format("set xrange [-0.5:{}]\n", Number(static_cast<double>(figure.x_tics.size()) - 0.5));
+    script += fmt::format("set xrange [-0.5:{}]\n", GnuplotNumber(static_cast<double>(figure.x_tics.size()) - 0.5));
   } else if (figure.log_x) {
     script += "set logscale x\n";
-    if (std::isfinite(x_min)) script += fmt::format("set xrange [{}:{}]\n", Number(x_min / 1.3), Number(x_max * 1.3));
+    if (std::isfinite(x_min)) script += fmt::format("set xrange [{}:{}]\n", GnuplotNumber(x_min / 1.3), GnuplotNumber(x_max * 1.3));
   } else if (std::isfinite(x_min)) {
     const double margin = x_max > x_min ? 0.06 * (x_max - x_min) : std::max(1.0, std::abs(x_min) * 0.1);
-    script += fmt::format("set xrange [{}:{}]\n", Number(x_min - margin), Number(x_max + margin));
+    script += fmt::format("set xrange [{}:{}]\n", GnuplotNumber(x_min - margin), GnuplotNumber(x_max + margin));
   }
   if (!categorical) {
     // A tic at every value drawn (parameter values, segment lengths), when they are few.
@@ -234,7 +234,7 @@ std::string LineFigureScript(const LineFigure& figure, const std::filesystem::pa
     xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
     if (!xs.empty() && xs.size() <= 12) {
       std::string tics;
-      for (const double x : xs) tics += fmt::format("{}{}", tics.empty() ? "" : ", ", Number(x));
+      for (const double x : xs) tics += fmt::format("{}{}", tics.empty() ? "" : ", ", GnuplotNumber(x));
       script += "set xtics (" + tics + ")\n";
     }
   }
@@ -252,13 +252,13 @@ std::string LineFigureScript(const LineFigure& figure, const std::filesystem::pa
     std::string rows;
     std::string bars;
     for (const LinePoint& point : series.points) {
-      rows += fmt::format("{} {}\n", Number(x_of(point.x)), Number(point.y));
+      rows += fmt::format("{} {}\n", GnuplotNumber(x_of(point.x)), GnuplotNumber(point.y));
       if (point.spread) {
-        bars += fmt::format("{} {} {} {}\n", Number(x_of(point.x)), Number(point.y), Number(point.y - *point.spread),
-                            Number(point.y + *point.spread));
+        bars += fmt::format("{} {} {} {}\n", GnuplotNumber(x_of(point.x)), GnuplotNumber(point.y), GnuplotNumber(point.y - *point.spread),
+                            GnuplotNumber(point.y + *point.spread));
       }
     }
-    const std::string colour = Colour(series.style.rgb);
+    const std::string colour = GnuplotColour(series.style.rgb);
     const std::string name = fmt::format("$line_{}_{}", index, s);
     if (rows.empty()) continue;
     script += Datablock(name, rows);
@@ -276,7 +276,7 @@ std::string LineFigureScript(const LineFigure& figure, const std::filesystem::pa
       figure.highlight->point < figure.series[figure.highlight->series].points.size()) {
     const LinePoint& point = figure.series[figure.highlight->series].points[figure.highlight->point];
     const std::string name = fmt::format("$best_{}", index);
-    script += Datablock(name, fmt::format("{} {}\n", Number(point.x), Number(point.y)));
+    script += Datablock(name, fmt::format("{} {}\n", GnuplotNumber(point.x), GnuplotNumber(point.y)));
     clauses += fmt::format("{}{} using 1:2 with points pointtype 6 pointsize 3 linewidth 2 linecolor rgb '#000000' title {}",
                            clauses.empty() ? "" : ", ", name, GnuplotQuoted(figure.highlight->label));
   }
@@ -308,12 +308,12 @@ std::string HeatmapScript(const HeatmapFigure& figure, const std::filesystem::pa
   script += "unset key\nset border 0\nset tics scale 0\nset size ratio -1\n";
   std::string palette;
   for (std::size_t i = 0; i < kViridisReversed.size(); ++i) {
-    palette += fmt::format("{}{} '#{:06X}'", i == 0 ? "" : ", ", Number(kViridisReversed[i].t), kViridisReversed[i].rgb);
+    palette += fmt::format("{}{} '#{:06X}'", i == 0 ? "" : ", ", GnuplotNumber(kViridisReversed[i].t), kViridisReversed[i].rgb);
   }
   script += "set palette defined (" + palette + ")\n";
   if (any) {
     const double pad = span > 0.0 ? 0.0 : std::max(std::abs(low) * 0.01, 1e-12);
-    script += fmt::format("set cbrange [{}:{}]\n", Number(low - pad), Number(high + pad));
+    script += fmt::format("set cbrange [{}:{}]\n", GnuplotNumber(low - pad), GnuplotNumber(high + pad));
     script += fmt::format("set cblabel {} noenhanced\n", GnuplotQuoted(figure.value_label));
   } else {
     script += "unset colorbox\n";
@@ -328,8 +328,8 @@ std::string HeatmapScript(const HeatmapFigure& figure, const std::filesystem::pa
   }
   script += xtics.empty() ? "unset xtics\n" : "set xtics (" + xtics + ")\n";
   script += ytics.empty() ? "unset ytics\n" : "set ytics (" + ytics + ")\n";
-  script += fmt::format("set xrange [-0.5:{}]\nset yrange [-0.5:{}]\n", Number(static_cast<double>(width) - 0.5),
-                        Number(static_cast<double>(height) - 0.5));
+  script += fmt::format("set xrange [-0.5:{}]\nset yrange [-0.5:{}]\n", GnuplotNumber(static_cast<double>(width) - 0.5),
+                        GnuplotNumber(static_cast<double>(height) - 0.5));
 
   std::string values;
   int object = 1;
@@ -337,14 +337,14 @@ std::string HeatmapScript(const HeatmapFigure& figure, const std::filesystem::pa
     for (std::size_t x = 0; x < width && x < figure.cells[y].size(); ++x) {
       const HeatmapCell& cell = figure.cells[y][x];
       const bool has_value = cell.value && std::isfinite(*cell.value);
-      const std::string xs = Number(static_cast<double>(x));
-      const std::string ys = Number(static_cast<double>(y));
+      const std::string xs = GnuplotNumber(static_cast<double>(x));
+      const std::string ys = GnuplotNumber(static_cast<double>(y));
       if (has_value) {
-        values += fmt::format("{} {} {}\n", xs, ys, Number(*cell.value));
+        values += fmt::format("{} {} {}\n", xs, ys, GnuplotNumber(*cell.value));
       } else {
         script += fmt::format(
             "set object {} rectangle from {},{} to {},{} fillcolor rgb '#E0E0E0' fillstyle solid 1.0 noborder behind\n",
-            object++, Number(x - 0.5), Number(y - 0.5), Number(x + 0.5), Number(y + 0.5));
+            object++, GnuplotNumber(x - 0.5), GnuplotNumber(y - 0.5), GnuplotNumber(x + 0.5), GnuplotNumber(y + 0.5));
       }
       const std::string text = has_value ? cell.text : (cell.text.empty() ? "no run" : cell.text);
       const bool white = has_value && HeatmapTextIsWhite(t_of(*cell.value));
@@ -353,7 +353,7 @@ std::string HeatmapScript(const HeatmapFigure& figure, const std::filesystem::pa
       if (cell.best) {
         script += fmt::format(
             "set object {} rectangle from {},{} to {},{} fillstyle empty border linecolor rgb '#D55E00' linewidth 4 front\n",
-            object++, Number(x - 0.46), Number(y - 0.46), Number(x + 0.46), Number(y + 0.46));
+            object++, GnuplotNumber(x - 0.46), GnuplotNumber(y - 0.46), GnuplotNumber(x + 0.46), GnuplotNumber(y + 0.46));
       }
     }
   }
@@ -385,7 +385,7 @@ std::string PathFigureScript(const PathFigure& figure, const std::filesystem::pa
   if (coloured) {
     std::string palette;
     for (std::size_t i = 0; i < kViridisReversed.size(); ++i) {
-      palette += fmt::format("{}{} '#{:06X}'", i == 0 ? "" : ", ", Number(kViridisReversed[i].t), kViridisReversed[i].rgb);
+      palette += fmt::format("{}{} '#{:06X}'", i == 0 ? "" : ", ", GnuplotNumber(kViridisReversed[i].t), kViridisReversed[i].rgb);
     }
     script += "set palette defined (" + palette + ")\n";
     script += fmt::format("set cblabel {} noenhanced\n", GnuplotQuoted(figure.colour_label));
@@ -399,8 +399,8 @@ std::string PathFigureScript(const PathFigure& figure, const std::filesystem::pa
     const bool by_colour = series.colour_values.size() == series.x.size() && !series.x.empty();
     for (std::size_t i = 0; i < series.x.size() && i < series.y.size(); ++i) {
       if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
-      rows += by_colour ? fmt::format("{} {} {}\n", Number(series.x[i]), Number(series.y[i]), Number(series.colour_values[i]))
-                        : fmt::format("{} {}\n", Number(series.x[i]), Number(series.y[i]));
+      rows += by_colour ? fmt::format("{} {} {}\n", GnuplotNumber(series.x[i]), GnuplotNumber(series.y[i]), GnuplotNumber(series.colour_values[i]))
+                        : fmt::format("{} {}\n", GnuplotNumber(series.x[i]), GnuplotNumber(series.y[i]));
     }
     if (rows.empty()) continue;
     const std::string name = fmt::format("$path_{}_{}", index, s);
@@ -411,7 +411,7 @@ std::string PathFigureScript(const PathFigure& figure, const std::filesystem::pa
     } else if (by_colour) {
       style = "using 1:2:3 with lines linewidth 2.5 linecolor palette";
     } else {
-      style = fmt::format("with lines linewidth 1.5 linecolor rgb {}{}", Colour(series.style.rgb),
+      style = fmt::format("with lines linewidth 1.5 linecolor rgb {}{}", GnuplotColour(series.style.rgb),
                           series.style.variant > 0 ? " dashtype 2" : "");
     }
     if (!by_colour) style = "using 1:2 " + style;

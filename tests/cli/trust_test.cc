@@ -25,7 +25,7 @@ using ::testing::HasSubstr;
 using ::testing::Not;
 using testing::RunCli;
 
-const bool kWorkerProgramSet = setenv("SLAMSWEEP_WORKER_PROGRAM", SLAMSWEEP_BINARY, 1) == 0;
+const bool kTrustWorkerProgramSet = setenv("SLAMSWEEP_WORKER_PROGRAM", SLAMSWEEP_BINARY, 1) == 0;
 
 std::string Fixture(const std::string& name) {
   return std::string(SLAMSWEEP_SOURCE_DIR) + "/tests/cli/echo_programs/" + name;
@@ -38,7 +38,7 @@ std::string ReadText(const std::filesystem::path& file) {
   return text.str();
 }
 
-nlohmann::json ReadJson(const std::filesystem::path& file) { return nlohmann::json::parse(ReadText(file)); }
+nlohmann::json ReadJsonFile(const std::filesystem::path& file) { return nlohmann::json::parse(ReadText(file)); }
 
 /// A command algorithm that echoes one pose field of its CARMEN input as its trajectory.
 std::string EchoAlgorithm(const std::string& name, const std::string& field) {
@@ -84,7 +84,7 @@ TEST(TrustTest, ProgramsThatEchoTheirInputPosesNeverBeatTheOdometryBaseline) {
   // The FLASER echoes find no FLASER record in the floor's ROBOTLASER1 log and fail there, and the
   // reverse on intel: the sweep exits 1, but every echo scores where its field exists.
   ASSERT_LE(run.exit_code, 1) << run.out << run.err;
-  const nlohmann::json summary = ReadJson(dir / "out" / "summary.json");
+  const nlohmann::json summary = ReadJsonFile(dir / "out" / "summary.json");
   for (const std::string sequence : {"intel-300", "floor"}) {
     const auto means = GroupMeans(summary, sequence, "ape_trans", "rmse");
     ASSERT_TRUE(means.contains("odometry")) << sequence << "\n" << summary.dump(1);
@@ -182,12 +182,12 @@ TEST(TrustTest, CorrectedLogsWithoutOdometryNoiseAreFlaggedEverywhere) {
   const auto run = RunCli({"run", file.string()});
   ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
   EXPECT_THAT(run.err, HasSubstr("upper bound, not a SLAM result"));
-  const nlohmann::json summary = ReadJson(dir / "out" / "summary.json");
+  const nlohmann::json summary = ReadJsonFile(dir / "out" / "summary.json");
   EXPECT_EQ(summary.at("runs").at(0).at("odometry_is_reference"), true);
   EXPECT_EQ(summary.at("groups").at(0).at("odometry_is_reference"), true);
   for (const auto& entry : std::filesystem::directory_iterator(dir / "out" / "runs")) {
-    EXPECT_EQ(ReadJson(entry.path() / "run.json").at("odometry_is_reference"), true);
-    EXPECT_EQ(ReadJson(entry.path() / "result.json").at("odometry_is_reference"), true);
+    EXPECT_EQ(ReadJsonFile(entry.path() / "run.json").at("odometry_is_reference"), true);
+    EXPECT_EQ(ReadJsonFile(entry.path() / "result.json").at("odometry_is_reference"), true);
   }
   EXPECT_THAT(ReadText(dir / "out" / "report" / "index.html"),
               HasSubstr("odometry = reference: an upper bound, not a SLAM result"));
@@ -218,7 +218,7 @@ TEST(TrustTest, AChangedProgramIsRunAgainUnlessStaleResultsAreAllowed) {
   EXPECT_THAT(reused.out, HasSubstr("1 earlier result computed by another slamsweep revision, program build or evaluation setting was reused"));
   // The reused run is marked stale in every output a reader or CI reads.
   const std::filesystem::path out = dir / "out";
-  const nlohmann::json summary = ReadJson(out / "summary.json");
+  const nlohmann::json summary = ReadJsonFile(out / "summary.json");
   EXPECT_THAT(summary.at("runs").at(0).at("flags").dump(), HasSubstr("\"stale\""));
   EXPECT_THAT(summary.at("groups").at(0).at("flags").dump(), HasSubstr("\"stale\""));
   for (const char* table : {"summary.csv", "runs.csv"}) {
@@ -262,19 +262,19 @@ TEST(TrustTest, AProgramThatCannotBeIsolatedFailsItsRunUnlessAllowedAndIsThenFla
   ::setenv("PATH", path.c_str(), 1);
 
   EXPECT_EQ(refused.exit_code, 1) << refused.out << refused.err;
-  const nlohmann::json failed = ReadJson(dir / "out" / "summary.json").at("runs").at(0);
+  const nlohmann::json failed = ReadJsonFile(dir / "out" / "summary.json").at("runs").at(0);
   EXPECT_EQ(failed.at("status"), "failed");
   EXPECT_EQ(failed.at("failure_kind"), "not_isolated");
   EXPECT_THAT(failed.at("reason").get<std::string>(), HasSubstr("bubblewrap (bwrap) is not installed"));
 
   ASSERT_EQ(allowed.exit_code, 0) << allowed.out << allowed.err;
   const auto out = dir / "allowed";
-  const nlohmann::json run = ReadJson(out / "summary.json").at("runs").at(0);
+  const nlohmann::json run = ReadJsonFile(out / "summary.json").at("runs").at(0);
   EXPECT_EQ(run.at("status"), "ok");
   EXPECT_EQ(run.at("flags"), nlohmann::json::array({"unisolated"}));
   const auto run_dir = out / "runs" / run.at("run_id").get<std::string>();
-  EXPECT_EQ(ReadJson(run_dir / "run.json").at("allow_unisolated"), true);
-  EXPECT_EQ(ReadJson(run_dir / "result.json").at("flags"), nlohmann::json::array({"unisolated"}));
+  EXPECT_EQ(ReadJsonFile(run_dir / "run.json").at("allow_unisolated"), true);
+  EXPECT_EQ(ReadJsonFile(run_dir / "result.json").at("flags"), nlohmann::json::array({"unisolated"}));
   EXPECT_THAT(ReadText(out / "runs.csv"), HasSubstr("unisolated"));
   EXPECT_THAT(ReadText(out / "summary.csv"), HasSubstr("unisolated"));
   EXPECT_THAT(ReadText(out / "junit.xml"), HasSubstr("<property name=\"flag\" value=\"unisolated\"/>"));
@@ -301,7 +301,7 @@ TEST(TrustTest, RbpfSlamWithTheSameSeedGivesTheSameTrajectory) {
   std::vector<std::string> trajectories;
   for (const auto& entry : std::filesystem::directory_iterator(dir / "out" / "runs")) {
     trajectories.push_back(ReadText(entry.path() / "trajectory.tum"));
-    EXPECT_EQ(ReadJson(entry.path() / "run.json").at("seeding"), "seeded");
+    EXPECT_EQ(ReadJsonFile(entry.path() / "run.json").at("seeding"), "seeded");
   }
   ASSERT_EQ(trajectories.size(), 2u);
   EXPECT_GT(trajectories[0].size(), 1000u);
@@ -369,12 +369,12 @@ TEST(TrustTest, OdometryBaselineOnIntelsRecordedOdometryIsNoUpperBound) {
   EXPECT_THAT(plan.err, Not(HasSubstr("get the reference as odometry")));
   const auto run = RunCli({"run", file.string()});
   ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
-  const nlohmann::json summary = ReadJson(dir / "out" / "summary.json");
+  const nlohmann::json summary = ReadJsonFile(dir / "out" / "summary.json");
   EXPECT_EQ(summary.at("runs").at(0).at("odometry_is_reference"), false);
   std::size_t runs = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir / "out" / "runs")) {
     ++runs;
-    const nlohmann::json result = ReadJson(entry.path() / "result.json");
+    const nlohmann::json result = ReadJsonFile(entry.path() / "result.json");
     EXPECT_EQ(result.at("odometry_is_reference"), false);
     // Dead reckoning on the wheels drifts tens of metres from the corrected path (21 m on average).
     EXPECT_GT(ResultMetric(result, "ape_trans", "rmse"), 5.0);

@@ -18,13 +18,6 @@ constexpr std::array<std::string_view, 4> kSe2Columns = {"timestamp", "x", "y", 
 constexpr std::array<std::string_view, 8> kSe3Columns = {"timestamp", "x", "y", "z", "qx", "qy", "qz", "qw"};
 constexpr std::string_view kExpectedHeaders = "'timestamp,x,y,theta' (SE(2)) or 'timestamp,x,y,z,qx,qy,qz,qw' (SE(3))";
 
-std::string Lowercase(std::string_view text) {
-  std::string lower(text);
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return lower;
-}
-
 /// Where each expected column sits in the file.
 struct ColumnLayout {
   bool planar = true;
@@ -34,7 +27,7 @@ struct ColumnLayout {
 
 ColumnLayout ParseHeader(const TextRecord& header) {
   std::vector<std::string> names;
-  for (std::size_t i = 0; i < header.size(); ++i) names.push_back(Lowercase(header.Text(i)));
+  for (std::size_t i = 0; i < header.size(); ++i) names.push_back(AsciiLowercase(header.Text(i)));
   const bool has_theta = std::find(names.begin(), names.end(), "theta") != names.end();
   ColumnLayout layout;
   layout.planar = has_theta;

@@ -28,18 +28,11 @@ constexpr std::array<std::string_view, 14> kCarmenMessages = {
     "FLASER",    "RLASER",    "LASER3",    "LASER4", "ROBOTLASER1", "ROBOTLASER2", "RAWLASER1",
     "RAWLASER2", "RAWLASER3", "RAWLASER4", "ODOM",   "PARAM",       "TRUEPOS",     "NEFF"};
 
-std::string Lowercase(std::string_view text) {
-  std::string lower(text);
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return lower;
-}
-
 /// The extension that tells the format: ".log" for "x.log.gz", ".csv" for "x.csv".
 std::string FormatExtension(const std::filesystem::path& path) {
   std::filesystem::path name = path.filename();
-  if (Lowercase(name.extension().string()) == ".gz") name = name.stem();
-  return Lowercase(name.extension().string());
+  if (AsciiLowercase(name.extension().string()) == ".gz") name = name.stem();
+  return AsciiLowercase(name.extension().string());
 }
 
 std::optional<TrajectoryFormat> FormatFromName(const std::filesystem::path& path) {
@@ -118,7 +111,7 @@ std::string_view TrajectoryFormatName(TrajectoryFormat format) {
 }
 
 std::optional<TrajectoryFormat> ParseTrajectoryFormat(std::string_view name) {
-  const std::string lower = Lowercase(name);
+  const std::string lower = AsciiLowercase(name);
   for (TrajectoryFormat format : {TrajectoryFormat::kAuto, TrajectoryFormat::kTum, TrajectoryFormat::kKitti,
                                   TrajectoryFormat::kMrptPath, TrajectoryFormat::kCarmen, TrajectoryFormat::kCsv}) {
     if (lower == TrajectoryFormatName(format)) return format;
@@ -160,7 +153,7 @@ TrajectoryFormat DetectTrajectoryFormat(const std::filesystem::path& path, std::
 }
 
 TrajectoryFormat FormatForOutputPath(const std::filesystem::path& path) {
-  if (Lowercase(path.extension().string()) == ".gz") {
+  if (AsciiLowercase(path.extension().string()) == ".gz") {
     throw InputError(Located(path, 0, "the writers produce plain text, not gzip; drop the .gz from the name"));
   }
   if (const std::optional<TrajectoryFormat> by_name = FormatFromName(path)) return *by_name;

@@ -19,7 +19,7 @@ SimulatedSequence NoiseFreeSequence() {
   return SimulateSequence(options);
 }
 
-bool Occupied(float p) { return p > 0.5f; }
+bool IsWall(float p) { return p > 0.5f; }
 
 TEST(MapFromSimulationTest, MapFromTheExactGroundTruthReproducesTheWalls) {
   const SimulatedSequence sequence = NoiseFreeSequence();
@@ -34,13 +34,13 @@ TEST(MapFromSimulationTest, MapFromTheExactGroundTruthReproducesTheWalls) {
   std::size_t occupied = 0, near_wall = 0;
   for (int row = 0; row < map.height; ++row) {
     for (int col = 0; col < map.width; ++col) {
-      if (!Occupied(map.at(row, col))) continue;
+      if (!IsWall(map.at(row, col))) continue;
       ++occupied;
       bool found = false;
       for (int dr = -1; dr <= 1 && !found; ++dr) {
         for (int dc = -1; dc <= 1 && !found; ++dc) {
           const int r = row + dr, c = col + dc;
-          found = r >= 0 && c >= 0 && r < plan.height && c < plan.width && Occupied(plan.at(r, c));
+          found = r >= 0 && c >= 0 && r < plan.height && c < plan.width && IsWall(plan.at(r, c));
         }
       }
       near_wall += found ? 1 : 0;
@@ -69,7 +69,7 @@ TEST(MapFromSimulationTest, OccupiedProportionOfTheExactMapCountsWallsNotFreeSpa
   const OccupancyGrid map = OccupancyMapper(options).Build(sequence.scans, sequence.ground_truth.poses());
   const OccupiedProportion proportion = ComputeOccupiedProportion(map);
   std::int64_t walls = 0;
-  for (const float p : map.cells) walls += Occupied(p) ? 1 : 0;
+  for (const float p : map.cells) walls += IsWall(p) ? 1 : 0;
   const std::int64_t known = proportion.total_cells - proportion.unknown_cells;
   EXPECT_GE(proportion.occupied_cells, walls);
   EXPECT_LT(proportion.occupied_cells, known / 3) << proportion.occupied_cells << " of " << known << " known";
@@ -115,9 +115,9 @@ TEST(MapFromSimulationTest, MapFromNoisyOdometryIsWorseThanFromTheTruth) {
   auto wall_precision = [&](const OccupancyGrid& map) {
     std::size_t occupied = 0, on_wall = 0;
     for (std::size_t i = 0; i < map.CellCount(); ++i) {
-      if (!Occupied(map.cells[i])) continue;
+      if (!IsWall(map.cells[i])) continue;
       ++occupied;
-      on_wall += Occupied(sequence.floor_plan.cells[i]) ? 1 : 0;
+      on_wall += IsWall(sequence.floor_plan.cells[i]) ? 1 : 0;
     }
     return static_cast<double>(on_wall) / static_cast<double>(occupied);
   };

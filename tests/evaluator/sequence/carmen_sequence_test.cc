@@ -9,11 +9,11 @@
 
 #include "evaluator/core/input_error.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/input_error_text.h"
 
 namespace slamsweep::evaluator {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 /// A FLASER line with `beams` readings of `range_m` (the first one `first_range_m`).
 std::string Flaser(std::size_t beams, double first_range_m, double range_m, const std::string& pose,
@@ -36,14 +36,7 @@ bool AnyWarningContains(const Sequence& sequence, const std::string& needle) {
   return false;
 }
 
-std::string ErrorOf(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "(no InputError)";
-}
+using slamsweep::testing::ErrorOf;
 
 TEST(CarmenSequenceTest, FlaserRecordsBecomeScansOdometryAndReference) {
   const std::string text =
@@ -58,8 +51,8 @@ TEST(CarmenSequenceTest, FlaserRecordsBecomeScansOdometryAndReference) {
   EXPECT_EQ(scan.stamp_s, 10.0);
   EXPECT_EQ(scan.BeamCount(), 181u);
   EXPECT_EQ(scan.ranges_m[0], 1.25f);
-  EXPECT_DOUBLE_EQ(scan.angle_min_rad, -kPi / 2);
-  EXPECT_DOUBLE_EQ(scan.angle_increment_rad, kPi / 180);
+  EXPECT_DOUBLE_EQ(scan.angle_min_rad, -std::numbers::pi / 2);
+  EXPECT_DOUBLE_EQ(scan.angle_increment_rad, std::numbers::pi / 180);
   EXPECT_EQ(scan.range_max_m, 50.5);
   EXPECT_EQ(scan.range_min_m, 0.0);
   EXPECT_TRUE(scan.sensor_pose_on_robot.position.isZero());
@@ -204,7 +197,7 @@ TEST(CarmenSequenceTest, RearLaserBeamsPointBackwards) {
   const Sequence sequence = FromText(Rlaser(181, 2, 2, "1 2 1.5707963267948966", "1 2 1.5707963267948966", 1.0), options);
   ASSERT_EQ(sequence.scans.size(), 1u);
   const LaserScan& scan = sequence.scans[0];
-  EXPECT_NEAR(std::abs(scan.sensor_pose_on_robot.Yaw()), kPi, 1e-12);
+  EXPECT_NEAR(std::abs(scan.sensor_pose_on_robot.Yaw()), std::numbers::pi, 1e-12);
   EXPECT_NEAR(scan.sensor_pose_on_robot.position.norm(), 0.0, 1e-12);
   const Pose sensor_in_world = sequence.reference->poses()[0] * scan.sensor_pose_on_robot;
   const auto end_point = [&](std::size_t beam) {
@@ -237,7 +230,7 @@ TEST(CarmenSequenceTest, RearLaserMaxRangeComesFromItsOwnParam) {
 
 TEST(CarmenSequenceTest, UnknownBeamCountIsSpreadAsCarmenDoesWithAWarning) {
   const Sequence sequence = FromText(Flaser(91, 1, 1, "0 0 0", "0 0 0", 1.0));
-  EXPECT_DOUBLE_EQ(sequence.scans[0].angle_increment_rad, kPi / 90);
+  EXPECT_DOUBLE_EQ(sequence.scans[0].angle_increment_rad, std::numbers::pi / 90);
   ASSERT_EQ(sequence.warnings.size(), 1u);
   EXPECT_NE(sequence.warnings[0].find("(lines 1)"), std::string::npos) << sequence.warnings[0];
 }
@@ -384,7 +377,7 @@ TEST(CarmenDatasetFactsTest, Fr079UsesTheMaxRangeParamOfItsLog) {
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/fr079/freiburg-079-corrected.log.gz");
   const Sequence sequence = ReadCarmenSequence(log);
   EXPECT_EQ(sequence.scans.front().range_max_m, 80.99);  // PARAM robot_front_laser_max 80.99
-  EXPECT_DOUBLE_EQ(sequence.scans.front().angle_increment_rad, kPi / 360);
+  EXPECT_DOUBLE_EQ(sequence.scans.front().angle_increment_rad, std::numbers::pi / 360);
   EXPECT_TRUE(sequence.warnings.empty());
 }
 

@@ -12,20 +12,14 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/sequence/sequence_file.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/input_error_text.h"
 
 namespace slamsweep::evaluator {
 namespace {
 
 using ::testing::HasSubstr;
 
-std::string ErrorOf(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "(no InputError)";
-}
+using slamsweep::testing::ErrorOf;
 
 std::filesystem::path ShippedCatalog() {
   // Not __FILE__: compiler caches may make it relative to the build folder.

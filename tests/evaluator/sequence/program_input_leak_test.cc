@@ -22,7 +22,6 @@
 namespace slamsweep::evaluator {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kTolerance = 1e-6;
 
 // The type itself keeps the truth out: no conversion from a Sequence, no field for a reference.
@@ -39,8 +38,8 @@ Sequence DivergingSequence(int beams, const Pose& mount) {
   for (int i = 0; i < 40; ++i) {
     LaserScan scan;
     scan.stamp_s = 1000.5 + 0.25 * i;
-    scan.angle_min_rad = beams == 181 ? -kPi / 2 : -kPi;
-    scan.angle_increment_rad = beams == 181 ? kPi / 180 : 2 * kPi / beams;
+    scan.angle_min_rad = beams == 181 ? -std::numbers::pi / 2 : -std::numbers::pi;
+    scan.angle_increment_rad = beams == 181 ? std::numbers::pi / 180 : 2 * std::numbers::pi / beams;
     scan.range_max_m = 30.0;
     scan.sensor_pose_on_robot = mount;
     scan.ranges_m.assign(static_cast<std::size_t>(beams), 7.5f);

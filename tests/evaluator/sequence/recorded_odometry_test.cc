@@ -29,7 +29,7 @@ std::string Odom(double x, double y, double theta, double stamp_s) {
   return line.str();
 }
 
-std::string Flaser(double x, double y, double theta, double stamp_s) {
+std::string FlaserLine(double x, double y, double theta, double stamp_s) {
   std::ostringstream line;
   line << "FLASER 3 1 1 1 " << x << ' ' << y << ' ' << theta << ' ' << x << ' ' << y << ' ' << theta << ' '
        << stamp_s << " pippo " << stamp_s << '\n';
@@ -49,13 +49,13 @@ std::string HandMadeCorrectedLog() {
   std::string text;
   text += Odom(0, 0, 0, 0.0);
   text += Odom(1, 0, 0, 1.0);
-  text += Flaser(0.9, 0.0, 0.1, 1.0);
+  text += FlaserLine(0.9, 0.0, 0.1, 1.0);
   text += Odom(0.9, 0.0, 0.1, 0.0);  // reset
   const Pose r2 = k1 * Pose::Planar(1.0, 0.0, 0.0);
   text += Odom(r2.position.x(), r2.position.y(), r2.Yaw(), 2.0);
   const Pose r3 = k1 * Pose::Planar(2.0, 0.0, 0.0);
   text += Odom(r3.position.x(), r3.position.y(), r3.Yaw(), 3.0);
-  text += Flaser(2.7, 0.2, 0.3, 3.0);
+  text += FlaserLine(2.7, 0.2, 0.3, 3.0);
   text += Odom(2.7, 0.2, 0.3, 1.13);  // reset with an ordinary-looking, out-of-order stamp
   const Pose r4 = k2 * Pose::Planar(1.0, 0.0, 0.0);
   text += Odom(r4.position.x(), r4.position.y(), r4.Yaw(), 4.0);
@@ -102,7 +102,7 @@ TEST(RecordedOdometryTest, RecordedModeFeedsTheWheelOdometryAndKeepsTheCorrected
 
 TEST(RecordedOdometryTest, LogWithoutAStreamIsAnErrorNamingTheLine) {
   // A scan without any reading before it: no stream.
-  const std::string text = Flaser(0, 0, 0, 1.0) + Flaser(1, 0, 0, 2.0);
+  const std::string text = FlaserLine(0, 0, 0, 1.0) + FlaserLine(1, 0, 0, 2.0);
   const CarmenLog log = ParseCarmenLog(text, "bare.log");
   try {
     RebuildRecordedOdometry(log, Flasers(log), "bare.log", {});
@@ -111,7 +111,7 @@ TEST(RecordedOdometryTest, LogWithoutAStreamIsAnErrorNamingTheLine) {
     EXPECT_NE(std::string(error.what()).find("bare.log:1"), std::string::npos) << error.what();
   }
   // An ODOM right after a scan that does not repeat its pose: not a corrected log's reset.
-  const std::string moved = Odom(0, 0, 0, 0.5) + Flaser(0, 0, 0, 1.0) + Odom(5, 0, 0, 1.5) + Flaser(1, 0, 0, 2.0);
+  const std::string moved = Odom(0, 0, 0, 0.5) + FlaserLine(0, 0, 0, 1.0) + Odom(5, 0, 0, 1.5) + FlaserLine(1, 0, 0, 2.0);
   const CarmenLog moved_log = ParseCarmenLog(moved, "moved.log");
   try {
     RebuildRecordedOdometry(moved_log, Flasers(moved_log), "moved.log", {});

@@ -15,21 +15,14 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/trajectory/tum_format.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/input_error_text.h"
 
 namespace slamsweep::evaluator {
 namespace {
 
 using ::testing::HasSubstr;
-constexpr double kPi = std::numbers::pi;
 
-std::string ErrorOf(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "(no InputError)";
-}
+using slamsweep::testing::ErrorOf;
 
 /// Three scans of a CARMEN front laser (181 beams, -90..+90 deg, sensor at the robot origin) with a
 /// reference that differs from the odometry, and one no-return beam per scan.
@@ -40,8 +33,8 @@ Sequence CarmenLikeSequence() {
   for (int i = 0; i < 3; ++i) {
     LaserScan scan;
     scan.stamp_s = 100.25 + 0.5 * i;
-    scan.angle_min_rad = -kPi / 2;
-    scan.angle_increment_rad = kPi / 180;
+    scan.angle_min_rad = -std::numbers::pi / 2;
+    scan.angle_increment_rad = std::numbers::pi / 180;
     scan.range_max_m = 50.0;
     for (int b = 0; b < 181; ++b) scan.ranges_m.push_back(0.1f * static_cast<float>(b + i) + 0.013f);
     scan.ranges_m[7] = 81.91f;
@@ -75,8 +68,8 @@ TEST(SequenceFileTest, CarmenFlaserRoundTripKeepsScansAndOdometryAndNoReference)
   for (std::size_t i = 0; i < 3; ++i) {
     EXPECT_EQ(read.scans[i].ranges_m, written.scans[i].ranges_m) << i;  // bit for bit
     EXPECT_EQ(read.scans[i].stamp_s, written.scans[i].stamp_s);
-    EXPECT_DOUBLE_EQ(read.scans[i].angle_min_rad, -kPi / 2);
-    EXPECT_DOUBLE_EQ(read.scans[i].angle_increment_rad, kPi / 180);
+    EXPECT_DOUBLE_EQ(read.scans[i].angle_min_rad, -std::numbers::pi / 2);
+    EXPECT_DOUBLE_EQ(read.scans[i].angle_increment_rad, std::numbers::pi / 180);
     EXPECT_EQ(read.scans[i].range_max_m, 50.0);
     EXPECT_FALSE(read.scans[i].IsHit(read.scans[i].ranges_m[7]));
   }
@@ -92,8 +85,8 @@ TEST(SequenceFileTest, CarmenRobotLaserRoundTripKeepsAnyFanAndTheMount) {
   written.reference.reset();
   for (LaserScan& scan : written.scans) {
     scan.ranges_m.resize(360);
-    scan.angle_min_rad = -kPi;
-    scan.angle_increment_rad = 2 * kPi / 360;
+    scan.angle_min_rad = -std::numbers::pi;
+    scan.angle_increment_rad = 2 * std::numbers::pi / 360;
     scan.sensor_pose_on_robot = Pose::Planar(0.2, -0.05, 0.1);
   }
   const std::string text = FormatCarmenLog(RobotLogOf(written));
@@ -104,8 +97,8 @@ TEST(SequenceFileTest, CarmenRobotLaserRoundTripKeepsAnyFanAndTheMount) {
   ASSERT_EQ(read.scans.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
     EXPECT_EQ(read.scans[i].ranges_m, written.scans[i].ranges_m);
-    EXPECT_DOUBLE_EQ(read.scans[i].angle_min_rad, -kPi);
-    EXPECT_DOUBLE_EQ(read.scans[i].angle_increment_rad, 2 * kPi / 360);
+    EXPECT_DOUBLE_EQ(read.scans[i].angle_min_rad, -std::numbers::pi);
+    EXPECT_DOUBLE_EQ(read.scans[i].angle_increment_rad, 2 * std::numbers::pi / 360);
     EXPECT_EQ(read.scans[i].range_max_m, 50.0);
     EXPECT_NEAR(read.scans[i].sensor_pose_on_robot.position.x(), 0.2, 1e-12);
     EXPECT_NEAR(read.scans[i].sensor_pose_on_robot.position.y(), -0.05, 1e-12);

@@ -14,6 +14,7 @@
 #include "orchestrator/store/sqlite_db.h"
 #include "tests/orchestrator/store/store_test_util.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/input_error_text.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -24,14 +25,7 @@ using testing::MakeFailedResult;
 using testing::MakeOkResult;
 using testing::MakeSpec;
 
-std::string ErrorOf(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no InputError";
-}
+using slamsweep::testing::ErrorOf;
 
 std::int64_t QueryInt(const std::filesystem::path& file, const std::string& sql) {
   SqliteDb db = SqliteDb::Open(file, false);

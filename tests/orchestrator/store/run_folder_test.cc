@@ -6,6 +6,7 @@
 #include "evaluator/core/input_error.h"
 #include "tests/orchestrator/store/store_test_util.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/input_error_text.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -14,14 +15,7 @@ using ::testing::HasSubstr;
 using testing::MakeOkResult;
 using testing::MakeSpec;
 
-std::string ErrorOf(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const evaluator::InputError& e) {
-    return e.what();
-  }
-  return "no InputError";
-}
+using slamsweep::testing::ErrorOf;
 
 TEST(RunFolderTest, RecordsRunJsonAndResultJson) {
   slamsweep::testing::TempDir dir;

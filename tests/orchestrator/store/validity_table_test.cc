@@ -17,7 +17,7 @@ namespace {
 
 using nlohmann::json;
 
-std::string ReadText(const std::filesystem::path& file) {
+std::string ReadWholeFile(const std::filesystem::path& file) {
   std::ifstream in(file);
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
@@ -47,7 +47,7 @@ TEST(ValidityTableTest, SummaryJsonAndValidityCsvCarryTheSameTable) {
   slamsweep::testing::TempDir dir;
   const std::vector<StoredRun> runs = Runs(true);
   WriteResultFiles(runs, dir.path());
-  const json validity = json::parse(ReadText(dir / "summary.json")).at("validity");
+  const json validity = json::parse(ReadWholeFile(dir / "summary.json")).at("validity");
   EXPECT_EQ(validity.at("sequences"), json::array({"intel"}));
   EXPECT_EQ(validity.at("method").at("resamples"), 2000);
 
@@ -64,7 +64,7 @@ TEST(ValidityTableTest, SummaryJsonAndValidityCsvCarryTheSameTable) {
   EXPECT_EQ(corners->at("verdict"), "tracks error");
 
   // validity.csv: a header and one line per correlation of summary.json, field for field.
-  std::istringstream csv(ReadText(dir / "validity.csv"));
+  std::istringstream csv(ReadWholeFile(dir / "validity.csv"));
   std::string line;
   std::getline(csv, line);
   EXPECT_EQ(line, "candidate,target,sequence,pooling,runs,strata,spearman_rho,ci_low,ci_high,resamples_defined,verdict");
@@ -109,7 +109,7 @@ TEST(ValidityTableTest, WithoutReferenceDataThereIsNoTable) {
   slamsweep::testing::WriteFile(dir / "validity.csv", "stale\n");
   const std::vector<StoredRun> runs = Runs(false);
   WriteResultFiles(runs, dir.path());
-  EXPECT_FALSE(json::parse(ReadText(dir / "summary.json")).contains("validity"));
+  EXPECT_FALSE(json::parse(ReadWholeFile(dir / "summary.json")).contains("validity"));
   EXPECT_FALSE(std::filesystem::exists(dir / "validity.csv"));
 }
 

@@ -17,7 +17,6 @@ namespace {
 using map_test::InputErrorOf;
 using ::testing::HasSubstr;
 
-constexpr float kUnknown = OccupancyGrid::kUnknown;
 
 TEST(MapFileTest, DispatchesOnNameAndSiblingLimits) {
   testing::TempDir dir;
@@ -41,7 +40,7 @@ TEST(MapFileTest, ReadMapUsesTheDetectedReader) {
   testing::WriteFile(dir / "mrpt_limits.txt", "0 4 0 4\n");
   const OccupancyGrid mrpt = ReadMap(dir / "mrpt.png");
   EXPECT_DOUBLE_EQ(mrpt.resolution_m, 2.0);
-  EXPECT_EQ(std::count(mrpt.cells.begin(), mrpt.cells.end(), kUnknown), 4);
+  EXPECT_EQ(std::count(mrpt.cells.begin(), mrpt.cells.end(), OccupancyGrid::kUnknown), 4);
 
   MapReadOptions bare;
   bare.format = MapFormat::kBareImage;
@@ -71,7 +70,7 @@ TEST(MapFileTest, BareImageIsAllKnownUnlessAnUnknownValueIsGiven) {
   options.unknown_value = 205;
   options.default_resolution_m = 0.1;
   const OccupancyGrid with_unknown = ReadMap(dir / "b.pgm", options);
-  EXPECT_THAT(with_unknown.cells, ::testing::ElementsAre(1.0f, kUnknown, 1.0f / 255.0f));
+  EXPECT_THAT(with_unknown.cells, ::testing::ElementsAre(1.0f, OccupancyGrid::kUnknown, 1.0f / 255.0f));
   EXPECT_DOUBLE_EQ(with_unknown.resolution_m, 0.1);
 }
 
@@ -81,7 +80,7 @@ TEST(MapFileTest, MapWithoutKnownCellsIsReadable) {
   MapReadOptions options;
   options.unknown_value = 205;
   const OccupancyGrid grid = ReadMap(dir / "u.pgm", options);
-  EXPECT_EQ(std::count(grid.cells.begin(), grid.cells.end(), kUnknown), 4);
+  EXPECT_EQ(std::count(grid.cells.begin(), grid.cells.end(), OccupancyGrid::kUnknown), 4);
 }
 
 TEST(MapFileTest, BadOptionsNameTheOption) {
@@ -124,7 +123,7 @@ void CheckBareReference(const std::filesystem::path& pgm, const std::filesystem:
   ASSERT_EQ(grid.width, expected.at("width").get<int>());
   ASSERT_EQ(grid.height, expected.at("height").get<int>());
   const double cells = static_cast<double>(grid.CellCount());
-  const auto unknown = std::count(grid.cells.begin(), grid.cells.end(), kUnknown);
+  const auto unknown = std::count(grid.cells.begin(), grid.cells.end(), OccupancyGrid::kUnknown);
   EXPECT_EQ(unknown, std::llround(expected.at("unknown_to_all").get<double>() * cells));
   double sum = 0.0;
   for (const float p : grid.cells) sum += OccupancyGrid::IsUnknown(p) ? 0.0 : static_cast<double>(p);

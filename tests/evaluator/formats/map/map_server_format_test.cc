@@ -16,7 +16,6 @@ using map_test::InputErrorOf;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-constexpr float kUnknown = OccupancyGrid::kUnknown;
 
 /// A map_server YAML for `image` with round thresholds (free 0.2, occupied 0.7) so that expected
 /// cell values can be worked out by hand.
@@ -38,13 +37,13 @@ const std::vector<std::uint8_t> kGreys = {0, 76, 102, 153, 205, 230, 255};
 TEST(MapServerFormatTest, TrinaryUsesStrictThresholds) {
   testing::TempDir dir;
   testing::WriteFile(dir / "g.pgm", map_test::Pgm(7, 1, kGreys));
-  EXPECT_THAT(ReadRow(dir, Yaml("g.pgm")), ::testing::ElementsAre(1.0f, 1.0f, kUnknown, kUnknown, 0.0f, 0.0f, 0.0f));
+  EXPECT_THAT(ReadRow(dir, Yaml("g.pgm")), ::testing::ElementsAre(1.0f, 1.0f, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, 0.0f, 0.0f, 0.0f));
   // occ == occupied_thresh is not occupied and occ == free_thresh is not free: 102 -> occ 0.6, 153 -> occ 0.4.
   testing::WriteFile(dir / "e.pgm", map_test::Pgm(4, 1, {101, 102, 153, 154}));
   testing::WriteFile(dir / "m.yaml",
                      "image: e.pgm\nresolution: 1\norigin: [0, 0, 0]\nnegate: 0\n"
                      "occupied_thresh: 0.6\nfree_thresh: 0.4\n");
-  EXPECT_THAT(ReadMapServer(dir / "m.yaml").cells, ::testing::ElementsAre(1.0f, kUnknown, kUnknown, 0.0f));
+  EXPECT_THAT(ReadMapServer(dir / "m.yaml").cells, ::testing::ElementsAre(1.0f, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, 0.0f));
 }
 
 TEST(MapServerFormatTest, GeometryComesFromTheYaml) {
@@ -66,7 +65,7 @@ TEST(MapServerFormatTest, NegateSwapsBlackAndWhite) {
   // negate: average = 255 - v, so occ = v / 255: 0 -> free, 76 -> 0.298, 102 -> 0.4, 153 -> 0.6 (unknown),
   // 205 -> 0.804 and above -> occupied.
   EXPECT_THAT(ReadRow(dir, Yaml("g.pgm", "", "1")),
-              ::testing::ElementsAre(0.0f, kUnknown, kUnknown, kUnknown, 1.0f, 1.0f, 1.0f));
+              ::testing::ElementsAre(0.0f, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, 1.0f, 1.0f, 1.0f));
 }
 
 TEST(MapServerFormatTest, ScaleModeGivesNinetyNineTimesTheRatio) {
@@ -81,10 +80,10 @@ TEST(MapServerFormatTest, ScaleModeGivesNinetyNineTimesTheRatio) {
 TEST(MapServerFormatTest, RawModeKeepsValuesAndRejectsMeaninglessOnes) {
   testing::TempDir dir;
   testing::WriteFile(dir / "r.pgm", map_test::Pgm(5, 1, {0, 37, 100, 255, 1}));
-  EXPECT_THAT(ReadRow(dir, Yaml("r.pgm", "mode: raw\n")), ::testing::ElementsAre(0.0f, 0.37f, 1.0f, kUnknown, 0.01f));
+  EXPECT_THAT(ReadRow(dir, Yaml("r.pgm", "mode: raw\n")), ::testing::ElementsAre(0.0f, 0.37f, 1.0f, OccupancyGrid::kUnknown, 0.01f));
   // negate applies before raw: 255 - 218 = 37.
   testing::WriteFile(dir / "n.pgm", map_test::Pgm(2, 1, {218, 0}));
-  EXPECT_THAT(ReadRow(dir, Yaml("n.pgm", "mode: raw\n", "1")), ::testing::ElementsAre(0.37f, kUnknown));
+  EXPECT_THAT(ReadRow(dir, Yaml("n.pgm", "mode: raw\n", "1")), ::testing::ElementsAre(0.37f, OccupancyGrid::kUnknown));
 
   testing::WriteFile(dir / "bad.pgm", map_test::Pgm(3, 1, {0, 10, 150}));
   testing::WriteFile(dir / "m.yaml", Yaml("bad.pgm", "mode: raw\n"));
@@ -100,7 +99,7 @@ TEST(MapServerFormatTest, ColourIsAveragedOverChannels) {
   // (255, 255, 204): 238 -> occ 0.067 -> free.
   map_test::WriteImage(dir / "c.png",
                        map_test::RgbRow({cv::Vec3b(30, 60, 90), cv::Vec3b(255, 0, 0), cv::Vec3b(255, 255, 204)}));
-  EXPECT_THAT(ReadRow(dir, Yaml("c.png")), ::testing::ElementsAre(1.0f, kUnknown, 0.0f));
+  EXPECT_THAT(ReadRow(dir, Yaml("c.png")), ::testing::ElementsAre(1.0f, OccupancyGrid::kUnknown, 0.0f));
   // raw: (10, 20, 31) averages to 20.33, truncated to 20.
   map_test::WriteImage(dir / "r.png", map_test::RgbRow({cv::Vec3b(10, 20, 31)}));
   EXPECT_THAT(ReadRow(dir, Yaml("r.png", "mode: raw\n")), ::testing::ElementsAre(0.2f));
@@ -112,11 +111,11 @@ TEST(MapServerFormatTest, AlphaMarksUnknownInScaleModeAndIsAveragedInTrinary) {
                                                          cv::Vec4b(255, 255, 255, 0), cv::Vec4b(0, 0, 0, 0)}));
   // Scale: alpha left out of the average; a transparent in-between pixel is unknown, a
   // transparent free or occupied pixel keeps its value.
-  EXPECT_THAT(ReadRow(dir, Yaml("a.png", "mode: scale\n")), ::testing::ElementsAre(kUnknown, 0.39f, 0.0f, 1.0f));
+  EXPECT_THAT(ReadRow(dir, Yaml("a.png", "mode: scale\n")), ::testing::ElementsAre(OccupancyGrid::kUnknown, 0.39f, 0.0f, 1.0f));
   // Trinary: alpha is averaged in. (153*3 + 0) / 4 = 114.75 -> occ 0.55 -> unknown;
   // (153*3 + 255) / 4 = 178.5 -> occ 0.3 -> unknown; (255*3 + 0) / 4 = 191.25 -> occ 0.25 -> unknown;
   // 0 -> occupied.
-  EXPECT_THAT(ReadRow(dir, Yaml("a.png")), ::testing::ElementsAre(kUnknown, kUnknown, kUnknown, 1.0f));
+  EXPECT_THAT(ReadRow(dir, Yaml("a.png")), ::testing::ElementsAre(OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, 1.0f));
 }
 
 TEST(MapServerFormatTest, RgbScaleModeTakesAlphaFromBlueLikeMapServer) {
@@ -160,7 +159,7 @@ TEST(MapServerFormatTest, MapWithoutKnownCellsIsStillReadable) {
   testing::WriteFile(dir / "u.pgm", map_test::Pgm(3, 2, std::vector<std::uint8_t>(6, 128)));
   testing::WriteFile(dir / "m.yaml", Yaml("u.pgm"));
   const OccupancyGrid grid = ReadMapServer(dir / "m.yaml");
-  EXPECT_EQ(std::count(grid.cells.begin(), grid.cells.end(), kUnknown), 6);
+  EXPECT_EQ(std::count(grid.cells.begin(), grid.cells.end(), OccupancyGrid::kUnknown), 6);
 }
 
 // ---- writing ----
@@ -190,7 +189,7 @@ TEST(MapServerFormatTest, TrinaryRoundTripKeepsCellsAndGeometry) {
   testing::TempDir dir;
   OccupancyGrid grid(5, 4, 0.05, GridOrigin{-40.0, -52.0, 0.3});
   for (std::size_t i = 0; i < grid.cells.size(); ++i)
-    grid.cells[i] = (i % 3 == 0) ? kUnknown : (i % 3 == 1 ? 0.0f : 1.0f);
+    grid.cells[i] = (i % 3 == 0) ? OccupancyGrid::kUnknown : (i % 3 == 1 ? 0.0f : 1.0f);
   WriteMapServer(grid, dir / "rt.yaml");
   const OccupancyGrid back = ReadMapServer(dir / "rt.yaml");
   EXPECT_EQ(back.width, 5);
@@ -225,7 +224,7 @@ TEST(MapServerFormatTest, TrinaryThresholdOptionsAreMapSaverOccAndFree) {
 TEST(MapServerFormatTest, ScaleWriteKeepsGreyLevelsAndMarksUnknownWithAlpha) {
   testing::TempDir dir;
   OccupancyGrid grid(7, 1, 0.05);
-  const std::vector<float> values = {0.0f, 1.0f, 0.5f, 0.4f, 0.1f, 0.8f, kUnknown};
+  const std::vector<float> values = {0.0f, 1.0f, 0.5f, 0.4f, 0.1f, 0.8f, OccupancyGrid::kUnknown};
   grid.cells = values;
   MapWriteOptions options;
   options.mode = MapWriteOptions::Mode::kScale;
@@ -249,7 +248,7 @@ TEST(MapServerFormatTest, ScaleWriteKeepsGreyLevelsAndMarksUnknownWithAlpha) {
   // map_server's scale rules with 0.65 / 0.196: 128 -> occ 0.498, ratio 0.665 -> 65; 153 -> occ 0.4,
   // ratio 0.449 -> 44; 229 -> occ 0.102 < 0.196 -> free; 51 -> occ 0.8 -> occupied.
   EXPECT_THAT(ReadMapServer(dir / "s.yaml").cells,
-              ::testing::ElementsAre(0.0f, 1.0f, 0.65f, 0.44f, 0.0f, 1.0f, kUnknown));
+              ::testing::ElementsAre(0.0f, 1.0f, 0.65f, 0.44f, 0.0f, 1.0f, OccupancyGrid::kUnknown));
 }
 
 TEST(MapServerFormatTest, WriteRejectsMalformedGridsAndUnwritablePaths) {
@@ -331,7 +330,7 @@ void CheckReferenceMap(const std::filesystem::path& yaml, int width, int height,
   std::size_t mismatches = 0;
   for (std::size_t i = 0; i < raw.pixels.size(); ++i) {
     const double occ = (255.0 - static_cast<unsigned char>(raw.pixels[i])) / 255.0;
-    const float want = occ > 0.65 ? 1.0f : (occ < 0.196 ? 0.0f : kUnknown);
+    const float want = occ > 0.65 ? 1.0f : (occ < 0.196 ? 0.0f : OccupancyGrid::kUnknown);
     (want == 1.0f ? expected.occupied : want == 0.0f ? expected.free : expected.unknown)++;
     const float got = grid.cells[i];
     (got == 1.0f ? read.occupied : got == 0.0f ? read.free : read.unknown)++;

@@ -13,7 +13,6 @@ using map_test::InputErrorOf;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-constexpr float kUnknown = OccupancyGrid::kUnknown;
 
 /// The limits file as MRPT's CMatrixF::saveToTextFile(MATRIX_FORMAT_FIXED) writes it.
 constexpr const char* kLimits =
@@ -46,7 +45,7 @@ TEST(MrptGridmapFormatTest, ReadsCellsExtentAndOrientation) {
   // the largest y, centre y_min + (height - 0.5) * resolution = 2.75.
   EXPECT_DOUBLE_EQ(grid.CellCenterYM(0), 2.75);
   EXPECT_DOUBLE_EQ(grid.CellCenterXM(0), -0.75);
-  EXPECT_THAT(grid.cells, ::testing::ElementsAre(1.0f, kUnknown, 0.0f, 204.0f / 255.0f, 51.0f / 255.0f, kUnknown));
+  EXPECT_THAT(grid.cells, ::testing::ElementsAre(1.0f, OccupancyGrid::kUnknown, 0.0f, 204.0f / 255.0f, 51.0f / 255.0f, OccupancyGrid::kUnknown));
 }
 
 TEST(MrptGridmapFormatTest, UnknownValueCanBeOverridden) {
@@ -54,7 +53,7 @@ TEST(MrptGridmapFormatTest, UnknownValueCanBeOverridden) {
   WriteSample(dir);
   const OccupancyGrid grid = ReadMrptGridmap(dir / "run_COccupancyGridMap2D_00.png", 255);
   EXPECT_FLOAT_EQ(grid.at(0, 1), 128.0f / 255.0f);
-  EXPECT_EQ(grid.at(0, 2), kUnknown);
+  EXPECT_EQ(grid.at(0, 2), OccupancyGrid::kUnknown);
 }
 
 TEST(MrptGridmapFormatTest, RoundTripKeepsCellsAndExtent) {
@@ -62,9 +61,9 @@ TEST(MrptGridmapFormatTest, RoundTripKeepsCellsAndExtent) {
   OccupancyGrid grid(4, 3, 0.07, GridOrigin{-48.02000045776367, -52.9900016784668, 0.0});
   for (std::size_t i = 0; i < grid.cells.size(); ++i) {
     const int grey = static_cast<int>(i * 23 % 256);
-    grid.cells[i] = grey == 127 ? kUnknown : static_cast<float>((255 - grey) / 255.0);
+    grid.cells[i] = grey == 127 ? OccupancyGrid::kUnknown : static_cast<float>((255 - grey) / 255.0);
   }
-  grid.cells[5] = kUnknown;
+  grid.cells[5] = OccupancyGrid::kUnknown;
   WriteMrptGridmap(grid, dir / "map.png");
 
   const std::string limits = map_test::ReadAll(dir / "map_limits.txt");
@@ -89,7 +88,7 @@ TEST(MrptGridmapFormatTest, KnownCellAtMrptsUnknownGreyBecomesUnknown) {
   grid.at(0, 1) = 0.5f;                       // 127.5 rounds to 128: stays known
   WriteMrptGridmap(grid, dir / "m.png");
   const OccupancyGrid back = ReadMrptGridmap(dir / "m.png");
-  EXPECT_EQ(back.at(0, 0), kUnknown);
+  EXPECT_EQ(back.at(0, 0), OccupancyGrid::kUnknown);
   EXPECT_FLOAT_EQ(back.at(0, 1), 127.0f / 255.0f);
 }
 

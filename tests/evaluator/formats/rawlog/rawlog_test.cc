@@ -15,6 +15,7 @@
 #include "evaluator/sequence/carmen_sequence.h"
 #include "tests/evaluator/formats/rawlog/rawlog_test_util.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/input_error_text.h"
 
 namespace slamsweep::evaluator {
 namespace {
@@ -220,14 +221,7 @@ TEST(RawlogTest, ReadsCarmen2rawlogOutputAndRepairsItsClock) {
   EXPECT_EQ(read.scans[2].stamp_s, 2.0);
 }
 
-std::string ErrorOf(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "(no InputError)";
-}
+using slamsweep::testing::ErrorOf;
 
 TEST(RawlogTest, UnreadableFilesAreInputErrorsNamingTheFile) {
   const testing::TempDir dir;

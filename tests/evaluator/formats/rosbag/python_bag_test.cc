@@ -21,7 +21,6 @@ using ::testing::AllOf;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
-constexpr double kPi = std::numbers::pi;
 
 /// The bags, written once for all tests; or why they could not be.
 struct PythonBags {
@@ -125,7 +124,7 @@ TEST(PythonBagTest, ScansOdometryMountAndReference) {
     EXPECT_EQ(scan.range_max_m, 30.0);
     // nan, inf and -inf are "no return", stored as range_max.
     EXPECT_EQ(scan.ranges_m, (std::vector<float>{1.0f, 30.0f, 30.0f, 30.0f, 2.5f}));
-    ExpectPlanar(scan.sensor_pose_on_robot, 0.2, 0.1, kPi / 2);
+    ExpectPlanar(scan.sensor_pose_on_robot, 0.2, 0.1, std::numbers::pi / 2);
   }
   // Odometry (100: 0 0 0) (101: 1 2 0.5) (102: 2 2 1) interpolated at the scan stamps.
   ExpectPlanar(sequence.odometry.poses()[0], 0.0, 0.0, 0.0);
@@ -153,17 +152,17 @@ TEST(PythonBagTest, OdometryAndReferenceFromOldStyleTf) {
   EXPECT_TRUE(sequence.warnings.empty()) << sequence.warnings.front();
   ASSERT_EQ(sequence.scans.size(), 2u);
   // odom -> base_link (10: 0 0 0) (11: 1 0 pi/2) (12: 1 1 pi/2) at 10.5 and 11.5.
-  ExpectPlanar(sequence.odometry.poses()[0], 0.5, 0.0, kPi / 4);
-  ExpectPlanar(sequence.odometry.poses()[1], 1.0, 0.5, kPi / 2);
+  ExpectPlanar(sequence.odometry.poses()[0], 0.5, 0.0, std::numbers::pi / 4);
+  ExpectPlanar(sequence.odometry.poses()[1], 1.0, 0.5, std::numbers::pi / 2);
   // base_link -> /base_laser was sent once, at 10 s, on /tf: taken as the mount.
-  ExpectPlanar(sequence.scans[0].sensor_pose_on_robot, 0.3, 0.0, kPi);
-  ExpectPlanar(sequence.scans[1].sensor_pose_on_robot, 0.3, 0.0, kPi);
+  ExpectPlanar(sequence.scans[0].sensor_pose_on_robot, 0.3, 0.0, std::numbers::pi);
+  ExpectPlanar(sequence.scans[1].sensor_pose_on_robot, 0.3, 0.0, std::numbers::pi);
   // map -> odom is (1, 0, pi/2) throughout; map -> base_link at 10, 11, 12 s.
   ASSERT_TRUE(sequence.reference.has_value());
   EXPECT_EQ(sequence.reference->stamps_s(), (std::vector<double>{10.0, 11.0, 12.0}));
-  ExpectPlanar(sequence.reference->poses()[0], 1.0, 0.0, kPi / 2);
-  ExpectPlanar(sequence.reference->poses()[1], 1.0, 1.0, kPi);
-  ExpectPlanar(sequence.reference->poses()[2], 0.0, 1.0, kPi);
+  ExpectPlanar(sequence.reference->poses()[0], 1.0, 0.0, std::numbers::pi / 2);
+  ExpectPlanar(sequence.reference->poses()[1], 1.0, 1.0, std::numbers::pi);
+  ExpectPlanar(sequence.reference->poses()[2], 0.0, 1.0, std::numbers::pi);
 }
 
 TEST(PythonBagTest, MissingReferenceFrameIsAnError) {

@@ -8,7 +8,6 @@
 namespace slamsweep::evaluator {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 void ExpectPlanar(const std::optional<Pose>& pose, double x_m, double y_m, double yaw_rad) {
   ASSERT_TRUE(pose.has_value());
@@ -25,21 +24,21 @@ TEST(CanonicalFrameTest, DropsLeadingSlashes) {
 
 TEST(TransformTreeTest, ComposesStaticChainDownTheTree) {
   TransformTree tree;
-  ASSERT_TRUE(tree.AddStatic("base_link", "mount", Pose::Planar(1.0, 0.0, kPi / 2)));
+  ASSERT_TRUE(tree.AddStatic("base_link", "mount", Pose::Planar(1.0, 0.0, std::numbers::pi / 2)));
   ASSERT_TRUE(tree.AddStatic("mount", "laser", Pose::Planar(2.0, 0.0, 0.0)));
   // laser in base_link: mount's +x is base_link's +y, so 2 m along it lands at (1, 2).
-  ExpectPlanar(tree.Lookup("base_link", "laser", 0.0, false), 1.0, 2.0, kPi / 2);
+  ExpectPlanar(tree.Lookup("base_link", "laser", 0.0, false), 1.0, 2.0, std::numbers::pi / 2);
   // And the inverse direction.
-  ExpectPlanar(tree.Lookup("laser", "base_link", 0.0, false), -2.0, 1.0, -kPi / 2);
+  ExpectPlanar(tree.Lookup("laser", "base_link", 0.0, false), -2.0, 1.0, -std::numbers::pi / 2);
   ExpectPlanar(tree.Lookup("/laser", "/laser", 0.0, false), 0.0, 0.0, 0.0);
 }
 
 TEST(TransformTreeTest, LooksUpBetweenSiblingsThroughCommonParent) {
   TransformTree tree;
   tree.AddStatic("base_link", "front", Pose::Planar(1.0, 0.0, 0.0));
-  tree.AddStatic("base_link", "rear", Pose::Planar(-1.0, 0.0, kPi));
+  tree.AddStatic("base_link", "rear", Pose::Planar(-1.0, 0.0, std::numbers::pi));
   // rear looks backwards from (-1, 0): front is 2 m behind it.
-  ExpectPlanar(tree.Lookup("rear", "front", 0.0, false), -2.0, 0.0, kPi);
+  ExpectPlanar(tree.Lookup("rear", "front", 0.0, false), -2.0, 0.0, std::numbers::pi);
 }
 
 TEST(TransformTreeTest, InterpolatesSamplesAndClampsOnlyWhenAsked) {
