@@ -81,7 +81,7 @@ void PrintTable(const history::Comparison& comparison, std::ostream& out) {
   for (const history::Finding& f : comparison.findings) {
     out << fmt::format("{:<15} {:<48} {:>12.6g} {:>12.6g} {:>2}/{:<2} {:>10.4g} {:>+7.3f}\n",
                        history::VerdictName(f.verdict),
-                       fmt::format("{}/{}/{} {}.{}", f.algorithm, f.sequence, f.noise, f.metric, f.statistic),
+                       fmt::format("{}/{}/{}/{} {}.{}", f.algorithm, f.sequence, f.noise, f.odometry, f.metric, f.statistic),
                        f.baseline_median, f.current_median, f.baseline_n, f.current_n, f.test.p_value,
                        f.cliffs_delta);
   }

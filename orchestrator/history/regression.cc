@@ -10,6 +10,7 @@
 #include "evaluator/core/input_error.h"
 #include "orchestrator/history/series_odometry.h"
 #include "orchestrator/store/junit_xml.h"
+#include "orchestrator/store/metric_direction.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -118,11 +119,12 @@ Comparison CompareNights(const Night& baseline, const Night& current, const Regr
       f.test = evaluator::MannWhitneyU(after->values, before->values);
       f.cliffs_delta = evaluator::CliffsDelta(after->values, before->values);
       const bool significant = f.test.p_value < options.alpha && std::abs(f.cliffs_delta) >= options.min_effect;
-      // Every metric here is an error or a defect count: larger is worse.
+      // Errors and defect counts get worse as they grow; the map-versus-reference scores get better.
+      const bool grew = f.cliffs_delta > 0.0;
       if (!significant) {
         f.verdict = Verdict::kUnchanged;
       } else {
-        f.verdict = f.cliffs_delta > 0.0 ? Verdict::kRegression : Verdict::kImprovement;
+        f.verdict = grew != HigherIsBetter(f.metric) ? Verdict::kRegression : Verdict::kImprovement;
       }
     }
     comparison.findings.push_back(std::move(f));

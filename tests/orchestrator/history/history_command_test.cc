@@ -70,6 +70,8 @@ TEST_F(HistoryCommandTest, CompareExitsThreeOnARegressionOnly) {
   const CommandResult rerun = RunHistory({"compare", Path("rerun"), "--previous", "--history", Path("h.sqlite")});
   EXPECT_EQ(rerun.exit_code, 0) << rerun.out;
   EXPECT_NE(rerun.out.find("0 regressions"), std::string::npos) << rerun.out;
+  // Each series names its odometry mode: two modes of one cell never print as the same row.
+  EXPECT_NE(rerun.out.find("/recorded ape_trans.rmse"), std::string::npos) << rerun.out;
   RunHistory({"record", Path("rerun"), "--history", Path("h.sqlite")});
 
   // Noisier odometry against a named baseline: exit 3, JSON and JUnit say so.

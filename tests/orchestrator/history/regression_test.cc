@@ -58,6 +58,37 @@ TEST(RegressionTest, DoubledOdometryNoiseIsARegression) {
   EXPECT_FALSE(reverse.HasRegression());
 }
 
+Night NightWith(const std::string& label, const std::string& metric, std::vector<double> values) {
+  Night night;
+  night.label = label;
+  SampleSeries series;
+  series.algorithm = "gmapping";
+  series.sequence = "intel";
+  series.noise = "none";
+  series.odometry = "recorded";
+  series.metric = metric;
+  series.statistic = "value";
+  series.unit = "ratio";
+  series.values = std::move(values);
+  night.series.push_back(std::move(series));
+  return night;
+}
+
+TEST(RegressionTest, AMapScoreThatGrowsIsAnImprovementAndOneThatFallsARegression) {
+  const std::vector<double> low = {0.50, 0.51, 0.52, 0.53, 0.54, 0.55, 0.56, 0.57};
+  const std::vector<double> high = {0.80, 0.81, 0.82, 0.83, 0.84, 0.85, 0.86, 0.87};
+  for (const char* score : {"map_f1", "map_accuracy", "map_completeness", "map_iou_occupied", "map_iou_free"}) {
+    const Comparison better = CompareNights(NightWith("before", score, low), NightWith("after", score, high), {});
+    ASSERT_EQ(better.findings.size(), 1u);
+    EXPECT_EQ(better.findings[0].verdict, Verdict::kImprovement) << score;
+    const Comparison worse = CompareNights(NightWith("before", score, high), NightWith("after", score, low), {});
+    EXPECT_EQ(worse.findings[0].verdict, Verdict::kRegression) << score;
+  }
+  // An error that grows the same way stays a regression.
+  const Comparison chamfer = CompareNights(NightWith("before", "map_chamfer", low), NightWith("after", "map_chamfer", high), {});
+  EXPECT_EQ(chamfer.findings[0].verdict, Verdict::kRegression);
+}
+
 TEST(RegressionTest, ReRunOfTheSameSettingIsNotFlagged) {
   TempDir dir;
   testing::SyntheticSweep before;
