@@ -18,12 +18,6 @@ namespace {
 using evaluator::InputError;
 using nlohmann::json;
 
-const json* Find(const json& object, const char* key) {
-  if (!object.is_object()) return nullptr;
-  const auto it = object.find(key);
-  return it == object.end() ? nullptr : &*it;
-}
-
 // Invalid UTF-8 (a reason quoting a program's garbled output) is replaced rather than refusing the whole run.
 std::string Dump(const json& value) { return value.dump(-1, ' ', false, json::error_handler_t::replace); }
 
@@ -38,28 +32,28 @@ struct RunColumns {
 RunColumns ValidateRun(const json& run_spec, const json& result) {
   if (!run_spec.is_object()) throw InputError("run.json: expected a JSON object");
   if (!result.is_object()) throw InputError("result.json: expected a JSON object");
-  const json* run_id = Find(run_spec, "run_id");
+  const json* run_id = FindField(run_spec, "run_id");
   if (run_id == nullptr || !run_id->is_string() || run_id->get_ref<const std::string&>().empty()) {
     throw InputError("run.json: run_id: expected a non-empty string");
   }
   RunColumns columns{run_id->get<std::string>(), {}};
   const std::string where = fmt::format("result.json of run {}", columns.run_id);
-  if (const json* result_id = Find(result, "run_id"); result_id != nullptr && *result_id != *run_id) {
+  if (const json* result_id = FindField(result, "run_id"); result_id != nullptr && *result_id != *run_id) {
     throw InputError(fmt::format("{}: run_id: expected \"{}\" (the run.json's), found {}", where, columns.run_id,
                                  Dump(*result_id)));
   }
-  const json* status = Find(result, "status");
+  const json* status = FindField(result, "status");
   if (status == nullptr || !status->is_string() || (*status != "ok" && *status != "failed")) {
     throw InputError(fmt::format("{}: status: expected \"ok\" or \"failed\", found {}", where,
                                  status == nullptr ? "nothing" : Dump(*status)));
   }
   columns.status = status->get<std::string>();
-  if (const json* metrics = Find(result, "metrics"); metrics != nullptr && !metrics->is_null()) {
+  if (const json* metrics = FindField(result, "metrics"); metrics != nullptr && !metrics->is_null()) {
     if (!metrics->is_array()) throw InputError(fmt::format("{}: metrics: expected an array", where));
     for (std::size_t i = 0; i < metrics->size(); ++i) {
       const json& m = (*metrics)[i];
       for (const char* key : {"metric", "statistic"}) {
-        const json* field = Find(m, key);
+        const json* field = FindField(m, key);
         if (field == nullptr || !field->is_string() || field->get_ref<const std::string&>().empty()) {
           throw InputError(fmt::format("{}: metrics[{}].{}: expected a non-empty string", where, i, key));
         }
@@ -74,7 +68,7 @@ RunColumns ValidateRun(const json& run_spec, const json& result) {
       }
     }
   }
-  if (const json* details = Find(result, "metric_details");
+  if (const json* details = FindField(result, "metric_details");
       details != nullptr && !details->is_null() && !details->is_object()) {
     throw InputError(fmt::format("{}: metric_details: expected an object", where));
   }
@@ -394,7 +388,7 @@ void ResultsStore::WriteRun(std::int64_t sweep_id, const json& run_spec, const j
   }
   json result_shared = json::object();
   for (const char* key : kResultSharedMembers) {
-    if (const json* value = Find(result, key); value != nullptr) result_shared[key] = *value;
+    if (const json* value = FindField(result, key); value != nullptr) result_shared[key] = *value;
   }
   const std::int64_t spec_document = Document(spec_shared);
   const std::int64_t result_document = Document(result_shared);
@@ -444,7 +438,7 @@ void ResultsStore::WriteRun(std::int64_t sweep_id, const json& run_spec, const j
   }
   const std::int64_t run = db_.LastInsertRowId();
   if (mid_transaction_hook_) mid_transaction_hook_();
-  if (const json* metrics = Find(result, "metrics"); metrics != nullptr && metrics->is_array()) {
+  if (const json* metrics = FindField(result, "metrics"); metrics != nullptr && metrics->is_array()) {
     auto& insert = Cached("INSERT INTO metric_values(run, position, name, value) VALUES(?, ?, ?, ?)");
     std::int64_t position = 0;
     for (const json* m : DistinctMetrics(*metrics)) {
@@ -471,7 +465,7 @@ void ResultsStore::WriteRun(std::int64_t sweep_id, const json& run_spec, const j
       insert.Run();
     }
   }
-  if (const json* details = Find(result, "metric_details"); details != nullptr && details->is_object()) {
+  if (const json* details = FindField(result, "metric_details"); details != nullptr && details->is_object()) {
     auto& insert = Cached("INSERT INTO metric_spec_refs(run, metric, spec) VALUES(?, ?, ?)");
     for (const auto& [metric, detail] : details->items()) {
       const std::int64_t spec = Document(MetricSpecification(detail));

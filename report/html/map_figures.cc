@@ -14,6 +14,7 @@
 #include "report/html/number_format.h"
 #include "report/html/view_pages.h"
 #include "report/html/safe_name.h"
+#include "orchestrator/store/json_lookup.h"
 
 namespace slamsweep::report {
 namespace {
@@ -22,15 +23,10 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 using html_shorthand::E;
-
-const json* Find(const json& object, const char* key) {
-  if (!object.is_object()) return nullptr;
-  const auto found = object.find(key);
-  return found == object.end() ? nullptr : &*found;
-}
+using orchestrator::FindField;
 
 std::optional<double> Number(const json* object, const char* key) {
-  const json* value = object ? Find(*object, key) : nullptr;
+  const json* value = object ? FindField(*object, key) : nullptr;
   if (value == nullptr || !value->is_number()) return std::nullopt;
   return value->get<double>();
 }
@@ -39,24 +35,24 @@ std::optional<double> Number(const json* object, const char* key) {
 json MetricDetails(const RunRecord& run) {
   std::ifstream in(run.dir / "result.json", std::ios::binary);
   const json result = json::parse(in, nullptr, false);
-  const json* details = Find(result, "metric_details");
+  const json* details = FindField(result, "metric_details");
   return details ? *details : json::object();
 }
 
 /// The run's place in the reference's frame and how it was found.
 std::pair<MapPlacement, std::string> PlacementOf(const json& details) {
-  const json* compare = Find(details, "map_compare");
-  const json* transform = compare ? Find(*compare, "transform") : nullptr;
+  const json* compare = FindField(details, "map_compare");
+  const json* transform = compare ? FindField(*compare, "transform") : nullptr;
   const auto x = Number(transform, "x_m"), y = Number(transform, "y_m"), yaw = Number(transform, "yaw_rad");
   if (x && y && yaw) {
-    const json* how = Find(*compare, "placement");
+    const json* how = FindField(*compare, "placement");
     const std::string by = how && how->is_string() ? how->get<std::string>() : "the map scores' transform";
     return {{*x, *y, *yaw, 1.0}, "placed on the reference by " + by};
   }
-  const json* ape = Find(details, "ape_trans");
-  const json* alignment = ape ? Find(*ape, "alignment") : nullptr;
-  const json* rotation = alignment ? Find(*alignment, "rotation") : nullptr;
-  const json* translation = alignment ? Find(*alignment, "translation") : nullptr;
+  const json* ape = FindField(details, "ape_trans");
+  const json* alignment = ape ? FindField(*ape, "alignment") : nullptr;
+  const json* rotation = alignment ? FindField(*alignment, "rotation") : nullptr;
+  const json* translation = alignment ? FindField(*alignment, "translation") : nullptr;
   if (rotation && translation && rotation->is_array() && rotation->size() >= 2 && (*rotation)[0].is_array() &&
       (*rotation)[1].is_array() && (*rotation)[0].size() >= 1 && (*rotation)[1].size() >= 1 &&
       (*rotation)[0][0].is_number() && (*rotation)[1][0].is_number() && translation->is_array() &&
@@ -73,11 +69,11 @@ std::pair<MapPlacement, std::string> PlacementOf(const json& details) {
 /// The reference map the run was scored against: the recorded file, else the file of that name in the
 /// sweep's reference_maps/ (a result folder that was moved).
 fs::path ReferenceMapOf(const RunRecord& run, const json& details, std::string& source) {
-  const json* compare = Find(details, "map_compare");
-  const json* reference = compare ? Find(*compare, "reference_map") : nullptr;
-  const json* file = reference ? Find(*reference, "file") : nullptr;
+  const json* compare = FindField(details, "map_compare");
+  const json* reference = compare ? FindField(*compare, "reference_map") : nullptr;
+  const json* file = reference ? FindField(*reference, "file") : nullptr;
   if (file == nullptr || !file->is_string() || file->get<std::string>().empty()) return {};
-  if (const json* from = Find(*reference, "source"); from && from->is_string()) source = from->get<std::string>();
+  if (const json* from = FindField(*reference, "source"); from && from->is_string()) source = from->get<std::string>();
   const fs::path recorded = file->get<std::string>();
   if (IsRegularFileNoFollow(recorded)) return recorded;
   const fs::path moved = run.dir.parent_path().parent_path() / "reference_maps" / recorded.filename();
@@ -85,7 +81,7 @@ fs::path ReferenceMapOf(const RunRecord& run, const json& details, std::string& 
 }
 
 MapScores ScoresOf(const json& details) {
-  const json* compare = Find(details, "map_compare");
+  const json* compare = FindField(details, "map_compare");
   MapScores scores;
   if (compare == nullptr) return scores;
   scores.f1 = Number(compare, "f1");
@@ -98,8 +94,8 @@ MapScores ScoresOf(const json& details) {
 }
 
 WallMatchOptions MatchOptionsOf(const json& details) {
-  const json* compare = Find(details, "map_compare");
-  const json* specification = compare ? Find(*compare, "specification") : nullptr;
+  const json* compare = FindField(details, "map_compare");
+  const json* specification = compare ? FindField(*compare, "specification") : nullptr;
   WallMatchOptions options;
   options.occupied_threshold = Number(specification, "occupied_threshold").value_or(options.occupied_threshold);
   options.free_threshold = Number(specification, "free_threshold").value_or(options.free_threshold);
