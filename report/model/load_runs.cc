@@ -120,6 +120,7 @@ void ReadRunSpec(const std::filesystem::path& file, RunRecord& run) {
   if (const auto it = spec.find("group"); it != spec.end()) {
     if (!it->is_object()) FieldError(file, "group", "an object");
     run.parameters = OptionalString(*it, "parameters", file);
+    run.odometry = OptionalString(*it, "odometry", file);
   } else if (!run.parameter_values.empty()) {
     // A run recorded before run.json named its group: its parameters still set it apart.
     run.parameters = run.parameter_values.dump();

@@ -53,6 +53,9 @@ struct RunRecord {
   /// comparison group. `parameter_values` holds them as JSON for labels that show what varies.
   std::string parameters;
   nlohmann::json parameter_values = nlohmann::json::object();
+  /// run.json's group.odometry ("recorded", "reference"; "" for a run planned before the mode): runs
+  /// of different modes never share a row.
+  std::string odometry;
   /// The program got the reference as odometry (result.json when measured, else run.json).
   bool odometry_is_reference = false;
   /// The run's marks (RunFlagsOf run.json and result.json): a flagged run is shown, never ranked.

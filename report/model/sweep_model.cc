@@ -331,13 +331,13 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions&
   model.runs = std::move(runs);
   model.validity = evaluator::ComputeValidityStudy(ToValidityRuns(model.runs));
   // Table (sequence, noise) -> row (algorithm name, parameters) -> runs.
-  using RowKey = std::tuple<std::string, std::string, std::string>;  // algorithm, parameters, build
+  using RowKey = std::tuple<std::string, std::string, std::string, std::string>;  // algorithm, parameters, odometry, build
   std::map<std::pair<std::string, std::string>, std::map<RowKey, std::vector<std::size_t>>> tables;
   std::set<std::string> algorithms;
   std::set<std::string> sweep_names;
   for (std::size_t i = 0; i < model.runs.size(); ++i) {
     const RunRecord& run = model.runs[i];
-    tables[{run.sequence, run.noise}][{run.algorithm, run.parameters, orchestrator::BuildSignatureOfRunJson(run.run_spec)}]
+    tables[{run.sequence, run.noise}][{run.algorithm, run.parameters, run.odometry, orchestrator::BuildSignatureOfRunJson(run.run_spec)}]
         .push_back(i);
     algorithms.insert(run.algorithm);
     if (!run.sweep.empty()) sweep_names.insert(run.sweep);
@@ -370,8 +370,12 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions&
     }
     sequence.map_columns = BuildColumns(model.runs, all, kMapCandidates);
     sequence.has_reference = !sequence.trajectory_columns.empty();
-    std::map<std::pair<std::string, std::string>, std::size_t> builds_per_group;
-    for (const auto& [row_key, indices] : rows) ++builds_per_group[{std::get<0>(row_key), std::get<1>(row_key)}];
+    std::map<std::tuple<std::string, std::string, std::string>, std::size_t> builds_per_group;
+    std::map<std::pair<std::string, std::string>, std::set<std::string>> modes_per_algorithm;
+    for (const auto& [row_key, indices] : rows) {
+      ++builds_per_group[{std::get<0>(row_key), std::get<1>(row_key), std::get<2>(row_key)}];
+      modes_per_algorithm[{std::get<0>(row_key), std::get<1>(row_key)}].insert(std::get<2>(row_key));
+    }
     for (auto& [row_key, indices] : rows) {
       const RunRecord& first = model.runs[indices.front()];
       const auto found = varying.find(first.algorithm);
@@ -379,8 +383,12 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions&
       row.name = first.algorithm;
       row.parameters = first.parameters;
       row.algorithm = RowLabel(first, found == varying.end() ? kNone : found->second);
-      row.build = std::get<2>(row_key);
-      row.build_split = builds_per_group.at({std::get<0>(row_key), std::get<1>(row_key)}) > 1;
+      if (modes_per_algorithm.at({std::get<0>(row_key), std::get<1>(row_key)}).size() > 1) {
+        const std::string& mode = std::get<2>(row_key);
+        row.algorithm += " [" + (mode.empty() ? std::string("unrecorded") : mode) + " odometry]";
+      }
+      row.build = std::get<3>(row_key);
+      row.build_split = builds_per_group.at({std::get<0>(row_key), std::get<1>(row_key), std::get<2>(row_key)}) > 1;
       if (row.build_split) {
         row.algorithm += " [build " + (row.build.empty() ? std::string("unrecorded") : row.build) + "]";
         row.build_description = orchestrator::BuildDescriptionOfRunJson(first.run_spec);

@@ -231,6 +231,27 @@ TEST(BuildSplitTest, RunsOfOneAlgorithmByDifferentBuildsAreSeparateLabelledRows)
   EXPECT_NE(intel.rows[0].build, intel.rows[1].build);
 }
 
+TEST(OdometrySplitTest, RunsOnRecordedAndOnReferenceOdometryAreSeparateLabelledRows) {
+  std::vector<FixtureRun> runs;
+  for (int i = 0; i < 4; ++i) {
+    FixtureRun run = MakeRun("gmapping", "intel", i);
+    run.ape_rmse_m = i < 2 ? 0.1 : 0.3;
+    run.odometry = i < 2 ? "reference" : "recorded";
+    runs.push_back(run);
+  }
+  TempDir dir;
+  const SweepModel model = ModelOf(runs, dir);
+  const SequenceModel& intel = Sequence(model, "intel");
+  ASSERT_EQ(intel.rows.size(), 2u);
+  const std::size_t ate = Column(intel.trajectory_columns, "ape_trans");
+  for (const AlgorithmRow& row : intel.rows) {
+    EXPECT_THAT(row.algorithm, ::testing::AnyOf(HasSubstr("gmapping [recorded odometry]"),
+                                                HasSubstr("gmapping [reference odometry]")));
+    EXPECT_EQ(row.counts.total, 2u);
+    EXPECT_DOUBLE_EQ(row.trajectory_cells[ate].summary.std.value_or(-1), 0.0);  // never mixed
+  }
+}
+
 TEST(BestMarksTest, ANamedStudyThatIsNotAStudyIsAnErrorNamingTheFile) {
   TempDir dir;
   testing::WriteFixtureSweep(dir.path(), BestFixtureRuns(false));

@@ -163,6 +163,7 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
         {"thresholds", json::array()}};
     json written = spec;
     if (!run.build.is_null()) written["build"] = run.build;
+    if (!run.odometry.empty()) written["group"]["odometry"] = run.odometry;
     Write(run_dir / "run.json", written.dump(2));
     Write(run_dir / "command.txt", "fake-slam\n--input\ninput/log.clf\n");
     Write(run_dir / "log.txt", run.log);

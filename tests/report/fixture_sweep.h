@@ -16,6 +16,8 @@ struct FixtureRun {
   std::string adapter = "generic";  ///< run.json's algorithm.adapter ("odometry" makes the baseline row)
   /// run.json's "build" block (slamsweep_revision, program_files); null: not written.
   nlohmann::json build = nullptr;
+  /// run.json's group.odometry ("" leaves it out, as run.json did before the odometry mode).
+  std::string odometry;
   std::string sequence = "intel";
   std::string noise = "clean";
   int iteration = 0;
