@@ -61,9 +61,11 @@ std::string Header(int width, int height, int bit_depth, int colour_type) {
 }
 
 // Scanlines of `rect` of a grey image, each with filter byte 0 (None), as `index_of` maps its grey levels,
-// packed at BitDepth bits per pixel (PNG's order: the first pixel in the high bits).
+// packed at BitDepth bits per pixel (PNG's order: the first pixel in the high bits). With `before`, a pixel
+// equal to before's is `unchanged` (the transparent index) instead.
 template <int BitDepth>
-std::string PackedRows(const cv::Mat& grey, const cv::Rect& rect, const std::array<std::uint8_t, 256>& index_of) {
+std::string PackedRows(const cv::Mat& grey, const cv::Rect& rect, const std::array<std::uint8_t, 256>& index_of,
+                       const cv::Mat* before, std::uint8_t unchanged) {
   constexpr int kPerByte = 8 / BitDepth;
   const auto width = static_cast<std::size_t>(rect.width);
   const std::size_t row_bytes = (width * BitDepth + 7) / 8;
@@ -71,11 +73,13 @@ std::string PackedRows(const cv::Mat& grey, const cv::Rect& rect, const std::arr
   for (int row = 0; row < rect.height; ++row) {
     auto* out = reinterpret_cast<std::uint8_t*>(raw.data()) + static_cast<std::size_t>(row) * (row_bytes + 1) + 1;
     const std::uint8_t* pixels = grey.ptr<std::uint8_t>(rect.y + row) + rect.x;
+    const std::uint8_t* old = before != nullptr ? before->ptr<std::uint8_t>(rect.y + row) + rect.x : nullptr;
     std::size_t col = 0;
     for (std::size_t byte = 0; byte < row_bytes; ++byte) {
       unsigned packed = 0;
       for (int j = 0; j < kPerByte; ++j, ++col) {
-        const unsigned index = col < width ? index_of[pixels[col]] : 0u;
+        unsigned index = 0;
+        if (col < width) index = old != nullptr && old[col] == pixels[col] ? unchanged : index_of[pixels[col]];
         packed = (packed << BitDepth) | index;
       }
       out[byte] = static_cast<std::uint8_t>(packed);
@@ -85,16 +89,17 @@ std::string PackedRows(const cv::Mat& grey, const cv::Rect& rect, const std::arr
 }
 
 std::string PackedRows(int bit_depth, const cv::Mat& grey, const cv::Rect& rect,
-                       const std::array<std::uint8_t, 256>& index_of) {
+                       const std::array<std::uint8_t, 256>& index_of, const cv::Mat* before = nullptr,
+                       std::uint8_t unchanged = 0) {
   switch (bit_depth) {
     case 1:
-      return PackedRows<1>(grey, rect, index_of);
+      return PackedRows<1>(grey, rect, index_of, before, unchanged);
     case 2:
-      return PackedRows<2>(grey, rect, index_of);
+      return PackedRows<2>(grey, rect, index_of, before, unchanged);
     case 4:
-      return PackedRows<4>(grey, rect, index_of);
+      return PackedRows<4>(grey, rect, index_of, before, unchanged);
     default:
-      return PackedRows<8>(grey, rect, index_of);
+      return PackedRows<8>(grey, rect, index_of, before, unchanged);
   }
 }
 
@@ -105,8 +110,8 @@ void CheckGrey(const cv::Mat& image, const char* what) {
 }
 
 // fcTL: sequence number, size, offset, delay (in 1/100 s), dispose none, blend source (the frame replaces
-// the pixels under it).
-std::string FrameControl(std::uint32_t sequence, const cv::Rect& rect, int delay_cs) {
+// the pixels under it) or over (its transparent pixels leave them as they were).
+std::string FrameControl(std::uint32_t sequence, const cv::Rect& rect, int delay_cs, bool blend_over) {
   std::string fctl;
   PutU32(fctl, sequence);
   PutU32(fctl, static_cast<std::uint32_t>(rect.width));
@@ -116,7 +121,7 @@ std::string FrameControl(std::uint32_t sequence, const cv::Rect& rect, int delay
   PutU16(fctl, static_cast<std::uint16_t>(delay_cs));
   PutU16(fctl, 100);
   fctl.push_back('\0');
-  fctl.push_back('\0');
+  fctl.push_back(blend_over ? '\1' : '\0');
   return fctl;
 }
 
@@ -152,7 +157,7 @@ std::string EncodeCompactGreyPng(const cv::Mat& grey) {
   for (int level = 0; level < 256; ++level) identity[static_cast<std::size_t>(level)] = static_cast<std::uint8_t>(level);
   std::string png(kSignature);
   PutChunk(png, "IHDR", Header(grey.cols, grey.rows, 8, 0));
-  PutChunk(png, "IDAT", Zlib(PackedRows<8>(grey, cv::Rect(0, 0, grey.cols, grey.rows), identity)));
+  PutChunk(png, "IDAT", Zlib(PackedRows(8, grey, cv::Rect(0, 0, grey.cols, grey.rows), identity)));
   PutChunk(png, "IEND", "");
   return png;
 }
@@ -164,8 +169,9 @@ std::string EncodeAnimatedGreyPng(const std::vector<cv::Mat>& frames, const Anim
     CheckGrey(frame, "frame");
     if (frame.size() != size) throw InputError("APNG encoding: frames of different sizes");
   }
-  // The first frame whole, then the rectangle that changed (one pixel when nothing did), drawn in place of
-  // what was there: whole rows of map compress far better than changes scattered among transparency.
+  // The first frame whole, then the rectangle that changed (one pixel when nothing did), blended over what
+  // was there with every unchanged pixel in it transparent: only the changed pixels are stored, and the
+  // runs of the transparent index between them cost deflate next to nothing.
   std::vector<cv::Rect> rects{cv::Rect(0, 0, size.width, size.height)};
   for (std::size_t i = 1; i < frames.size(); ++i) {
     const cv::Rect changed = ChangedRect(frames[i - 1], frames[i]);
@@ -186,7 +192,15 @@ std::string EncodeAnimatedGreyPng(const std::vector<cv::Mat>& frames, const Anim
     index_of[static_cast<std::size_t>(level)] = static_cast<std::uint8_t>(palette.size() / 3);
     palette.append(3, static_cast<char>(level));
   }
-  const auto levels = static_cast<int>(palette.size() / 3);
+  auto levels = static_cast<int>(palette.size() / 3);
+  // The transparent index after the levels; with all 256 levels in use there is none, and the later frames
+  // replace their rectangles whole.
+  const bool blend_over = frames.size() > 1 && levels < 256;
+  const auto unchanged = static_cast<std::uint8_t>(levels);
+  if (blend_over) {
+    palette.append(3, '\0');
+    ++levels;
+  }
   const int bit_depth = levels <= 2 ? 1 : levels <= 4 ? 2 : levels <= 16 ? 4 : 8;
 
   std::string png(kSignature);
@@ -196,12 +210,20 @@ std::string EncodeAnimatedGreyPng(const std::vector<cv::Mat>& frames, const Anim
   PutU32(actl, 0);  // loop forever
   PutChunk(png, "acTL", actl);
   PutChunk(png, "PLTE", palette);
+  if (blend_over) {
+    // tRNS: every level opaque, the last index fully transparent.
+    std::string alpha(static_cast<std::size_t>(levels - 1), '\xff');
+    alpha.push_back('\0');
+    PutChunk(png, "tRNS", alpha);
+  }
   std::uint32_t sequence = 0;
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const int delay = i + 1 == frames.size() ? timing.last_frame_delay_cs : timing.frame_delay_cs;
     const cv::Rect& rect = rects[i];
-    PutChunk(png, "fcTL", FrameControl(sequence++, rect, delay));
-    const std::string data = Zlib(PackedRows(bit_depth, frames[i], rect, index_of));
+    const bool over = blend_over && i > 0;
+    PutChunk(png, "fcTL", FrameControl(sequence++, rect, delay, over));
+    const std::string data =
+        Zlib(PackedRows(bit_depth, frames[i], rect, index_of, over ? &frames[i - 1] : nullptr, unchanged));
     if (i == 0) {
       PutChunk(png, "IDAT", data);
     } else {

@@ -21,9 +21,11 @@ struct AnimatedPngTiming {
 
 /// Grey images of one size (stage maps: 0, 205, 254) as one animated PNG (APNG: what browsers play; viewers
 /// without APNG support show the first frame). Palette of the grey levels in ascending order, at the smallest
-/// bit depth that holds them. The first frame is whole; every later one is the rectangle of pixels that
-/// changed since the frame before (one pixel when none did), drawn in place of what was under it, so an
-/// unchanged part of the map is not stored again. Decoded, frame i is exactly frames[i]. Loops forever.
+/// bit depth that holds them, and one transparent entry after them. The first frame is whole; every later one
+/// is the rectangle of pixels that changed since the frame before (one pixel when none did), blended over what
+/// is under it with its unchanged pixels transparent, so an unchanged part of the map is not stored again
+/// (with all 256 levels in use, the rectangle replaces what is under it). Decoded, frame i is exactly
+/// frames[i]. Loops forever.
 /// Throws InputError for an empty list or frames of other types or sizes.
 std::string EncodeAnimatedGreyPng(const std::vector<cv::Mat>& frames, const AnimatedPngTiming& timing = {});
 
