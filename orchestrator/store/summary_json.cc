@@ -96,8 +96,9 @@ json BuildSummaryJson(const std::vector<StoredRun>& runs, const evaluator::Valid
 void WriteSummaryJson(const std::vector<StoredRun>& runs, const evaluator::ValidityStudy& study,
                       const std::filesystem::path& file) {
   // Replacement of invalid UTF-8 (a reason quoting a program's garbled output) keeps the file writable.
+  // Compact: indentation was 40 % of a large sweep's file (jq or a browser shows it indented).
   const std::string text =
-      BuildSummaryJson(runs, study, UtcNowIso8601()).dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+      BuildSummaryJson(runs, study, UtcNowIso8601()).dump(-1, ' ', false, json::error_handler_t::replace) + "\n";
   WriteFileAtomically(file, text);
 }
 

@@ -5,9 +5,6 @@
 
 #include <opencv2/core.hpp>
 
-#include "evaluator/borders/vector_map.h"
-#include "evaluator/borders/vector_map_export.h"
-#include "evaluator/core/input_error.h"
 #include "evaluator/formats/map/compact_png.h"
 #include "evaluator/formats/map/image_file.h"
 #include "evaluator/formats/map/map_server_format.h"
@@ -49,7 +46,7 @@ std::vector<cv::Mat> OnCommonCanvas(const std::vector<cv::Mat>& stages) {
 }  // namespace
 
 nlohmann::json WriteRunOutputs(const RunPaths& paths, const CollectedOutputs& collected,
-                               const ev::Trajectory* reference, std::vector<std::string>& warnings) {
+                               const ev::Trajectory* reference) {
   nlohmann::json outputs = nlohmann::json::object();
   ev::MapWriteOptions map_options;
   map_options.trinary_png = true;
@@ -70,14 +67,6 @@ nlohmann::json WriteRunOutputs(const RunPaths& paths, const CollectedOutputs& co
     ev::WriteBinaryFile(paths.StageAnimation(), ev::EncodeAnimatedGreyPng(OnCommonCanvas(collected.stages)));
     outputs["stage_animation"] = paths.StageAnimation().filename().string();
     outputs["stage_count"] = collected.stages.size();
-  }
-
-  try {
-    const ev::VectorMap vector_map = ev::Vectorize(collected.map, ev::VectorizeOptions{});
-    ev::WriteOutputFile(paths.GeoJson(), [&](std::ostream& out) { ev::WriteGeoJson(vector_map, out); });
-    outputs["vector_map"] = paths.GeoJson().filename().string();
-  } catch (const ev::InputError& error) {
-    warnings.push_back(std::string("vector map: ") + error.what());
   }
 
   std::error_code error;

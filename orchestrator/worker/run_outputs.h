@@ -14,11 +14,11 @@ namespace slamsweep::orchestrator {
 /// Writes a run's converted outputs in the run folder's fixed layout: map.png + map.yaml
 /// (map_saver trinary, as an 8-bit grey PNG), trajectory.tum, reference.tum (when `reference`),
 /// stages.png (every stage map, in build order, as one animated PNG; stages of different sizes centred on
-/// a canvas of the largest width and height, unknown around them) and map.geojson (handout borders,
-/// default VectorizeOptions). Returns result.json's `outputs` object
+/// a canvas of the largest width and height, unknown around them). No map.geojson: the borders are traced
+/// from the map when wanted (the report, `slamsweep vectorize`). Returns result.json's `outputs` object
 /// (paths relative to the run folder; log.txt when it exists). A map or trajectory that cannot be
-/// written is an InputError; a vector map that cannot be made is a warning appended to `warnings`.
+/// written is an InputError.
 nlohmann::json WriteRunOutputs(const RunPaths& paths, const CollectedOutputs& collected,
-                               const evaluator::Trajectory* reference, std::vector<std::string>& warnings);
+                               const evaluator::Trajectory* reference);
 
 }  // namespace slamsweep::orchestrator

@@ -244,7 +244,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   const ev::Trajectory* reference = inputs.truth.reference ? &*inputs.truth.reference : nullptr;
   phase.emplace("outputs");
   try {
-    result.outputs = WriteRunOutputs(paths, collected, reference, result.warnings);
+    result.outputs = WriteRunOutputs(paths, collected, reference);
   } catch (const ev::InputError& error) {
     throw RunFailure(FailureKind::kCorruptOutput, std::string("cannot convert the outputs: ") + error.what());
   }

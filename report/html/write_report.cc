@@ -21,6 +21,7 @@
 #include "report/html/trajectory_figures.h"
 #include "report/html/text_outputs.h"
 #include "report/html/validity_page.h"
+#include "report/html/vector_map_download.h"
 #include "report/html/view_pages.h"
 #include "report/model/load_runs.h"
 #include "report/model/named_study.h"
@@ -256,17 +257,58 @@ void CopyDownloads(const RunRecord& run, const fs::path& run_out, RunArtifacts& 
   }
 }
 
-void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const fs::path& out_dir,
-                   const ReportOptions& options, SiteData& site, std::vector<ImageJob>& jobs) {
-  Artwork* artwork = options.artwork;
-  // Thumbnails are shown in the galleries (median runs) and on pages that have no overlay; other
-  // runs skip them, which saves a third of the images of a large sweep.
+// The runs the galleries show: each table row's median run.
+std::vector<bool> GalleryRuns(const SweepModel& model) {
   std::vector<bool> in_gallery(model.runs.size(), false);
   for (const SequenceModel& sequence : model.sequences) {
     for (const AlgorithmRow& row : sequence.rows) {
       if (row.median_run) in_gallery[*row.median_run] = true;
     }
   }
+  return in_gallery;
+}
+
+// Adds `name` to the run's downloads at its place in kDownloads' order.
+void AddDownload(RunArtifacts& artifacts, const std::string& name) {
+  auto rank = [](const std::string& file) {
+    return std::find_if(std::begin(kDownloads), std::end(kDownloads), [&](const char* d) { return file == d; }) -
+           std::begin(kDownloads);
+  };
+  const auto at = std::find_if(artifacts.downloads.begin(), artifacts.downloads.end(),
+                               [&](const std::string& file) { return rank(file) > rank(name); });
+  artifacts.downloads.insert(at, name);
+}
+
+// A run folder without map.geojson (the worker no longer stores one: it is traced from the map) gets it in
+// the report for the runs whose own figures are drawn; `slamsweep vectorize` traces any other run's.
+void PlanVectorMaps(const SweepModel& model, const ReportLayout& layout, const fs::path& out_dir,
+                    const ReportOptions& options, SiteData& site, std::vector<ImageJob>& jobs) {
+  const std::vector<bool> in_gallery = GalleryRuns(model);
+  const bool every_run = options.run_figures_for_every_run || model.runs.size() <= options.figures_for_every_run_up_to;
+  for (std::size_t i = 0; i < model.runs.size(); ++i) {
+    const RunRecord& run = model.runs[i];
+    if (!every_run && !in_gallery[i] && run.status == RunStatus::kOk) continue;
+    if (IsRegularFileNoFollow(run.dir / "map.geojson") || !IsRegularFileNoFollow(run.dir / "map.yaml")) continue;
+    const fs::path out = out_dir / layout.RunDir(i) / "map.geojson";
+    RunArtifacts* artifacts = &site.runs[i];
+    jobs.push_back({[map = run.dir / "map.yaml", out] { WriteVectorMapDownload(map, out); },
+                    [artifacts, out](const std::string& error) {
+                      if (error.empty() && IsRegularFileNoFollow(out)) {
+                        AddDownload(*artifacts, "map.geojson");
+                      } else {
+                        artifacts->notes.push_back("Vector map (map.geojson) not made: " +
+                                                   (error.empty() ? std::string("the file is missing") : error));
+                      }
+                    }});
+  }
+}
+
+void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const fs::path& out_dir,
+                   const ReportOptions& options, SiteData& site, std::vector<ImageJob>& jobs) {
+  Artwork* artwork = options.artwork;
+  // Thumbnails are shown in the galleries (median runs) and on pages that have no overlay; other
+  // runs skip them, which saves a third of the images of a large sweep.
+  const std::vector<bool> in_gallery = GalleryRuns(model);
   // Beyond figures_for_every_run_up_to runs, a run's own figures are drawn for the runs the galleries show
   // (each row's median run) and for failed runs; the other pages say how to draw theirs.
   const bool every_run = options.run_figures_for_every_run || model.runs.size() <= options.figures_for_every_run_up_to;
@@ -458,6 +500,7 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
     }
     PlanRunImages(model, layout, out_dir, options, site, jobs);
   }
+  PlanVectorMaps(model, layout, out_dir, options, site, jobs);
   phase.emplace("images");
   RunImageJobs(jobs, options.jobs);
   phase.emplace("pages");

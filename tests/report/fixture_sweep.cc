@@ -189,8 +189,10 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
       ev::WriteTum(Circle(1.0, 0.02 * (run.iteration + 1)), run_dir / "trajectory.tum");
       outputs["map"] = "map.yaml";
       outputs["trajectory"] = "trajectory.tum";
-      Write(run_dir / "map.geojson", R"({"type": "FeatureCollection", "features": []})");
-      outputs["vector_map"] = "map.geojson";
+      if (run.vector_map) {
+        Write(run_dir / "map.geojson", R"({"type": "FeatureCollection", "features": []})");
+        outputs["vector_map"] = "map.geojson";
+      }
       if (run.with_reference) {
         ev::WriteTum(Circle(1.0, 0.0), run_dir / "reference.tum");
         outputs["reference"] = "reference.tum";

@@ -37,6 +37,8 @@ struct FixtureRun {
   int room_shift = -1;
   std::string log = "scan 1\nscan 2\n";
   int stages = 3;
+  /// map.geojson written, as workers did before the report traced it from the map.
+  bool vector_map = true;
   /// Folder name; empty -> made from algorithm, sequence, parameters and iteration like the orchestrator does.
   std::string run_id;
   /// run.json's algorithm.parameters (and group.parameters as "k=v;..."): rows of one algorithm differ in them.

@@ -8,6 +8,8 @@
 #include <string>
 #include <variant>
 
+#include <nlohmann/json.hpp>
+
 #include "evaluator/core/input_error.h"
 #include "report/plots/algorithm_palette.h"
 #include "report/plots/scatter_plot.h"
@@ -480,6 +482,26 @@ TEST_F(WriteReportTest, BeyondTheEveryRunLimitOnlyMedianRunsGetTheErrorAlongTheP
   for (const FigureJob& job : artwork_.figures) EXPECT_NE(job.png.filename(), "path-error.png") << job.png;
   EXPECT_EQ(ReadAll(dir_ / "report/runs/gmapping-intel-clean-i0-0000abcd.html").find("path-error"), std::string::npos);
   EXPECT_NE(ReadAll(dir_ / "report/runs/gmapping-intel-clean-i1-0000abcd.html").find("path-error"), std::string::npos);
+}
+
+TEST_F(WriteReportTest, RunFoldersWithoutAVectorMapGetOneTracedFromTheirMap) {
+  std::vector<testing::FixtureRun> runs = testing::StandardFixtureRuns();
+  for (testing::FixtureRun& run : runs) run.vector_map = false;
+  fs::remove_all(dir_ / "sweep");
+  testing::WriteFixtureSweep(dir_ / "sweep", runs);
+  options_.figures_for_every_run_up_to = 2;  // own figures (and the vector map) for median and failed runs only
+  Write();
+  const fs::path report = dir_ / "report";
+  // gmapping on intel: iteration 1 is the median run (ATE 0.10 0.11 0.12), iteration 0 is not.
+  const fs::path traced = report / "runs/gmapping-intel-clean-i1-0000abcd/map.geojson";
+  ASSERT_TRUE(fs::is_regular_file(traced));
+  const nlohmann::json geojson = nlohmann::json::parse(ReadAll(traced));
+  EXPECT_EQ(geojson.at("type"), "FeatureCollection");
+  EXPECT_FALSE(geojson.at("features").empty());  // the room's walls
+  EXPECT_NE(ReadAll(report / "runs/gmapping-intel-clean-i1-0000abcd.html").find("map.geojson"), std::string::npos);
+  EXPECT_FALSE(fs::exists(report / "runs/gmapping-intel-clean-i0-0000abcd/map.geojson"));
+  EXPECT_EQ(ReadAll(report / "runs/gmapping-intel-clean-i0-0000abcd.html").find("map.geojson"), std::string::npos);
+  EXPECT_TRUE(testing::BrokenLinks(report).empty());
 }
 
 TEST_F(WriteReportTest, TheIndexOpensWithTheRankedOverviewAndItsVerdict) {

@@ -66,6 +66,11 @@ TEST(SummaryJsonTest, ListsEveryRunWithFlatMetricsUnitsAndCounts) {
   EXPECT_TRUE(bad.at("exit_code").is_null());
   EXPECT_EQ(bad.at("metrics"), json::object());
 
+  // Written compact: the file is its own content without any whitespace between tokens.
+  std::ifstream in(file);
+  const std::string text(std::istreambuf_iterator<char>(in), {});
+  EXPECT_EQ(text, summary.dump() + "\n");
+
   // Atomic write: nothing but the file itself is left beside it.
   std::size_t files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {

@@ -138,15 +138,17 @@ TEST_F(WorkerTest, AProgramThatWritesItsOutputsGivesAnOkRunWithMetrics) {
   EXPECT_EQ(outputs["map"], "map.yaml");
   EXPECT_EQ(outputs["trajectory"], "trajectory.tum");
   EXPECT_EQ(outputs["reference"], "reference.tum");
-  EXPECT_EQ(outputs["vector_map"], "map.geojson");
   EXPECT_EQ(outputs["log"], "log.txt");
+  // The map's borders are traced from map.yaml when wanted (report, `slamsweep vectorize`), not stored.
+  EXPECT_FALSE(outputs.contains("vector_map"));
+  EXPECT_FALSE(fs::exists(run_dir_ / "map.geojson"));
   // Every stage in one animated PNG; no separate stage images, no uncompressed map.
   EXPECT_EQ(outputs["stage_count"], spec_.evaluation.stages);
   EXPECT_EQ(outputs["stage_animation"], "stages.png");
   EXPECT_TRUE(outputs["stages"].empty());
   EXPECT_FALSE(fs::exists(run_dir_ / "stages"));
   EXPECT_FALSE(fs::exists(run_dir_ / "map.pgm"));
-  for (const char* file : {"map.yaml", "map.png", "stages.png", "trajectory.tum", "reference.tum", "map.geojson", "command.txt"}) {
+  for (const char* file : {"map.yaml", "map.png", "stages.png", "trajectory.tum", "reference.tum", "command.txt"}) {
     EXPECT_TRUE(fs::exists(run_dir_ / file)) << file;
   }
   EXPECT_EQ(ReadText(run_dir_ / "command.txt"), (tools_ / "program.sh").string() + "\n" + (run_dir_ / "raw").string() + "\n");
