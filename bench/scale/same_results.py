@@ -4,7 +4,9 @@ runs.csv, validity.csv and junit.xml with what varies from one execution to the 
 day, wall/CPU time and peak memory (and statistics of them), and the sweep's own paths. Used to check that a
 change to how results are stored or reported keeps every number (bench/scale/README.md).
 
-Usage: same_results.py DIR_A DIR_B     exit 0 when the same, 1 with the differences listed
+Usage: same_results.py [--across-builds] DIR_A DIR_B     exit 0 when the same, 1 with the differences listed
+  --across-builds  the two directories come from two builds of slamsweep (before and after a change): the
+                   groups' build identity (build, build_description) is left out too
 """
 import csv
 import io
@@ -17,15 +19,18 @@ VOLATILE_KEYS = {"generated_at", "started_at", "finished_at", "wall_s", "cpu_s",
 # The names of the files a run folder holds (map.pgm or map.png, stages/ or stages.png) are layout, not results.
 LAYOUT_KEYS = {"outputs"}
 RESOURCES = ("wall_s", "cpu_s", "peak_rss_kb")
+BUILD_KEYS = {"build", "build_description"}
 
 
-def scrub(value):
-    """A JSON value with the volatile members (and the run folder's file names) left out, at every depth."""
+def scrub(value, left_out=frozenset()):
+    """A JSON value with the volatile members (and the run folder's file names, and `left_out`) left out, at
+    every depth."""
     if isinstance(value, dict):
-        return {key: scrub(item) for key, item in value.items()
-                if key not in VOLATILE_KEYS and key not in LAYOUT_KEYS and not any(key.startswith(r) for r in RESOURCES)}
+        return {key: scrub(item, left_out) for key, item in value.items()
+                if key not in VOLATILE_KEYS and key not in LAYOUT_KEYS and key not in left_out and
+                not any(key.startswith(r) for r in RESOURCES)}
     if isinstance(value, list):
-        kept = [scrub(item) for item in value]
+        kept = [scrub(item, left_out) for item in value]
         # Validity rows that correlate a metric with a resource vary with the machine's load.
         return [item for item in kept if not (isinstance(item, dict) and any(
             str(item.get(field, "")) in RESOURCES for field in ("metric", "x", "y", "quantity", "other")))]
@@ -60,18 +65,22 @@ def junit_text(text):
 
 
 def main():
-    if len(sys.argv) != 3:
+    arguments = sys.argv[1:]
+    left_out = frozenset(BUILD_KEYS) if "--across-builds" in arguments else frozenset()
+    arguments = [argument for argument in arguments if argument != "--across-builds"]
+    if len(arguments) != 2:
         sys.exit(__doc__)
-    a, b = sys.argv[1:]
+    a, b = arguments
+    scrub_all = lambda value: scrub(value, left_out)
     differences = []
     for name in ("summary.json",):
         left, right = read(f"{a}/{name}"), read(f"{b}/{name}")
         if (left is None) != (right is None):
             differences.append(f"{name}: in only one of the directories")
-        elif left is not None and scrub(json.loads(left)) != scrub(json.loads(right)):
+        elif left is not None and scrub_all(json.loads(left)) != scrub_all(json.loads(right)):
             differences.append(f"{name}: differs")
-            left_runs = {r["run_id"]: scrub(r) for r in json.loads(left).get("runs", [])}
-            right_runs = {r["run_id"]: scrub(r) for r in json.loads(right).get("runs", [])}
+            left_runs = {r["run_id"]: scrub_all(r) for r in json.loads(left).get("runs", [])}
+            right_runs = {r["run_id"]: scrub_all(r) for r in json.loads(right).get("runs", [])}
             for run_id in sorted(set(left_runs) | set(right_runs)):
                 left_run, right_run = left_runs.get(run_id) or {}, right_runs.get(run_id) or {}
                 if left_run != right_run:
@@ -79,7 +88,7 @@ def main():
                     for key in keys:
                         differences.append(f"  run {run_id}: {key}: {left_run.get(key)} != {right_run.get(key)}"[:600])
                     break
-            left_summary, right_summary = scrub(json.loads(left)), scrub(json.loads(right))
+            left_summary, right_summary = scrub_all(json.loads(left)), scrub_all(json.loads(right))
             for key in sorted(set(left_summary) | set(right_summary)):
                 if key != "runs" and left_summary.get(key) != right_summary.get(key):
                     differences.append(f"  {key}: differs")

@@ -12,6 +12,7 @@
 #include "orchestrator/store/results_store.h"
 #include "orchestrator/sweep/output_lock.h"
 #include "orchestrator/sweep/run_folder.h"
+#include "orchestrator/sweep/shared_run_files.h"
 #include "orchestrator/sweep/sweep_steps.h"
 
 namespace slamsweep::orchestrator {
@@ -89,6 +90,7 @@ class SweepLoop {
       ++outcome.not_started;
       return;
     }
+    shared_files_.Share(RunFolder(settings_.output_dir, ending.run_id) / "reference.tum");
     if (finished->ok) {
       ++outcome.ok;
     } else {
@@ -106,6 +108,7 @@ class SweepLoop {
   std::deque<const RunSpec*> queue_;
   std::map<std::string, const RunSpec*> by_id_;
   std::size_t failures_ = 0;
+  SharedRunFiles shared_files_;
 };
 
 }  // namespace

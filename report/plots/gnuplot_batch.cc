@@ -8,6 +8,7 @@
 
 #include "report/plots/gnuplot_process.h"
 #include "report/plots/metric_plot_script.h"
+#include "report/plots/png_repack.h"
 
 namespace slamsweep::report {
 namespace {
@@ -71,6 +72,8 @@ void RunGnuplotBatch(const std::vector<GnuplotBatchJob>& jobs) {
     throw std::runtime_error(fmt::format("gnuplot ended with exit code {} while drawing {} plots: {}",
                                          outcome.exit_code, jobs.size(), Trimmed(outcome.stderr_text)));
   }
+  // pngcairo writes RGB; a plot has few colours, so a palette PNG holds the same pixels in far fewer bytes.
+  for (const GnuplotBatchJob& job : jobs) RepackAsPalettePng(job.png);
 }
 
 }  // namespace slamsweep::report

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <optional>
+#include <unordered_map>
 #include <string_view>
 
 #include "evaluator/core/input_error.h"
@@ -158,6 +160,48 @@ std::string EncodeCompactGreyPng(const cv::Mat& grey) {
   std::string png(kSignature);
   PutChunk(png, "IHDR", Header(grey.cols, grey.rows, 8, 0));
   PutChunk(png, "IDAT", Zlib(PackedRows(8, grey, cv::Rect(0, 0, grey.cols, grey.rows), identity)));
+  PutChunk(png, "IEND", "");
+  return png;
+}
+
+std::optional<std::string> EncodePalettePng(const cv::Mat& bgr) {
+  if (bgr.type() != CV_8UC3 || bgr.empty()) {
+    throw InputError("PNG encoding: expected a non-empty 8-bit BGR image for a palette PNG");
+  }
+  // Each pixel's palette index, colours numbered as they first appear (runs of one colour skip the lookup).
+  cv::Mat indices(bgr.size(), CV_8UC1);
+  std::unordered_map<std::uint32_t, std::uint8_t> index_of_colour;
+  std::string palette;
+  std::uint32_t last_colour = 0xFFFFFFFF;
+  std::uint8_t last_index = 0;
+  for (int row = 0; row < bgr.rows; ++row) {
+    const auto* pixels = bgr.ptr<cv::Vec3b>(row);
+    auto* out = indices.ptr<std::uint8_t>(row);
+    for (int col = 0; col < bgr.cols; ++col) {
+      const cv::Vec3b& p = pixels[col];
+      const std::uint32_t colour = (std::uint32_t{p[2]} << 16) | (std::uint32_t{p[1]} << 8) | p[0];
+      if (colour != last_colour) {
+        const auto [it, added] = index_of_colour.try_emplace(colour, static_cast<std::uint8_t>(palette.size() / 3));
+        if (added) {
+          if (index_of_colour.size() > 256) return std::nullopt;
+          palette.push_back(static_cast<char>(p[2]));
+          palette.push_back(static_cast<char>(p[1]));
+          palette.push_back(static_cast<char>(p[0]));
+        }
+        last_colour = colour;
+        last_index = it->second;
+      }
+      out[col] = last_index;
+    }
+  }
+  const auto colours = index_of_colour.size();
+  const int bit_depth = colours <= 2 ? 1 : colours <= 4 ? 2 : colours <= 16 ? 4 : 8;
+  std::array<std::uint8_t, 256> identity{};
+  for (int level = 0; level < 256; ++level) identity[static_cast<std::size_t>(level)] = static_cast<std::uint8_t>(level);
+  std::string png(kSignature);
+  PutChunk(png, "IHDR", Header(bgr.cols, bgr.rows, bit_depth, 3));
+  PutChunk(png, "PLTE", palette);
+  PutChunk(png, "IDAT", Zlib(PackedRows(bit_depth, indices, cv::Rect(0, 0, bgr.cols, bgr.rows), identity)));
   PutChunk(png, "IEND", "");
   return png;
 }

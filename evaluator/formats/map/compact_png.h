@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,12 @@ namespace slamsweep::evaluator {
 /// reads grey PNGs as it reads PGMs; a palette PNG it would read as indices). Throws InputError for
 /// another image type.
 std::string EncodeCompactGreyPng(const cv::Mat& grey);
+
+/// An 8-bit BGR image (as OpenCV reads a PNG) of at most 256 colours as a palette PNG (colours in order of
+/// first appearance, the smallest bit depth that holds them, filter None, deflate level 6): the same pixels in
+/// a third to a half of the bytes of a drawn figure's RGB PNG. nullopt when the image has more colours.
+/// Throws InputError for another image type.
+std::optional<std::string> EncodePalettePng(const cv::Mat& bgr);
 
 /// Frame timing of EncodeAnimatedGreyPng, in 1/100 s (the GIF unit, as the report's animations use).
 struct AnimatedPngTiming {

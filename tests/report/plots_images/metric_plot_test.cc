@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <string>
 #include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 
@@ -47,6 +49,22 @@ TEST(WriteMetricPlotsTest, WritesEveryPlotAsPngInOneCall) {
     EXPECT_GT(CountColour(image, 0x0072B2), 20);
     EXPECT_GT(CountColour(image, 0xD55E00), 20);
   }
+}
+
+TEST(WriteMetricPlotsTest, APlotOfFewColoursIsStoredAsAPalettePng) {
+  REQUIRE_GNUPLOT();
+  testing::TempDir dir;
+  MetricPlot plot = TwoAlgorithms();
+  plot.series.pop_back();  // one algorithm: fewer than 256 colours, anti-aliasing included
+  const std::filesystem::path png = dir / "one.png";
+  WriteMetricPlots({{plot, png}});
+  // IHDR colour type 3 (palette): the plot's pixels in far fewer bytes than pngcairo's RGB.
+  std::ifstream file(png, std::ios::binary);
+  std::string header(26, '\0');
+  file.read(header.data(), 26);
+  EXPECT_EQ(static_cast<unsigned char>(header[25]), 3u);
+  const cv::Mat image = ReadPng(png);
+  EXPECT_GT(CountColour(image, 0x0072B2), 20);
 }
 
 TEST(WriteMetricPlotsTest, NoJobsDoesNothing) { EXPECT_NO_THROW(WriteMetricPlots({})); }

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -139,6 +140,40 @@ TEST(CompactPngTest, UnchangedPixelsInsideTheChangedRectangleAreNotStoredAgain) 
   ASSERT_EQ(decoded["frames"], 2);
   EXPECT_EQ(decoded["pixels"][0].get<std::vector<int>>(), Pixels(map));
   EXPECT_EQ(decoded["pixels"][1].get<std::vector<int>>(), Pixels(later));
+}
+
+TEST(CompactPngTest, AFigureOfFewColoursReadsBackAsTheSamePixelsFromAPalettePng) {
+  // A drawn figure: white ground, a grey grid, an anti-aliased blue line (a ramp of 40 blues).
+  cv::Mat figure(120, 200, CV_8UC3, cv::Scalar(255, 255, 255));
+  for (int col = 0; col < figure.cols; col += 20) figure.col(col).setTo(cv::Scalar(160, 160, 160));
+  for (int col = 0; col < figure.cols; ++col) {
+    figure.at<cv::Vec3b>(60 + col / 10, col) = cv::Vec3b(static_cast<std::uint8_t>(178 + col % 40), 114, 0);
+  }
+  const std::optional<std::string> png = EncodePalettePng(figure);
+  ASSERT_TRUE(png.has_value());
+  EXPECT_EQ(static_cast<unsigned char>((*png)[25]), 3u);  // IHDR colour type: palette
+  const std::vector<std::uint8_t> bytes(png->begin(), png->end());
+  const cv::Mat decoded = cv::imdecode(bytes, cv::IMREAD_COLOR);
+  ASSERT_EQ(decoded.size(), figure.size());
+  cv::Mat difference;
+  cv::absdiff(decoded, figure, difference);
+  EXPECT_EQ(cv::countNonZero(difference.reshape(1)), 0);
+  // Two colours: one bit a pixel.
+  cv::Mat two(8, 8, CV_8UC3, cv::Scalar(255, 255, 255));
+  two.at<cv::Vec3b>(3, 3) = cv::Vec3b(0, 0, 0);
+  const std::optional<std::string> small = EncodePalettePng(two);
+  ASSERT_TRUE(small.has_value());
+  EXPECT_EQ(static_cast<unsigned char>((*small)[24]), 1u);  // IHDR bit depth
+  const std::vector<std::uint8_t> small_bytes(small->begin(), small->end());
+  EXPECT_EQ(cv::imdecode(small_bytes, cv::IMREAD_COLOR).at<cv::Vec3b>(3, 3), cv::Vec3b(0, 0, 0));
+}
+
+TEST(CompactPngTest, MoreThan256ColoursAreNotAPalettePng) {
+  cv::Mat ramp(1, 257, CV_8UC3);
+  for (int col = 0; col < 257; ++col) ramp.at<cv::Vec3b>(0, col) = cv::Vec3b(static_cast<std::uint8_t>(col % 256), col / 256, 0);
+  EXPECT_FALSE(EncodePalettePng(ramp).has_value());
+  EXPECT_TRUE(EncodePalettePng(ramp.colRange(0, 256)).has_value());
+  EXPECT_THROW(EncodePalettePng(cv::Mat(3, 3, CV_8UC1)), InputError);
 }
 
 TEST(CompactPngTest, BadFramesAreRefused) {
