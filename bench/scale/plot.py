@@ -25,11 +25,11 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         data = os.path.join(work, "scale.dat")
         with open(data, "w") as handle:
-            handle.write("# runs run_s merge_s report_s disk_mb\n")
+            handle.write("# runs run_s merge_s report_s disk_mb disk_kb_per_run\n")
             for runs in sorted(sizes):
                 r = sizes[runs]
                 handle.write(f"{runs} {r['run']['wall_s']:.2f} {r['merge']['wall_s']:.2f} {r['report']['wall_s']:.2f} "
-                             f"{r['disk']['allocated_bytes'] / 1e6:.2f}\n")
+                             f"{r['disk']['allocated_bytes'] / 1e6:.2f} {r['disk']['disk_kb_per_run']:.1f}\n")
         script = f"""
 set terminal pngcairo size 900,420 font ',10'
 set output '{out}'
@@ -41,9 +41,14 @@ set ylabel 'seconds (wall, 2 cores)'
 set title 'time'
 plot '{data}' using 1:2 with linespoints title 'run (4 shards)', '' using 1:3 with linespoints title 'merge', \\
      '' using 1:4 with linespoints title 'report'
-set ylabel 'MB'
+set ylabel 'MB (allocated)'
+set y2label 'KB per run'
+set ytics nomirror
+set y2tics
+set yrange [0:*]
+set y2range [0:*]
 set title 'disk (sweep folder, report included)'
-plot '{data}' using 1:5 with linespoints title 'allocated'
+plot '{data}' using 1:5 with linespoints title 'total', '' using 1:6 axes x1y2 with linespoints title 'per run'
 unset multiplot
 """
         subprocess.run(["gnuplot"], input=script, text=True, check=True)
