@@ -57,9 +57,11 @@ eval "$("$root/docker/daemon.sh" start)"
 images_before=$("$docker_client" images -aq --no-trunc | sort -u)
 # From docker/: docker-compose 1.29 reads security_opt's seccomp profile relative to the working folder
 # (not the compose file's): from docker/, compose.yaml's ./seccomp-sandbox.json is found whichever reads it.
+# COMPOSE_HTTP_TIMEOUT: with vfs, creating a container copies the whole image (a minute or more on a loaded
+# machine), longer than docker-compose 1.29's default 60 s wait for the daemon's answer.
 compose() {
   (cd "$(dirname "$compose_file")" &&
-    SLAMSWEEP_IMAGE=${compose_image:-$tag} SLAMSWEEP_DATASETS=$shared/datasets SLAMSWEEP_LISTEN=127.0.0.1:$port \
+    COMPOSE_HTTP_TIMEOUT=${COMPOSE_HTTP_TIMEOUT:-600} SLAMSWEEP_IMAGE=${compose_image:-$tag} SLAMSWEEP_DATASETS=$shared/datasets SLAMSWEEP_LISTEN=127.0.0.1:$port \
       docker-compose --project-name "$project" --file "$compose_file" "$@")
 }
 port=0
