@@ -82,6 +82,8 @@ std::vector<fs::path> RosterProgramReads(const RosterAlgorithm& algorithm) {
   std::vector<fs::path> reads = {fs::absolute(RosterPrefix()).lexically_normal()};
   // The driver's configuration beside it (Cartographer's Lua options), found from /proc/self/exe.
   if (!algorithm.config_file.empty()) reads.push_back(RosterDriver(algorithm).parent_path() / algorithm.config_file);
+  // An installation's copy of upstream's files (slam-constructor's properties, Cartographer's Lua files).
+  if (const auto installed = evaluator::FindInstalledData(algorithm.upstream)) reads.push_back(*installed);
   // Upstream's configuration files, wherever the installation keeps them.
   if (const fs::path upstream = RosterUpstreamConfigDir(algorithm); !upstream.empty()) {
     reads.push_back(fs::absolute(upstream).lexically_normal());
