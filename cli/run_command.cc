@@ -67,6 +67,8 @@ int Run(const RunOptions& options, const Streams& streams, const std::string& co
   for (orchestrator::RunSpec& run : sweep.runs) run.allow_unisolated = options.allow_unisolated;
   // Every reference is in the shared data folder: no program's sandbox may show it.
   orchestrator::AddPrivateDirs({FindCatalog("").shared_root});
+  // Whether sandboxes can have a /proc of their own here: probed once, not by every worker.
+  if (options.executor == "local") orchestrator::DecideSandboxProcForWorkers();
   orchestrator::SweepSettings settings;
   settings.name = sweep.config.name;
   settings.output_dir = options.output.empty() ? sweep.config.output_dir : std::filesystem::path(options.output);

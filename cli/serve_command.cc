@@ -14,6 +14,7 @@
 #include "orchestrator/files/atomic_file.h"
 #include "orchestrator/service/server.h"
 #include "orchestrator/sweep/local_executor.h"
+#include "orchestrator/worker/program_sandbox.h"
 
 namespace slamsweep::cli {
 namespace {
@@ -90,6 +91,8 @@ int Serve(const ServeOptions& options) {
   service.allow_network = options.allow_network;
   service.allow_unisolated = options.allow_unisolated;
   service.private_dirs = {FindCatalog("").shared_root};
+  // Whether sandboxes can have a /proc of their own here: probed once, not by every worker.
+  if (service.executor == "local") orchestrator::DecideSandboxProcForWorkers();
   service.worker_program = orchestrator::WorkerProgram();
   if (!options.port_file.empty()) {
     service.on_listening = [file = options.port_file](int port) {

@@ -7,12 +7,38 @@
 # usage: docker/build-image.sh [TAG] [docker build options...]     (default TAG slamsweep:latest)
 #   SLAMSWEEP_PEERS  the folder of pinned tarballs (default ../shared/peers beside the repository)
 #   DOCKER_HOST      the daemon (docker/daemon.sh start prints it)
+#   SLAMSWEEP_DOCKER_INSTALLED=PREFIX  a developer's shortcut: the Dockerfile's runtime stage alone, with
+#                    PREFIX (a `cmake --install` of this checkout on a Debian 12 host) in place of the build
+#                    stage's /opt/slamsweep. Its instructions are the runtime stage's, so they share its layers.
 # Prints the build's duration; docker build's own output goes to stdout, each line with its time.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 docker_client=/usr/bin/docker
 tag=${1:-slamsweep:latest}
 shift || true
+
+installed=${SLAMSWEEP_DOCKER_INSTALLED:-}
+if [[ -n "$installed" ]]; then
+  [[ -x "$installed/bin/slamsweep" ]] || { echo "build-image: $installed/bin/slamsweep missing (cmake --install)" >&2; exit 1; }
+  "$root/docker/build-base.sh" "$(sed -n 's/^ARG BASE=//p' "$root/docker/Dockerfile")"
+  context=$(mktemp -d)
+  trap 'rm -rf "$context"' EXIT
+  mkdir -p "$context/scripts" "$context/docker"
+  cp "$root/scripts/install-deps.sh" "$context/scripts/"
+  cp "$root/docker/image-steps.sh" "$context/docker/"
+  cp -a "$installed" "$context/installed"
+  # The base argument, then the runtime stage with the installed tree copied from the context.
+  { grep '^ARG BASE=' "$root/docker/Dockerfile"
+    sed -n '/^FROM .* AS runtime$/,$p' "$root/docker/Dockerfile" |
+      sed 's|^COPY --from=build /stage/opt/slamsweep/ /opt/slamsweep/$|COPY installed/ /opt/slamsweep/|'
+  } >"$context/Dockerfile"
+  grep -q '^COPY installed/' "$context/Dockerfile" || { echo "build-image: no COPY --from=build line in the runtime stage" >&2; exit 1; }
+  start=$(date +%s)
+  "$docker_client" build --network host -t "$tag" "$@" "$context" 2>&1 |
+    while IFS= read -r line; do printf '%(%H:%M:%S)T %s\n' -1 "$line"; done
+  echo "build-image: built $tag (runtime stage with $installed) in $(($(date +%s) - start)) s"
+  exit 0
+fi
 
 # The tarball each recipe pins, copied into the build context (install-slam.sh checks its SHA-256).
 peers=${SLAMSWEEP_PEERS:-$root/../shared/peers}

@@ -8,8 +8,9 @@
 #     and junit.xml copied to the host;
 #   - docker-compose up of `slamsweep serve` on the host's loopback, `slamsweep submit --wait` from the
 #     host running every roster driver, `down` leaving the results volume and its results intact;
-#   - where the checkout has the sandbox, its hostile program run by a sweep in the `slamsweep` service's
-#     container (compose.yaml's seccomp profile and options, no privileges): nothing escapes.
+#   - where the checkout has the sandbox, its hostile program run by a sweep in each service's container
+#     (compose.yaml's seccomp profile and options, no privileges, Docker's masked /proc: the sandbox has
+#     none of its own there): nothing escapes.
 # Then it removes the containers, volumes and images it made and stops the daemon it started.
 #
 # usage: scripts/docker-check.sh [SLAMSWEEP_BIN] [OUT_DIR]
@@ -42,6 +43,8 @@ fail() { failed=$((failed + 1)); echo "FAIL $*"; }
 step() { echo "== $*"; }
 
 [[ -x "$slamsweep" ]] || { echo "docker-check: $slamsweep is not built (scripts/build.sh)" >&2; exit 1; }
+# Absolute: the hostile program beside it is bind-mounted, and docker-compose takes a relative source for a volume name.
+slamsweep=$(cd "$(dirname "$slamsweep")" && pwd)/$(basename "$slamsweep")
 [[ -d "$shared/datasets" ]] || { echo "docker-check: $shared/datasets missing (set SLAMSWEEP_SHARED to the shared data folder)" >&2; exit 1; }
 shared=$(cd "$shared" && pwd)
 rm -rf "$out"
@@ -56,9 +59,11 @@ eval "$("$root/docker/daemon.sh" start)"
 images_before=$("$docker_client" images -aq --no-trunc | sort -u)
 # From docker/: docker-compose 1.29 reads security_opt's seccomp profile relative to the working folder
 # (not the compose file's): from docker/, compose.yaml's ./seccomp-sandbox.json is found whichever reads it.
+# COMPOSE_HTTP_TIMEOUT: with vfs, creating a container copies the whole image (a minute or more on a loaded
+# machine), longer than docker-compose 1.29's default 60 s wait for the daemon's answer.
 compose() {
   (cd "$(dirname "$compose_file")" &&
-    SLAMSWEEP_IMAGE=${compose_image:-$tag} SLAMSWEEP_DATASETS=$shared/datasets SLAMSWEEP_LISTEN=127.0.0.1:$port \
+    COMPOSE_HTTP_TIMEOUT=${COMPOSE_HTTP_TIMEOUT:-600} SLAMSWEEP_IMAGE=${compose_image:-$tag} SLAMSWEEP_DATASETS=$shared/datasets SLAMSWEEP_LISTEN=127.0.0.1:$port \
       docker-compose --project-name "$project" --file "$compose_file" "$@")
 }
 port=0
@@ -100,9 +105,19 @@ trap cleanup EXIT
 # options compose.yaml gives it so that each SLAM program's sandbox can be made (docker/README.md).
 in_image() {
   "$docker_client" run --rm --label "slamsweep.check=$run_id" --network none \
-    --security-opt "seccomp=$root/docker/seccomp-sandbox.json" --security-opt systempaths=unconfined \
-    --security-opt apparmor=unconfined "$@"
+    --security-opt "seccomp=$root/docker/seccomp-sandbox.json" --security-opt apparmor=unconfined "$@"
 }
+# timed NAME COMMAND...: runs it and appends "NAME_s SECONDS" to times.txt; its exit status.
+timed() {
+  local name=$1 began status=0
+  shift
+  began=$(date +%s)
+  "$@" || status=$?
+  echo "${name}_s $(($(date +%s) - began))" >>"$out/times.txt"
+  return "$status"
+}
+# no_proc_runs FOLDER: how many result.json under it say the program's sandbox had no /proc of its own.
+no_proc_runs() { grep -rl --include=result.json '"proc":"none"' "$1" 2>/dev/null | wc -l; }
 
 step "build"
 start=$(date +%s)
@@ -175,21 +190,28 @@ failed_runs=$(count "$out/quickstart/summary.json" failed)
   pass "the report is on the host" || fail "no report/index.html on the host"
 [[ $(grep -c '<testcase ' "$out/quickstart/junit.xml" 2>/dev/null) == 18 ]] &&
   pass "junit.xml with 18 testcases is on the host" || fail "junit.xml missing or without 18 testcases"
+# Docker's masked /proc: the probe gives each sandbox none, and every program's result.json says so.
+programs=$(grep -rl --include=result.json '"sandbox":{' "$out/quickstart/runs" 2>/dev/null | wc -l)
+no_proc=$(no_proc_runs "$out/quickstart/runs")
+((programs > 0 && no_proc == programs)) && pass "each of the $programs sandboxed quick-start runs says it had no /proc" ||
+  fail "of $programs sandboxed quick-start runs, $no_proc say they had no /proc"
 
 step "the service with docker-compose"
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 compose config --quiet && pass "compose.yaml is valid for $(docker-compose version --short)" ||
   fail "docker-compose rejects compose.yaml"
-if compose up --detach --no-build serve >"$out/compose-up.log" 2>&1; then
+if timed compose_up compose up --detach --no-build serve >"$out/compose-up.log" 2>&1; then
   pass "docker-compose up serve"
 else
   fail "docker-compose up serve failed: $(tail -n 5 "$out/compose-up.log")"
 fi
+# vfs copies the image into the container's root before it starts: a minute or more.
 waited=0
-until (exec 3<>"/dev/tcp/127.0.0.1/$port") 2>/dev/null || ((waited++ >= 60)); do sleep 1; done
+until (exec 3<>"/dev/tcp/127.0.0.1/$port") 2>/dev/null || ((waited++ >= 300)); do sleep 1; done
+echo "serve_listening_s $waited" >>"$out/times.txt"
 mkdir -p "$out/service"
 status=0
-"$slamsweep" submit "$root/tests/docker/service_sweep.yaml" --server "http://127.0.0.1:$port" --wait \
+timed submit "$slamsweep" submit "$root/tests/docker/service_sweep.yaml" --server "http://127.0.0.1:$port" --wait \
   --junit "$out/service/junit.xml" --report "$out/service/report" >"$out/service/submit.log" 2>&1 || status=$?
 tail -n 3 "$out/service/submit.log"
 ((status == 0)) && pass "slamsweep submit --wait from the host: every roster driver ran ok in the container" ||
@@ -197,15 +219,28 @@ tail -n 3 "$out/service/submit.log"
 [[ $(grep -c '<testcase ' "$out/service/junit.xml" 2>/dev/null) == 6 ]] &&
   pass "the service's junit.xml has the 6 runs" || fail "the service's junit.xml is missing or lacks runs"
 compose logs --no-color serve >"$out/service/serve.log" 2>&1 || true
-if compose down --timeout 60 >"$out/compose-down.log" 2>&1; then
+grep -q "sandboxes have no /proc here" "$out/service/serve.log" &&
+  pass "serve probed once: its programs' sandboxes have no /proc in this container" ||
+  fail "serve's log does not say how its sandboxes get their /proc ($out/service/serve.log)"
+if timed compose_down compose down --timeout 60 >"$out/compose-down.log" 2>&1; then
   pass "docker-compose down"
 else
   fail "docker-compose down failed: $(tail -n 5 "$out/compose-down.log")"
 fi
 kept=$(in_image -v "${project}_results:/results" --entrypoint /bin/sh "$tag" -c \
-  'ls /results/service/queue.sqlite && find /results/service -name summary.json | head -n 1' 2>&1 || true)
+  'ls /results/service/queue.sqlite && find /results/service -name summary.json | head -n 1 &&
+   echo "sandboxed $(grep -rl --include=result.json "\"sandbox\":{" /results/service | wc -l) no_proc $(grep -rl --include=result.json "\"proc\":\"none\"" /results/service | wc -l)"' 2>&1 || true)
+echo "$kept" >"$out/service/volume.txt"
 [[ "$kept" == *queue.sqlite*summary.json* ]] && pass "the results volume outlives down (queue and results kept)" ||
   fail "the results volume lost the service's data: $kept"
+# The five roster drivers ran sandboxed without /proc (the odometry baseline runs no program): every
+# result.json in the volume that has a sandbox says so (the data folder holds 12 for the 6 runs here).
+counts=$(tail -n 1 <<<"$kept")
+sandboxed=$(awk '{ print $2 }' <<<"$counts")
+no_proc=$(awk '{ print $4 }' <<<"$counts")
+[[ "$sandboxed" =~ ^[0-9]+$ ]] && ((sandboxed >= 5 && no_proc == sandboxed)) &&
+  pass "the programs' results in the volume ($sandboxed result.json) all say their sandbox had no /proc" ||
+  fail "the service's results in the volume: $counts (expected every sandboxed run without /proc, at least 5)"
 
 step "the sandbox's hostile program as a SLAM program in a container"
 # The sandbox's own test (a real sweep whose command-adapter program tries to escape), run inside the
@@ -229,16 +264,21 @@ else
       "$docker_client" build --network host -t "$hostile_tag" - >"$out/hostile-image.log" 2>&1 &&
       compose_image=$hostile_tag || fail "no image with python3 for the hostile test (see $out/hostile-image.log)"
   fi
-  status=0
-  compose run --rm --no-deps -T \
-    -v "$shared/reference:/data/reference:ro" \
-    -v "$hostile:/opt/hostile/slamsweep-hostile:ro" -v "$hostile_script:/opt/hostile/hostile_sweep_test.py:ro" \
-    --entrypoint python3 slamsweep /opt/hostile/hostile_sweep_test.py --slamsweep /opt/slamsweep/bin/slamsweep \
-    --hostile /opt/hostile/slamsweep-hostile --shared /data --workdir /home/slamsweep >"$out/hostile.log" 2>&1 || status=$?
+  # In each service's container: `serve` shares the host's network (its sandboxes must not), `slamsweep` has
+  # none. The probe must choose the sandbox without /proc there (--expect-proc none): Docker masks /proc.
+  for service in serve slamsweep; do
+    status=0
+    timed "hostile_$service" compose run --rm --no-deps -T \
+      -v "$shared/reference:/data/reference:ro" \
+      -v "$hostile:/opt/hostile/slamsweep-hostile:ro" -v "$hostile_script:/opt/hostile/hostile_sweep_test.py:ro" \
+      --entrypoint python3 "$service" /opt/hostile/hostile_sweep_test.py --slamsweep /opt/slamsweep/bin/slamsweep \
+      --hostile /opt/hostile/slamsweep-hostile --shared /data --workdir /home/slamsweep --expect-proc none \
+      >"$out/hostile-$service.log" 2>&1 || status=$?
+    tail -n 3 "$out/hostile-$service.log"
+    ((status == 0)) && pass "the hostile program, run by a sweep in the $service service's container, escaped nowhere" ||
+      fail "the hostile program's test exited $status in the $service service's container (see $out/hostile-$service.log)"
+  done
   compose_image=""
-  tail -n 5 "$out/hostile.log"
-  ((status == 0)) && pass "the hostile program, run by a sweep in the container, escaped nowhere" ||
-    fail "the hostile program's test exited $status in the container (see $out/hostile.log)"
 fi
 
 echo "docker-check: times and size in $out/times.txt"

@@ -18,6 +18,8 @@ build_packages=(
   libpng-dev libfast-float-dev
   # `slamsweep serve` and `submit`: the HTTP server and client (cpp-httplib)
   libcpp-httplib-dev
+  # the sandbox's seccomp filter against nested user namespaces where it has no /proc (libseccomp)
+  libseccomp-dev
   # map GIFs in the report (giflib); MRPT's rawlog reading/writing (libmrpt-obs-dev)
   libgif-dev libmrpt-obs-dev
   # ROS1 bags (evaluator/formats/rosbag): librosbag and message headers
@@ -34,7 +36,7 @@ run_programs=(gnuplot-nox mrpt-apps mrpt-common bubblewrap)
 runtime_packages=(
   libstdc++6 zlib1g libboost-filesystem1.74.0 libboost-iostreams1.74.0 libdeflate0 libfmt9 libssl3 libyaml-cpp0.7
   libspdlog1.10 libsqlite3-0 libcpp-httplib0.11 libgif7 libpng16-16 libopencv-core406 libopencv-imgproc406
-  libmrpt-obs2.5 librosbag-storage4d libroscpp-serialization0d librostime1d libcpp-common0d
+  libmrpt-obs2.5 librosbag-storage4d libroscpp-serialization0d librostime1d libcpp-common0d libseccomp2
   # the Cartographer driver (Ceres, linked statically, brings ATLAS's BLAS and LAPACK: libceres-dev
   # depends on libatlas-base-dev)
   libabsl20220623 libcholmod3 libcxsparse3 libgoogle-glog0v6 liblua5.3-0 libprotobuf32 libatlas3-base liblapack3

@@ -8,6 +8,11 @@
 
 namespace slamsweep::evaluator {
 
+/// The running program's file, symbolic links resolved: /proc/self/exe, else (a sandbox without /proc)
+/// the path it was started by (the auxiliary vector's AT_EXECFN) from the working folder it started in.
+/// Empty when neither is known.
+std::filesystem::path RunningProgram();
+
 /// The folders where slamsweep's helper programs (slamsweep-maps, slamsweep-sweep) and format
 /// modules (slamsweep-rawlog.so, slamsweep-rosbag.so) are looked for, in this order:
 ///  - $SLAMSWEEP_LIBEXEC_DIR alone, when it is set and not empty;

@@ -62,7 +62,6 @@ std::vector<std::string> BwrapCommand(const SandboxSpec& spec, const std::vector
                                    "--unshare-ipc",
                                    "--unshare-uts",
                                    "--unshare-cgroup-try",
-                                   "--disable-userns",
                                    "--die-with-parent",
                                    "--new-session",
                                    "--as-pid-1",
@@ -71,10 +70,14 @@ std::vector<std::string> BwrapCommand(const SandboxSpec& spec, const std::vector
                                    "--hostname",
                                    "sandbox"};
   if (!spec.network) argv.push_back("--unshare-net");
+  // No nested user namespace: bubblewrap forbids them through the sandbox's /proc; without one, process 1's
+  // seccomp filter does (--no-user-namespaces below).
+  if (spec.fresh_proc) argv.push_back("--disable-userns");
 
   // Memory-backed folders, each bounded: the program cannot fill the machine's memory through them.
   const std::string tmpfs_size = std::to_string(spec.file_size_limit_bytes);
-  Append(argv, {"--proc", "/proc", "--dev", "/dev", "--size", std::to_string(kDevShmBytes), "--tmpfs", "/dev/shm",
+  if (spec.fresh_proc) Append(argv, {"--proc", "/proc"});
+  Append(argv, {"--dev", "/dev", "--size", std::to_string(kDevShmBytes), "--tmpfs", "/dev/shm",
                 "--remount-ro", "/dev"});
   if (spec.file_size_limit_bytes > 0) Append(argv, {"--size", tmpfs_size});
   Append(argv, {"--tmpfs", "/tmp"});
@@ -120,6 +123,7 @@ std::vector<std::string> BwrapCommand(const SandboxSpec& spec, const std::vector
   Append(argv, {init.string(), "--status-fd", std::to_string(status_fd)});
   if (spec.process_limit > 0) Append(argv, {"--process-limit", std::to_string(spec.process_limit)});
   if (spec.file_size_limit_bytes > 0) Append(argv, {"--file-size-limit", tmpfs_size});
+  if (!spec.fresh_proc) argv.push_back("--no-user-namespaces");
   argv.push_back("--");
   argv.insert(argv.end(), program_argv.begin(), program_argv.end());
   return argv;

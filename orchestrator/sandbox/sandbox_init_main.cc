@@ -2,18 +2,24 @@
 // limits inside the sandbox's own user namespace, starts the program, reaps every process of the
 // sandbox and, once the program has ended, ends what it left behind and reports the program's exact
 // wait status to the worker. Usage:
-//   slamsweep-sandbox-init --status-fd FD [--process-limit N] [--file-size-limit BYTES] -- PROGRAM ARGS...
+//   slamsweep-sandbox-init --status-fd FD [--process-limit N] [--file-size-limit BYTES] [--no-user-namespaces]
+//                          -- PROGRAM ARGS...
+// --no-user-namespaces: a seccomp filter refuses new user namespaces to everything it starts, where
+// bubblewrap's --disable-userns cannot be used (a sandbox without /proc).
 // Status lines on FD: "status <wait status>" after the program ended; "exec <errno>" when it could
 // not be started. No line at all: the sandbox never got this far.
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <fcntl.h>
+#include <sched.h>
+#include <seccomp.h>
 #include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -45,11 +51,35 @@ bool Limit(int resource, unsigned long long value) {
   return ::setrlimit(resource, &limit) == 0;
 }
 
+/// Refuses unshare and clone with CLONE_NEWUSER (EPERM) and clone3, whose flags a filter cannot read (ENOSYS: the
+/// C library falls back to clone), for this process and all it starts (bubblewrap set no_new_privs). Other
+/// system calls are allowed: the container's profile and the sandbox's namespaces bound them already.
+bool RefuseUserNamespaces() {
+  scmp_filter_ctx filter = ::seccomp_init(SCMP_ACT_ALLOW);
+  if (filter == nullptr) return false;
+  const scmp_datum_t user = CLONE_NEWUSER;
+  bool ok = true;
+  // The 32-bit ABIs of an x86-64 kernel too: a program could switch to them to pass a filter of the native one.
+  for (const std::uint32_t arch : {SCMP_ARCH_X86, SCMP_ARCH_X32}) {
+    if (::seccomp_arch_native() == SCMP_ARCH_X86_64) {
+      const int added = ::seccomp_arch_add(filter, arch);
+      ok = ok && (added == 0 || added == -EEXIST);
+    }
+  }
+  ok = ok && ::seccomp_rule_add(filter, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(unshare), 1, SCMP_A0(SCMP_CMP_MASKED_EQ, user, user)) == 0;
+  ok = ok && ::seccomp_rule_add(filter, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(clone), 1, SCMP_A0(SCMP_CMP_MASKED_EQ, user, user)) == 0;
+  ok = ok && ::seccomp_rule_add(filter, SCMP_ACT_ERRNO(ENOSYS), SCMP_SYS(clone3), 0) == 0;
+  ok = ok && ::seccomp_load(filter) == 0;
+  ::seccomp_release(filter);
+  return ok;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   int status_fd = -1;
   unsigned long long process_limit = 0, file_size_limit = 0, number = 0;
+  bool no_user_namespaces = false;
   int first = 1;
   for (; first < argc; ++first) {
     const char* option = argv[first];
@@ -57,6 +87,10 @@ int main(int argc, char** argv) {
     if (std::strcmp(option, "--") == 0) {
       ++first;
       break;
+    }
+    if (std::strcmp(option, "--no-user-namespaces") == 0) {
+      no_user_namespaces = true;
+      continue;
     }
     if (!ParseNumber(value, number)) {
       std::fprintf(stderr, "slamsweep-sandbox-init: %s needs a number\n", option);
@@ -76,7 +110,7 @@ int main(int argc, char** argv) {
   }
   if (status_fd < 0 || first >= argc) {
     std::fprintf(stderr, "usage: slamsweep-sandbox-init --status-fd FD [--process-limit N] "
-                         "[--file-size-limit BYTES] -- PROGRAM ARGS...\n");
+                         "[--file-size-limit BYTES] [--no-user-namespaces] -- PROGRAM ARGS...\n");
     return kUsageError;
   }
   // The program must not inherit the status pipe, nor read this process's memory, descriptors or
@@ -90,6 +124,11 @@ int main(int argc, char** argv) {
   }
   if (file_size_limit > 0 && !Limit(RLIMIT_FSIZE, file_size_limit)) {
     std::perror("slamsweep-sandbox-init: RLIMIT_FSIZE");
+    return kUsageError;
+  }
+
+  if (no_user_namespaces && !RefuseUserNamespaces()) {
+    std::fprintf(stderr, "slamsweep-sandbox-init: cannot install the seccomp filter against user namespaces\n");
     return kUsageError;
   }
 

@@ -10,7 +10,7 @@ namespace slamsweep::orchestrator {
 /// What a program started in a sandbox (bubblewrap, orchestrator/sandbox/bwrap_command.h) may see and
 /// use. Its file system is built from nothing: the system folders it needs read-only (SystemPaths),
 /// then exactly the paths named here at their own paths, a private /tmp, a minimal /dev and a /proc
-/// of its own PID namespace. It runs in its own user, PID, mount, network, IPC and UTS namespaces
+/// of its own PID namespace (or none: `fresh_proc`). It runs in its own user, PID, mount, network, IPC and UTS namespaces
 /// with no capability, no_new_privs, its own session, and dies with the process that started it.
 struct SandboxSpec {
   /// Files and folders bound read-only (the program, its libraries and configuration, input/).
@@ -22,6 +22,10 @@ struct SandboxSpec {
   std::vector<std::filesystem::path> hidden;
   /// false: a network namespace with only a loopback interface of its own.
   bool network = false;
+  /// true: a /proc of its own PID namespace, and bubblewrap's --disable-userns. false, where the kernel
+  /// refuses a fresh /proc (a container whose /proc has masked paths: proc_choice.h): no /proc at all, and
+  /// nested user namespaces refused by a seccomp filter in process 1 (--disable-userns writes through /proc).
+  bool fresh_proc = true;
   /// Processes and threads the sandbox may hold at once (RLIMIT_NPROC in its own user namespace, so
   /// that nothing else of the same user counts); 0 = no limit.
   std::uint64_t process_limit = 0;

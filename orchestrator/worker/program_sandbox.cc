@@ -9,8 +9,11 @@
 #include <cstring>
 #include <sstream>
 
+#include <spdlog/spdlog.h>
+
 #include "evaluator/core/input_error.h"
 #include "orchestrator/sandbox/bwrap_command.h"
+#include "orchestrator/sandbox/proc_choice.h"
 
 namespace slamsweep::orchestrator {
 namespace fs = std::filesystem;
@@ -101,10 +104,18 @@ void AddPrivateDirs(const std::vector<fs::path>& folders) {
   ::setenv(kPrivateDirsVariable, value.c_str(), 1);
 }
 
+void DecideSandboxProcForWorkers() {
+  const SandboxPrograms& programs = FindSandboxPrograms();
+  if (!programs.missing.empty()) return;
+  const SandboxProcChoice choice = orchestrator::DecideSandboxProcForWorkers(programs.bwrap);
+  if (!choice.fresh_proc) spdlog::info("SLAM programs' sandboxes have no /proc here: {}", choice.why);
+}
+
 SandboxSpec ProgramSandbox(const RunSpec& spec, const RunPaths& paths, const std::vector<fs::path>& reads,
                            const std::string& program, const SandboxPrograms& programs,
-                           const fs::path& pids_cgroup_procs) {
+                           const fs::path& pids_cgroup_procs, bool fresh_proc) {
   SandboxSpec sandbox;
+  sandbox.fresh_proc = fresh_proc;
   sandbox.bwrap_program = programs.bwrap;
   sandbox.init_program = programs.init;
   sandbox.network = spec.algorithm.network;

@@ -21,6 +21,11 @@ inline constexpr const char* kPrivateDirsVariable = "SLAMSWEEP_PRIVATE_DIRS";
 /// Call before any thread starts.
 void AddPrivateDirs(const std::vector<std::filesystem::path>& folders);
 
+/// For `slamsweep run` and `serve` with local workers: probes once how sandboxes get their /proc here
+/// (orchestrator/sandbox/proc_choice.h) and tells the workers through SLAMSWEEP_SANDBOX_PROC; logs it
+/// when they will have none. Nothing when bubblewrap is missing. Call before any thread starts.
+void DecideSandboxProcForWorkers();
+
 /// The sandbox a run's program runs in: read-only its own file, input/ and `reads` (what its adapter
 /// knows it reads: the roster's installed libraries, Cartographer's Lua file, a command's
 /// `read_only`), writable raw/ (its working folder), with the algorithm's disk and process limits
@@ -31,8 +36,9 @@ void AddPrivateDirs(const std::vector<std::filesystem::path>& folders);
 /// cache), the folders of the catalog files with the sequence's reference (the corrected log, the
 /// relations, a reference map) or a folder of SLAMSWEEP_PRIVATE_DIRS. Such a folder inside the system
 /// paths every sandbox shows (a dataset under /usr/share) is covered by an empty one instead.
+/// Its /proc is `fresh_proc`'s (ChosenSandboxProc).
 SandboxSpec ProgramSandbox(const RunSpec& spec, const RunPaths& paths, const std::vector<std::filesystem::path>& reads,
                            const std::string& program, const SandboxPrograms& programs,
-                           const std::filesystem::path& pids_cgroup_procs = {});
+                           const std::filesystem::path& pids_cgroup_procs = {}, bool fresh_proc = true);
 
 }  // namespace slamsweep::orchestrator

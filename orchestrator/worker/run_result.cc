@@ -48,6 +48,7 @@ nlohmann::json ToJson(const RunResult& result) {
   json["noise"] = result.noise;
   json["odometry_is_reference"] =
       result.odometry_is_reference ? nlohmann::json(*result.odometry_is_reference) : nlohmann::json();
+  json["sandbox"] = result.sandbox;
   json["flags"] = ToJson(result.flags);
   return json;
 }

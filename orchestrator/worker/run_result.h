@@ -37,6 +37,9 @@ struct RunResult {
   /// The program's odometry was the reference (RunInputs::odometry_is_reference); absent when the
   /// inputs were never prepared.
   std::optional<bool> odometry_is_reference;
+  /// How the program was isolated (worker.cc: "isolated", "proc", "user", "process_limit_by", "network",
+  /// "why" when the sandbox differs from the full one or is absent); null when no program ran.
+  nlohmann::json sandbox;
   /// Marks the worker measured (odometry = reference, unisolated); the orchestrator may add "stale" later.
   RunFlags flags;
 

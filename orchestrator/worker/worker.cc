@@ -28,6 +28,7 @@
 #include "orchestrator/reference_map/reference_map.h"
 #include "orchestrator/process/outcome_reason.h"
 #include "orchestrator/sandbox/pids_cgroup.h"
+#include "orchestrator/sandbox/proc_choice.h"
 #include "orchestrator/sandbox/sandbox_availability.h"
 #include "orchestrator/worker/program_sandbox.h"
 #include "orchestrator/worker/raw_folder.h"
@@ -139,6 +140,18 @@ void RequireIsolationOrAllowed(const RunSpec& spec, const std::string& why) {
                        "); --allow-unisolated runs it without a sandbox, its result marked unisolated");
 }
 
+/// result.json's "sandbox": how the program was isolated.
+nlohmann::json SandboxRecord(const SandboxSpec& sandbox, const SandboxProcChoice& proc) {
+  nlohmann::json record = {{"isolated", true},
+                           {"proc", proc.fresh_proc ? "own" : "none"},
+                           {"nested_user_namespaces", proc.fresh_proc ? "refused by bubblewrap" : "refused by seccomp"},
+                           {"user", sandbox.user ? "nobody" : "the worker's, in a user namespace of its own"},
+                           {"process_limit_by", sandbox.pids_cgroup_procs.empty() ? "RLIMIT_NPROC" : "pids cgroup"},
+                           {"network", sandbox.network}};
+  if (!proc.fresh_proc) record["why"] = proc.why;
+  return record;
+}
+
 /// Runs the program in its sandbox (or, where none can be made and the sweep allows it, without one)
 /// and checks what it left in raw/. Returns false when the run cannot go on.
 bool RunProgram(const RunSpec& spec, const RunPaths& paths, const Adapter& adapter, ProcessSpec& process,
@@ -151,8 +164,14 @@ bool RunProgram(const RunSpec& spec, const RunPaths& paths, const Adapter& adapt
   std::string no_cgroup;
   if (unisolated.empty() && ::geteuid() == 0) cgroup = PidsCgroup::Create(spec.algorithm.process_limit, no_cgroup);
   if (unisolated.empty()) {
+    const SandboxProcChoice& proc = ChosenSandboxProc(programs.bwrap);
     process.sandbox = ProgramSandbox(spec, paths, adapter.ProgramReads(spec), process.argv.front(), programs,
-                                     cgroup ? cgroup->ProcsFile() : fs::path());
+                                     cgroup ? cgroup->ProcsFile() : fs::path(), proc.fresh_proc);
+    result.sandbox = SandboxRecord(*process.sandbox, proc);
+    if (!proc.fresh_proc) {
+      result.warnings.push_back("the program's sandbox had no /proc (" + proc.why + "); it was isolated as fully "
+                                "otherwise, nested user namespaces refused by a seccomp filter");
+    }
     outcome = RunProcess(process);
     if (outcome->sandbox_failed) unisolated = outcome->reason;
   }
@@ -166,6 +185,7 @@ bool RunProgram(const RunSpec& spec, const RunPaths& paths, const Adapter& adapt
   if (!unisolated.empty()) {
     RequireIsolationOrAllowed(spec, unisolated);
     process.sandbox.reset();
+    result.sandbox = {{"isolated", false}, {"why", unisolated}};
     result.flags.Set(RunFlag::kUnisolated);
     result.warnings.push_back("unisolated: the program ran without a sandbox and could read every file this machine "
                               "lets slamsweep read, the reference included (" + unisolated + ")");

@@ -12,6 +12,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/installation.h"
+#include "evaluator/core/installation.h"
 
 namespace slamsweep::slam::cartographer_driver {
 namespace {
@@ -109,9 +110,8 @@ std::string ValueAt(carto::common::LuaParameterDictionary& options, const Listed
 CartographerOptions ReadCartographerOptions(Parameters& parameters) {
   // Beside the program (the build and the installation put slamsweep_2d.lua there): a file a run reads as
   // configuration sits where slamsweep's build identity finds and hashes it (orchestrator/adapters/roster.h).
-  std::error_code error;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (error) throw evaluator::InputError("cannot find the Cartographer driver's own folder: " + error.message());
+  const std::filesystem::path self = evaluator::RunningProgram();
+  if (self.empty()) throw evaluator::InputError("cannot find the Cartographer driver's own folder (no /proc/self/exe, no AT_EXECFN)");
   const std::string base = ReadFile((self.parent_path() / "slamsweep-slam-cartographer.lua").string());
   const std::string upstream_files = OptionsPath("configuration_files", CARTOGRAPHER_CONFIGURATION_FILES);
   auto resolver = [&upstream_files] {

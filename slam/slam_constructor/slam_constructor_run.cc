@@ -9,6 +9,7 @@
 #include <utils/properties_providers.h>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/core/installation.h"
 
 namespace slamsweep::slam::slam_constructor {
 namespace {
@@ -103,6 +104,11 @@ class SlamConstructorAlgorithm : public Algorithm {
 };
 
 }  // namespace
+
+std::filesystem::path ConfigFile(std::string_view relative, const std::filesystem::path& built_root) {
+  if (const auto installed = evaluator::FindInstalledData("slam-constructor/config/" + std::string(relative))) return *installed;
+  return built_root / "config" / relative;
+}
 
 std::unique_ptr<Algorithm> ConfigureFromProperties(const std::filesystem::path& properties_file, Parameters& parameters,
                                                    const DriverArgs& args) {

@@ -6,6 +6,7 @@ int main(int argc, char** argv) {
       argc, argv, "slamsweep-slam-vinyslam",
       [](slamsweep::slam::Parameters& parameters, const slamsweep::slam::DriverArgs& args, const slamsweep::evaluator::RobotLog&) {
         return slamsweep::slam::slam_constructor::ConfigureFromProperties(
-            SLAM_CONSTRUCTOR_ROOT "/config/slams/viny_slam_base.properties", parameters, args);
+            slamsweep::slam::slam_constructor::ConfigFile("slams/viny_slam_base.properties", SLAM_CONSTRUCTOR_ROOT), parameters,
+            args);
       });
 }

@@ -137,12 +137,15 @@ check_dockerfile() {
     fail "docker/compose.yaml missing or lacks the Dockerfile, the read-only datasets mount, the radish command or serve"
   fi
   # Both services run SLAM programs in bubblewrap sandboxes: each needs the seccomp profile that allows
-  # user namespaces, mount and pivot_root, and a /proc the sandbox may mount afresh.
+  # user namespaces, mount and pivot_root, and no AppArmor profile refusing mount; nothing docker-compose
+  # 1.29 cannot pass (systempaths=unconfined: the daemon refuses it from Compose), no privilege, no capability.
   if python3 - "$compose" "$root/docker/seccomp-sandbox.json" <<'PY'
 import json, sys, yaml
 services = yaml.safe_load(open(sys.argv[1]))["services"]
-wanted = {"seccomp=./seccomp-sandbox.json", "systempaths=unconfined"}
+wanted = {"seccomp=./seccomp-sandbox.json", "apparmor=unconfined"}
 assert all(wanted <= set(service.get("security_opt", [])) for service in services.values()), services
+assert not any("systempaths=unconfined" in service.get("security_opt", []) for service in services.values()), services
+assert not any(service.get("privileged") or service.get("cap_add") for service in services.values()), services
 profile = json.load(open(sys.argv[2]))
 assert profile["defaultAction"] != "SCMP_ACT_ALLOW"
 allowed = {name for rule in profile["syscalls"] if rule["action"] == "SCMP_ACT_ALLOW" for name in rule["names"]}
@@ -150,7 +153,7 @@ assert {"unshare", "clone", "mount", "pivot_root", "umount2"} <= allowed, allowe
 assert not {"open_by_handle_at", "kexec_load", "init_module"} & allowed
 PY
   then
-    pass "compose.yaml: both services use docker/seccomp-sandbox.json (namespaces allowed, escapes refused) and systempaths=unconfined"
+    pass "compose.yaml: both services use docker/seccomp-sandbox.json (namespaces allowed, escapes refused) and apparmor=unconfined, nothing Compose 1.29 cannot pass, no privilege"
   else
     fail "compose.yaml or docker/seccomp-sandbox.json does not let the SLAM programs' sandbox be made"
   fi

@@ -11,7 +11,11 @@
 #include <fcntl.h>
 #include <netinet/in.h>
 #include <signal.h>
+#include <linux/capability.h>
+#include <sched.h>
 #include <sys/mount.h>
+#include <sys/prctl.h>
+#include <sys/syscall.h>
 #include <sys/ptrace.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
@@ -180,16 +184,37 @@ void Attempts(const std::string& raw_dir) {
   // Judged by the test: a sandbox's own /tmp takes the file, the host's must not.
   TryWrite("write_tmp", Arg("host-tmp") + ".hostile");
   {
-    bool ok = false;
-    const std::string status = ReadSome("/proc/self/status", ok, 8192);
-    const std::size_t at = status.find("CapEff:");
-    const std::string effective = at == std::string::npos ? "?" : status.substr(at + 8, 16);
-    const bool holds = effective.find_first_not_of("0\t ") != std::string::npos;
-    Report("hold_capabilities", holds, "CapEff " + effective);
+    // From the kernel, not /proc (a sandbox may have none).
+    __user_cap_header_struct header{_LINUX_CAPABILITY_VERSION_3, 0};
+    __user_cap_data_struct data[2]{};
+    const bool read = ::syscall(SYS_capget, &header, data) == 0;
+    const bool holds = !read || data[0].effective != 0 || data[1].effective != 0 || data[0].permitted != 0 ||
+                       data[1].permitted != 0;
+    std::ostringstream caps;
+    caps << std::hex << "effective " << data[1].effective << data[0].effective << ", permitted " << data[1].permitted
+         << data[0].permitted;
+    Report("hold_capabilities", holds, read ? caps.str() : "capget: " + Error());
     // Without no_new_privs a setuid program (mount, su, ping) would give its privilege back.
-    const std::size_t flag = status.find("NoNewPrivs:");
-    const bool may_gain = flag != std::string::npos && status.compare(flag + 12, 1, "0") == 0;
-    Report("gain_privileges_by_exec", may_gain, flag == std::string::npos ? "no NoNewPrivs line" : status.substr(flag, 13));
+    const int no_new_privs = ::prctl(PR_GET_NO_NEW_PRIVS, 0, 0, 0, 0);
+    Report("gain_privileges_by_exec", no_new_privs != 1, "PR_GET_NO_NEW_PRIVS " + std::to_string(no_new_privs));
+  }
+  {
+    // A user namespace of its own would give it every capability over new namespaces (and the kernel's code
+    // for them): then a fresh /proc, or mounts of its own over what it was given.
+    const pid_t child = ::fork();
+    if (child == 0) {
+      if (::unshare(CLONE_NEWUSER | CLONE_NEWNS) != 0) _exit(10);
+      ::mkdir("/tmp/hostile-proc", 0755);
+      _exit(::mount("proc", "/tmp/hostile-proc", "proc", 0, nullptr) == 0 ? 0 : 11);
+    }
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    Report("nested_user_namespace", code != 10,
+           code == 10 ? "unshare(CLONE_NEWUSER) refused" : code == 0 ? "made one and mounted a proc in it" : "made one");
+    ::mkdir("/tmp/hostile-proc", 0755);
+    const int mounted = ::mount("proc", "/tmp/hostile-proc", "proc", 0, nullptr);
+    Report("mount_proc", mounted == 0, mounted == 0 ? "mounted a proc" : "mount proc: " + Error());
   }
   // Undo the file system the program was given: unmount what could cover or hold a secret, then
   // read again. "/" stays, so that the program can still write its result.

@@ -12,6 +12,8 @@ Passes when every attempt fails, the attempts run is scored ok, the fork storm a
 as failed runs naming their limits, and the sweep finishes with every run recorded. Prints one line
 per attempt with its outcome. --user nobody runs the whole sweep as that unprivileged user.
 --legacy leaves out the keys an older slamsweep does not know (to measure it), and only reports.
+--proc none makes every sandbox go without /proc (SLAMSWEEP_SANDBOX_PROC, as where the kernel refuses a fresh
+one: a container); --expect-proc checks which kind the attempts run's result.json says it had.
 """
 import argparse
 import json
@@ -126,6 +128,9 @@ def main():
     parser.add_argument("--shared", required=True)
     parser.add_argument("--user", choices=["self", "nobody"], default="self")
     parser.add_argument("--legacy", action="store_true")
+    parser.add_argument("--proc", choices=["auto", "own", "none"], default="auto",
+                        help="how sandboxes get their /proc (auto: slamsweep probes)")
+    parser.add_argument("--expect-proc", choices=["own", "none"], default=None)
     parser.add_argument("--workdir", default=None,
                         help="folder for the sweep (not under /tmp: the sandbox's private /tmp is there)")
     args = parser.parse_args()
@@ -160,6 +165,10 @@ def main():
     env["SLAMSWEEP_SHARED"] = args.shared
     # The worker holds this; a program that reads it got into the worker's environment.
     env["SLAMSWEEP_HOSTILE_SECRET"] = marker
+    if args.proc != "auto":
+        env["SLAMSWEEP_SANDBOX_PROC"] = args.proc
+    else:
+        env.pop("SLAMSWEEP_SANDBOX_PROC", None)
     command = [args.slamsweep, "run", config, "--jobs", "1", "--no-report"]
     if args.user == "nobody":
         nobody = pwd.getpwnam("nobody")
@@ -250,8 +259,15 @@ def main():
     for check in ["attempts"] + [name for name in ["attempts", "fork", "disk"] if name not in runs]:
         if check not in runs:
             problems.append(f"no run folder for mode {check}")
-    if "umount" not in seen and outcomes:
+    if ("umount" not in seen or "nested_user_namespace" not in seen) and outcomes:
         problems.append("the attempts run stopped before trying everything")
+    sandbox = result_of("attempts").get("sandbox") or {}
+    print(f"sandbox of the attempts run: {json.dumps(sandbox)}")
+    if not args.legacy and sandbox.get("isolated") is not True:
+        problems.append(f"result.json does not say the attempts run was isolated: {sandbox}")
+    expected_proc = args.expect_proc or (args.proc if args.proc != "auto" else None)
+    if expected_proc and sandbox.get("proc") != expected_proc:
+        problems.append(f"the sandbox's /proc was {sandbox.get('proc')!r}, expected {expected_proc!r}")
 
     os.unlink(host_tmp.name)
     for leftover in [host_tmp.name + ".hostile"]:
@@ -266,7 +282,7 @@ def main():
         print(f"(results kept in {folder})")
         return 1
     shutil.rmtree(folder, ignore_errors=True)
-    print(f"\nevery attempt was refused ({len(outcomes)} attempts, as {args.user})")
+    print(f"\nevery attempt was refused ({len(outcomes)} attempts, as {args.user}, /proc: {sandbox.get('proc')})")
     return 0
 
 

@@ -16,6 +16,7 @@
 #include "orchestrator/process/process_set.h"
 #include "orchestrator/sandbox/bwrap_command.h"
 #include "orchestrator/sandbox/pids_cgroup.h"
+#include "orchestrator/sandbox/proc_choice.h"
 #include "orchestrator/sandbox/sandbox_availability.h"
 #include "tests/orchestrator/process/process_test_util.h"
 #include "tests/support/shared_data.h"
@@ -85,6 +86,77 @@ TEST(BwrapCommandTest, IsolatesEverythingAndShowsOnlyWhatItIsGiven) {
   EXPECT_THROW(BwrapCommand(spec, {"/bin/true"}, "/data/run/raw", 7), std::invalid_argument);
 }
 
+TEST(BwrapCommandTest, WithoutAFreshProcThereIsNoProcAndProcessOneRefusesUserNamespaces) {
+  SandboxSpec spec;
+  spec.init_program = "/opt/slamsweep/slamsweep-sandbox-init";
+  spec.writable = {"/data/run/raw"};
+  spec.fresh_proc = false;
+  const std::vector<std::string> argv = BwrapCommand(spec, {"/opt/tool/bin/slam"}, "/data/run/raw", 7);
+  EXPECT_EQ(std::count(argv.begin(), argv.end(), "--proc"), 0);
+  EXPECT_EQ(std::count(argv.begin(), argv.end(), "/proc"), 0) << "nothing of /proc is bound either";
+  // --disable-userns writes through the sandbox's /proc: the seccomp filter of process 1 stands in for it.
+  EXPECT_EQ(std::count(argv.begin(), argv.end(), "--disable-userns"), 0);
+  const std::size_t init = Find(argv, {"--", "/opt/slamsweep/slamsweep-sandbox-init"});
+  ASSERT_LT(init, argv.size());
+  EXPECT_LT(Find(argv, {"--no-user-namespaces", "--", "/opt/tool/bin/slam"}), argv.size());
+  // Everything else of the isolation stays.
+  for (const char* option : {"--unshare-user", "--unshare-pid", "--unshare-net", "--unshare-ipc", "--as-pid-1",
+                             "--new-session", "--die-with-parent"}) {
+    EXPECT_LT(Find(argv, {option}), init) << option;
+  }
+  spec.fresh_proc = true;
+  const std::vector<std::string> full = BwrapCommand(spec, {"/opt/tool/bin/slam"}, "/data/run/raw", 7);
+  EXPECT_EQ(std::count(full.begin(), full.end(), "--no-user-namespaces"), 0);
+}
+
+/// A stand-in for bubblewrap: exits 0, except with --proc among its arguments when `refuses_proc`, and
+/// always with 1 when `refuses_all`, saying so on stderr as bubblewrap does.
+fs::path FakeBwrap(const fs::path& folder, bool refuses_proc, bool refuses_all) {
+  const fs::path script = folder / (std::string("bwrap-") + (refuses_all ? "none" : refuses_proc ? "noproc" : "all"));
+  std::ofstream out(script);
+  out << "#!/bin/sh\n";
+  if (refuses_all) out << "echo 'bwrap: No permissions to create new namespace' >&2; exit 1\n";
+  if (refuses_proc) {
+    out << R"(for a in "$@"; do [ "$a" = --proc ] && { echo "bwrap: Can't mount proc on /newroot/proc: Operation not permitted" >&2; exit 1; }; done)"
+        << "\n";
+  }
+  out << "exit 0\n";
+  out.close();
+  fs::permissions(script, fs::perms::owner_all);
+  return script;
+}
+
+TEST(SandboxProcChoiceTest, NoProcOnlyWhereAFreshProcIsRefusedButTheNamespacesAreNot) {
+  TempDir dir;
+  const SandboxProcChoice refused = ProbeSandboxProc(FakeBwrap(dir.path(), true, false));
+  EXPECT_FALSE(refused.fresh_proc);
+  EXPECT_NE(refused.why.find("Can't mount proc on /newroot/proc"), std::string::npos) << refused.why;
+  // What the worker builds from that choice: no /proc, the filter instead.
+  SandboxSpec spec;
+  spec.init_program = "/opt/slamsweep/slamsweep-sandbox-init";
+  spec.fresh_proc = refused.fresh_proc;
+  const std::vector<std::string> argv = BwrapCommand(spec, {"/bin/true"}, "/", 7);
+  EXPECT_EQ(std::count(argv.begin(), argv.end(), "--proc"), 0);
+  EXPECT_EQ(std::count(argv.begin(), argv.end(), "--no-user-namespaces"), 1);
+
+  EXPECT_TRUE(ProbeSandboxProc(FakeBwrap(dir.path(), false, false)).fresh_proc);
+  // No namespaces at all: the runs fail with bubblewrap's own message, as without the probe.
+  EXPECT_TRUE(ProbeSandboxProc(FakeBwrap(dir.path(), false, true)).fresh_proc);
+  EXPECT_TRUE(ProbeSandboxProc(dir / "no-such-bwrap").fresh_proc);
+}
+
+TEST(SandboxProcChoiceTest, TheVariableSaysOwnOrNoneAndNothingElse) {
+  EXPECT_TRUE(SandboxProcFromVariable("own").fresh_proc);
+  const SandboxProcChoice none = SandboxProcFromVariable("none");
+  EXPECT_FALSE(none.fresh_proc);
+  EXPECT_EQ(none.why, "SLAMSWEEP_SANDBOX_PROC=none");
+  const SandboxProcChoice said = SandboxProcFromVariable("none: a fresh /proc cannot be mounted here (x)");
+  EXPECT_FALSE(said.fresh_proc);
+  EXPECT_EQ(said.why, "a fresh /proc cannot be mounted here (x)");
+  EXPECT_THROW(SandboxProcFromVariable("host"), std::invalid_argument);
+  EXPECT_THROW(SandboxProcFromVariable("nonetheless"), std::invalid_argument);
+}
+
 class SandboxedProcessTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -151,6 +223,34 @@ TEST_F(SandboxedProcessTest, OnlyTheSystemAndTheGivenFoldersExistInAnOwnNamespac
   // Loopback only: the header line of /proc/net/dev has no ':', so the count is of interfaces.
   EXPECT_NE(log.find("\n1\n"), std::string::npos) << log;
   EXPECT_NE(log.find("CapEff:\t0000000000000000"), std::string::npos) << log;
+}
+
+TEST_F(SandboxedProcessTest, NoNestedUserNamespaceWithOrWithoutAProc) {
+  // unshare(1) reports the refused system call; threads still start (clone3 refused, the C library falls back).
+  const std::string script =
+      "unshare -U true 2>&1; echo nested=$?; ls /proc >/dev/null 2>&1; echo proc=$?; "
+      "/usr/bin/python3 -c 'import threading; t = threading.Thread(target=print, args=(\"thread ran\",)); t.start(); t.join()'";
+  for (const bool fresh_proc : {true, false}) {
+    sandbox_.fresh_proc = fresh_proc;
+    const ProcessOutcome outcome = Run(script);
+    const std::string log = Log();
+    EXPECT_TRUE(outcome.ok()) << outcome.reason << log;
+    EXPECT_NE(log.find("nested=1"), std::string::npos) << "fresh_proc " << fresh_proc << ": " << log;
+    EXPECT_NE(log.find(fresh_proc ? "proc=0" : "proc=2"), std::string::npos) << log;
+    EXPECT_NE(log.find("thread ran"), std::string::npos) << log;
+  }
+  // Without the filter and without --disable-userns, the same sandbox would allow one: the check can fail.
+  sandbox_.fresh_proc = false;
+  // Process 1's status line goes to descriptor 2, which it closes for the program: the echo is on stdout.
+  std::vector<std::string> argv = BwrapCommand(sandbox_, {"/bin/sh", "-c", "unshare -U true; echo nested=$?"}, dir_ / "raw", 2);
+  argv.erase(std::find(argv.begin(), argv.end(), "--no-user-namespaces"));
+  ProcessSpec unfiltered;
+  unfiltered.argv = {argv.begin(), argv.end()};
+  unfiltered.working_dir = dir_ / "raw";
+  unfiltered.log_path = dir_ / "unfiltered.txt";
+  const ProcessOutcome allowed = RunProcess(unfiltered);
+  EXPECT_TRUE(allowed.ok()) << allowed.reason;
+  EXPECT_NE(ReadAll(dir_ / "unfiltered.txt").find("nested=0"), std::string::npos) << ReadAll(dir_ / "unfiltered.txt");
 }
 
 TEST_F(SandboxedProcessTest, AForkStormEndsAtTheProcessLimitAndNothingOutlivesTheRun) {
