@@ -3,11 +3,25 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <set>
+#include <vector>
+
 #include "evaluator/core/input_error.h"
+#include "orchestrator/history/series_odometry.h"
 #include "orchestrator/store/results_store.h"
 
 namespace slamsweep::orchestrator {
 namespace {
+
+/// The comparable odometry modes of a night's series ("recorded", "reference").
+std::set<std::string> ComparableModesOf(const Night& night) {
+  std::set<std::string> modes;
+  for (const SampleSeries& series : night.series) {
+    if (IsComparableOdometryMode(series.odometry)) modes.insert(series.odometry);
+  }
+  return modes;
+}
 
 using evaluator::InputError;
 
@@ -237,12 +251,19 @@ std::vector<SeriesKey> HistoryStore::SeriesKeys() const {
 
 std::optional<NightEntry> PreviousNight(const HistoryStore& store, const Night& current) {
   const auto recorded = store.FindByKey(current.result_dir, current.sweep_id);
-  std::optional<NightEntry> previous;
+  std::vector<NightEntry> earlier;
   for (const NightEntry& night : store.Nights()) {
     if (recorded && night.id >= recorded->id) break;
-    previous = night;
+    earlier.push_back(night);
   }
-  return previous;
+  // A night of the other odometry mode has nothing to compare with: it is passed over.
+  const std::set<std::string> modes = ComparableModesOf(current);
+  for (auto night = earlier.rbegin(); night != earlier.rend(); ++night) {
+    if (modes.empty()) return *night;
+    const std::set<std::string> its = ComparableModesOf(store.Load(night->id));
+    if (std::any_of(its.begin(), its.end(), [&](const std::string& mode) { return modes.contains(mode); })) return *night;
+  }
+  return std::nullopt;
 }
 
 }  // namespace slamsweep::orchestrator

@@ -77,8 +77,9 @@ class HistoryStore {
   SqliteDb db_;
 };
 
-/// The night `--previous` compares `current` with: the last night recorded before it (when `current` is recorded),
-/// else the last night recorded; none when there is no such night.
+/// The night `--previous` compares `current` with: the last night recorded before it (when `current` is recorded,
+/// else the last night recorded) that has a series in one of `current`'s odometry modes (a night in the other mode
+/// would leave every series "not comparable"); none when there is no such night.
 std::optional<NightEntry> PreviousNight(const HistoryStore& store, const Night& current);
 
 }  // namespace slamsweep::orchestrator

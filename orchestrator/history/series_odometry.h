@@ -7,13 +7,13 @@
 #include <string_view>
 #include <tuple>
 
-#include <nlohmann/json.hpp>
+#include "orchestrator/matrix/run_spec.h"
 
 namespace slamsweep::orchestrator {
 
-/// The odometry mode of a history series whose runs cannot say which odometry they got (a night recorded
-/// before the history kept the mode, whose results are gone): never compared with anything.
-inline constexpr std::string_view kOdometryUnknown = "unknown";
+// kOdometryUnknown (orchestrator/matrix/run_spec.h) also marks a history series whose night was recorded before
+// the history kept the mode and whose results are gone: never compared with anything.
+
 /// The mode of an old series whose night had runs of both modes in one cell: its samples were pooled before
 /// the history kept the mode and cannot be told apart. Never compared with anything.
 inline constexpr std::string_view kOdometryMixed = "mixed";
@@ -21,12 +21,6 @@ inline constexpr std::string_view kOdometryMixed = "mixed";
 /// Whether a series of this mode may be compared with another night's series of the same mode: "recorded" and
 /// "reference" only.
 bool IsComparableOdometryMode(std::string_view mode);
-
-/// The odometry mode a run got, from its run.json: group.odometry where the planner wrote it (OdometryModeOf);
-/// for a run planned before the mode existed, "reference" on a corrected CARMEN log (its programs got the logged
-/// pose, the only odometry those builds gave) and "recorded" on every other log (it has no other odometry);
-/// kOdometryUnknown when the run.json names neither the mode nor the sequence's format and ground truth.
-std::string OdometryModeOfRunJson(const nlohmann::json& run_json);
 
 /// A cell of a night: algorithm label x sequence x noise.
 using NightCell = std::tuple<std::string, std::string, std::string>;

@@ -10,6 +10,8 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/noise/json_fields.h"
+#include "evaluator/sequence/catalog.h"
+#include "evaluator/sequence/odometry_mode.h"
 #include "evaluator/sequence/scan_stamps.h"
 #include "evaluator/simulation/simulated_sequence.h"
 #include "orchestrator/config/option_checks.h"
@@ -582,6 +584,28 @@ std::string BuildSignatureOfRunJson(const json& run_json) {
   } catch (const InputError&) {
     return "";
   }
+}
+
+std::string OdometryModeOfRunJson(const json& run_json) {
+  const auto string_at = [&](const char* outer, const char* inner) -> const json* {
+    if (!run_json.is_object()) return nullptr;
+    const auto found = run_json.find(outer);
+    if (found == run_json.end() || !found->is_object()) return nullptr;
+    const auto value = found->find(inner);
+    return value != found->end() && value->is_string() ? &*value : nullptr;
+  };
+  if (const json* planned = string_at("group", "odometry")) return planned->get<std::string>();
+  const json* format = string_at("sequence", "format");
+  const json* ground_truth = string_at("sequence", "ground_truth");
+  if (format == nullptr || ground_truth == nullptr) return std::string(kOdometryUnknown);
+  const bool mode_applies =
+      *format == "carmen" &&
+      *ground_truth == evaluator::GroundTruthKindName(evaluator::GroundTruthKind::kCorrectedPoses);
+  if (!mode_applies) return std::string(evaluator::OdometryModeName(evaluator::OdometryMode::kRecorded));
+  // A corrected log: a mode written into the sequence counts; without one the run predates the mode, when
+  // programs were given the logged (corrected) pose.
+  if (const json* written = string_at("sequence", "odometry")) return written->get<std::string>();
+  return std::string(evaluator::OdometryModeName(evaluator::OdometryMode::kReference));
 }
 
 std::string BuildDescriptionOfRunJson(const json& run_json) {

@@ -139,6 +139,13 @@ struct BuildIdentity {
 std::string BuildSignature(const BuildIdentity& build);
 /// BuildSignature of run.json's "build" block; "" when the run.json has none or it is unreadable.
 std::string BuildSignatureOfRunJson(const nlohmann::json& run_json);
+/// The odometry mode of a run whose run.json names neither the mode nor the sequence's format and ground truth.
+inline constexpr std::string_view kOdometryUnknown = "unknown";
+/// The odometry mode a run got, from its run.json: group.odometry where the planner wrote it (OdometryModeOf);
+/// for a run planned before the mode existed, "reference" on a corrected CARMEN log (its programs got the logged
+/// pose, the only odometry those builds gave) and "recorded" on every other log (it has no other odometry);
+/// kOdometryUnknown when the run.json names neither the mode nor the sequence's format and ground truth.
+std::string OdometryModeOfRunJson(const nlohmann::json& run_json);
 /// For notes: "slamsweep <revision>; <file name> <first 12 digits of its digest>, ...".
 std::string BuildDescriptionOfRunJson(const nlohmann::json& run_json);
 

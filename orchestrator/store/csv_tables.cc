@@ -58,9 +58,8 @@ std::string GroupsCsv(const std::vector<GroupSummary>& groups) {
       }
     }
   }
-  std::vector<std::string> header = {"sequence", "algorithm",  "parameters",           "noise",  "n_runs",
-                                     "n_ok",     "n_failed",   "odometry_is_reference", "seeding", "flags",
-                                     "build"};
+  std::vector<std::string> header = {"sequence", "algorithm", "parameters",            "noise",   "odometry", "n_runs",
+                                     "n_ok",     "n_failed",  "odometry_is_reference", "seeding", "flags",    "build"};
   for (const auto& [metric, statistic] : headline) {
     for (const char* part : {"n", "mean", "std", "min", "max"}) {
       header.push_back(fmt::format("{}.{}.{}", metric, statistic, part));
@@ -72,6 +71,7 @@ std::string GroupsCsv(const std::vector<GroupSummary>& groups) {
                                        group.group.algorithm,
                                        group.group.parameters,
                                        group.group.noise,
+                                       group.group.odometry,
                                        std::to_string(group.runs),
                                        std::to_string(group.ok),
                                        std::to_string(group.failed),

@@ -38,15 +38,18 @@ std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs) {
     bool has_segments = false;
   };
   // Sequence and noise first: the rows that may be compared with each other end up next to each other.
-  std::map<std::tuple<std::string, std::string, std::string, std::string, std::string>, Collected> groups;
-  std::map<std::tuple<std::string, std::string, std::string, std::string>, std::set<std::string>> builds_of;
+  // Runs on recorded and on reference odometry never share a group.
+  using GroupKey = std::tuple<std::string, std::string, std::string, std::string, std::string, std::string>;
+  std::map<GroupKey, Collected> groups;
+  std::map<std::tuple<std::string, std::string, std::string, std::string, std::string>, std::set<std::string>> builds_of;
   for (const StoredRun& run : runs) {
     const std::string build = BuildSignatureOfRunJson(run.spec);
-    builds_of[{run.sequence, run.noise, run.algorithm, run.parameters}].insert(build);
-    Collected& collected = groups[{run.sequence, run.noise, run.algorithm, run.parameters, build}];
+    const std::string odometry = OdometryModeOfRunJson(run.spec);
+    builds_of[{run.sequence, run.noise, run.algorithm, run.parameters, odometry}].insert(build);
+    Collected& collected = groups[{run.sequence, run.noise, run.algorithm, run.parameters, odometry, build}];
     GroupSummary& summary = collected.summary;
     if (summary.runs == 0) {
-      summary.group = ComparisonGroup{run.sequence, run.algorithm, run.parameters, run.noise};
+      summary.group = ComparisonGroup{run.sequence, run.algorithm, run.parameters, run.noise, odometry};
       summary.build = build;
       summary.build_description = BuildDescriptionOfRunJson(run.spec);
       summary.seeding = run.seeding;
@@ -74,8 +77,8 @@ std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs) {
   }
   std::vector<GroupSummary> summaries;
   for (auto& [key, collected] : groups) {
-    const auto& [sequence, noise, algorithm, parameters, build] = key;
-    collected.summary.build_split = builds_of.at({sequence, noise, algorithm, parameters}).size() > 1;
+    const auto& [sequence, noise, algorithm, parameters, odometry, build] = key;
+    collected.summary.build_split = builds_of.at({sequence, noise, algorithm, parameters, odometry}).size() > 1;
     for (const auto& [name, unit_values] : collected.values) {
       collected.summary.metrics.push_back(
           MetricAggregate{name.first, name.second, unit_values.first, evaluator::ComputeMeanStd(unit_values.second)});
@@ -100,6 +103,7 @@ nlohmann::json ToJson(const GroupSummary& group) {
           {"algorithm", group.group.algorithm},
           {"parameters", group.group.parameters},
           {"noise", group.group.noise},
+          {"odometry", group.group.odometry},
           {"build", group.build},
           {"build_split", group.build_split},
           {"build_description", group.build_description},

@@ -21,12 +21,6 @@ std::string ReferenceMeaning(const json& ground_truth) {
   return "none";
 }
 
-/// run.json's odometry mode ("recorded" unless the sequence says "reference").
-std::string OdometryModeOfSpec(const json& spec) {
-  const json& odometry = Nested(spec, "sequence", "odometry");
-  return odometry.is_string() ? odometry.get<std::string>() : "recorded";
-}
-
 }  // namespace
 
 json SummarizeRun(const StoredRun& run) {
@@ -66,7 +60,7 @@ json SummarizeRun(const StoredRun& run) {
       {"run_dir", run.run_dir},
       {"ground_truth", Nested(spec, "sequence", "ground_truth")},
       {"reference", ReferenceMeaning(Nested(spec, "sequence", "ground_truth"))},
-      {"odometry", OdometryModeOfSpec(spec)},
+      {"odometry", OdometryModeOfRunJson(spec)},
       {"reference_floor", FieldOrNull(result, "reference_floor")},
       {"metrics", std::move(metrics)},
       {"units", std::move(units)},

@@ -234,7 +234,8 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
         // No trajectory alignment (no reference trajectory, only a reference map file): search it.
         options.refine_with_icp = true;
       }
-      const ev::OccupancyGrid estimate = ev::ResampleToResolution(*inputs.map, inputs.reference_map->resolution_m, options);
+      const ev::OccupancyGrid& scored = inputs.written_map ? *inputs.written_map : *inputs.map;
+      const ev::OccupancyGrid estimate = ev::ResampleToResolution(scored, inputs.reference_map->resolution_m, options);
       const ev::MapComparison compared = ev::CompareMaps(estimate, *inputs.reference_map, options);
       out.metrics.push_back({"map_chamfer", "value", compared.chamfer_m, "m"});
       out.metrics.push_back({"map_f1", "value", compared.f1, "ratio"});
@@ -244,8 +245,9 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
       out.metrics.push_back({"map_iou_free", "value", compared.iou_free, "ratio"});
       out.details["map_compare"] = compared.ToJson(options);
       out.details["map_compare"]["placement"] = ape_alignment ? "ATE alignment" : "ICP from identity";
-      if (estimate.resolution_m != inputs.map->resolution_m) {
-        out.details["map_compare"]["resampled_from_m"] = inputs.map->resolution_m;
+      out.details["map_compare"]["scored_map"] = inputs.written_map ? "the run's map file" : "the program's map";
+      if (estimate.resolution_m != scored.resolution_m) {
+        out.details["map_compare"]["resampled_from_m"] = scored.resolution_m;
       }
       if (!inputs.reference_map_record.is_null()) out.details["map_compare"]["reference_map"] = inputs.reference_map_record;
     });

@@ -46,6 +46,10 @@ struct RunMetrics {
 /// What the metrics are computed from: the run's estimate and the truth it is compared with.
 struct MetricInputs {
   const evaluator::OccupancyGrid* map = nullptr;
+  /// The map as written to the run folder (map_saver's trinary classes). The map-versus-reference
+  /// scores are computed on it, so whoever reads the run's map file counts the same cells; the paper
+  /// metrics need the program's grey levels and use `map`. null: `map` is used for both.
+  const evaluator::OccupancyGrid* written_map = nullptr;
   const evaluator::Trajectory* estimate = nullptr;    ///< null: trajectory metrics are skipped
   const evaluator::Trajectory* reference = nullptr;   ///< null: APE and RPE are skipped
   const evaluator::Relations* relations = nullptr;    ///< null: the relations metric is skipped

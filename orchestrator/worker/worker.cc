@@ -16,6 +16,7 @@
 #include <system_error>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/formats/map/map_file.h"
 #include "orchestrator/adapters/adapter.h"
 #include "orchestrator/adapters/run_failure.h"
 #include "orchestrator/adapters/run_inputs.h"
@@ -249,8 +250,17 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
     throw RunFailure(FailureKind::kCorruptOutput, std::string("cannot convert the outputs: ") + error.what());
   }
 
+  // The map-versus-reference scores count the cells of the map file the run folder keeps.
+  std::optional<ev::OccupancyGrid> written_map;
+  try {
+    written_map = ev::ReadMap(paths.MapYaml());
+  } catch (const ev::InputError& error) {
+    throw RunFailure(FailureKind::kCorruptOutput, std::string("cannot read back the written map: ") + error.what());
+  }
+
   MetricInputs metric_inputs;
   metric_inputs.map = &collected.map;
+  metric_inputs.written_map = &*written_map;
   metric_inputs.estimate = collected.trajectory ? &*collected.trajectory : nullptr;
   metric_inputs.reference = reference;
   metric_inputs.relations = inputs.truth.relations ? &*inputs.truth.relations : nullptr;

@@ -93,6 +93,12 @@ MapScores ScoresOf(const json& details) {
   return scores;
 }
 
+bool ScoredOnMapFile(const json& details) {
+  const json* compare = FindField(details, "map_compare");
+  const json* scored = compare ? FindField(*compare, "scored_map") : nullptr;
+  return scored && scored->is_string() && scored->get<std::string>() == "the run's map file";
+}
+
 WallMatchOptions MatchOptionsOf(const json& details) {
   const json* compare = FindField(details, "map_compare");
   const json* specification = compare ? FindField(*compare, "specification") : nullptr;
@@ -144,6 +150,7 @@ std::vector<PlannedMapComparison> PlanMapComparisons(const fs::path& out_dir, Si
       shown.run = *row.median_run;
       shown.path = folder + fmt::format("map-{}.png", r);
       shown.scores = ScoresOf(details);
+      shown.scored_on_map_file = ScoredOnMapFile(details);
       MapPanelRequest request;
       request.map_file = run.dir / "map.yaml";
       std::tie(request.placement, shown.placement) = PlacementOf(details);
@@ -247,17 +254,23 @@ Html MapsComparedSection(const SiteData& site, const SequenceModel& sequence, st
   body += Element("div", "gallery maps", panels);
   if (!differences.str().empty()) {
     const int radius = maps.panels.front().match_radius_cells;
+    const bool all_scored_on_file = std::all_of(maps.panels.begin(), maps.panels.end(), [](const MapPanelShown& panel) {
+      return panel.difference_path.empty() || panel.scored_on_map_file;
+    });
+    const std::string counts_note =
+        all_scored_on_file
+            ? "The cell counts are recomputed from the run's map file, the file its scores were computed on."
+            : "The cell counts are recomputed from the run's map file (8-bit grey levels); some scores below come "
+              "from results that were computed on the program's map before it was written, so a cell near a "
+              "threshold can count differently.";
     body += Element("h3", "", E("Walls against the reference map"));
     body += Element("p", "legend-note",
                     Element("span", "wall-key wall-run-only", E("■")) + E(" only in the run · ") +
                         Element("span", "wall-key wall-reference-only", E("■")) + E(" only in the reference · ") +
                         Element("span", "wall-key wall-both", E("■")) +
                         E(fmt::format(" in both (an occupied cell within {} {} of an occupied cell of the other map, the "
-                                      "match radius of the scores below) · white: free · grey: unknown. The cell counts "
-                                      "are recomputed from the run's map file (8-bit grey levels); the scores are the "
-                                      "run's result.json, computed on the program's map before it was written, so a "
-                                      "cell near a threshold can count differently.",
-                                      radius, radius == 1 ? "cell" : "cells")));
+                                      "match radius of the scores below) · white: free · grey: unknown. {}",
+                                      radius, radius == 1 ? "cell" : "cells", counts_note)));
     body += Element("div", "gallery maps", differences);
   }
   return body;

@@ -71,6 +71,9 @@ struct MapPanelShown {
   std::string placement;        ///< how the map was placed in the common frame, for the caption
   MapScores scores;
   int match_radius_cells = 0;
+  /// result.json says its map scores were computed on the run's map file (the file the counts are read
+  /// from); older results scored the program's map before it was written.
+  bool scored_on_map_file = false;
 };
 
 /// A table's "Maps compared": the median runs' maps at one scale and, where a reference map exists, their

@@ -623,7 +623,8 @@ case $case_name in
       "reportDir: 'out/report'" "keepAll: true" "name: 'ALGORITHMS'" "name: 'SEQUENCES'" "name: 'ITERATIONS'"
     check_jenkinsfile "$jobs_dir/Jenkinsfile.nightly" 4 "cron(" "jobs/run-shard.sh" "jobs/merge-shards.sh" \
       "jobs/nightly-compare.sh" "unstable(" "error(" "publishHTML" "junit testResults" "stage('Speed')" \
-      "jobs/speed-check.sh out/speed" "label 'slamsweep-bench'" "stage('Scale')" "jobs/scale-check.sh out/scale"
+      "jobs/speed-check.sh out/speed" "label 'slamsweep-bench'" "stage('Scale')" "jobs/scale-check.sh out/scale" \
+      "stage('Report in a browser')" "jobs/browser-check.sh out/screenshots" "artifacts: 'out/screenshots/**'"
     check_jenkinsfile "$jobs_dir/Jenkinsfile.service" 2 "stage('Setup')" "stage('Sweep')" "stage('Publish')" \
       "jobs/submit-sweep.sh" "withCredentials" "junit testResults: 'out/junit.xml', allowEmptyResults: false" \
       "publishHTML" "name: 'SLAMSWEEP_SERVER'" "name: 'PRIORITY'"

@@ -93,6 +93,20 @@ TEST(HistoryStoreTest, RecordIsIdempotentAndRoundTrips) {
   third.seed = 3;
   testing::WriteSyntheticSweep(dir / "night3", third);
   EXPECT_EQ(PreviousNight(reopened, ReadNight(dir / "night3", ""))->label, "2026-11-21T02:00:00Z");
+  // A night on the reference odometry in between is passed over by the next recorded-odometry night, and
+  // found by the next reference-odometry one.
+  testing::SyntheticSweep other_mode = sweep;
+  other_mode.seed = 4;
+  other_mode.odometry = "reference";
+  other_mode.ground_truth = "corrected_poses";
+  other_mode.started_at = "2026-11-22T02:00:00Z";
+  testing::WriteSyntheticSweep(dir / "night4", other_mode);
+  ASSERT_TRUE(reopened.Record(ReadNight(dir / "night4", "")).inserted);
+  EXPECT_EQ(PreviousNight(reopened, ReadNight(dir / "night3", ""))->label, "2026-11-21T02:00:00Z");
+  testing::SyntheticSweep fifth = other_mode;
+  fifth.seed = 5;
+  testing::WriteSyntheticSweep(dir / "night5", fifth);
+  EXPECT_EQ(PreviousNight(reopened, ReadNight(dir / "night5", ""))->label, "2026-11-22T02:00:00Z");
   const auto series = reopened.Series({"icp-slam", "intel", "noisy", "recorded", "ape_trans", "rmse", ""});
   ASSERT_EQ(series.size(), 2u);
   EXPECT_EQ(series[0].values.size(), 10u);

@@ -78,5 +78,33 @@ TEST(GroupSummaryTest, RunsOfAnotherNoiseSettingOrParameterValueAreNeverPooled) 
   EXPECT_EQ(ate.at("clean ICP.maxIterations=40"), 0.9);
 }
 
+// One algorithm on one log, fed the robot's recorded odometry in one sweep and the reference in
+// another: two groups, each named by its mode, in summary.json's and summary.csv's rows.
+TEST(GroupSummaryTest, RunsOnRecordedAndOnReferenceOdometryAreNeverPooled) {
+  slamsweep::testing::TempDir dir;
+  ResultsStore store = ResultsStore::Open(dir / "results.sqlite");
+  json recorded = MakeSpec("r0", "icp-slam", "intel", 0);
+  recorded["group"] = {{"sequence", "intel"}, {"algorithm", "icp-slam"}, {"parameters", "ICP.maxIterations=80"}, {"noise", "clean"},
+                       {"odometry", "recorded"}};
+  json reference = MakeSpec("f0", "icp-slam", "intel", 0);
+  reference["group"] = recorded["group"];
+  reference["group"]["odometry"] = "reference";
+  store.RecordRun(1, recorded, MakeOkResult("r0", 3.0, 0.7), "runs/r0");
+  store.RecordRun(1, reference, MakeOkResult("f0", 3.0, 0.1), "runs/f0");
+  const std::vector<GroupSummary> groups = SummarizeGroups(store.Runs());
+  ASSERT_EQ(groups.size(), 2u);
+  std::map<std::string, double> ate;
+  for (const GroupSummary& group : groups) {
+    EXPECT_EQ(group.runs, 1u);
+    const json out = ToJson(group);
+    ate[out.at("odometry").get<std::string>()] = out.at("metrics").at("ape_trans").at("rmse").at("mean");
+  }
+  EXPECT_EQ(ate.at("recorded"), 0.7);
+  EXPECT_EQ(ate.at("reference"), 0.1);
+  const std::string csv = GroupsCsv(groups);
+  EXPECT_NE(csv.find("intel,icp-slam,ICP.maxIterations=80,clean,recorded,1,1,0,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("intel,icp-slam,ICP.maxIterations=80,clean,reference,1,1,0,"), std::string::npos) << csv;
+}
+
 }  // namespace
 }  // namespace slamsweep::orchestrator

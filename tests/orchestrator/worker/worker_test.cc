@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "evaluator/formats/map/image_file.h"
+#include "evaluator/formats/map/map_file.h"
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/formats/trajectory/segment_errors_csv.h"
 #include "evaluator/formats/trajectory/tum_format.h"
@@ -409,6 +410,40 @@ TEST_F(WorkerTest, TheProgramSeesWhatItDeclaresAndItsInputButNoResultsAndNoRefer
   EXPECT_EQ(result["metric_details"]["map_compare"]["reference_map"]["source"], "file")
       << result["metric_details"]["map_compare"];
   EXPECT_EQ(Metric(result, "map_chamfer", "value"), 0.0);
+}
+
+// The map scores count the cells of the map file the run folder keeps, so a page that recounts them
+// from that file agrees with result.json. The program's room has walls at occupancy 100 and a floor at
+// 22 (raw map_server values): map_saver writes 22 as free (<= 25), while on the program's own grey
+// levels the floor is neither free nor occupied (0.22 > free_thresh 0.196).
+TEST_F(WorkerTest, MapScoresCountTheCellsOfTheMapFileTheRunKeeps) {
+  std::string pixels;
+  for (int row = 0; row < kMapSide; ++row) {
+    for (int col = 0; col < kMapSide; ++col) {
+      const bool wall = row == 0 || col == 0 || row == kMapSide - 1 || col == kMapSide - 1;
+      pixels += static_cast<char>(wall ? 100 : 22);
+    }
+  }
+  std::ofstream(tools_ / "grey.pgm", std::ios::binary) << "P5\n20 20\n255\n" << pixels;
+  std::ofstream(tools_ / "grey.yaml") << "image: grey.pgm\nresolution: 0.1\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
+                                         "occupied_thresh: 0.65\nfree_thresh: 0.196\nmode: raw\n";
+  slamsweep::testing::TempDir datasets;
+  fs::copy_file(tools_ / "room.yaml", datasets / "room.yaml");
+  fs::copy_file(tools_ / "room.pgm", datasets / "room.pgm");
+  spec_.sequence.entry.reference_map_path = (datasets / "room.yaml").string();
+  UseProgram("cp estimate.tum \"$1/trajectory.tum\" && cp grey.pgm \"$1/\" && cp grey.yaml \"$1/map.yaml\"");
+  const nlohmann::json result = Run();
+  ASSERT_EQ(result["status"], "ok") << result.dump(2);
+  const nlohmann::json& compare = result["metric_details"]["map_compare"];
+  EXPECT_EQ(compare["scored_map"], "the run's map file") << compare;
+  // Scored on the reference's 0.05 m cells, four per map cell: 76 wall cells (304), occupied in both
+  // maps; all 400 cells (1,600) known in both, the 324 floor cells free in both.
+  EXPECT_EQ(compare["cells"]["estimate_occupied"], 304) << compare;
+  EXPECT_EQ(compare["cells"]["known_in_both"], 1600) << compare;
+  EXPECT_EQ(Metric(result, "map_iou_free", "value"), 1.0);
+  // The run folder's map says the same: its floor is written free.
+  const ev::OccupancyGrid kept = ev::ReadMap(run_dir_ / "map.yaml");
+  EXPECT_LE(kept.at(kMapSide / 2, kMapSide / 2), 0.196f);
 }
 
 TEST_F(WorkerTest, AReadOnlyFolderHoldingTheReferenceOrTheResultsFailsTheRun) {
