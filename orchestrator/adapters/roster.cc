@@ -80,6 +80,11 @@ fs::path RosterUpstreamConfigDir(const RosterAlgorithm& algorithm) {
 
 std::vector<fs::path> RosterProgramReads(const RosterAlgorithm& algorithm) {
   std::vector<fs::path> reads = {fs::absolute(RosterPrefix()).lexically_normal()};
+  // The drivers were compiled against the roster prefix of their build and read upstream's files there (slam-
+  // constructor's properties): an installed copy's drivers still do, so that prefix stays visible too.
+  const fs::path built_against = fs::absolute(SLAMSWEEP_DEFAULT_SLAM_PREFIX).lexically_normal();
+  std::error_code error;
+  if (built_against != reads.front() && fs::is_directory(built_against, error)) reads.push_back(built_against);
   // The driver's configuration beside it (Cartographer's Lua options), found from /proc/self/exe.
   if (!algorithm.config_file.empty()) reads.push_back(RosterDriver(algorithm).parent_path() / algorithm.config_file);
   // Upstream's configuration files, wherever the installation keeps them.
