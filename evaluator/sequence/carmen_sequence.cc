@@ -11,6 +11,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/trajectory/relations_format.h"
 #include "evaluator/sequence/flaser_fan.h"
+#include "evaluator/sequence/odometry_direction.h"
 #include "evaluator/sequence/provenance_file.h"
 #include "evaluator/sequence/recorded_odometry.h"
 #include "evaluator/sequence/robot_log.h"
@@ -234,6 +235,24 @@ Provenance ProvenanceOf(const std::filesystem::path& source, const CarmenSequenc
   return provenance;
 }
 
+
+/// Where the log's odometry stream writes every step forward, gives back the steps the scans say the
+/// robot backed up (odometry_direction.h), re-reads each scan's odometry and says what was done.
+void RestoreRecordedReversing(RecordedOdometry& recorded, const std::filesystem::path& source, Sequence& sequence) {
+  const ReversingRepair repair = RestoreReversing(recorded.readings, recorded.scan_readings, sequence.scans);
+  if (!repair.unsigned_stream) return;
+  std::vector<Pose> poses;
+  poses.reserve(recorded.scan_readings.size());
+  for (std::size_t reading : recorded.scan_readings) poses.push_back(recorded.readings.poses()[reading]);
+  sequence.odometry = Trajectory(sequence.odometry.stamps_s(), std::move(poses));
+  sequence.warnings.push_back(Located(
+      source, 0,
+      fmt::format("recorded odometry: not one of its {} moving ODOM steps goes backward (the log writes distances "
+                  "without their sign); the scans say the robot backed up over {} of {} scan steps tested, whose "
+                  "odometry now moves backward",
+                  repair.moving_steps, repair.scan_steps_reversed, repair.scan_steps_tested)));
+}
+
 }  // namespace
 
 void CheckCarmenSequenceOptions(const CarmenSequenceOptions& options) {
@@ -357,6 +376,7 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
     sequence.odometry.Add(stamps_s[i], odometry_pose);
     if (logged_pose_is_reference) reference.Add(stamps_s[i], record.robot_pose);
   }
+  if (recorded) RestoreRecordedReversing(*recorded, source, sequence);
   if (!guessed_fan_lines.empty()) {
     sequence.warnings.push_back(Located(
         source, 0,
