@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <map>
 
 #include "orchestrator/store/csv_tables.h"
@@ -26,6 +27,18 @@ json WithSegments(json result, const std::vector<double>& lengths_m, double drif
   }
   result["metric_details"]["segment_rpe"] = {{"specification", {{"lengths_m", lengths_m}}}, {"lengths", lengths}};
   return result;
+}
+
+/// Each group's mean ATE RMSE, by the name `key` gives its summary.json object; every group holds one run.
+std::map<std::string, double> AteByGroup(const std::vector<GroupSummary>& groups,
+                                         const std::function<std::string(const json&)>& key) {
+  std::map<std::string, double> ate;
+  for (const GroupSummary& group : groups) {
+    EXPECT_EQ(group.runs, 1u);
+    const json out = ToJson(group);
+    ate[key(out)] = out.at("metrics").at("ape_trans").at("rmse").at("mean");
+  }
+  return ate;
 }
 
 TEST(GroupSummaryTest, AGroupRecordsItsSegmentLengthsAndWhetherItsRunsAgree) {
@@ -68,11 +81,9 @@ TEST(GroupSummaryTest, RunsOfAnotherNoiseSettingOrParameterValueAreNeverPooled) 
   store.RecordRun(1, other_parameters, MakeOkResult("p0", 3.0, 0.9), "runs/p0");
   const std::vector<GroupSummary> groups = SummarizeGroups(store.Runs());
   ASSERT_EQ(groups.size(), 3u);
-  std::map<std::string, double> ate;
-  for (const GroupSummary& group : groups) {
-    EXPECT_EQ(group.runs, 1u);
-    ate[group.group.noise + " " + group.group.parameters] = ToJson(group).at("metrics").at("ape_trans").at("rmse").at("mean");
-  }
+  const std::map<std::string, double> ate = AteByGroup(groups, [](const json& group) {
+    return group.at("noise").get<std::string>() + " " + group.at("parameters").get<std::string>();
+  });
   EXPECT_EQ(ate.at("clean ICP.maxIterations=80"), 0.1);
   EXPECT_EQ(ate.at("noisy ICP.maxIterations=80"), 0.5);
   EXPECT_EQ(ate.at("clean ICP.maxIterations=40"), 0.9);
@@ -93,12 +104,8 @@ TEST(GroupSummaryTest, RunsOnRecordedAndOnReferenceOdometryAreNeverPooled) {
   store.RecordRun(1, reference, MakeOkResult("f0", 3.0, 0.1), "runs/f0");
   const std::vector<GroupSummary> groups = SummarizeGroups(store.Runs());
   ASSERT_EQ(groups.size(), 2u);
-  std::map<std::string, double> ate;
-  for (const GroupSummary& group : groups) {
-    EXPECT_EQ(group.runs, 1u);
-    const json out = ToJson(group);
-    ate[out.at("odometry").get<std::string>()] = out.at("metrics").at("ape_trans").at("rmse").at("mean");
-  }
+  const std::map<std::string, double> ate =
+      AteByGroup(groups, [](const json& group) { return group.at("odometry").get<std::string>(); });
   EXPECT_EQ(ate.at("recorded"), 0.7);
   EXPECT_EQ(ate.at("reference"), 0.1);
   const std::string csv = GroupsCsv(groups);
