@@ -80,11 +80,6 @@ fs::path RosterUpstreamConfigDir(const RosterAlgorithm& algorithm) {
 
 std::vector<fs::path> RosterProgramReads(const RosterAlgorithm& algorithm) {
   std::vector<fs::path> reads = {fs::absolute(RosterPrefix()).lexically_normal()};
-  // The roster prefix the drivers were compiled against: an installed copy's drivers read upstream's files there
-  // when the installation has no copy of its own (below), so that prefix stays visible too.
-  const fs::path built_against = fs::absolute(SLAMSWEEP_DEFAULT_SLAM_PREFIX).lexically_normal();
-  std::error_code error;
-  if (built_against != reads.front() && fs::is_directory(built_against, error)) reads.push_back(built_against);
   // The driver's configuration beside it (Cartographer's Lua options), found from the driver's own path.
   if (!algorithm.config_file.empty()) reads.push_back(RosterDriver(algorithm).parent_path() / algorithm.config_file);
   // An installation's copy of upstream's files (slam-constructor's properties, Cartographer's Lua files).
