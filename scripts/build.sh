@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Configures and builds slamsweep into build/ (Release, warnings as errors).
-# Usage: scripts/build.sh [extra cmake configure args...]
+# Usage: scripts/build.sh [extra cmake configure args...]   (e.g. -DSLAMSWEEP_BUILD_TESTS=OFF)
 # SLAMSWEEP_BUILD_TARGETS (space-separated) builds only those targets, e.g. "slamsweep" for the programs
 # alone (the main job); unset, everything: tests, benchmarks and the drivers of the installed roster.
 set -euo pipefail
@@ -14,7 +14,10 @@ if [[ -z "${CMAKE_CXX_COMPILER_LAUNCHER:-}" ]] && command -v ccache >/dev/null; 
   export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$root}
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
-cmake -S "$root" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSLAMSWEEP_WERROR=ON "${launcher[@]}" "$@" >/dev/null
+# Tests and benchmarks are configured unless the arguments turn them off (the later -D wins): the main job
+# turns them off, and a later build in the same folder turns them on again.
+cmake -S "$root" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSLAMSWEEP_WERROR=ON \
+  -DSLAMSWEEP_BUILD_TESTS=ON -DSLAMSWEEP_BUILD_BENCHMARKS=ON "${launcher[@]}" "$@" >/dev/null
 targets=()
 [[ -n "${SLAMSWEEP_BUILD_TARGETS:-}" ]] && read -r -a targets <<< "$SLAMSWEEP_BUILD_TARGETS"
 if ((${#targets[@]} > 0)); then

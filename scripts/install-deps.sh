@@ -6,6 +6,8 @@
 # passes each roster algorithm's build dependencies this way.
 #   --build    only what compiling slamsweep needs (docker/Dockerfile's build stage, without tests)
 #   --runtime  only what an installed slamsweep needs to run (the image's runtime stage: no compilers)
+#   --main     what the main job (scripts/quickstart.sh) builds and runs: --build and the programs sweeps
+#              run, without the test suite's tools (Chromium, Slurm, GoogleTest, scipy...)
 set -euo pipefail
 
 build_packages=(
@@ -63,6 +65,7 @@ packages=(
 case "${1:-}" in
   --build) packages=("${build_packages[@]}") ;;
   --runtime) packages=("${runtime_packages[@]}") ;;
+  --main) packages=("${build_packages[@]}" "${run_programs[@]}") ;;
   "") ;;
   *) packages=("$@") ;;
 esac

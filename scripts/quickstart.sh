@@ -6,7 +6,8 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
-"$root/scripts/install-deps.sh"
+# Only the packages the main job needs; the test command (scripts/test.sh) installs the rest.
+"$root/scripts/install-deps.sh" --main
 # The quick-start sweep uses no roster algorithm (MRPT's programs come with the apt step), so the main job
 # builds none: the paper's roster is installed ahead of time by scripts/install-slam.sh NAME... (or here
 # with SLAMSWEEP_ROSTER="gmapping slam-constructor hector cartographer"); `slamsweep algorithms` says how
@@ -15,7 +16,8 @@ read -r -a roster <<< "${SLAMSWEEP_ROSTER:-}"
 ((${#roster[@]} == 0)) || "$root/scripts/install-slam.sh" "${roster[@]}"
 # Only what the sweep runs: the programs and the drivers of the installed roster. Tests and benchmarks
 # are built by the test command (scripts/test.sh).
-SLAMSWEEP_BUILD_TARGETS="slamsweep slam/all" "$root/scripts/build.sh"
+# Without tests and benchmarks configured, GoogleTest and Google Benchmark need not be installed.
+SLAMSWEEP_BUILD_TARGETS="slamsweep slam/all" "$root/scripts/build.sh" -DSLAMSWEEP_BUILD_TESTS=OFF -DSLAMSWEEP_BUILD_BENCHMARKS=OFF
 slamsweep="${SLAMSWEEP_BUILD_DIR:-$root/build}/slamsweep"
 
 start=$(date +%s)
