@@ -195,7 +195,7 @@ TEST(RestoreReversingTest, Fr079BacksUpWhereItsCorrectedLogSays) {
   options.odometry = OdometryMode::kRecorded;
   const Sequence sequence = ReadCarmenSequence(path, options);
   ASSERT_TRUE(sequence.reference.has_value());
-  // On the steps the odometry moves 4 cm or more (those the scans are asked about), the corrected log,
+  // On the steps the odometry moves 4 cm or more (where a reversal costs most), the corrected log,
   // which the scan test never sees, says whether the robot backed up (by more than 5 cm) or went on.
   std::size_t reference_backward = 0;
   std::size_t odometry_backward_too = 0;
