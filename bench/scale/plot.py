@@ -37,6 +37,7 @@ set multiplot layout 1,2
 set key top left
 set grid
 set xlabel 'runs'
+set xtics rotate by -30
 set ylabel 'seconds (wall, 2 cores)'
 set title 'time'
 plot '{data}' using 1:2 with linespoints title 'run (4 shards)', '' using 1:3 with linespoints title 'merge', \\

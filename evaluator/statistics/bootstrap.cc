@@ -122,11 +122,13 @@ bool AllComparable(const std::vector<PairedStratum>& strata) {
 
 }  // namespace
 
-std::optional<BootstrapInterval> BootstrapPooledRankCorrelation(const std::vector<PairedStratum>& strata,
-                                                                const BootstrapOptions& options) {
+std::optional<BootstrapReplicates> PooledRankCorrelationReplicates(const std::vector<PairedStratum>& strata,
+                                                                   const BootstrapOptions& options) {
   if (options.resamples == 0 || !(options.confidence > 0.0 && options.confidence < 1.0)) return std::nullopt;
   RandomEngine engine(options.seed);
-  std::vector<double> replicates;
+  BootstrapReplicates out;
+  out.resamples = options.resamples;
+  std::vector<double>& replicates = out.sorted;
   replicates.reserve(options.resamples);
   if (AllComparable(strata)) {
     // The same draws as the copying path below, ranked by counting.
@@ -154,17 +156,31 @@ std::optional<BootstrapInterval> BootstrapPooledRankCorrelation(const std::vecto
       if (const std::optional<double> rho = PooledRankCorrelation(resample)) replicates.push_back(*rho);
     }
   }
-  if (replicates.empty() ||
-      static_cast<double>(replicates.size()) < options.min_defined_fraction * static_cast<double>(options.resamples)) {
+  std::sort(replicates.begin(), replicates.end());
+  return out;
+}
+
+std::optional<BootstrapInterval> PercentileInterval(const BootstrapReplicates& replicates, double confidence,
+                                                    double min_defined_fraction) {
+  if (replicates.resamples == 0 || !(confidence > 0.0 && confidence < 1.0)) return std::nullopt;
+  const std::vector<double>& sorted = replicates.sorted;
+  if (sorted.empty() ||
+      static_cast<double>(sorted.size()) < min_defined_fraction * static_cast<double>(replicates.resamples)) {
     return std::nullopt;
   }
-  std::sort(replicates.begin(), replicates.end());
   BootstrapInterval interval;
-  interval.low = InterpolatedQuantile(replicates, (1.0 - options.confidence) / 2.0);
-  interval.high = InterpolatedQuantile(replicates, (1.0 + options.confidence) / 2.0);
-  interval.resamples = options.resamples;
-  interval.defined = replicates.size();
+  interval.low = InterpolatedQuantile(sorted, (1.0 - confidence) / 2.0);
+  interval.high = InterpolatedQuantile(sorted, (1.0 + confidence) / 2.0);
+  interval.resamples = replicates.resamples;
+  interval.defined = sorted.size();
   return interval;
+}
+
+std::optional<BootstrapInterval> BootstrapPooledRankCorrelation(const std::vector<PairedStratum>& strata,
+                                                                const BootstrapOptions& options) {
+  const std::optional<BootstrapReplicates> replicates = PooledRankCorrelationReplicates(strata, options);
+  if (!replicates) return std::nullopt;
+  return PercentileInterval(*replicates, options.confidence, options.min_defined_fraction);
 }
 
 }  // namespace slamsweep::evaluator

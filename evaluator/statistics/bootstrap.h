@@ -40,6 +40,22 @@ struct BootstrapInterval {
 std::optional<BootstrapInterval> BootstrapPooledRankCorrelation(const std::vector<PairedStratum>& strata,
                                                                 const BootstrapOptions& options = {});
 
+/// The defined replicates of BootstrapPooledRankCorrelation's resamples, ascending, and how many resamples
+/// were drawn: the percentile interval at any confidence follows from them without drawing again.
+struct BootstrapReplicates {
+  std::vector<double> sorted;
+  std::size_t resamples = 0;
+};
+
+/// BootstrapPooledRankCorrelation's resamples (the same draws), kept; nullopt for invalid options.
+std::optional<BootstrapReplicates> PooledRankCorrelationReplicates(const std::vector<PairedStratum>& strata,
+                                                                   const BootstrapOptions& options = {});
+
+/// The percentile interval of `replicates` at `confidence` (0 < confidence < 1), as
+/// BootstrapPooledRankCorrelation gives it: undefined below min_defined_fraction of defined resamples.
+std::optional<BootstrapInterval> PercentileInterval(const BootstrapReplicates& replicates, double confidence,
+                                                    double min_defined_fraction);
+
 /// The q-quantile (0 <= q <= 1) of `sorted` (ascending, not empty) by linear interpolation
 /// between order statistics: position q (n - 1).
 double InterpolatedQuantile(const std::vector<double>& sorted, double q);

@@ -47,9 +47,10 @@ ValidityVerdict VerdictOf(const ValidityCorrelation& correlation) {
   return ValidityVerdict::kUnclear;
 }
 
-/// The correlation of one pair over `points` (all of one scope), ranked within strata.
+/// The correlation of one pair over `points` (all of one scope), ranked within strata. A decided verdict's
+/// bootstrap replicates go to `decided_replicates`: the family interval is their wider percentiles.
 ValidityCorrelation Correlate(const std::vector<ValidityPoint>& points, ValidityPooling pooling, bool all_sequences,
-                              const ValidityOptions& options) {
+                              const ValidityOptions& options, BootstrapReplicates& decided_replicates) {
   // Strata: the sequence (over all sequences, across noise), the sequence x noise (within noise),
   // or nothing (one sequence, across noise). Ids follow the sorted stratum names.
   std::map<std::pair<std::string, std::string>, std::size_t> stratum_ids;
@@ -78,8 +79,16 @@ ValidityCorrelation Correlate(const std::vector<ValidityPoint>& points, Validity
     return correlation;
   }
   correlation.rho = PooledRankCorrelation(strata);
-  if (correlation.rho) correlation.interval = BootstrapPooledRankCorrelation(strata, options.bootstrap);
+  std::optional<BootstrapReplicates> replicates;
+  if (correlation.rho) replicates = PooledRankCorrelationReplicates(strata, options.bootstrap);
+  if (replicates) {
+    correlation.interval =
+        PercentileInterval(*replicates, options.bootstrap.confidence, options.bootstrap.min_defined_fraction);
+  }
   correlation.verdict = VerdictOf(correlation);
+  const bool decided =
+      correlation.verdict == ValidityVerdict::kTracksError || correlation.verdict == ValidityVerdict::kOpposite;
+  if (decided && replicates) decided_replicates = std::move(*replicates);
   return correlation;
 }
 
@@ -192,11 +201,13 @@ ValidityStudy ComputeValidityStudy(std::vector<ValidityRun> runs, const Validity
   // Each correlation draws its own bootstrap from the fixed seed: computed on several threads, the study
   // is the same as computed in order, and a sweep of 10,000 runs waits for it half as long on 2 cores.
   study.correlations.resize(tasks.size());
+  std::vector<BootstrapReplicates> decided_replicates(tasks.size());
   std::atomic<std::size_t> next{0};
   const auto work = [&] {
     for (std::size_t i = next++; i < tasks.size(); i = next++) {
       const CorrelationTask& task = tasks[i];
-      ValidityCorrelation correlation = Correlate(*task.points, task.pooling, task.sequence.empty(), options);
+      ValidityCorrelation correlation =
+          Correlate(*task.points, task.pooling, task.sequence.empty(), options, decided_replicates[i]);
       correlation.candidate = task.candidate;
       correlation.target = task.target;
       correlation.sequence = task.sequence;
@@ -209,17 +220,16 @@ ValidityStudy ComputeValidityStudy(std::vector<ValidityRun> runs, const Validity
     for (unsigned t = 1; t < threads && t < tasks.size(); ++t) helpers.emplace_back(work);
     work();
   }
-  // Bonferroni over the study's intervals: only a decided verdict can fail to survive, so only those are redrawn
-  // (same seed, same resamples, wider percentiles).
+  // Bonferroni over the study's intervals: only a decided verdict can fail to survive, so only those get the
+  // wider percentiles of the same resamples (the same seed would draw them again).
   for (const ValidityCorrelation& c : study.correlations) study.family_size += c.interval ? 1 : 0;
   if (study.family_size == 0) return study;
   study.family_confidence = 1.0 - (1.0 - options.bootstrap.confidence) / static_cast<double>(study.family_size);
-  ValidityOptions family = options;
-  family.bootstrap.confidence = study.family_confidence;
   for (std::size_t i = 0; i < study.correlations.size(); ++i) {
     ValidityCorrelation& c = study.correlations[i];
     if (c.verdict != ValidityVerdict::kTracksError && c.verdict != ValidityVerdict::kOpposite) continue;
-    c.family_interval = Correlate(*tasks[i].points, c.pooling, c.sequence.empty(), family).interval;
+    c.family_interval =
+        PercentileInterval(decided_replicates[i], study.family_confidence, options.bootstrap.min_defined_fraction);
     c.survives_family = c.family_interval && (c.verdict == ValidityVerdict::kTracksError ? c.family_interval->low > 0.0
                                                                                          : c.family_interval->high < 0.0);
   }

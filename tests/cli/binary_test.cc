@@ -68,6 +68,16 @@ TEST(BinaryTest, TheCoreLoadsNoHeavyLibrary) {
   }
 }
 
+TEST(BinaryTest, TheWorkerLoadsNoImageCodecLibrary) {
+  // Every run starts the sweep program as its worker: OpenCV's imgcodecs would bring GDAL and a hundred
+  // more libraries, about 70 ms of loading per run. PNGs are read and written with libpng.
+  const ProcessResult result = RunProgram(SLAMSWEEP_SWEEP_BINARY, "--version", "LD_TRACE_LOADED_OBJECTS=1", false);
+  EXPECT_THAT(result.out, ::testing::HasSubstr("libpng"));
+  for (const char* heavy : {"imgcodecs", "gdal", "mrpt", "ros", "assimp"}) {
+    EXPECT_THAT(result.out, ::testing::Not(::testing::HasSubstr(heavy))) << heavy;
+  }
+}
+
 TEST(BinaryTest, HelperCommandsAreListedAndGetTheirHelp) {
   const ProcessResult help = RunBinary("--help");
   for (const char* command : {"run", "merge", "report", "history", "data", "plan", "algorithms"}) {

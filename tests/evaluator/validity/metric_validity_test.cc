@@ -207,6 +207,22 @@ TEST(MetricValidityTest, DecidedVerdictsAreRedrawnAtTheBonferroniLevel) {
     EXPECT_EQ(c.survives_family, c.verdict == ValidityVerdict::kTracksError ? c.family_interval->low > 0.0
                                                                              : c.family_interval->high < 0.0);
     survived += c.survives_family ? 1 : 0;
+    if (!c.sequence.empty() && c.pooling == ValidityPooling::kAcrossNoise) {
+      // One sequence across noise is one stratum: the family interval is the bootstrap drawn afresh at the
+      // family's confidence.
+      PairedStratum stratum;
+      for (const ValidityPoint& point : ValidityPoints(runs, c.candidate, c.target, c.sequence)) {
+        stratum.x.push_back(point.x);
+        stratum.y.push_back(point.y);
+      }
+      BootstrapOptions family;
+      family.confidence = study.family_confidence;
+      const std::optional<BootstrapInterval> redrawn = BootstrapPooledRankCorrelation({stratum}, family);
+      ASSERT_TRUE(redrawn.has_value());
+      EXPECT_EQ(c.family_interval->low, redrawn->low) << c.candidate << " " << c.sequence;
+      EXPECT_EQ(c.family_interval->high, redrawn->high) << c.candidate << " " << c.sequence;
+      EXPECT_EQ(c.family_interval->defined, redrawn->defined);
+    }
   }
   EXPECT_GT(decided, survived);  // some decided verdicts do not survive the correction
   const ValidityCorrelation& exact = Get(study, "corners.value", "exact", ValidityPooling::kAcrossNoise);
