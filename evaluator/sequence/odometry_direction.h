@@ -13,9 +13,10 @@ namespace slamsweep::evaluator {
 enum class StepDirection { kUndecided, kAlong, kAgainst };
 
 /// Places the hits of `later` at `step` (the odometry's motion from `earlier` to `later`) and at the
-/// step with its translation negated, and counts for each how many fall in a 4 cm cell that a hit of
-/// `earlier` occupies. kAgainst when the negated step explains clearly more hits (a quarter more and at
-/// least 10), kAlong in the opposite case, else kUndecided (a corridor, an empty view, a tiny step).
+/// step with its translation negated, and sums for each the squared distance from every placed hit to
+/// the nearest hit of `earlier` (at most 10 cm). kAgainst when the negated step leaves clearly less
+/// (under 0.9 times), kAlong in the opposite case, else kUndecided (a corridor, an empty view, a step
+/// under 5 mm, below the logs' 1 cm range resolution once doubled).
 StepDirection StepDirectionByScans(const LaserScan& earlier, const LaserScan& later, const Pose& step);
 
 /// What RestoreReversing found and did.
@@ -23,7 +24,7 @@ struct ReversingRepair {
   /// Reading steps of 2 cm or more, and how many of them move backward as logged.
   std::size_t moving_steps = 0;
   std::size_t logged_backward_steps = 0;
-  /// Scan-to-scan steps of 4 cm or more tested with StepDirectionByScans, and those reversed.
+  /// Scan-to-scan steps of 5 mm or more tested with StepDirectionByScans, and those reversed.
   std::size_t scan_steps_tested = 0;
   std::size_t scan_steps_reversed = 0;
   /// Whether the stream was taken for one that logs distances without their sign (and so was tested).
