@@ -228,6 +228,25 @@ std::string WorkerCommandLine(pid_t pid) {
   return text;
 }
 
+/// Waits until the stand-in's `sleep` child has exec'd: until then the forked shell shows the
+/// stand-in's own worker command line and would be counted as a third leftover.
+bool WaitForSleepingChild(pid_t pid) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  const std::string id = std::to_string(pid);
+  while (std::chrono::steady_clock::now() < deadline) {
+    std::ifstream children("/proc/" + id + "/task/" + id + "/children");
+    pid_t child = 0;
+    while (children >> child) {
+      std::ifstream in("/proc/" + std::to_string(child) + "/cmdline", std::ios::binary);
+      std::stringstream bytes;
+      bytes << in.rdbuf();
+      if (bytes.str() == std::string("sleep\0" "60\0", 9)) return true;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
 // Workers run as `slamsweep-sweep worker RUN_DIR` (the sweep helper that runs serve), or, when
 // SLAMSWEEP_WORKER_PROGRAM names the core, start as `slamsweep worker RUN_DIR`: a restarted server
 // ends both when RUN_DIR lies under its sweeps folder, and a worker of another data folder never.
@@ -246,6 +265,7 @@ TEST(LeftoverProcessesTest, WorkersOfTheSweepHelperAndTheCoreUnderTheSweepsFolde
             "/opt/slamsweep/lib/slamsweep/slamsweep-sweep" + nul + "worker" + nul + ours_helper.string() + nul);
   ASSERT_EQ(WorkerCommandLine(core), "/opt/slamsweep/bin/slamsweep" + nul + "worker" + nul + ours_core.string() + nul);
   ASSERT_THAT(WorkerCommandLine(other), HasSubstr(nul + "worker" + nul + theirs.string()));
+  for (const pid_t stand_in : {helper, core, other}) ASSERT_TRUE(WaitForSleepingChild(stand_in)) << stand_in;
 
   EXPECT_THAT(FindLeftoverProcesses(sweeps), ::testing::UnorderedElementsAre(helper, core));
   EXPECT_EQ(EndLeftoverProcesses(sweeps, 10.0), 2u);
