@@ -23,6 +23,8 @@
 #include "evaluator/noise/range_noise.h"
 #include "evaluator/formats/trajectory/carmen_log.h"
 #include "evaluator/formats/trajectory/relations_format.h"
+#include "evaluator/sequence/carmen_sequence.h"
+#include "evaluator/sequence/odometry_mode.h"
 #include "evaluator/sequence/recorded_odometry.h"
 #include "evaluator/sequence/relations_clock.h"
 #include "evaluator/sequence/sequence_file.h"
@@ -363,15 +365,16 @@ void RegisterRelationsClock(CLI::App& data, const Streams& streams) {
       relation_stamps.push_back(relation.t2_s);
     }
     const ev::RelationsClockFit fit = ev::FitRelationsClock(relation_stamps, odometry.logged_stamps_s);
-    const ev::OdometryClockFit by_odometry =
-        ev::FitRelationsClockByOdometry(ev::ReadRelations(sources.relations), odometry.readings);
-    ev::RelationsClockFitOptions from_odometry;
-    from_odometry.start_offset_s = by_odometry.offset_s;
-    from_odometry.start_rate = by_odometry.rate;
-    const ev::RelationsClockFit combined = ev::FitRelationsClock(relation_stamps, odometry.logged_stamps_s, from_odometry);
+    const ev::Relations relations = ev::ReadRelations(sources.relations);
+    const ev::OdometryClockFit by_odometry = ev::FitRelationsClockByOdometry(relations, odometry.readings);
+    ev::CarmenSequenceOptions scan_options;
+    scan_options.odometry = ev::OdometryMode::kRecorded;
+    const ev::Sequence sequence = ev::CarmenLogToSequence(log, sources.log, scan_options);
+    const double odometry_middle_s = 0.5 * (by_odometry.first_half_offset_s + by_odometry.second_half_offset_s);
+    const ev::ScanClockFit by_scans = ev::FitRelationsClockByScans(relations, sequence.scans, sequence.odometry_readings, odometry_middle_s);
     nlohmann::json out = fit.ToJson();
     out["by_odometry"] = by_odometry.ToJson();
-    out["stamps_from_odometry_fit"] = combined.ToJson();
+    out["by_scans"] = by_scans.ToJson();
     out["log"] = sources.log.string();
     out["relations"] = sources.relations.string();
     out["readings"] = odometry.logged_stamps_s.size();
@@ -380,23 +383,25 @@ void RegisterRelationsClock(CLI::App& data, const Streams& streams) {
       return;
     }
     streams.out << fmt::format(
+        "from time stamps (relation stamps paired with the ODOM readings' stamps):\n"
         "relations_rate: {:.12g}\nrelations_offset_s: {:.12g}\n{} of {} relation stamps paired with a reading within "
         "{:.3f} s (half the readings' median spacing), {} within 10 ms; residual rms {:.4f} s, max {:.4f} s; the rate "
         "takes up {:.4f} s of drift over the relations' span\n",
         fit.rate, fit.offset_s, fit.matched, fit.stamps, fit.tolerance_s, fit.matched_within_10ms, fit.rms_residual_s,
         fit.max_abs_residual_s, fit.drift_over_span_s);
     streams.out << fmt::format(
-        "from the recorded odometry (for logs whose reading stamps do not carry the laser's clock):\n"
+        "from the recorded odometry (relations' rotations against the odometry's; inherits any lag of the odometry):\n"
         "relations_rate: {:.12g}\nrelations_offset_s: {:.12g}\n{} short relations turn as the odometry does within "
         "{:.4f} deg on average (the best offset more than 0.1 s away: {:.4f} deg); halves fitted at {:.4f} and {:.4f} s\n",
         by_odometry.rate, by_odometry.offset_s, by_odometry.short_relations, by_odometry.rotation_agreement_deg,
         by_odometry.next_best_agreement_deg, by_odometry.first_half_offset_s, by_odometry.second_half_offset_s);
     streams.out << fmt::format(
-        "stamps again, starting from the odometry's map (it picks the laser period; the stamps the time within it):\n"
-        "relations_rate: {:.12g}\nrelations_offset_s: {:.12g}\n{} of {} relation stamps paired with a reading within "
-        "{:.3f} s, {} within 10 ms; residual rms {:.4f} s, max {:.4f} s; drift over the span {:.4f} s\n",
-        combined.rate, combined.offset_s, combined.matched, combined.stamps, combined.tolerance_s,
-        combined.matched_within_10ms, combined.rms_residual_s, combined.max_abs_residual_s, combined.drift_over_span_s);
+        "from the laser scans (each relation laid over the scans at its stamps, searched within 0.5 s of the "
+        "odometry's map):\nrelations_rate: {:.12g}\nrelations_offset_s: {:.12g}\n{} relations lay their scans over "
+        "each other within {:.3f} cm rms (the best offset more than 0.1 s away: {:.3f} cm); halves fitted at {:.4f} "
+        "and {:.4f} s\n",
+        by_scans.rate, by_scans.offset_s, by_scans.relations, by_scans.overlay_rms_cm, by_scans.next_best_overlay_rms_cm,
+        by_scans.first_half_offset_s, by_scans.second_half_offset_s);
   });
 }
 

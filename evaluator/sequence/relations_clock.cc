@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
+#include <tuple>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -11,6 +13,8 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/pose.h"
+#include "evaluator/sequence/scan_overlay.h"
+#include "evaluator/trajectory/interpolation.h"
 
 namespace slamsweep::evaluator {
 namespace {
@@ -177,29 +181,33 @@ double RotationDisagreementDeg(const std::vector<const Relation*>& relations, co
 
 struct OffsetSearch {
   double offset_s = 0.0;
-  double best_deg = 0.0;
-  double next_best_deg = 0.0;
+  double best = 0.0;
+  double next_best = 0.0;
 };
 
-/// The offset in [low, high] with the best agreement: every 10 ms, then every 1 ms around it.
-OffsetSearch SearchOffset(const std::vector<const Relation*>& relations, const UnwrappedYaw& yaw, double low_s,
-                          double high_s) {
+/// The offset in [low, high] where `disagreement` is lowest: every 10 ms, then every 1 ms around it;
+/// next_best is the lowest found more than 0.1 s away (the margin by which the fit is unambiguous).
+OffsetSearch SearchOffset(const std::function<double(double)>& disagreement, double low_s, double high_s) {
   std::vector<std::pair<double, double>> coarse;
-  for (double offset = low_s; offset <= high_s; offset += 0.01) {
-    coarse.emplace_back(offset, RotationDisagreementDeg(relations, yaw, offset));
-  }
+  for (double offset = low_s; offset <= high_s; offset += 0.01) coarse.emplace_back(offset, disagreement(offset));
   const auto best = std::min_element(coarse.begin(), coarse.end(),
                                      [](const auto& a, const auto& b) { return a.second < b.second; });
   OffsetSearch search{best->first, best->second, std::numeric_limits<double>::infinity()};
-  for (const auto& [offset, disagreement] : coarse) {
-    if (std::abs(offset - best->first) > 0.1) search.next_best_deg = std::min(search.next_best_deg, disagreement);
+  for (const auto& [offset, value] : coarse) {
+    if (std::abs(offset - best->first) > 0.1) search.next_best = std::min(search.next_best, value);
   }
   const double centre = best->first;
   for (double offset = centre - 0.01; offset <= centre + 0.01; offset += 0.001) {
-    const double disagreement = RotationDisagreementDeg(relations, yaw, offset);
-    if (disagreement < search.best_deg) search = {offset, disagreement, search.next_best_deg};
+    const double value = disagreement(offset);
+    if (value < search.best) search = {offset, value, search.next_best};
   }
   return search;
+}
+
+/// t_log = rate * t + offset through two offsets fitted at two relation stamps.
+std::pair<double, double> LineThrough(double early_t, double early_offset_s, double late_t, double late_offset_s) {
+  const double slope = (late_offset_s - early_offset_s) / (late_t - early_t);
+  return {early_offset_s - slope * early_t, 1.0 + slope};
 }
 
 }  // namespace
@@ -236,13 +244,16 @@ OdometryClockFit FitRelationsClockByOdometry(const Relations& relations, const T
     throw InputError("relations clock: the relations span more time than the readings; no offset puts them inside");
   }
   const UnwrappedYaw yaw(readings);
-  const OffsetSearch whole = SearchOffset(chosen, yaw, low_s, high_s);
+  const auto disagreement = [&yaw](const std::vector<const Relation*>& subset) {
+    return [&yaw, &subset](double offset_s) { return RotationDisagreementDeg(subset, yaw, offset_s); };
+  };
+  const OffsetSearch whole = SearchOffset(disagreement(chosen), low_s, high_s);
   // Each half around the whole fit (the drift over a run is far below a second).
   const std::size_t half = chosen.size() / 2;
   const std::vector<const Relation*> first(chosen.begin(), chosen.begin() + static_cast<std::ptrdiff_t>(half));
   const std::vector<const Relation*> second(chosen.begin() + static_cast<std::ptrdiff_t>(half), chosen.end());
-  const OffsetSearch early = SearchOffset(first, yaw, whole.offset_s - 0.5, whole.offset_s + 0.5);
-  const OffsetSearch late = SearchOffset(second, yaw, whole.offset_s - 0.5, whole.offset_s + 0.5);
+  const OffsetSearch early = SearchOffset(disagreement(first), whole.offset_s - 0.5, whole.offset_s + 0.5);
+  const OffsetSearch late = SearchOffset(disagreement(second), whole.offset_s - 0.5, whole.offset_s + 0.5);
   const double early_t = first[first.size() / 2]->t1_s;
   const double late_t = second[second.size() / 2]->t1_s;
 
@@ -250,12 +261,120 @@ OdometryClockFit FitRelationsClockByOdometry(const Relations& relations, const T
   fit.short_relations = chosen.size();
   fit.first_half_offset_s = early.offset_s;
   fit.second_half_offset_s = late.offset_s;
-  // t_log = t + offset(t), offset linear through the two halves' fits.
-  const double slope = (late.offset_s - early.offset_s) / (late_t - early_t);
-  fit.rate = 1.0 + slope;
-  fit.offset_s = early.offset_s - slope * early_t;
-  fit.rotation_agreement_deg = whole.best_deg;
-  fit.next_best_agreement_deg = whole.next_best_deg;
+  std::tie(fit.offset_s, fit.rate) = LineThrough(early_t, early.offset_s, late_t, late.offset_s);
+  fit.rotation_agreement_deg = whole.best;
+  fit.next_best_agreement_deg = whole.next_best;
+  return fit;
+}
+
+namespace {
+
+/// A placed hit farther than this from every hit of the other scan counts as this far.
+constexpr double kOverlayRadiusM = 0.10;
+/// Scans with fewer hits than this are not laid over each other.
+constexpr std::size_t kMinOverlayHits = 20;
+
+/// Each scan's hits and nearest-hit look-ups, and the mean overlay residual of a set of relations
+/// under a clock offset.
+class ScanOverlays {
+ public:
+  ScanOverlays(std::span<const LaserScan> scans, const Trajectory& odometry) : odometry_(odometry) {
+    stamps_.reserve(scans.size());
+    hits_.reserve(scans.size());
+    neighbours_.reserve(scans.size());
+    for (const LaserScan& scan : scans) {
+      stamps_.push_back(scan.stamp_s);
+      hits_.push_back(HitsOnRobot(scan));
+      neighbours_.emplace_back(scan, kOverlayRadiusM);
+    }
+  }
+
+  double FirstStampS() const { return stamps_.front(); }
+  double LastStampS() const { return stamps_.back(); }
+
+  /// Mean squared distance (m^2, capped) of the scan nearest each relation's mapped t2, placed over
+  /// the scan nearest its mapped t1 by the relation, with the odometry's motion between each scan and
+  /// the mapped stamp beside it (a fraction of a scan period, so a lag of the odometry hardly enters);
+  /// relations outside the scans, or whose two stamps name one scan, are left out. Infinity when none
+  /// is left.
+  double MeanResidual(const std::vector<const Relation*>& relations, double offset_s) const {
+    double sum = 0.0;
+    std::size_t used = 0;
+    for (const Relation* relation : relations) {
+      const std::optional<std::size_t> from = NearestScan(relation->t1_s + offset_s);
+      const std::optional<std::size_t> to = NearestScan(relation->t2_s + offset_s);
+      if (!from || !to || *from == *to) continue;
+      const std::vector<Eigen::Vector3d>& hits = hits_[*to];
+      if (hits.size() < kMinOverlayHits || neighbours_[*from].HitCount() < kMinOverlayHits) continue;
+      const std::optional<Pose> from_scan = odometry_.At(stamps_[*from]);
+      const std::optional<Pose> from_relation = odometry_.At(relation->t1_s + offset_s);
+      const std::optional<Pose> to_relation = odometry_.At(relation->t2_s + offset_s);
+      const std::optional<Pose> to_scan = odometry_.At(stamps_[*to]);
+      if (!from_scan || !from_relation || !to_relation || !to_scan) continue;
+      const Pose placement =
+          Relative(*from_scan, *from_relation) * relation->delta * Relative(*to_relation, *to_scan);
+      sum += OverlayResidual(neighbours_[*from], hits, placement.ToIsometry()) / static_cast<double>(hits.size());
+      ++used;
+    }
+    return used == 0 ? std::numeric_limits<double>::infinity() : sum / static_cast<double>(used);
+  }
+
+ private:
+  std::optional<std::size_t> NearestScan(double stamp_s) const {
+    if (stamp_s < stamps_.front() || stamp_s > stamps_.back()) return std::nullopt;
+    const auto at = std::lower_bound(stamps_.begin(), stamps_.end(), stamp_s);
+    const auto index = static_cast<std::size_t>(at - stamps_.begin());
+    if (index == 0) return index;
+    return (stamps_[index] - stamp_s) < (stamp_s - stamps_[index - 1]) ? index : index - 1;
+  }
+
+  TrajectoryInterpolator odometry_;
+  std::vector<double> stamps_;
+  std::vector<std::vector<Eigen::Vector3d>> hits_;
+  std::vector<ScanNeighbours> neighbours_;
+};
+
+}  // namespace
+
+nlohmann::json ScanClockFit::ToJson() const {
+  return nlohmann::json{{"offset_s", offset_s},
+                        {"rate", rate},
+                        {"relations", relations},
+                        {"overlay_rms_cm", overlay_rms_cm},
+                        {"next_best_overlay_rms_cm", next_best_overlay_rms_cm},
+                        {"first_half_offset_s", first_half_offset_s},
+                        {"second_half_offset_s", second_half_offset_s}};
+}
+
+ScanClockFit FitRelationsClockByScans(const Relations& relations, std::span<const LaserScan> scans,
+                                      const Trajectory& odometry, double start_offset_s, double search_s) {
+  if (scans.size() < 2 || relations.size() < 4) throw InputError("relations clock: too few scans or relations");
+  for (std::size_t i = 1; i < scans.size(); ++i) {
+    if (!(scans[i].stamp_s > scans[i - 1].stamp_s)) throw InputError("relations clock: scan stamps must increase");
+  }
+  std::vector<const Relation*> all;
+  for (const Relation& relation : relations) all.push_back(&relation);
+  std::sort(all.begin(), all.end(), [](const Relation* a, const Relation* b) { return a->t1_s < b->t1_s; });
+  const ScanOverlays overlays(scans, odometry);
+  const auto residual = [&overlays](const std::vector<const Relation*>& subset) {
+    return [&overlays, &subset](double offset_s) { return overlays.MeanResidual(subset, offset_s); };
+  };
+  const OffsetSearch whole = SearchOffset(residual(all), start_offset_s - search_s, start_offset_s + search_s);
+  if (!std::isfinite(whole.best)) throw InputError("relations clock: no offset near the start lays a relation on the scans");
+  const std::size_t half = all.size() / 2;
+  const std::vector<const Relation*> first(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(half));
+  const std::vector<const Relation*> second(all.begin() + static_cast<std::ptrdiff_t>(half), all.end());
+  const OffsetSearch early = SearchOffset(residual(first), whole.offset_s - search_s, whole.offset_s + search_s);
+  const OffsetSearch late = SearchOffset(residual(second), whole.offset_s - search_s, whole.offset_s + search_s);
+
+  ScanClockFit fit;
+  fit.relations = all.size();
+  fit.first_half_offset_s = early.offset_s;
+  fit.second_half_offset_s = late.offset_s;
+  std::tie(fit.offset_s, fit.rate) =
+      LineThrough(first[first.size() / 2]->t1_s, early.offset_s, second[second.size() / 2]->t1_s, late.offset_s);
+  fit.overlay_rms_cm = 100.0 * std::sqrt(whole.best);
+  fit.next_best_overlay_rms_cm = 100.0 * std::sqrt(whole.next_best);
   return fit;
 }
 

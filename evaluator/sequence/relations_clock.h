@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "evaluator/core/laser_scan.h"
 #include "evaluator/core/relation.h"
 #include "evaluator/core/trajectory.h"
 
@@ -78,5 +79,35 @@ struct OdometryClockFit {
 /// Throws InputError when the readings or the short relations are too few, or no offset puts the
 /// relations inside the readings.
 OdometryClockFit FitRelationsClockByOdometry(const Relations& relations, const Trajectory& readings);
+
+/// The same map fitted from the laser alone. Kuemmerle et al. made the relations by matching these
+/// very scans, so at the right map each relation lays the scan at its second stamp onto the scan at
+/// its first. The fit is the offset where that overlay is closest (the mean squared distance from
+/// each placed hit to the nearest hit, capped at 10 cm, over all relations; each stamp takes its
+/// nearest scan, and the odometry moves the relation's ends from the mapped stamps to those scans'),
+/// searched every 10 ms, then every 1 ms, within `search_s` of `start_offset_s`; the rate from the
+/// offsets fitted to each half of the relations. The odometry spans only the fraction of a scan period
+/// between a stamp and its scan, so a lag of its readings behind the laser hardly moves the fit (it
+/// moves FitRelationsClockByOdometry's by the whole lag); no SLAM result enters.
+struct ScanClockFit {
+  double offset_s = 0.0;
+  double rate = 1.0;
+  std::size_t relations = 0;
+  /// Root mean squared overlay distance (cm) at the fitted offset, and the lowest found more than
+  /// 0.1 s away from it.
+  double overlay_rms_cm = 0.0;
+  double next_best_overlay_rms_cm = 0.0;
+  /// The offsets fitted to each half (at its middle relation stamp).
+  double first_half_offset_s = 0.0;
+  double second_half_offset_s = 0.0;
+
+  nlohmann::json ToJson() const;
+};
+
+/// `scans` in time order and the robot's odometry `readings`, stamps on the log's clock. Throws
+/// InputError for fewer than 2 scans or 4 relations, stamps that do not increase, or no offset in the
+/// window that puts a relation on the scans.
+ScanClockFit FitRelationsClockByScans(const Relations& relations, std::span<const LaserScan> scans,
+                                      const Trajectory& readings, double start_offset_s, double search_s = 0.5);
 
 }  // namespace slamsweep::evaluator
