@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <functional>
-#include <tuple>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -204,10 +203,40 @@ OffsetSearch SearchOffset(const std::function<double(double)>& disagreement, dou
   return search;
 }
 
-/// t_log = rate * t + offset through two offsets fitted at two relation stamps.
-std::pair<double, double> LineThrough(double early_t, double early_offset_s, double late_t, double late_offset_s) {
-  const double slope = (late_offset_s - early_offset_s) / (late_t - early_t);
-  return {early_offset_s - slope * early_t, 1.0 + slope};
+/// How badly a set of relations agrees with the log under a clock offset (lower is better).
+using Disagreement = std::function<double(const std::vector<const Relation*>&, double)>;
+
+struct HalvesFit {
+  OffsetSearch whole;
+  double early_offset_s = 0.0;
+  double late_offset_s = 0.0;
+  /// t_log = rate * t + offset, the line through the two halves' offsets at their middle stamps.
+  double offset_s = 0.0;
+  double rate = 1.0;
+};
+
+/// The offset in [low, high] where `disagreement` over all of `sorted` (by t1) is lowest; then each
+/// half's offset within `half_window_s` of it, and the line through the two for the rate.
+HalvesFit FitOverHalves(const std::vector<const Relation*>& sorted, const Disagreement& disagreement, double low_s,
+                        double high_s, double half_window_s) {
+  const auto over = [&disagreement](const std::vector<const Relation*>& subset) {
+    return [&disagreement, &subset](double offset_s) { return disagreement(subset, offset_s); };
+  };
+  HalvesFit fit;
+  fit.whole = SearchOffset(over(sorted), low_s, high_s);
+  const auto half = static_cast<std::ptrdiff_t>(sorted.size() / 2);
+  const std::vector<const Relation*> first(sorted.begin(), sorted.begin() + half);
+  const std::vector<const Relation*> second(sorted.begin() + half, sorted.end());
+  const double low = fit.whole.offset_s - half_window_s;
+  const double high = fit.whole.offset_s + half_window_s;
+  fit.early_offset_s = SearchOffset(over(first), low, high).offset_s;
+  fit.late_offset_s = SearchOffset(over(second), low, high).offset_s;
+  const double early_t = first[first.size() / 2]->t1_s;
+  const double late_t = second[second.size() / 2]->t1_s;
+  const double slope = (fit.late_offset_s - fit.early_offset_s) / (late_t - early_t);
+  fit.offset_s = fit.early_offset_s - slope * early_t;
+  fit.rate = 1.0 + slope;
+  return fit;
 }
 
 }  // namespace
@@ -244,26 +273,20 @@ OdometryClockFit FitRelationsClockByOdometry(const Relations& relations, const T
     throw InputError("relations clock: the relations span more time than the readings; no offset puts them inside");
   }
   const UnwrappedYaw yaw(readings);
-  const auto disagreement = [&yaw](const std::vector<const Relation*>& subset) {
-    return [&yaw, &subset](double offset_s) { return RotationDisagreementDeg(subset, yaw, offset_s); };
+  const Disagreement disagreement = [&yaw](const std::vector<const Relation*>& subset, double offset_s) {
+    return RotationDisagreementDeg(subset, yaw, offset_s);
   };
-  const OffsetSearch whole = SearchOffset(disagreement(chosen), low_s, high_s);
-  // Each half around the whole fit (the drift over a run is far below a second).
-  const std::size_t half = chosen.size() / 2;
-  const std::vector<const Relation*> first(chosen.begin(), chosen.begin() + static_cast<std::ptrdiff_t>(half));
-  const std::vector<const Relation*> second(chosen.begin() + static_cast<std::ptrdiff_t>(half), chosen.end());
-  const OffsetSearch early = SearchOffset(disagreement(first), whole.offset_s - 0.5, whole.offset_s + 0.5);
-  const OffsetSearch late = SearchOffset(disagreement(second), whole.offset_s - 0.5, whole.offset_s + 0.5);
-  const double early_t = first[first.size() / 2]->t1_s;
-  const double late_t = second[second.size() / 2]->t1_s;
+  // Each half within 0.5 s of the whole fit (the drift over a run is far below a second).
+  const HalvesFit halves = FitOverHalves(chosen, disagreement, low_s, high_s, 0.5);
 
   OdometryClockFit fit;
   fit.short_relations = chosen.size();
-  fit.first_half_offset_s = early.offset_s;
-  fit.second_half_offset_s = late.offset_s;
-  std::tie(fit.offset_s, fit.rate) = LineThrough(early_t, early.offset_s, late_t, late.offset_s);
-  fit.rotation_agreement_deg = whole.best;
-  fit.next_best_agreement_deg = whole.next_best;
+  fit.first_half_offset_s = halves.early_offset_s;
+  fit.second_half_offset_s = halves.late_offset_s;
+  fit.offset_s = halves.offset_s;
+  fit.rate = halves.rate;
+  fit.rotation_agreement_deg = halves.whole.best;
+  fit.next_best_agreement_deg = halves.whole.next_best;
   return fit;
 }
 
@@ -356,25 +379,23 @@ ScanClockFit FitRelationsClockByScans(const Relations& relations, std::span<cons
   for (const Relation& relation : relations) all.push_back(&relation);
   std::sort(all.begin(), all.end(), [](const Relation* a, const Relation* b) { return a->t1_s < b->t1_s; });
   const ScanOverlays overlays(scans, odometry);
-  const auto residual = [&overlays](const std::vector<const Relation*>& subset) {
-    return [&overlays, &subset](double offset_s) { return overlays.MeanResidual(subset, offset_s); };
+  const Disagreement residual = [&overlays](const std::vector<const Relation*>& subset, double offset_s) {
+    return overlays.MeanResidual(subset, offset_s);
   };
-  const OffsetSearch whole = SearchOffset(residual(all), start_offset_s - search_s, start_offset_s + search_s);
-  if (!std::isfinite(whole.best)) throw InputError("relations clock: no offset near the start lays a relation on the scans");
-  const std::size_t half = all.size() / 2;
-  const std::vector<const Relation*> first(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(half));
-  const std::vector<const Relation*> second(all.begin() + static_cast<std::ptrdiff_t>(half), all.end());
-  const OffsetSearch early = SearchOffset(residual(first), whole.offset_s - search_s, whole.offset_s + search_s);
-  const OffsetSearch late = SearchOffset(residual(second), whole.offset_s - search_s, whole.offset_s + search_s);
+  const HalvesFit halves =
+      FitOverHalves(all, residual, start_offset_s - search_s, start_offset_s + search_s, search_s);
+  if (!std::isfinite(halves.whole.best)) {
+    throw InputError("relations clock: no offset near the start lays a relation on the scans");
+  }
 
   ScanClockFit fit;
   fit.relations = all.size();
-  fit.first_half_offset_s = early.offset_s;
-  fit.second_half_offset_s = late.offset_s;
-  std::tie(fit.offset_s, fit.rate) =
-      LineThrough(first[first.size() / 2]->t1_s, early.offset_s, second[second.size() / 2]->t1_s, late.offset_s);
-  fit.overlay_rms_cm = 100.0 * std::sqrt(whole.best);
-  fit.next_best_overlay_rms_cm = 100.0 * std::sqrt(whole.next_best);
+  fit.first_half_offset_s = halves.early_offset_s;
+  fit.second_half_offset_s = halves.late_offset_s;
+  fit.offset_s = halves.offset_s;
+  fit.rate = halves.rate;
+  fit.overlay_rms_cm = 100.0 * std::sqrt(halves.whole.best);
+  fit.next_best_overlay_rms_cm = 100.0 * std::sqrt(halves.whole.next_best);
   return fit;
 }
 
