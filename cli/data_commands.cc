@@ -366,12 +366,12 @@ void RegisterRelationsClock(CLI::App& data, const Streams& streams) {
     }
     const ev::RelationsClockFit fit = ev::FitRelationsClock(relation_stamps, odometry.logged_stamps_s);
     const ev::Relations relations = ev::ReadRelations(sources.relations);
-    const ev::OdometryClockFit by_odometry = ev::FitRelationsClockByOdometry(relations, odometry.readings);
+    const ev::SearchedClockFit by_odometry = ev::FitRelationsClockByOdometry(relations, odometry.readings);
     ev::CarmenSequenceOptions scan_options;
     scan_options.odometry = ev::OdometryMode::kRecorded;
     const ev::Sequence sequence = ev::CarmenLogToSequence(log, sources.log, scan_options);
     const double odometry_middle_s = 0.5 * (by_odometry.first_half_offset_s + by_odometry.second_half_offset_s);
-    const ev::ScanClockFit by_scans = ev::FitRelationsClockByScans(relations, sequence.scans, sequence.odometry_readings, odometry_middle_s);
+    const ev::SearchedClockFit by_scans = ev::FitRelationsClockByScans(relations, sequence.scans, sequence.odometry_readings, odometry_middle_s);
     nlohmann::json out = fit.ToJson();
     out["by_odometry"] = by_odometry.ToJson();
     out["by_scans"] = by_scans.ToJson();
@@ -393,14 +393,14 @@ void RegisterRelationsClock(CLI::App& data, const Streams& streams) {
         "from the recorded odometry (relations' rotations against the odometry's; inherits any lag of the odometry):\n"
         "relations_rate: {:.12g}\nrelations_offset_s: {:.12g}\n{} short relations turn as the odometry does within "
         "{:.4f} deg on average (the best offset more than 0.1 s away: {:.4f} deg); halves fitted at {:.4f} and {:.4f} s\n",
-        by_odometry.rate, by_odometry.offset_s, by_odometry.short_relations, by_odometry.rotation_agreement_deg,
-        by_odometry.next_best_agreement_deg, by_odometry.first_half_offset_s, by_odometry.second_half_offset_s);
+        by_odometry.rate, by_odometry.offset_s, by_odometry.relations, by_odometry.disagreement,
+        by_odometry.next_best_disagreement, by_odometry.first_half_offset_s, by_odometry.second_half_offset_s);
     streams.out << fmt::format(
         "from the laser scans (each relation laid over the scans at its stamps, searched within 0.5 s of the "
         "odometry's map):\nrelations_rate: {:.12g}\nrelations_offset_s: {:.12g}\n{} relations lay their scans over "
         "each other within {:.3f} cm rms (the best offset more than 0.1 s away: {:.3f} cm); halves fitted at {:.4f} "
         "and {:.4f} s\n",
-        by_scans.rate, by_scans.offset_s, by_scans.relations, by_scans.overlay_rms_cm, by_scans.next_best_overlay_rms_cm,
+        by_scans.rate, by_scans.offset_s, by_scans.relations, by_scans.disagreement, by_scans.next_best_disagreement,
         by_scans.first_half_offset_s, by_scans.second_half_offset_s);
   });
 }

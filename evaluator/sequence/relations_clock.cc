@@ -213,6 +213,20 @@ struct HalvesFit {
   /// t_log = rate * t + offset, the line through the two halves' offsets at their middle stamps.
   double offset_s = 0.0;
   double rate = 1.0;
+
+  /// The fit over `relations` relations, its disagreements shown in `unit` by `shown`.
+  SearchedClockFit Fit(std::size_t relations, const char* unit, const std::function<double(double)>& shown) const {
+    SearchedClockFit fit;
+    fit.offset_s = offset_s;
+    fit.rate = rate;
+    fit.relations = relations;
+    fit.disagreement = shown(whole.best);
+    fit.next_best_disagreement = shown(whole.next_best);
+    fit.unit = unit;
+    fit.first_half_offset_s = early_offset_s;
+    fit.second_half_offset_s = late_offset_s;
+    return fit;
+  }
 };
 
 /// The offset in [low, high] where `disagreement` over all of `sorted` (by t1) is lowest; then each
@@ -241,17 +255,18 @@ HalvesFit FitOverHalves(const std::vector<const Relation*>& sorted, const Disagr
 
 }  // namespace
 
-nlohmann::json OdometryClockFit::ToJson() const {
+nlohmann::json SearchedClockFit::ToJson() const {
   return nlohmann::json{{"offset_s", offset_s},
                         {"rate", rate},
-                        {"short_relations", short_relations},
-                        {"rotation_agreement_deg", rotation_agreement_deg},
-                        {"next_best_agreement_deg", next_best_agreement_deg},
+                        {"relations", relations},
+                        {"disagreement", disagreement},
+                        {"next_best_disagreement", next_best_disagreement},
+                        {"unit", unit},
                         {"first_half_offset_s", first_half_offset_s},
                         {"second_half_offset_s", second_half_offset_s}};
 }
 
-OdometryClockFit FitRelationsClockByOdometry(const Relations& relations, const Trajectory& readings) {
+SearchedClockFit FitRelationsClockByOdometry(const Relations& relations, const Trajectory& readings) {
   if (readings.size() < 2 || relations.empty()) throw InputError("relations clock: too few readings or relations");
   std::vector<double> spans;
   for (const Relation& relation : relations) spans.push_back(std::abs(relation.t2_s - relation.t1_s));
@@ -279,15 +294,7 @@ OdometryClockFit FitRelationsClockByOdometry(const Relations& relations, const T
   // Each half within 0.5 s of the whole fit (the drift over a run is far below a second).
   const HalvesFit halves = FitOverHalves(chosen, disagreement, low_s, high_s, 0.5);
 
-  OdometryClockFit fit;
-  fit.short_relations = chosen.size();
-  fit.first_half_offset_s = halves.early_offset_s;
-  fit.second_half_offset_s = halves.late_offset_s;
-  fit.offset_s = halves.offset_s;
-  fit.rate = halves.rate;
-  fit.rotation_agreement_deg = halves.whole.best;
-  fit.next_best_agreement_deg = halves.whole.next_best;
-  return fit;
+  return halves.Fit(chosen.size(), "deg", [](double mean_abs_deg) { return mean_abs_deg; });
 }
 
 namespace {
@@ -359,18 +366,8 @@ class ScanOverlays {
 
 }  // namespace
 
-nlohmann::json ScanClockFit::ToJson() const {
-  return nlohmann::json{{"offset_s", offset_s},
-                        {"rate", rate},
-                        {"relations", relations},
-                        {"overlay_rms_cm", overlay_rms_cm},
-                        {"next_best_overlay_rms_cm", next_best_overlay_rms_cm},
-                        {"first_half_offset_s", first_half_offset_s},
-                        {"second_half_offset_s", second_half_offset_s}};
-}
-
-ScanClockFit FitRelationsClockByScans(const Relations& relations, std::span<const LaserScan> scans,
-                                      const Trajectory& odometry, double start_offset_s, double search_s) {
+SearchedClockFit FitRelationsClockByScans(const Relations& relations, std::span<const LaserScan> scans,
+                                          const Trajectory& odometry, double start_offset_s, double search_s) {
   if (scans.size() < 2 || relations.size() < 4) throw InputError("relations clock: too few scans or relations");
   for (std::size_t i = 1; i < scans.size(); ++i) {
     if (!(scans[i].stamp_s > scans[i - 1].stamp_s)) throw InputError("relations clock: scan stamps must increase");
@@ -388,15 +385,7 @@ ScanClockFit FitRelationsClockByScans(const Relations& relations, std::span<cons
     throw InputError("relations clock: no offset near the start lays a relation on the scans");
   }
 
-  ScanClockFit fit;
-  fit.relations = all.size();
-  fit.first_half_offset_s = halves.early_offset_s;
-  fit.second_half_offset_s = halves.late_offset_s;
-  fit.offset_s = halves.offset_s;
-  fit.rate = halves.rate;
-  fit.overlay_rms_cm = 100.0 * std::sqrt(halves.whole.best);
-  fit.next_best_overlay_rms_cm = 100.0 * std::sqrt(halves.whole.next_best);
-  return fit;
+  return halves.Fit(all.size(), "cm rms", [](double mean_square_m2) { return 100.0 * std::sqrt(mean_square_m2); });
 }
 
 }  // namespace slamsweep::evaluator

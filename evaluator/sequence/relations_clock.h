@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -53,50 +54,20 @@ struct RelationsClockFitOptions {
 RelationsClockFit FitRelationsClock(std::span<const double> relation_stamps_s, std::span<const double> reading_stamps_s,
                                     const RelationsClockFitOptions& options = {});
 
-/// The same map fitted from the robot's own measurements instead, for logs whose reading stamps do
-/// not carry the laser's clock (fr079: the relation stamps tick at a regular 0.85 s, the readings
-/// jitter by up to 0.1 s, so stamps alone fit equally well at every multiple of the laser period):
-/// the offset under which the rotations of the short relations (spans up to the median span) agree
-/// best with the rotation the recorded odometry measured over the same interval (mean absolute
-/// difference), searched every 10 ms, then every 1 ms, over the offsets that put the relations
-/// inside the readings' span; the rate from the offsets fitted to the first and second half of the
-/// relations. The odometry is robot data, the same for every program, and no SLAM result enters.
-struct OdometryClockFit {
+/// A map found by searching the offset at which the relations disagree least with a measurement
+/// of the robot's (every 10 ms, then every 1 ms), the rate from the offsets fitted to the first and
+/// second half of the relations. The measurements are robot data, the same for every program; no SLAM
+/// result enters.
+struct SearchedClockFit {
   double offset_s = 0.0;
   double rate = 1.0;
-  std::size_t short_relations = 0;
-  /// Mean absolute rotation difference (deg) at the fitted offset, and the lowest one found more than
-  /// 0.1 s away from it (the margin by which the fit is unambiguous).
-  double rotation_agreement_deg = 0.0;
-  double next_best_agreement_deg = 0.0;
-  /// The offsets fitted to each half (at its middle relation stamp).
-  double first_half_offset_s = 0.0;
-  double second_half_offset_s = 0.0;
-
-  nlohmann::json ToJson() const;
-};
-
-/// Throws InputError when the readings or the short relations are too few, or no offset puts the
-/// relations inside the readings.
-OdometryClockFit FitRelationsClockByOdometry(const Relations& relations, const Trajectory& readings);
-
-/// The same map fitted from the laser alone. Kuemmerle et al. made the relations by matching these
-/// very scans, so at the right map each relation lays the scan at its second stamp onto the scan at
-/// its first. The fit is the offset where that overlay is closest (the mean squared distance from
-/// each placed hit to the nearest hit, capped at 10 cm, over all relations; each stamp takes its
-/// nearest scan, and the odometry moves the relation's ends from the mapped stamps to those scans'),
-/// searched every 10 ms, then every 1 ms, within `search_s` of `start_offset_s`; the rate from the
-/// offsets fitted to each half of the relations. The odometry spans only the fraction of a scan period
-/// between a stamp and its scan, so a lag of its readings behind the laser hardly moves the fit (it
-/// moves FitRelationsClockByOdometry's by the whole lag); no SLAM result enters.
-struct ScanClockFit {
-  double offset_s = 0.0;
-  double rate = 1.0;
+  /// The relations searched over.
   std::size_t relations = 0;
-  /// Root mean squared overlay distance (cm) at the fitted offset, and the lowest found more than
-  /// 0.1 s away from it.
-  double overlay_rms_cm = 0.0;
-  double next_best_overlay_rms_cm = 0.0;
+  /// The disagreement at the fitted offset, and the lowest one found more than 0.1 s away from it
+  /// (the margin by which the fit is unambiguous), in `unit`.
+  double disagreement = 0.0;
+  double next_best_disagreement = 0.0;
+  std::string unit;
   /// The offsets fitted to each half (at its middle relation stamp).
   double first_half_offset_s = 0.0;
   double second_half_offset_s = 0.0;
@@ -104,10 +75,26 @@ struct ScanClockFit {
   nlohmann::json ToJson() const;
 };
 
-/// `scans` in time order and the robot's odometry `readings`, stamps on the log's clock. Throws
-/// InputError for fewer than 2 scans or 4 relations, stamps that do not increase, or no offset in the
-/// window that puts a relation on the scans.
-ScanClockFit FitRelationsClockByScans(const Relations& relations, std::span<const LaserScan> scans,
-                                      const Trajectory& readings, double start_offset_s, double search_s = 0.5);
+/// The map from the recorded odometry, for logs whose reading stamps do not carry the laser's clock
+/// (fr079: the relation stamps tick at a regular 0.85 s, the readings jitter by up to 0.1 s, so stamps
+/// alone fit equally well at every multiple of the laser period): the offset under which the rotations
+/// of the short relations (spans up to the median span) agree best with the rotation the odometry
+/// measured over the same interval (mean absolute difference, deg), over the offsets that put the
+/// relations inside the readings' span. A lag of the readings behind the laser moves it by the whole
+/// lag. Throws InputError when the readings or the short relations are too few, or no offset puts the
+/// relations inside the readings.
+SearchedClockFit FitRelationsClockByOdometry(const Relations& relations, const Trajectory& readings);
+
+/// The map from the laser. Kuemmerle et al. made the relations by matching these very scans, so at the
+/// right map each relation lays the scan at its second stamp onto the scan at its first. The fit is
+/// the offset where that overlay is closest (root mean squared distance, cm, from each placed hit to
+/// the nearest hit, capped at 10 cm, over all relations; each stamp takes its nearest scan, and the
+/// odometry `readings` move the relation's ends from the mapped stamps to those scans'), within
+/// `search_s` of `start_offset_s`. The odometry spans only the fraction of a scan period between a
+/// stamp and its scan, so a lag of its readings hardly moves this fit. `scans` in time order, stamps
+/// on the log's clock. Throws InputError for fewer than 2 scans or 4 relations, stamps that do not
+/// increase, or no offset in the window that puts a relation on the scans.
+SearchedClockFit FitRelationsClockByScans(const Relations& relations, std::span<const LaserScan> scans,
+                                          const Trajectory& readings, double start_offset_s, double search_s = 0.5);
 
 }  // namespace slamsweep::evaluator

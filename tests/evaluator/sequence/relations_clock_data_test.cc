@@ -40,9 +40,9 @@ TEST(RelationsClockDataTest, OnIntelTheScansFitLandsOnTheExactStampFit) {
   const CatalogEntry& entry = ShippedEntry("intel");
   const double middle = MiddleStamp(relations);
   const double stamps = OffsetAt(entry.relations_offset_s, entry.relations_rate, middle);
-  const ScanClockFit fit = FitRelationsClockByScans(relations, run.scans, run.odometry_readings, stamps + 0.3);
+  const SearchedClockFit fit = FitRelationsClockByScans(relations, run.scans, run.odometry_readings, stamps + 0.3);
   EXPECT_NEAR(OffsetAt(fit.offset_s, fit.rate, middle), stamps, 0.005);
-  EXPECT_LT(fit.overlay_rms_cm, fit.next_best_overlay_rms_cm);
+  EXPECT_LT(fit.disagreement, fit.next_best_disagreement);
 }
 
 // fr079's reading stamps jitter, so its map comes from the scans; the odometry's turns put it 0.13 s
@@ -55,13 +55,13 @@ TEST(RelationsClockDataTest, Fr079TakesTheScansFitNotTheLaggingOdometrysFit) {
   const CatalogEntry& entry = ShippedEntry("fr079");
   const double middle = MiddleStamp(relations);
   const double catalog = OffsetAt(entry.relations_offset_s, entry.relations_rate, middle);
-  const OdometryClockFit by_odometry = FitRelationsClockByOdometry(relations, run.odometry_readings);
+  const SearchedClockFit by_odometry = FitRelationsClockByOdometry(relations, run.odometry_readings);
   const double odometry = OffsetAt(by_odometry.offset_s, by_odometry.rate, middle);
-  const ScanClockFit by_scans = FitRelationsClockByScans(relations, run.scans, run.odometry_readings, odometry);
+  const SearchedClockFit by_scans = FitRelationsClockByScans(relations, run.scans, run.odometry_readings, odometry);
   EXPECT_NEAR(OffsetAt(by_scans.offset_s, by_scans.rate, middle), catalog, 0.002);
   EXPECT_NEAR(by_scans.rate, entry.relations_rate, 1e-6);
   EXPECT_GT(catalog - odometry, 0.1);
-  EXPECT_LT(by_scans.overlay_rms_cm, by_scans.next_best_overlay_rms_cm);
+  EXPECT_LT(by_scans.disagreement, by_scans.next_best_disagreement);
 }
 
 }  // namespace

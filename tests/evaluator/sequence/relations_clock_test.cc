@@ -57,9 +57,9 @@ TEST(RelationsClockByScansTest, FindsTheMapThatLaysEachRelationOnItsScans) {
   const double middle = drive.relations[drive.relations.size() / 2].t1_s;
   const double truth = MappedOffsetAt(kOffsetS, kRate, middle);
   // Started 0.3 s off, as an odometry fit of a lagging stream would start it.
-  const ScanClockFit fit = FitRelationsClockByScans(drive.relations, drive.scans, drive.readings, truth + 0.3);
+  const SearchedClockFit fit = FitRelationsClockByScans(drive.relations, drive.scans, drive.readings, truth + 0.3);
   EXPECT_NEAR(MappedOffsetAt(fit.offset_s, fit.rate, middle), truth, 0.025);
-  EXPECT_LT(fit.overlay_rms_cm, fit.next_best_overlay_rms_cm);
+  EXPECT_LT(fit.disagreement, fit.next_best_disagreement);
   EXPECT_EQ(fit.relations, drive.relations.size());
 }
 
@@ -67,9 +67,9 @@ TEST(RelationsClockByScansTest, OdometryThatLagsTheLaserMovesTheOdometryFitButNo
   const Drive drive = WeavingDrive(0.15);
   const double middle = drive.relations[drive.relations.size() / 2].t1_s;
   const double truth = MappedOffsetAt(kOffsetS, kRate, middle);
-  const OdometryClockFit by_odometry = FitRelationsClockByOdometry(drive.relations, drive.readings);
+  const SearchedClockFit by_odometry = FitRelationsClockByOdometry(drive.relations, drive.readings);
   EXPECT_NEAR(MappedOffsetAt(by_odometry.offset_s, by_odometry.rate, middle), truth + 0.15, 0.01);
-  const ScanClockFit by_scans = FitRelationsClockByScans(drive.relations, drive.scans, drive.readings, truth + 0.15);
+  const SearchedClockFit by_scans = FitRelationsClockByScans(drive.relations, drive.scans, drive.readings, truth + 0.15);
   EXPECT_NEAR(MappedOffsetAt(by_scans.offset_s, by_scans.rate, middle), truth, 0.025);
 }
 
