@@ -19,29 +19,42 @@ const CatalogEntry& ShippedEntry(const std::string& name) {
   return FindCatalogEntry(catalog, name);
 }
 
-Sequence RecordedRun(const std::filesystem::path& log) {
-  CarmenSequenceOptions options;
-  options.odometry = OdometryMode::kRecorded;
-  return ReadCarmenSequence(log, options);
-}
+/// A catalog log read with its recorded odometry, its relations on their own clock, and the catalog's
+/// map of that clock as the offset at the relations' middle stamp.
+struct ClockCase {
+  Relations relations;
+  Sequence run;
+  const CatalogEntry* entry = nullptr;
+  double middle_s = 0.0;
+  double catalog_offset_s = 0.0;
+};
 
 /// The offset a map (t_log = rate * t + offset) applies at relation time `t_s`.
 double OffsetAt(double offset_s, double rate, double t_s) { return offset_s + (rate - 1.0) * t_s; }
 
-double MiddleStamp(const Relations& relations) { return 0.5 * (relations.front().t1_s + relations.back().t1_s); }
+ClockCase LoadClockCase(const std::string& name, const std::filesystem::path& log,
+                        const std::filesystem::path& relations_path) {
+  ClockCase loaded;
+  loaded.relations = ReadRelations(relations_path);
+  CarmenSequenceOptions options;
+  options.odometry = OdometryMode::kRecorded;
+  loaded.run = ReadCarmenSequence(log, options);
+  loaded.entry = &ShippedEntry(name);
+  loaded.middle_s = 0.5 * (loaded.relations.front().t1_s + loaded.relations.back().t1_s);
+  loaded.catalog_offset_s = OffsetAt(loaded.entry->relations_offset_s, loaded.entry->relations_rate, loaded.middle_s);
+  return loaded;
+}
 
 // intel's readings carry the laser's clock (every relation stamp lies within 10 ms of one), so its
 // stamp fit is exact: the scans' fit, which never reads a stamp pairing, must land on it.
 TEST(RelationsClockDataTest, OnIntelTheScansFitLandsOnTheExactStampFit) {
   SLAMSWEEP_REQUIRE_SHARED(relations_path, "datasets/intel/intel.relations");
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
-  const Relations relations = ReadRelations(relations_path);
-  const Sequence run = RecordedRun(log);
-  const CatalogEntry& entry = ShippedEntry("intel");
-  const double middle = MiddleStamp(relations);
-  const double stamps = OffsetAt(entry.relations_offset_s, entry.relations_rate, middle);
-  const SearchedClockFit fit = FitRelationsClockByScans(relations, run.scans, run.odometry_readings, stamps + 0.3);
-  EXPECT_NEAR(OffsetAt(fit.offset_s, fit.rate, middle), stamps, 0.005);
+  const ClockCase intel = LoadClockCase("intel", log, relations_path);
+  const double stamps = intel.catalog_offset_s;
+  const SearchedClockFit fit =
+      FitRelationsClockByScans(intel.relations, intel.run.scans, intel.run.odometry_readings, stamps + 0.3);
+  EXPECT_NEAR(OffsetAt(fit.offset_s, fit.rate, intel.middle_s), stamps, 0.005);
   EXPECT_LT(fit.disagreement, fit.next_best_disagreement);
 }
 
@@ -50,16 +63,14 @@ TEST(RelationsClockDataTest, OnIntelTheScansFitLandsOnTheExactStampFit) {
 TEST(RelationsClockDataTest, Fr079TakesTheScansFitNotTheLaggingOdometrysFit) {
   SLAMSWEEP_REQUIRE_SHARED(relations_path, "datasets/fr079/fr079.relations");
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/fr079/freiburg-079-corrected.log.gz");
-  const Relations relations = ReadRelations(relations_path);
-  const Sequence run = RecordedRun(log);
-  const CatalogEntry& entry = ShippedEntry("fr079");
-  const double middle = MiddleStamp(relations);
-  const double catalog = OffsetAt(entry.relations_offset_s, entry.relations_rate, middle);
-  const SearchedClockFit by_odometry = FitRelationsClockByOdometry(relations, run.odometry_readings);
-  const double odometry = OffsetAt(by_odometry.offset_s, by_odometry.rate, middle);
-  const SearchedClockFit by_scans = FitRelationsClockByScans(relations, run.scans, run.odometry_readings, odometry);
-  EXPECT_NEAR(OffsetAt(by_scans.offset_s, by_scans.rate, middle), catalog, 0.002);
-  EXPECT_NEAR(by_scans.rate, entry.relations_rate, 1e-6);
+  const ClockCase fr079 = LoadClockCase("fr079", log, relations_path);
+  const double catalog = fr079.catalog_offset_s;
+  const SearchedClockFit by_odometry = FitRelationsClockByOdometry(fr079.relations, fr079.run.odometry_readings);
+  const double odometry = OffsetAt(by_odometry.offset_s, by_odometry.rate, fr079.middle_s);
+  const SearchedClockFit by_scans =
+      FitRelationsClockByScans(fr079.relations, fr079.run.scans, fr079.run.odometry_readings, odometry);
+  EXPECT_NEAR(OffsetAt(by_scans.offset_s, by_scans.rate, fr079.middle_s), catalog, 0.002);
+  EXPECT_NEAR(by_scans.rate, fr079.entry->relations_rate, 1e-6);
   EXPECT_GT(catalog - odometry, 0.1);
   EXPECT_LT(by_scans.disagreement, by_scans.next_best_disagreement);
 }
