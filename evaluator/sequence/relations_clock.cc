@@ -319,9 +319,6 @@ class ScanOverlays {
     }
   }
 
-  double FirstStampS() const { return stamps_.front(); }
-  double LastStampS() const { return stamps_.back(); }
-
   /// Mean squared distance (m^2, capped) of the scan nearest each relation's mapped t2, placed over
   /// the scan nearest its mapped t1 by the relation, with the odometry's motion between each scan and
   /// the mapped stamp beside it (a fraction of a scan period, so a lag of the odometry hardly enters);
