@@ -8,6 +8,7 @@
 #include "evaluator/sequence/carmen_sequence.h"
 #include "evaluator/sequence/catalog.h"
 #include "evaluator/sequence/relations_clock.h"
+#include "evaluator/trajectory/relations_metric.h"
 #include "tests/support/shared_data.h"
 
 namespace slamsweep::evaluator {
@@ -58,6 +59,16 @@ TEST(RelationsClockDataTest, OnIntelTheScansFitLandsOnTheExactStampFit) {
   EXPECT_LT(fit.disagreement, fit.next_best_disagreement);
 }
 
+/// The relations error (m) of `path` with the relations mapped by t_log = rate * t + offset.
+double RelationsErrorM(const Trajectory& path, const Relations& relations, double offset_s, double rate) {
+  Relations mapped = relations;
+  for (Relation& relation : mapped) {
+    relation.t1_s = rate * relation.t1_s + offset_s;
+    relation.t2_s = rate * relation.t2_s + offset_s;
+  }
+  return RelationsMetric(RelationsOptions{}).Compute(path, mapped).translation_abs_mean_m;
+}
+
 // fr079's reading stamps jitter, so its map comes from the scans; the odometry's turns put it 0.13 s
 // early (the odometry lags the laser), which the catalog must not take.
 TEST(RelationsClockDataTest, Fr079TakesTheScansFitNotTheLaggingOdometrysFit) {
@@ -73,6 +84,12 @@ TEST(RelationsClockDataTest, Fr079TakesTheScansFitNotTheLaggingOdometrysFit) {
   EXPECT_NEAR(by_scans.rate, fr079.entry->relations_rate, 1e-6);
   EXPECT_GT(catalog - odometry, 0.1);
   EXPECT_LT(by_scans.disagreement, by_scans.next_best_disagreement);
+  // A check from outside the fit: the corrected log, which no fit reads, agrees with the relations
+  // better under the catalog's map than under the odometry's (measured: 0.059 against 0.093 m).
+  ASSERT_TRUE(fr079.run.reference.has_value());
+  EXPECT_LT(RelationsErrorM(*fr079.run.reference, fr079.relations, fr079.entry->relations_offset_s,
+                            fr079.entry->relations_rate),
+            0.8 * RelationsErrorM(*fr079.run.reference, fr079.relations, by_odometry.offset_s, by_odometry.rate));
 }
 
 }  // namespace
