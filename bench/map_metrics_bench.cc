@@ -264,7 +264,8 @@ int PeakRss(const OccupancyGrid& (*map)(), const char* name) {
   const double cpu_before_s = CpuSeconds();
   const auto wall_before = std::chrono::steady_clock::now();
   const PaperMetrics metrics = ComputePaperMetrics(grid);
-  const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_before).count();
+  const double wall_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_before).count();
   const double cpu_ms = (CpuSeconds() - cpu_before_s) * 1e3;
   const long faults = MinorPageFaults() - faults_before;
   const std::int64_t hwm_kb = StatusKilobytes("VmHWM");
@@ -273,8 +274,8 @@ int PeakRss(const OccupancyGrid& (*map)(), const char* name) {
       "counted heap %.1f MB; first call: %.1f ms wall, %.1f ms CPU, %ld page faults\n",
       name, static_cast<long long>(metrics.corners.corners), static_cast<long long>(metrics.enclosed.enclosed_areas),
       grid.cells.size() * 4.0 / 1e6, (hwm_kb - rss_before_kb) / 1e3,
-      reset ? "" : " (VmHWM could not be reset: includes the input)", (g_heap_peak.load() - heap_before) / 1e6, wall_ms, cpu_ms,
-      faults);
+      reset ? "" : " (VmHWM could not be reset: includes the input)", (g_heap_peak.load() - heap_before) / 1e6, wall_ms,
+      cpu_ms, faults);
   return 0;
 }
 

@@ -63,7 +63,8 @@ const fs::path& SweepDir(int runs) {
     fs::remove_all(path);
     std::vector<FixtureRun> fixture;
     for (int i = 0; i < runs; ++i) {
-      FixtureRun run = MakeRun("algorithm" + std::to_string(i % 10), "sequence" + std::to_string((i / 10) % 10), i / 100);
+      FixtureRun run =
+          MakeRun("algorithm" + std::to_string(i % 10), "sequence" + std::to_string((i / 10) % 10), i / 100);
       run.ok = i % 17 != 0;
       run.with_reference = (i / 10) % 10 < 7;
       if (run.with_reference) run.ape_rmse_m = 0.1 + 0.001 * (i % 37);
@@ -85,14 +86,15 @@ void BM_Report(benchmark::State& state) {
   const fs::path& sweep = SweepDir(runs);
   std::unique_ptr<TimedArtwork> artwork;
   if (images) {
-    if (auto standard = slamsweep::report::MakeStandardArtwork()) artwork = std::make_unique<TimedArtwork>(std::move(standard));
+    if (auto standard = slamsweep::report::MakeStandardArtwork())
+      artwork = std::make_unique<TimedArtwork>(std::move(standard));
   }
   slamsweep::report::ReportOptions options;
   options.artwork = artwork.get();
   options.jobs = 2;
   for (auto _ : state) {
-    const auto summary = slamsweep::report::WriteReport(sweep, sweep.parent_path() / (sweep.filename().string() + "_out"),
-                                                        options);
+    const auto summary =
+        slamsweep::report::WriteReport(sweep, sweep.parent_path() / (sweep.filename().string() + "_out"), options);
     benchmark::DoNotOptimize(summary.pages);
     state.counters["images"] = static_cast<double>(summary.images);
     state.counters["images_missing"] = static_cast<double>(summary.images_missing);

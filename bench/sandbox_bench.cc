@@ -1,8 +1,9 @@
 // What the sandbox adds to every run (orchestrator/sandbox): RunProcess of /bin/true plain and in a
 // sandbox built as the worker builds it (the system folders, the program's file, input/ read-only,
 // raw/ writable, limits, no network). The difference is the sandbox's start-up cost per run (goal:
-// under 10 ms), with a /proc of its own and without (as in a container whose /proc Docker masks). "cpu_ms" is the user + system time of the child and everything it waited for
-// (bubblewrap, the sandbox's process 1, /bin/true), which a loaded machine does not inflate.
+// under 10 ms), with a /proc of its own and without (as in a container whose /proc Docker masks). "cpu_ms" is the user
+// + system time of the child and everything it waited for (bubblewrap, the sandbox's process 1, /bin/true), which a
+// loaded machine does not inflate.
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 

@@ -38,7 +38,8 @@ static void BM_RunsSummaryJunit(benchmark::State& state) {
   for (int i = 0; i < state.range(0); ++i) {
     std::string id = "run-";
     id += std::to_string(i);
-    store.RecordRun(1, testing::MakeSpec(id, "a", std::string("s").append(std::to_string(i % 10))), testing::MakeOkResult(id), std::string("runs/").append(id));
+    store.RecordRun(1, testing::MakeSpec(id, "a", std::string("s").append(std::to_string(i % 10))),
+                    testing::MakeOkResult(id), std::string("runs/").append(id));
   }
   for (auto _ : state) {
     const auto runs = store.Runs();

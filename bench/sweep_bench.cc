@@ -15,7 +15,8 @@ namespace slamsweep::orchestrator {
 namespace {
 
 std::filesystem::path MakeScratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("slamsweep_bench_" + name + "_" + std::to_string(getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("slamsweep_bench_" + name + "_" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

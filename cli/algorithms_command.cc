@@ -14,9 +14,14 @@ namespace {
 nlohmann::json ToJson(const orchestrator::AlgorithmInfo& info) {
   nlohmann::json parameters = nlohmann::json::object();
   for (const auto& [key, value] : info.parameters) parameters[key] = value;
-  return {{"adapter", info.adapter}, {"title", info.title},     {"installed", info.installed},
-          {"status", info.status},   {"license", info.license}, {"seeding", info.seeding},
-          {"parameters", parameters}, {"parameter_note", info.parameter_note},
+  return {{"adapter", info.adapter},
+          {"title", info.title},
+          {"installed", info.installed},
+          {"status", info.status},
+          {"license", info.license},
+          {"seeding", info.seeding},
+          {"parameters", parameters},
+          {"parameter_note", info.parameter_note},
           {"defaults_note", info.defaults_note}};
 }
 

@@ -77,10 +77,11 @@ void AddSourceOptions(CLI::App& command, SourceOptions& options) {
   command.add_option("--odometry-topic", options.read.odometry_topic, "ROS bag: the nav_msgs/Odometry topic");
   command.add_option("--reference-topic", options.read.reference_topic,
                      "ROS bag: a nav_msgs/Odometry topic with ground truth");
-  command.add_option("--odometry", options.odometry,
-                     "recorded | reference: the robot's odometry rebuilt from a corrected log's ODOM stream (an error "
-                     "where there is none), or the logged odometry, which in a corrected log is the reference "
-                     "(default: recorded where the log has the stream)")
+  command
+      .add_option("--odometry", options.odometry,
+                  "recorded | reference: the robot's odometry rebuilt from a corrected log's ODOM stream (an error "
+                  "where there is none), or the logged odometry, which in a corrected log is the reference "
+                  "(default: recorded where the log has the stream)")
       ->check(CLI::IsMember({"recorded", "reference"}));
 }
 
@@ -101,8 +102,7 @@ nlohmann::json InfoJson(const ev::Sequence& sequence) {
   } else {
     info["beams"] = std::vector<std::size_t>(beam_counts.begin(), beam_counts.end());
   }
-  info["duration_s"] =
-      sequence.scans.empty() ? 0.0 : sequence.scans.back().stamp_s - sequence.scans.front().stamp_s;
+  info["duration_s"] = sequence.scans.empty() ? 0.0 : sequence.scans.back().stamp_s - sequence.scans.front().stamp_s;
   info["has_reference"] = sequence.reference.has_value();
   // Recorded odometry: what the robot measured, not the reference (a corrected log read with its
   // logged odometry is not); the readings are the robot's whole stream, or one per scan.
@@ -110,7 +110,8 @@ nlohmann::json InfoJson(const ev::Sequence& sequence) {
   info["odometry"] = recorded ? "recorded" : "reference";
   info["recorded_odometry"] = recorded;
   info["recorded_odometry_readings"] =
-      !recorded ? 0 : (sequence.odometry_readings.empty() ? sequence.odometry.size() : sequence.odometry_readings.size());
+      !recorded ? 0
+                : (sequence.odometry_readings.empty() ? sequence.odometry.size() : sequence.odometry_readings.size());
   info["relations"] = sequence.relations ? sequence.relations->size() : 0;
   info["warnings"] = sequence.warnings;
   info["provenance"] = {{"source", sequence.provenance.source},
@@ -161,7 +162,8 @@ void RegisterConvert(CLI::App& data, const Streams& streams) {
   command->add_option("--drift", options->drift_rad_per_m, "systematic heading drift (rad per metre travelled)");
   command->add_option("--range-noise", options->range_noise,
                       "sigma_m[,dropout_probability[,short_reading_probability]]");
-  command->add_option("--seed", options->seed, "noise seed (odometry: DeriveSeed(seed, 0), ranges: DeriveSeed(seed, 1))");
+  command->add_option("--seed", options->seed,
+                      "noise seed (odometry: DeriveSeed(seed, 0), ranges: DeriveSeed(seed, 1))");
   command->add_option("--reference-out", options->reference_out,
                       "also write the reference trajectory (TUM) here; keep it away from the SLAM program");
   command->callback([options, streams] {
@@ -253,7 +255,8 @@ void RegisterMap(CLI::App& data, const Streams& streams) {
     ev::WriteMapServer(map.grid, options->output);
     streams.out << "wrote " << options->output << " (" << map.grid.width << " x " << map.grid.height << " cells, "
                 << map.scans_used << " scans";
-    if (map.scans_outside_trajectory > 0) streams.out << ", " << map.scans_outside_trajectory << " outside the reference";
+    if (map.scans_outside_trajectory > 0)
+      streams.out << ", " << map.scans_outside_trajectory << " outside the reference";
     streams.out << ")\n";
   });
 }
@@ -272,8 +275,7 @@ void RegisterSimulate(CLI::App& data, const Streams& streams) {
     std::optional<std::size_t> scans;
   };
   auto options = std::make_shared<Options>();
-  CLI::App* command =
-      data.add_subcommand("simulate", "generate a floor plan and a sequence with exact ground truth");
+  CLI::App* command = data.add_subcommand("simulate", "generate a floor plan and a sequence with exact ground truth");
   command->add_option("-o,--output", options->output_dir, "output folder (created)")->required();
   command->add_option("--seed", options->seed, "noise seed (range and odometry noise)");
   command->add_option("--floor-seed", options->floor_seed, "floor plan seed (the layout)");
@@ -331,7 +333,8 @@ ClockSources ResolveClockSources(const std::string& source, const std::string& c
       sources.relations = ev::ResolveCatalogPath(entry.relations_path, variables);
     }
   }
-  if (sources.relations.empty()) throw ev::InputError(source + ": --relations: no relations file given or in the catalog");
+  if (sources.relations.empty())
+    throw ev::InputError(source + ": --relations: no relations file given or in the catalog");
   return sources;
 }
 
@@ -371,7 +374,8 @@ void RegisterRelationsClock(CLI::App& data, const Streams& streams) {
     scan_options.odometry = ev::OdometryMode::kRecorded;
     const ev::Sequence sequence = ev::CarmenLogToSequence(log, sources.log, scan_options);
     const double odometry_middle_s = 0.5 * (by_odometry.first_half_offset_s + by_odometry.second_half_offset_s);
-    const ev::SearchedClockFit by_scans = ev::FitRelationsClockByScans(relations, sequence.scans, sequence.odometry_readings, odometry_middle_s);
+    const ev::SearchedClockFit by_scans =
+        ev::FitRelationsClockByScans(relations, sequence.scans, sequence.odometry_readings, odometry_middle_s);
     nlohmann::json out = fit.ToJson();
     out["by_odometry"] = by_odometry.ToJson();
     out["by_scans"] = by_scans.ToJson();
@@ -392,7 +396,8 @@ void RegisterRelationsClock(CLI::App& data, const Streams& streams) {
     streams.out << fmt::format(
         "from the recorded odometry (relations' rotations against the odometry's; inherits any lag of the odometry):\n"
         "relations_rate: {:.12g}\nrelations_offset_s: {:.12g}\n{} short relations turn as the odometry does within "
-        "{:.4f} deg on average (the best offset more than 0.1 s away: {:.4f} deg); halves fitted at {:.4f} and {:.4f} s\n",
+        "{:.4f} deg on average (the best offset more than 0.1 s away: {:.4f} deg); halves fitted at {:.4f} and {:.4f} "
+        "s\n",
         by_odometry.rate, by_odometry.offset_s, by_odometry.relations, by_odometry.disagreement,
         by_odometry.next_best_disagreement, by_odometry.first_half_offset_s, by_odometry.second_half_offset_s);
     streams.out << fmt::format(

@@ -35,7 +35,8 @@ CatalogLocation FindCatalog(const std::string& catalog_option) {
 }
 
 ev::Sequence LoadSequenceArgument(const std::string& argument, const CatalogLocation& location,
-                                  const ev::SequenceReadOptions& read_options, std::optional<ev::OdometryMode> odometry) {
+                                  const ev::SequenceReadOptions& read_options,
+                                  std::optional<ev::OdometryMode> odometry) {
   std::error_code error;
   if (std::filesystem::is_regular_file(argument, error)) {
     ev::SequenceReadOptions options = read_options;

@@ -26,18 +26,21 @@ void RegisterEvalMapCommand(CLI::App& eval, const Streams& streams) {
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = eval.add_subcommand("map", "occupied proportion, corners and enclosed areas (paper profile)");
-  command->add_option("MAP", options->map_path, "map: ROS .yaml (+ PGM/PNG), MRPT .png (+ _limits.txt) or bare .pgm/.png")
+  command
+      ->add_option("MAP", options->map_path, "map: ROS .yaml (+ PGM/PNG), MRPT .png (+ _limits.txt) or bare .pgm/.png")
       ->required();
-  command->add_option("--unknown-value", options->unknown_value,
-                      "grey value (0-255) that marks unknown cells in a bare PGM/PNG (map_saver: 205)")
+  command
+      ->add_option("--unknown-value", options->unknown_value,
+                   "grey value (0-255) that marks unknown cells in a bare PGM/PNG (map_saver: 205)")
       ->check(CLI::Range(0, 255));
   command->add_flag("--no-crop", options->no_crop,
                     "score the grid as it is (the raw-grid profile) instead of its known cells' bounding box");
   command->add_option("--crop-margin", options->crop_margin_cells, "cells kept around the known cells when cropping")
       ->check(CLI::NonNegativeNumber);
-  command->add_option("--resolution", options->resolution_m,
-                      "score the map resampled to cells of this size in metres (grey levels kept), as a sweep does "
-                      "at evaluation.map_resolution_m; default: the map's own")
+  command
+      ->add_option("--resolution", options->resolution_m,
+                   "score the map resampled to cells of this size in metres (grey levels kept), as a sweep does "
+                   "at evaluation.map_resolution_m; default: the map's own")
       ->check(CLI::PositiveNumber);
   command->add_flag("--json", options->json, "print one JSON object instead of a table");
   command->callback([options, streams] {
@@ -57,9 +60,9 @@ void RegisterEvalMapCommand(CLI::App& eval, const Streams& streams) {
       return;
     }
     TextTable table("paper map metrics — " + options->map_path);
-    for (const char* key : {"occupied_to_free_unknown", "occupied_to_all", "unknown_to_all", "corners",
-                            "enclosed_areas", "width", "height", "cropped_width", "cropped_height", "resolution_m",
-                            "map_resolution_m"}) {
+    for (const char* key :
+         {"occupied_to_free_unknown", "occupied_to_all", "unknown_to_all", "corners", "enclosed_areas", "width",
+          "height", "cropped_width", "cropped_height", "resolution_m", "map_resolution_m"}) {
       table.Add(key, j.at(key).dump());
     }
     table.Add("parameters", j.at("parameters").dump());

@@ -21,11 +21,13 @@ void RegisterEvalMapCompareCommand(CLI::App& eval, const Streams& streams) {
     bool json = false;
   };
   auto options = std::make_shared<Options>();
-  CLI::App* command = eval.add_subcommand("map-compare", "an estimated map against a reference map: distances, F1, IoU");
+  CLI::App* command =
+      eval.add_subcommand("map-compare", "an estimated map against a reference map: distances, F1, IoU");
   command->add_option("MAP", options->map_path, "estimated map (ROS .yaml, MRPT .png, bare image)")->required();
   command->add_option("REF", options->reference_path, "reference map, same formats and cell size")->required();
-  command->add_option("--align", options->align,
-                      "none: place MAP by --x/--y/--yaw (default identity); se2: refine that by ICP of occupied cells")
+  command
+      ->add_option("--align", options->align,
+                   "none: place MAP by --x/--y/--yaw (default identity); se2: refine that by ICP of occupied cells")
       ->check(CLI::IsMember({"none", "se2"}));
   command->add_option("--x", options->compare.transform.x_m, "MAP to REF translation x (m)");
   command->add_option("--y", options->compare.transform.y_m, "MAP to REF translation y (m)");

@@ -59,12 +59,9 @@ void AddPairOptions(CLI::App& command, PairOptions& options) {
   command.add_option("--t-max-diff", options.t_max_diff_s, "max time difference for association (s)")
       ->capture_default_str();
   command.add_option("--t-offset", options.t_offset_s, "time offset added to EST stamps (s)")->capture_default_str();
-  command.add_option("--pose-relation", options.pose_relation, "trans (m) or rot-deg (degrees)")
-      ->capture_default_str();
-  command.add_option("--ref-format", options.reference_format, "auto|tum|kitti|mrpt|carmen|csv")
-      ->capture_default_str();
-  command.add_option("--est-format", options.estimate_format, "auto|tum|kitti|mrpt|carmen|csv")
-      ->capture_default_str();
+  command.add_option("--pose-relation", options.pose_relation, "trans (m) or rot-deg (degrees)")->capture_default_str();
+  command.add_option("--ref-format", options.reference_format, "auto|tum|kitti|mrpt|carmen|csv")->capture_default_str();
+  command.add_option("--est-format", options.estimate_format, "auto|tum|kitti|mrpt|carmen|csv")->capture_default_str();
   command.add_flag("--json", options.json, "print one JSON object instead of a table");
 }
 
@@ -99,7 +96,7 @@ void PrintMetric(const ev::MetricResult& result, bool json, std::ostream& out) {
   table.Add("sse", s.sse);
   table.Add("n", std::to_string(s.n));
   table.Add("pairs", fmt::format("{} (reference unpaired {}, estimate unpaired {})", result.pairs,
-                                  result.reference_unpaired, result.estimate_unpaired));
+                                 result.reference_unpaired, result.estimate_unpaired));
   if (result.alignment) table.Add("alignment scale", result.alignment->scale);
   table.Print(out);
 }
@@ -132,7 +129,8 @@ void RegisterRpe(CLI::App& eval, const Streams& streams) {
   CLI::Option* unit_option =
       command->add_option("--delta-unit", *delta_unit, "f (frames), m (metres), s (seconds), d (degrees)");
   command->add_flag("--all-pairs", *all_pairs, "use all pairs at distance delta, not only consecutive ones");
-  command->add_flag("--pairs-from-reference", *pairs_from_reference, "choose the pairs on the reference, not the estimate");
+  command->add_flag("--pairs-from-reference", *pairs_from_reference,
+                    "choose the pairs on the reference, not the estimate");
   command
       ->add_option("--segments", *segments,
                    "segment RPE instead: lengths in metres (5,10,20) or auto (10-50 % of the reference path), "
@@ -142,8 +140,9 @@ void RegisterRpe(CLI::App& eval, const Streams& streams) {
   command->callback([options, delta, delta_unit, all_pairs, pairs_from_reference, segments, command, streams] {
     if (command->count("--segments") > 0) {
       if (options->align != "none" || command->count("--pose-relation") > 0 || *all_pairs || *pairs_from_reference) {
-        throw ev::InputError("--segments: give no --align, --pose-relation, --all-pairs or --pairs-from-reference; "
-                             "segments are chosen on the reference and report translation and rotation");
+        throw ev::InputError(
+            "--segments: give no --align, --pose-relation, --all-pairs or --pairs-from-reference; "
+            "segments are chosen on the reference and report translation and rotation");
       }
       const ev::Trajectory reference = ReadForCommand(options->reference_path, options->reference_format, streams);
       const ev::Trajectory estimate = ReadForCommand(options->estimate_path, options->estimate_format, streams);
@@ -178,8 +177,7 @@ void RegisterRelations(CLI::App& eval, const Streams& streams) {
   auto options = std::make_shared<Options>();
   CLI::App* command = eval.add_subcommand("relations", "Kuemmerle et al. relations metric");
   command->add_option("TRAJ", options->trajectory_path, "estimated trajectory")->required();
-  command->add_option("RELATIONS", options->relations_path, "relations file (t1 t2 x y z roll pitch yaw)")
-      ->required();
+  command->add_option("RELATIONS", options->relations_path, "relations file (t1 t2 x y z roll pitch yaw)")->required();
   command->add_option("--t-offset", options->t_offset_s, "time offset added to relation stamps (s)")
       ->capture_default_str();
   command->add_flag("--json", options->json, "print one JSON object instead of a table");

@@ -59,9 +59,10 @@ history::Night Baseline(const history::HistoryStore& store, const history::Night
   if (!options.baseline_label.empty()) {
     const auto found = store.FindByLabel(options.baseline_label);
     if (!found) {
-      throw evaluator::InputError(fmt::format("--baseline-label: no night '{}' in {}; `slamsweep history record` "
-                                              "it first, or use --previous",
-                                              options.baseline_label, options.history_file));
+      throw evaluator::InputError(
+          fmt::format("--baseline-label: no night '{}' in {}; `slamsweep history record` "
+                      "it first, or use --previous",
+                      options.baseline_label, options.history_file));
     }
     return store.Load(found->id);
   }
@@ -79,11 +80,10 @@ void PrintTable(const history::Comparison& comparison, std::ostream& out) {
   out << fmt::format("{:<15} {:<48} {:>12} {:>12} {:>5} {:>10} {:>7}\n", "verdict", "series", "baseline", "current",
                      "n", "p", "delta");
   for (const history::Finding& f : comparison.findings) {
-    out << fmt::format("{:<15} {:<48} {:>12.6g} {:>12.6g} {:>2}/{:<2} {:>10.4g} {:>+7.3f}\n",
-                       history::VerdictName(f.verdict),
-                       fmt::format("{}/{}/{}/{} {}.{}", f.algorithm, f.sequence, f.noise, f.odometry, f.metric, f.statistic),
-                       f.baseline_median, f.current_median, f.baseline_n, f.current_n, f.test.p_value,
-                       f.cliffs_delta);
+    out << fmt::format(
+        "{:<15} {:<48} {:>12.6g} {:>12.6g} {:>2}/{:<2} {:>10.4g} {:>+7.3f}\n", history::VerdictName(f.verdict),
+        fmt::format("{}/{}/{}/{} {}.{}", f.algorithm, f.sequence, f.noise, f.odometry, f.metric, f.statistic),
+        f.baseline_median, f.current_median, f.baseline_n, f.current_n, f.test.p_value, f.cliffs_delta);
   }
   out << fmt::format("{} regressions, {} improvements, {} unchanged, {} not comparable\n",
                      comparison.Count(history::Verdict::kRegression), comparison.Count(history::Verdict::kImprovement),
@@ -125,8 +125,7 @@ void RegisterHistoryCommands(CLI::App& app, const Streams& streams, int& exit_co
   auto record = std::make_shared<RecordOptions>();
   CLI::App* record_command = command->add_subcommand("record", "append a sweep's results as one night");
   record_command->add_option("RESULT_DIR", record->result_dir, "the sweep's output directory")->required();
-  record_command->add_option("--history", record->history_file, "history database (created when missing)")
-      ->required();
+  record_command->add_option("--history", record->history_file, "history database (created when missing)")->required();
   record_command->add_option("--label", record->label, "name of the night (default: the sweep's start time)");
   record_command->callback([record, &streams] { Record(*record, streams); });
 
@@ -142,8 +141,9 @@ void RegisterHistoryCommands(CLI::App& app, const Streams& streams, int& exit_co
   auto* alpha =
       compare_command->add_option("--alpha", compare->regression.alpha, "significance level of the Mann-Whitney U test")
           ->capture_default_str();
-  auto* min_effect = compare_command->add_option("--min-effect", compare->regression.min_effect, "minimum |Cliff's delta|")
-                         ->capture_default_str();
+  auto* min_effect =
+      compare_command->add_option("--min-effect", compare->regression.min_effect, "minimum |Cliff's delta|")
+          ->capture_default_str();
   compare_command->add_option("--config", compare->config,
                               "sweep YAML whose regression: {alpha, min_effect} to use (the options above win)");
   compare_command->add_flag("--json", compare->json, "print the comparison as JSON");

@@ -38,11 +38,11 @@ std::vector<std::string> HelperEnvironment(std::string_view tunables) {
 }
 
 /// Replaces this process with the helper that runs `command`, giving it the same arguments.
-[[noreturn]] void StartHelper(const HelperCommand& command, int argc, const char* const* argv,
-                              const Streams& streams) {
+[[noreturn]] void StartHelper(const HelperCommand& command, int argc, const char* const* argv, const Streams& streams) {
   const std::optional<std::filesystem::path> program = evaluator::FindLibexecFile(command.program);
   if (!program) {
-    const std::string name = (command.parent.empty() ? "" : std::string(command.parent) + " ") + std::string(command.name);
+    const std::string name =
+        (command.parent.empty() ? "" : std::string(command.parent) + " ") + std::string(command.name);
     throw std::runtime_error("`" + name + "` needs the helper program " + std::string(command.program) +
                              ", which is missing; " + evaluator::DescribeLibexecSearch());
   }

@@ -41,15 +41,17 @@ void RegisterReportCommand(CLI::App& app, const Streams& streams) {
   command->add_option("--log-lines", options->log_lines, "lines of each run's log shown on its page")
       ->capture_default_str();
   command->add_flag("--no-images", options->no_images, "pages and files only: no plots, thumbnails or GIFs");
-  command->add_option("--run-figures", options->run_figures,
-                      "each run's own figures (trajectory over the map, thumbnail): auto = every run's up to 500 "
-                      "runs, beyond that each table row's median run and failed runs; all = every run's")
+  command
+      ->add_option("--run-figures", options->run_figures,
+                   "each run's own figures (trajectory over the map, thumbnail): auto = every run's up to 500 "
+                   "runs, beyond that each table row's median run and failed runs; all = every run's")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "all"}));
   command->add_option("--history", options->history,
                       "nightly history database (slamsweep history record): adds a history page per metric");
-  command->add_flag("--compare-previous", options->compare_previous,
-                    "with --history: list regressions and improvements against the night before")
+  command
+      ->add_flag("--compare-previous", options->compare_previous,
+                 "with --history: list regressions and improvements against the night before")
       ->needs("--history");
   command->callback([options, streams] {
     const std::filesystem::path result_dir = options->result_dir;
@@ -75,9 +77,10 @@ void RegisterReportCommand(CLI::App& app, const Streams& streams) {
       report_options.history = history.get();
     }
     const report::ReportSummary summary = report::WriteReport(result_dir, out_dir, report_options);
-    streams.out << "report: " << (out_dir / "index.html").string() << " (" << summary.runs << " runs, "
-                << summary.pages << " pages, " << summary.images << " images";
-    if (summary.images_missing > 0) streams.out << ", " << summary.images_missing << " images not made: see their pages";
+    streams.out << "report: " << (out_dir / "index.html").string() << " (" << summary.runs << " runs, " << summary.pages
+                << " pages, " << summary.images << " images";
+    if (summary.images_missing > 0)
+      streams.out << ", " << summary.images_missing << " images not made: see their pages";
     if (!options->no_images && !report::StandardArtworkDrawsImages()) {
       streams.out << "; this build draws no images";
     }

@@ -44,7 +44,8 @@ bool EnvironmentSet(const char* name) {
 // The build tree this program was built in, when it may build the roster there.
 bool CanBuildHere() {
   if (EnvironmentSet("SLAMSWEEP_SLAM_PREFIX") || EnvironmentSet("SLAMSWEEP_SLAM_DRIVER_DIR")) return false;
-  if (const char* off = std::getenv("SLAMSWEEP_NO_ROSTER_BUILD"); off != nullptr && std::string(off) == "1") return false;
+  if (const char* off = std::getenv("SLAMSWEEP_NO_ROSTER_BUILD"); off != nullptr && std::string(off) == "1")
+    return false;
   if (evaluator::FindInstalledData("slam")) return false;  // an installation: its roster comes with it
   return fs::is_regular_file(fs::path(SLAMSWEEP_SOURCE_DIR) / "scripts" / "install-slam.sh") &&
          fs::is_regular_file(fs::path(SLAMSWEEP_BUILD_TREE) / "CMakeCache.txt");
@@ -53,7 +54,8 @@ bool CanBuildHere() {
 // What the user waits for, from the builds measured on 2 cores (README "The paper's roster").
 std::string Estimate(const std::string& upstream) {
   const std::string cached = "seconds when ~/.cache/slamsweep holds its build";
-  if (upstream == "cartographer") return "its first build takes about 5 minutes on 2 cores (more on a busy machine); " + cached;
+  if (upstream == "cartographer")
+    return "its first build takes about 5 minutes on 2 cores (more on a busy machine); " + cached;
   return "a first build from source takes a few minutes at most; " + cached;
 }
 
@@ -70,14 +72,15 @@ void RunStep(const std::vector<std::string>& argv, const fs::path& log, const st
   text << in.rdbuf();
   std::string tail = text.str();
   if (tail.size() > 3000) tail = "..." + tail.substr(tail.size() - 3000);
-  throw evaluator::InputError(fmt::format("{} failed ({}); its output ({}):\n{}", what, fmt::join(argv, " "),
-                                          log.string(), tail));
+  throw evaluator::InputError(
+      fmt::format("{} failed ({}); its output ({}):\n{}", what, fmt::join(argv, " "), log.string(), tail));
 }
 
 // Holds an exclusive lock on a file for its lifetime.
 class FileLock {
  public:
-  FileLock(const fs::path& file, std::ostream& progress) : fd_(::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
+  FileLock(const fs::path& file, std::ostream& progress)
+      : fd_(::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
     if (fd_ < 0) throw evaluator::InputError(file.string() + ": cannot open the roster's install lock");
     if (::flock(fd_, LOCK_EX | LOCK_NB) == 0) return;
     progress << "slamsweep: another slamsweep is installing roster algorithms; waiting for it (" << file.string()
@@ -98,7 +101,8 @@ class FileLock {
 void InstallMissingRoster(const std::set<std::string>& adapters, std::ostream& progress) {
   std::vector<const orch::RosterAlgorithm*> wanted;
   for (const std::string& adapter : adapters) {
-    if (const orch::RosterAlgorithm* algorithm = orch::FindRosterAlgorithm(adapter); algorithm && !Installed(*algorithm)) {
+    if (const orch::RosterAlgorithm* algorithm = orch::FindRosterAlgorithm(adapter);
+        algorithm && !Installed(*algorithm)) {
       wanted.push_back(algorithm);
     }
   }
@@ -117,9 +121,10 @@ void InstallMissingRoster(const std::set<std::string>& adapters, std::ostream& p
   const fs::path log = build / "roster-install.log";
   std::vector<std::string> targets;
   for (const auto& [upstream, algorithms] : missing) {
-    progress << fmt::format("slamsweep: {} not installed: building {} now with scripts/install-slam.sh {} ({}); "
-                            "output in {}\n",
-                            fmt::join(algorithms, ", "), upstream, upstream, Estimate(upstream), log.string());
+    progress << fmt::format(
+        "slamsweep: {} not installed: building {} now with scripts/install-slam.sh {} ({}); "
+        "output in {}\n",
+        fmt::join(algorithms, ", "), upstream, upstream, Estimate(upstream), log.string());
     progress.flush();
     const auto start = std::chrono::steady_clock::now();
     RunStep({(source / "scripts" / "install-slam.sh").string(), "--prefix", prefix.string(), upstream}, log,

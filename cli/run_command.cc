@@ -104,9 +104,10 @@ int Run(const RunOptions& options, const Streams& streams, const std::string& co
   streams.out << fmt::format("{} ok, {} failed, {} done earlier, {} not started{}\n", outcome.ok, outcome.failed,
                              outcome.already_done, outcome.not_started, outcome.interrupted ? " (interrupted)" : "");
   if (outcome.stale > 0) {
-    streams.out << fmt::format("{} earlier result{} computed by another slamsweep revision, program build or evaluation setting {} {}\n",
-                               outcome.stale, outcome.stale == 1 ? "" : "s", outcome.stale == 1 ? "was" : "were",
-                               settings.reuse_stale ? "reused (--reuse-stale)" : "run again");
+    streams.out << fmt::format(
+        "{} earlier result{} computed by another slamsweep revision, program build or evaluation setting {} {}\n",
+        outcome.stale, outcome.stale == 1 ? "" : "s", outcome.stale == 1 ? "was" : "were",
+        settings.reuse_stale ? "reused (--reuse-stale)" : "run again");
   }
   streams.out << "results: " << (settings.output_dir / "summary.json").string() << "\n";
   if (!options.no_report && !outcome.interrupted) WriteSweepReport(settings.output_dir, streams);
@@ -127,15 +128,19 @@ void RegisterRunCommand(CLI::App& app, const Streams& streams, int& exit_code) {
   command->add_option("-o,--output", options->output, "output directory (default: the config's output)");
   command->add_flag("-k,--keep-going", options->keep_going, "ignore the config's failure budget");
   command->add_flag("--reuse-stale", options->reuse_stale,
-                    "reuse finished runs computed by another slamsweep revision, program build or evaluation setting (default: run them again)");
+                    "reuse finished runs computed by another slamsweep revision, program build or evaluation setting "
+                    "(default: run them again)");
   command->add_flag("--allow-unisolated", options->allow_unisolated,
                     "where no sandbox can be made, run programs without one (their results marked unisolated) "
                     "instead of failing the runs");
   command->add_flag("--no-report", options->no_report, "do not write the HTML report");
-  command->add_option("--executor", options->executor, "where runs execute: local worker processes or one Slurm job array")
+  command
+      ->add_option("--executor", options->executor, "where runs execute: local worker processes or one Slurm job array")
       ->check(CLI::IsMember({"local", "slurm"}));
-  command->add_option("--slurm-partition", options->slurm_partition, "Slurm partition (default: the cluster's default)");
-  command->callback([options, &streams, &exit_code] { exit_code = Run(*options, streams, ReproducingCommandLine(*options)); });
+  command->add_option("--slurm-partition", options->slurm_partition,
+                      "Slurm partition (default: the cluster's default)");
+  command->callback(
+      [options, &streams, &exit_code] { exit_code = Run(*options, streams, ReproducingCommandLine(*options)); });
 }
 
 }  // namespace slamsweep::cli

@@ -24,7 +24,8 @@ std::optional<std::vector<double>> ParseSegmentsOption(const std::string& text) 
     double value = 0.0;
     const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), value);
     if (item.empty() || error != std::errc() || end != item.data() + item.size()) {
-      throw ev::InputError("--segments: expected auto or segment lengths in metres such as 5,10,20, got '" + text + "'");
+      throw ev::InputError("--segments: expected auto or segment lengths in metres such as 5,10,20, got '" + text +
+                           "'");
     }
     lengths.push_back(value);
     start = comma + 1;
@@ -44,9 +45,10 @@ void PrintSegmentRpe(const ev::Trajectory& reference, const ev::Trajectory& esti
   ev::SegmentRpeOptions options;
   options.lengths_m = lengths_m ? *lengths_m : ev::DefaultSegmentLengthsM(path_m);
   if (options.lengths_m.empty()) {
-    throw ev::InputError(fmt::format("--segments auto: the reference path ({:.3g} m) is too short for segments of 1 m; "
-                                     "give lengths with --segments 0.2,0.5",
-                                     path_m));
+    throw ev::InputError(
+        fmt::format("--segments auto: the reference path ({:.3g} m) is too short for segments of 1 m; "
+                    "give lengths with --segments 0.2,0.5",
+                    path_m));
   }
   options.association = association;
   options.relative_tolerance = ev::kRpeDeltaTolerance;
@@ -58,22 +60,24 @@ void PrintSegmentRpe(const ev::Trajectory& reference, const ev::Trajectory& esti
     out << j.dump() << "\n";
     return;
   }
-  TextTable table(fmt::format("segment RPE over {} ({:.1f} m reference path; segments chosen on the reference, as "
-                              "--delta L --delta-unit m --all-pairs --pairs-from-reference)",
-                              lengths_m ? "the given lengths" : "10-50 % of the reference path", path_m));
+  TextTable table(
+      fmt::format("segment RPE over {} ({:.1f} m reference path; segments chosen on the reference, as "
+                  "--delta L --delta-unit m --all-pairs --pairs-from-reference)",
+                  lengths_m ? "the given lengths" : "10-50 % of the reference path", path_m));
   for (const ev::SegmentLengthResult& segments : result.lengths) {
     const std::string name = fmt::format("{} m", segments.length_m);
     if (!segments.translation_m_statistics) {
       table.Add(name, "no segment of this length in the associated poses");
       continue;
     }
-    table.Add(name, fmt::format("n {}, translation mean {:.4g} m ({:.4g} %, median {:.4g} %), rotation mean {:.4g} deg/m",
-                                segments.pairs.size(), segments.translation_m_statistics->mean,
-                                segments.translation_pct_statistics->mean, segments.translation_pct_statistics->median,
-                                segments.rotation_deg_per_m_statistics->mean));
+    table.Add(name,
+              fmt::format("n {}, translation mean {:.4g} m ({:.4g} %, median {:.4g} %), rotation mean {:.4g} deg/m",
+                          segments.pairs.size(), segments.translation_m_statistics->mean,
+                          segments.translation_pct_statistics->mean, segments.translation_pct_statistics->median,
+                          segments.rotation_deg_per_m_statistics->mean));
   }
   table.Add("pairs", fmt::format("{} (reference unpaired {}, estimate unpaired {})", result.pairs,
-                                  result.reference_unpaired, result.estimate_unpaired));
+                                 result.reference_unpaired, result.estimate_unpaired));
   table.Print(out);
 }
 

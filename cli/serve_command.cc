@@ -43,8 +43,8 @@ std::pair<std::string, int> ParseListen(const std::string& text) {
   std::string host = colon == std::string::npos ? "" : text.substr(0, colon);
   const std::string port_text = colon == std::string::npos ? "" : text.substr(colon + 1);
   if (host.size() >= 2 && host.front() == '[' && host.back() == ']') host = host.substr(1, host.size() - 2);
-  const bool digits = !port_text.empty() && port_text.size() <= 5 &&
-                      port_text.find_first_not_of("0123456789") == std::string::npos;
+  const bool digits =
+      !port_text.empty() && port_text.size() <= 5 && port_text.find_first_not_of("0123456789") == std::string::npos;
   if (host.empty() || !digits || std::stoi(port_text) > 65535) {
     throw evaluator::InputError("--listen: expected HOST:PORT such as 127.0.0.1:8420, got '" + text + "'");
   }
@@ -60,7 +60,8 @@ std::vector<std::filesystem::path> DefaultAllowedRoots() {
     const evaluator::Catalog catalog = evaluator::ReadCatalog(location.catalog);
     for (const evaluator::CatalogEntry& entry : catalog.entries) {
       if (entry.path.empty()) continue;
-      std::filesystem::path path = evaluator::ResolveCatalogPath(entry.path, {{"SHARED", location.shared_root.string()}});
+      std::filesystem::path path =
+          evaluator::ResolveCatalogPath(entry.path, {{"SHARED", location.shared_root.string()}});
       if (path.is_relative()) path = location.catalog.parent_path() / path;
       roots.push_back(path.lexically_normal().parent_path());
     }
@@ -99,15 +100,15 @@ int Serve(const ServeOptions& options) {
       orchestrator::WriteFileAtomically(file, std::to_string(port) + "\n");
     };
   }
-  const orchestrator::service::SweepPlanner planner =
-      [](std::string_view text, const std::filesystem::path& file, const orchestrator::service::PlanLimits& limits) {
-        SweepLimits sweep_limits;
-        sweep_limits.policy = limits.policy;
-        sweep_limits.max_runs = limits.max_runs;
-        LoadedSweep loaded = LoadSweepText(text, file.string(), {}, sweep_limits);
-        return orchestrator::service::PlannedSweep{loaded.config.name, std::move(loaded.runs), loaded.config_hash,
-                                                   loaded.config.validity_study};
-      };
+  const orchestrator::service::SweepPlanner planner = [](std::string_view text, const std::filesystem::path& file,
+                                                         const orchestrator::service::PlanLimits& limits) {
+    SweepLimits sweep_limits;
+    sweep_limits.policy = limits.policy;
+    sweep_limits.max_runs = limits.max_runs;
+    LoadedSweep loaded = LoadSweepText(text, file.string(), {}, sweep_limits);
+    return orchestrator::service::PlannedSweep{loaded.config.name, std::move(loaded.runs), loaded.config_hash,
+                                               loaded.config.validity_study};
+  };
   const orchestrator::service::ReportWriter reports = [](const std::filesystem::path& result_dir) {
     std::ostringstream out, err;
     WriteSweepReport(result_dir, Streams{out, err});
@@ -123,12 +124,14 @@ void RegisterServeCommand(CLI::App& app, const Streams& streams, int& exit_code)
       "serve", "run submitted sweeps from one queue on a shared worker pool, with an HTTP API and a status page");
   command->add_option("--data", options->data, "folder of the queue (queue.sqlite) and of every sweep's results")
       ->required();
-  command->add_option("--listen", options->listen, "HOST:PORT to listen on (default 127.0.0.1:8420; port 0: any free port)");
+  command->add_option("--listen", options->listen,
+                      "HOST:PORT to listen on (default 127.0.0.1:8420; port 0: any free port)");
   command->add_option("-j,--jobs", options->jobs, "runs at once, shared by every sweep (default: the number of cores)")
       ->check(CLI::PositiveNumber);
   command->add_option("--executor", options->executor, "where runs execute: local worker processes or Slurm job arrays")
       ->check(CLI::IsMember({"local", "slurm"}));
-  command->add_option("--slurm-partition", options->slurm_partition, "Slurm partition (default: the cluster's default)");
+  command->add_option("--slurm-partition", options->slurm_partition,
+                      "Slurm partition (default: the cluster's default)");
   command->add_option("--token-file", options->token_file,
                       "file (mode 0600) with the bearer token that submissions and cancellations must send");
   command->add_option("--allow-root", options->allow_roots,
@@ -141,8 +144,9 @@ void RegisterServeCommand(CLI::App& app, const Streams& streams, int& exit_code)
   command->add_flag("--allow-unisolated", options->allow_unisolated,
                     "where no sandbox can be made, run programs without one (their results marked unisolated) "
                     "instead of failing the runs");
-  command->add_option("--drain-timeout", options->drain_timeout_s,
-                      "seconds running runs may finish after SIGTERM before they are stopped and queued again")
+  command
+      ->add_option("--drain-timeout", options->drain_timeout_s,
+                   "seconds running runs may finish after SIGTERM before they are stopped and queued again")
       ->check(CLI::NonNegativeNumber);
   command->add_option("--max-body-kb", options->max_body_kb, "largest sweep file accepted, in KiB (413 beyond)")
       ->check(CLI::PositiveNumber);

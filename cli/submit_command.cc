@@ -113,7 +113,8 @@ void Download(Api& api, const std::string& path, const std::filesystem::path& fi
   std::string problem;
   const auto response = api.Get(path, problem);
   if (!response) throw SubmitError(problem);
-  if (response->status != 200) throw SubmitError(fmt::format("GET {}: {} {}", path, response->status, ErrorOf(*response)));
+  if (response->status != 200)
+    throw SubmitError(fmt::format("GET {}: {} {}", path, response->status, ErrorOf(*response)));
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   orchestrator::WriteFileAtomically(file, response->body);
 }
@@ -151,7 +152,10 @@ void PrintFinishedRuns(const nlohmann::json& runs, std::set<std::string>& report
     if (state == "reused") detail = fmt::format("reused from sweep {}", run["reused_from"].dump());
     if (state == "ok" && run["wall_s"].is_number()) detail = fmt::format("{:.1f} s", run["wall_s"].get<double>());
     out << fmt::format("{} [{}/{}] {} {} ({})\n", orchestrator::UtcNowIso8601(), finished, total,
-                       state == "failed" ? "FAILED" : state == "ok" ? "ok    " : "reused", run_id, detail)
+                       state == "failed" ? "FAILED"
+                       : state == "ok"   ? "ok    "
+                                         : "reused",
+                       run_id, detail)
         << std::flush;
   }
 }
@@ -200,9 +204,9 @@ int Submit(const SubmitOptions& options, const Streams& streams) {
     return 130;
   }
   const nlohmann::json& counts = sweep.at("counts");
-  streams.out << fmt::format("sweep {} {}: {} ok, {} failed, {} reused, {} cancelled{}\n", id,
-                             sweep.value("state", ""), counts.value("ok", 0), counts.value("failed", 0),
-                             counts.value("reused", 0), counts.value("cancelled", 0),
+  streams.out << fmt::format("sweep {} {}: {} ok, {} failed, {} reused, {} cancelled{}\n", id, sweep.value("state", ""),
+                             counts.value("ok", 0), counts.value("failed", 0), counts.value("reused", 0),
+                             counts.value("cancelled", 0),
                              sweep.value("message", "").empty() ? "" : " (" + sweep.value("message", "") + ")");
   if (!options.junit.empty()) {
     Download(api, fmt::format("/api/sweeps/{}/junit.xml", id), options.junit);
@@ -228,10 +232,12 @@ void RegisterSubmitCommand(CLI::App& app, const Streams& streams, int& exit_code
   CLI::App* command = app.add_subcommand("submit", "submit a sweep to `slamsweep serve`; --wait follows it like `run`");
   command->add_option("CONFIG", options->config, "sweep YAML")->required();
   command->add_option("--server", options->server, "the service's URL (default http://127.0.0.1:8420)");
-  command->add_flag("--wait", options->wait,
-                    "print a line per finished run and exit like `slamsweep run` (0 ok, 1 failed runs, 130 interrupted)");
+  command->add_flag(
+      "--wait", options->wait,
+      "print a line per finished run and exit like `slamsweep run` (0 ok, 1 failed runs, 130 interrupted)");
   command->add_option("--junit", options->junit, "with --wait: download the sweep's junit.xml to this file");
-  command->add_option("--report", options->report_dir, "with --wait: download the sweep's HTML report into this folder");
+  command->add_option("--report", options->report_dir,
+                      "with --wait: download the sweep's HTML report into this folder");
   command->add_option("--token-file", options->token_file, "file (mode 0600) with the server's bearer token");
   command->add_option("--priority", options->priority, "higher runs first (-100 to 100, default 0)")
       ->check(CLI::Range(-100, 100));

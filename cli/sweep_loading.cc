@@ -28,8 +28,8 @@ void RequireKnown(const std::vector<std::string>& wanted, const std::vector<std:
                   std::string_view option) {
   for (const std::string& name : wanted) {
     if (std::find(known.begin(), known.end(), name) == known.end()) {
-      throw evaluator::InputError(fmt::format("{}: no '{}' in the config (it has: {})", option, name,
-                                              fmt::join(known, ", ")));
+      throw evaluator::InputError(
+          fmt::format("{}: no '{}' in the config (it has: {})", option, name, fmt::join(known, ", ")));
     }
   }
 }
@@ -75,8 +75,8 @@ LoadedSweep LoadSweepText(std::string_view text, const std::string& config_file,
   RequireKnown(selection.sequences, sequences, "--only-sequences");
   if (selection.iterations > 0) sweep.config.iterations = selection.iterations;
   std::vector<orchestrator::RunSpec> runs = limits.max_runs > 0
-                                               ? orchestrator::ExpandMatrix(sweep.config, limits.max_runs)
-                                               : orchestrator::ExpandMatrix(sweep.config);
+                                                ? orchestrator::ExpandMatrix(sweep.config, limits.max_runs)
+                                                : orchestrator::ExpandMatrix(sweep.config);
   for (orchestrator::RunSpec& run : runs) {
     if (Selected(selection.algorithms, run.algorithm.name) && Selected(selection.sequences, run.sequence.entry.name)) {
       sweep.runs.push_back(std::move(run));

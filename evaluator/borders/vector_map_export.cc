@@ -65,8 +65,9 @@ nlohmann::json ToGeoJson(const VectorMap& map) {
                           {"traced_cell_count", polygon.traced_cell_count}}}});
   }
   return {{"type", "FeatureCollection"},
-          {"bbox", {Micrometres(map.bounds.min_x_m), Micrometres(map.bounds.min_y_m), Micrometres(map.bounds.max_x_m),
-                    Micrometres(map.bounds.max_y_m)}},
+          {"bbox",
+           {Micrometres(map.bounds.min_x_m), Micrometres(map.bounds.min_y_m), Micrometres(map.bounds.max_x_m),
+            Micrometres(map.bounds.max_y_m)}},
           {"features", std::move(features)}};
 }
 

@@ -22,7 +22,9 @@ struct LaserScan {
   Pose sensor_pose_on_robot;
 
   std::size_t BeamCount() const { return ranges_m.size(); }
-  double BeamAngleRad(std::size_t index) const { return angle_min_rad + static_cast<double>(index) * angle_increment_rad; }
+  double BeamAngleRad(std::size_t index) const {
+    return angle_min_rad + static_cast<double>(index) * angle_increment_rad;
+  }
   bool IsHit(float range_m) const { return range_m >= range_min_m && range_m < range_max_m; }
 };
 

@@ -6,8 +6,7 @@
 
 namespace slamsweep::evaluator {
 
-OccupancyGrid::OccupancyGrid(int width_cells, int height_cells, double resolution, GridOrigin grid_origin,
-                             float fill)
+OccupancyGrid::OccupancyGrid(int width_cells, int height_cells, double resolution, GridOrigin grid_origin, float fill)
     : width(width_cells), height(height_cells), resolution_m(resolution), origin(grid_origin) {
   if (width_cells <= 0 || height_cells <= 0) {
     throw InputError("grid size must be positive, got " + std::to_string(width_cells) + " x " +

@@ -46,8 +46,7 @@ Pose Pose::operator*(const Pose& other) const {
 }
 
 bool Pose::IsValid() const {
-  return position.allFinite() && orientation.coeffs().allFinite() &&
-         std::abs(orientation.norm() - 1.0) < 1e-6;
+  return position.allFinite() && orientation.coeffs().allFinite() && std::abs(orientation.norm() - 1.0) < 1e-6;
 }
 
 double RotationAngleRad(const Eigen::Quaterniond& rotation) {

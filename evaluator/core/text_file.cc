@@ -125,14 +125,13 @@ std::vector<std::string_view> SplitFields(std::string_view line, std::string_vie
   return fields;
 }
 
-TextRecord::TextRecord(const std::filesystem::path& file, std::size_t line_number,
-                       std::vector<std::string_view> fields)
+TextRecord::TextRecord(const std::filesystem::path& file, std::size_t line_number, std::vector<std::string_view> fields)
     : file_(file), line_number_(line_number), fields_(std::move(fields)) {}
 
 std::string_view TextRecord::Text(std::size_t index) const {
   if (index >= fields_.size()) {
-    Fail("expected a field " + std::to_string(index + 1) + " but the line has only " +
-         std::to_string(fields_.size()) + " fields");
+    Fail("expected a field " + std::to_string(index + 1) + " but the line has only " + std::to_string(fields_.size()) +
+         " fields");
   }
   return fields_[index];
 }

@@ -1,6 +1,5 @@
 #pragma once
 
-
 #include "evaluator/core/occupancy_grid.h"
 
 namespace slamsweep::evaluator {

@@ -128,7 +128,8 @@ FreeRegionSweep::FreeRegionSweep(const LevelRuns& levels, const std::vector<int>
   std::vector<RunPair> boundaries;  // then reused for the patch pairs
   const std::vector<std::int32_t> patch_of_run = LabelPatches(runs, boundaries);
   patch_count_ = 0;
-  for (const std::int32_t patch : patch_of_run) patch_count_ = std::max(patch_count_, static_cast<std::size_t>(patch) + 1);
+  for (const std::int32_t patch : patch_of_run)
+    patch_count_ = std::max(patch_count_, static_cast<std::size_t>(patch) + 1);
 
   const int m = threshold_count_;
   const std::size_t groups = static_cast<std::size_t>(m) + 1;  // stored groups 0..m
@@ -170,7 +171,8 @@ FreeRegionSweep::FreeRegionSweep(const LevelRuns& levels, const std::vector<int>
 
   // Each patch's group, looked up once per pair below.
   std::vector<std::uint16_t> patch_group(patch_count_);
-  for (std::size_t p = 0; p < patch_count_; ++p) patch_group[p] = static_cast<std::uint16_t>(group_of_rank(patch_rank[p]));
+  for (std::size_t p = 0; p < patch_count_; ++p)
+    patch_group[p] = static_cast<std::uint16_t>(group_of_rank(patch_rank[p]));
   // Adjacency buckets: 2 g for those of group g between known patches, 2 g + 1 for those with
   // an unknown patch.
   const auto bucket_of = [&](const Adjacency& pair) -> std::size_t {
@@ -231,7 +233,9 @@ std::vector<std::int64_t> FreeRegionSweep::Count(bool unknown_free, std::int64_t
     }
     return x;
   };
-  const auto is_enclosed = [&](const Node& root) { return root.touches_border == 0 && root.cells >= min_cells ? 1 : 0; };
+  const auto is_enclosed = [&](const Node& root) {
+    return root.touches_border == 0 && root.cells >= min_cells ? 1 : 0;
+  };
   const auto free_group = [&](std::size_t group) {
     for (std::size_t i = group_patch_offsets_[group]; i < group_patch_offsets_[group + 1]; ++i) {
       const Patch& freed = group_patches_[i];

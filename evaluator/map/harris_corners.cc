@@ -14,7 +14,6 @@ struct Candidate {
   std::int64_t index;  // row * width + col: the order of addresses in goodFeaturesToTrack
 };
 
-
 // goodFeaturesToTrack keeps the pixels above quality_level * max response (a positive
 // threshold whenever a corner exists; pixels never computed are 0) that are not below any of
 // their 8 neighbours, away from the outermost rows and columns. Neighbours zeroed by its
@@ -82,8 +81,8 @@ class LocalMaximaSearch {
           for (int col = block; col < block_end; ++col) {
             const float v = here[col];
             if (!(v > threshold)) continue;
-            if (v < above[col - 1] || v < above[col] || v < above[col + 1] || v < here[col - 1] ||
-                v < here[col + 1] || v < below[col - 1] || v < below[col] || v < below[col + 1]) {
+            if (v < above[col - 1] || v < above[col] || v < above[col + 1] || v < here[col - 1] || v < here[col + 1] ||
+                v < below[col - 1] || v < below[col] || v < below[col + 1]) {
               continue;
             }
             candidates_.push_back({v, static_cast<std::int64_t>(row) * cols_ + col});
@@ -110,7 +109,8 @@ std::vector<CornerCell> FindHarrisCorners(const cv::Mat& image, const HarrisSele
   CV_Assert(image.type() == CV_32FC1);
   const HarrisResponseOptions response_options{options.block_size_cells, options.aperture_cells, options.harris_k};
   LocalMaximaSearch search(image, options.quality_level);
-  ForEachHarrisResponseBand(image, response_options, nonzero, [&search](const HarrisResponseBand& band) { search.Add(band); });
+  ForEachHarrisResponseBand(image, response_options, nonzero,
+                            [&search](const HarrisResponseBand& band) { search.Add(band); });
   std::vector<Candidate> candidates = search.Finish();
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     return a.response != b.response ? a.response > b.response : a.index > b.index;

@@ -31,7 +31,6 @@ void RemapRows(const OccupancyGrid& grid, int row_begin, int row_end, cv::Mat& o
   }
 }
 
-
 /// Runs the banded filters over `grid`. Band k's result goes into target(first row, rows), and
 /// finished(first row, that image) is called once band k + 1 has taken its remapped rows from the
 /// grid (or at the end): from then on no band reads band k's rows of the grid.

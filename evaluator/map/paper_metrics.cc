@@ -69,24 +69,24 @@ PaperMetrics ComputePaperMetrics(OccupancyGrid&& grid, const PaperMetricsOptions
 }
 
 nlohmann::json PaperMetrics::ToJson() const {
-  return nlohmann::json{{"occupied_to_free_unknown", occupied.occupied_to_free_unknown},
-                        {"occupied_to_all", occupied.occupied_to_all},
-                        {"unknown_to_all", occupied.unknown_to_all},
-                        {"corners", corners.corners},
-                        {"enclosed_areas", enclosed.enclosed_areas},
-                        {"width", width},
-                        {"height", height},
-                        {"cropped_width", window.width},
-                        {"cropped_height", window.height},
-                        {"crop_window",
-                         {{"col", window.col}, {"row", window.row}, {"width", window.width}, {"height", window.height}}},
-                        {"parameters",
-                         {{"profile", "paper"},
-                          {"canvas", options.canvas},
-                          {"occupied", options.occupied},
-                          {"corners", options.corners},
-                          {"enclosed", options.enclosed}}},
-                        {"details", {{"occupied", occupied}, {"corners", corners}, {"enclosed", enclosed}}}};
+  return nlohmann::json{
+      {"occupied_to_free_unknown", occupied.occupied_to_free_unknown},
+      {"occupied_to_all", occupied.occupied_to_all},
+      {"unknown_to_all", occupied.unknown_to_all},
+      {"corners", corners.corners},
+      {"enclosed_areas", enclosed.enclosed_areas},
+      {"width", width},
+      {"height", height},
+      {"cropped_width", window.width},
+      {"cropped_height", window.height},
+      {"crop_window", {{"col", window.col}, {"row", window.row}, {"width", window.width}, {"height", window.height}}},
+      {"parameters",
+       {{"profile", "paper"},
+        {"canvas", options.canvas},
+        {"occupied", options.occupied},
+        {"corners", options.corners},
+        {"enclosed", options.enclosed}}},
+      {"details", {{"occupied", occupied}, {"corners", corners}, {"enclosed", enclosed}}}};
 }
 
 }  // namespace slamsweep::evaluator

@@ -54,9 +54,9 @@ struct PaperMetrics {
 };
 
 /// Higher is worse for all three. With options.canvas.crop the grid is first cropped to
-/// KnownCellsWindow (so padding a map with unknown cells changes nothing). Throws InputError for bad options, an empty or inconsistent
-/// grid, a cell that is not a probability, or a map with no known cell ("map has no known
-/// cell: nothing to score").
+/// KnownCellsWindow (so padding a map with unknown cells changes nothing). Throws InputError for bad options, an empty
+/// or inconsistent grid, a cell that is not a probability, or a map with no known cell ("map has no known cell: nothing
+/// to score").
 PaperMetrics ComputePaperMetrics(const OccupancyGrid& grid, const PaperMetricsOptions& options = {});
 /// The same for a grid the caller gives up: it is cropped in place instead of copied.
 PaperMetrics ComputePaperMetrics(OccupancyGrid&& grid, const PaperMetricsOptions& options = {});

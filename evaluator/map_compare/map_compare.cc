@@ -33,7 +33,8 @@ void ClassifyRow(const float* p, std::size_t n, const MapCompareOptions& options
     occupied = std::nextafter(occupied, std::numeric_limits<float>::infinity());
   }
   float free = static_cast<float>(options.free_threshold);
-  if (static_cast<double>(free) > options.free_threshold) free = std::nextafter(free, -std::numeric_limits<float>::infinity());
+  if (static_cast<double>(free) > options.free_threshold)
+    free = std::nextafter(free, -std::numeric_limits<float>::infinity());
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint8_t is_occupied = p[i] >= occupied;
     const std::uint8_t is_free = (p[i] >= 0.0f) & (p[i] <= free) & (is_occupied ^ 1);
@@ -92,8 +93,8 @@ cv::Mat RasterReference(const OccupancyGrid& reference, const Canvas& canvas, co
   const int row0 = canvas.height - reference.height -
                    static_cast<int>(std::lround((reference.origin.y_m - canvas.origin_y) / canvas.resolution));
   for (int r = 0; r < reference.height; ++r) {
-    ClassifyRow(&reference.cells[static_cast<std::size_t>(r) * reference.width], static_cast<std::size_t>(reference.width),
-                options, out.ptr<std::uint8_t>(row0 + r) + col0);
+    ClassifyRow(&reference.cells[static_cast<std::size_t>(r) * reference.width],
+                static_cast<std::size_t>(reference.width), options, out.ptr<std::uint8_t>(row0 + r) + col0);
   }
   return out;
 }
@@ -268,7 +269,8 @@ MapTransform RefineWithIcp(const OccupancyGrid& estimate, const OccupancyGrid& r
   std::vector<Point2> points;
   for (int r = 0; r < estimate.height; ++r) {
     for (int c = 0; c < estimate.width; ++c) {
-      if (Classify(estimate.at(r, c), options) == kOccupiedCell) points.push_back({estimate.CellCenterXM(c), estimate.CellCenterYM(r)});
+      if (Classify(estimate.at(r, c), options) == kOccupiedCell)
+        points.push_back({estimate.CellCenterXM(c), estimate.CellCenterYM(r)});
     }
   }
   constexpr int kPadding = 200;  // cells around the reference in which a nearest neighbour is looked up
@@ -369,11 +371,11 @@ MapComparison Measure(const Canvas& canvas, const cv::Mat& est, const cv::Mat& r
     const auto* a = est.ptr<std::uint8_t>(r);
     const auto* b = ref.ptr<std::uint8_t>(r);
     // Occupied cells are a few percent of a row: memchr finds them.
-    for (const auto& [classes, walls, sum] : {std::tuple{a, &to_reference_walls, &to_reference_sum},
-                                             std::tuple{b, &to_estimate_walls, &to_estimate_sum}}) {
+    for (const auto& [classes, walls, sum] :
+         {std::tuple{a, &to_reference_walls, &to_reference_sum}, std::tuple{b, &to_estimate_walls, &to_estimate_sum}}) {
       const std::uint8_t* end = classes + canvas.width;
-      for (const std::uint8_t* at = classes; (at = static_cast<const std::uint8_t*>(
-                                                  std::memchr(at, kOccupiedCell, static_cast<std::size_t>(end - at))));
+      for (const std::uint8_t* at = classes;
+           (at = static_cast<const std::uint8_t*>(std::memchr(at, kOccupiedCell, static_cast<std::size_t>(end - at))));
            ++at) {
         sum->Add(walls->SquaredAt(r, static_cast<int>(at - classes)), radius_squared);
       }
@@ -417,20 +419,23 @@ MapComparison Measure(const Canvas& canvas, const cv::Mat& est, const cv::Mat& r
 
 }  // namespace
 
-MapComparison CompareMaps(const OccupancyGrid& estimate, const OccupancyGrid& reference, const MapCompareOptions& options) {
+MapComparison CompareMaps(const OccupancyGrid& estimate, const OccupancyGrid& reference,
+                          const MapCompareOptions& options) {
   if (std::abs(estimate.resolution_m - reference.resolution_m) > 0.01 * reference.resolution_m) {
     throw InputError("map-compare: the maps have different cell sizes (" + std::to_string(estimate.resolution_m) +
                      " m and " + std::to_string(reference.resolution_m) + " m); resample one first");
   }
   if (options.match_radius_cells < 0) throw InputError("map-compare: match radius must be >= 0 cells");
   MapComparison result;
-  result.transform = options.refine_with_icp ? RefineWithIcp(estimate, reference, options.transform, options) : options.transform;
+  result.transform =
+      options.refine_with_icp ? RefineWithIcp(estimate, reference, options.transform, options) : options.transform;
   const Canvas canvas = MakeCanvas(estimate, reference, result.transform, options.match_radius_cells + 1);
   const cv::Mat ref = RasterReference(reference, canvas, options);
   const cv::Mat est = RasterEstimate(estimate, result.transform, canvas, options);
   // 16-bit column distances (half the memory, twice the vector width) whenever they fit.
   const bool narrow = canvas.height + canvas.width + 2 <= std::numeric_limits<std::uint16_t>::max();
-  return narrow ? Measure<std::uint16_t>(canvas, est, ref, options, result) : Measure<std::int32_t>(canvas, est, ref, options, result);
+  return narrow ? Measure<std::uint16_t>(canvas, est, ref, options, result)
+                : Measure<std::int32_t>(canvas, est, ref, options, result);
 }
 
 nlohmann::json MapComparison::ToJson(const MapCompareOptions& options) const {
@@ -442,14 +447,17 @@ nlohmann::json MapComparison::ToJson(const MapCompareOptions& options) const {
           {"f1", f1},
           {"iou_occupied", iou_occupied},
           {"iou_free", iou_free},
-          {"cells", {{"estimate_occupied", estimate_occupied}, {"reference_occupied", reference_occupied},
-                     {"known_in_both", known_in_both}}},
+          {"cells",
+           {{"estimate_occupied", estimate_occupied},
+            {"reference_occupied", reference_occupied},
+            {"known_in_both", known_in_both}}},
           {"transform", {{"x_m", transform.x_m}, {"y_m", transform.y_m}, {"yaw_rad", transform.yaw_rad}}},
-          {"specification", {{"occupied_threshold", options.occupied_threshold},
-                             {"free_threshold", options.free_threshold},
-                             {"match_radius_cells", options.match_radius_cells},
-                             {"alignment", options.refine_with_icp ? "icp" : "given"},
-                             {"distance", "exact Euclidean distance between occupied cells (separable distance transform)"}}}};
+          {"specification",
+           {{"occupied_threshold", options.occupied_threshold},
+            {"free_threshold", options.free_threshold},
+            {"match_radius_cells", options.match_radius_cells},
+            {"alignment", options.refine_with_icp ? "icp" : "given"},
+            {"distance", "exact Euclidean distance between occupied cells (separable distance transform)"}}}};
 }
 
 }  // namespace slamsweep::evaluator

@@ -34,9 +34,9 @@ void CheckFields(const OdometryNoise& noise, const std::string& prefix) {
   RequireNoiseField(prefix, std::isfinite(noise.alpha3) && noise.alpha3 >= 0.0, "alpha3", noise.alpha3, non_negative);
   RequireNoiseField(prefix, std::isfinite(noise.alpha4) && noise.alpha4 >= 0.0, "alpha4", noise.alpha4, non_negative);
   RequireNoiseField(prefix, std::isfinite(noise.drift_heading_rad_per_m), "drift_heading_rad_per_m",
-          noise.drift_heading_rad_per_m, "a finite number");
-  RequireNoiseField(prefix, std::isfinite(noise.scale_error) && noise.scale_error > -1.0, "scale_error", noise.scale_error,
-          "a finite number > -1");
+                    noise.drift_heading_rad_per_m, "a finite number");
+  RequireNoiseField(prefix, std::isfinite(noise.scale_error) && noise.scale_error > -1.0, "scale_error",
+                    noise.scale_error, "a finite number > -1");
 }
 
 }  // namespace
@@ -108,12 +108,9 @@ Trajectory ApplyOdometryNoise(const Trajectory& reference, const OdometryNoise& 
 }
 
 void to_json(nlohmann::json& out, const OdometryNoise& noise) {
-  out = nlohmann::json{{"model", kOdometryModelName},
-                       {"alpha1", noise.alpha1},
-                       {"alpha2", noise.alpha2},
-                       {"alpha3", noise.alpha3},
-                       {"alpha4", noise.alpha4},
-                       {"drift_heading_rad_per_m", noise.drift_heading_rad_per_m},
+  out = nlohmann::json{{"model", kOdometryModelName},     {"alpha1", noise.alpha1},
+                       {"alpha2", noise.alpha2},          {"alpha3", noise.alpha3},
+                       {"alpha4", noise.alpha4},          {"drift_heading_rad_per_m", noise.drift_heading_rad_per_m},
                        {"scale_error", noise.scale_error}};
 }
 

@@ -16,11 +16,11 @@ bool IsProbability(double value) { return std::isfinite(value) && value >= 0.0 &
 
 void CheckFields(const RangeNoise& noise, const std::string& prefix) {
   RequireNoiseField(prefix, std::isfinite(noise.sigma_m) && noise.sigma_m >= 0.0, "sigma_m", noise.sigma_m,
-          "a finite number >= 0");
+                    "a finite number >= 0");
   RequireNoiseField(prefix, IsProbability(noise.dropout_probability), "dropout_probability", noise.dropout_probability,
-          "a probability in [0, 1]");
+                    "a probability in [0, 1]");
   RequireNoiseField(prefix, IsProbability(noise.short_reading_probability), "short_reading_probability",
-          noise.short_reading_probability, "a probability in [0, 1]");
+                    noise.short_reading_probability, "a probability in [0, 1]");
 }
 
 }  // namespace

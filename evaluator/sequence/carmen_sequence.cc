@@ -181,9 +181,9 @@ void WarnAboutIgnoredLasers(const CarmenLog& log, const std::filesystem::path& s
                                            ignored.robot_laser, used_type)));
   }
   if (ignored.rlaser > 0) {
-    warnings.push_back(Located(source, 0,
-                               fmt::format("{} RLASER records ignored (the rear laser; set use_rear_laser to read it)",
-                                           ignored.rlaser)));
+    warnings.push_back(Located(
+        source, 0,
+        fmt::format("{} RLASER records ignored (the rear laser; set use_rear_laser to read it)", ignored.rlaser)));
   }
   for (const auto& [type, count] : log.skipped_messages) {
     if (type.find("LASER") == std::string::npos) continue;
@@ -235,7 +235,6 @@ Provenance ProvenanceOf(const std::filesystem::path& source, const CarmenSequenc
   return provenance;
 }
 
-
 /// Where the log's odometry stream writes every step forward, gives back the steps the scans say the
 /// robot backed up (odometry_direction.h), re-reads each scan's odometry and says what was done.
 void RestoreRecordedReversing(RecordedOdometry& recorded, const std::filesystem::path& source, Sequence& sequence) {
@@ -285,10 +284,9 @@ void CheckCarmenSequenceOptions(const CarmenSequenceOptions& options) {
 Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& source,
                              const CarmenSequenceOptions& options) {
   CheckCarmenSequenceOptions(options);
-  const bool use_robot_laser =
-      !options.use_rear_laser && std::any_of(log.lasers.begin(), log.lasers.end(), [](const CarmenLaserRecord& record) {
-        return record.type == kRobotLaser;
-      });
+  const bool use_robot_laser = !options.use_rear_laser &&
+                               std::any_of(log.lasers.begin(), log.lasers.end(),
+                                           [](const CarmenLaserRecord& record) { return record.type == kRobotLaser; });
   const std::string_view used_type = options.use_rear_laser ? kRearLaser : use_robot_laser ? kRobotLaser : kFlaser;
   std::vector<const CarmenLaserRecord*> records;
   IgnoredLasers ignored;
@@ -393,15 +391,14 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
       std::size_t unmatched = 0;
       const double tolerance_s =
           options.relations_match_tolerance_s.value_or(0.5 * MedianSpacingS(recorded->logged_stamps_s));
-      sequence.relations =
-          MapRelationsOntoReadings(std::move(*sequence.relations), *recorded, tolerance_s, unmatched);
+      sequence.relations = MapRelationsOntoReadings(std::move(*sequence.relations), *recorded, tolerance_s, unmatched);
       if (unmatched > 0) {
         sequence.warnings.push_back(Located(
             *options.relations_path, 0,
-            fmt::format("{} of {} relation stamps lie farther than {} s from every recorded ODOM reading of {} and keep "
-                        "their own time",
-                        unmatched, 2 * sequence.relations->size(), tolerance_s,
-                        source.string())));
+            fmt::format(
+                "{} of {} relation stamps lie farther than {} s from every recorded ODOM reading of {} and keep "
+                "their own time",
+                unmatched, 2 * sequence.relations->size(), tolerance_s, source.string())));
       }
     }
   }

@@ -73,7 +73,8 @@ nlohmann::json ToJson(const std::filesystem::path& source, const YAML::Node& nod
   return text;
 }
 
-std::size_t Count(const std::filesystem::path& source, const YAML::Node& node, std::string_view key, std::size_t minimum) {
+std::size_t Count(const std::filesystem::path& source, const YAML::Node& node, std::string_view key,
+                  std::size_t minimum) {
   const std::string text = Scalar(source, node, key);
   const bool digits = !text.empty() && text.size() < 10 && text.find_first_not_of("0123456789") == std::string::npos;
   if (!digits || std::stoul(text) < minimum) {
@@ -96,7 +97,8 @@ CorrectedLogLink ParseCorrectedLog(const std::filesystem::path& source, const YA
     } else if (key == "every") {
       link.every = Count(source, item.second, "corrected_log.every", 1);
     } else {
-      Fail(source, item.first, fmt::format("corrected_log: unknown key '{}' (expected path, first_scan, first_reading, every)", key));
+      Fail(source, item.first,
+           fmt::format("corrected_log: unknown key '{}' (expected path, first_scan, first_reading, every)", key));
     }
   }
   if (link.path.empty()) Fail(source, node, "corrected_log: no path");
@@ -117,7 +119,8 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
     } else if (key == "format") {
       entry.format = Scalar(source, value, key);
       if (std::find(std::begin(kFormats), std::end(kFormats), entry.format) == std::end(kFormats)) {
-        Fail(source, value, fmt::format("format: expected carmen, rawlog, rosbag or simulated, got '{}'", entry.format));
+        Fail(source, value,
+             fmt::format("format: expected carmen, rawlog, rosbag or simulated, got '{}'", entry.format));
       }
     } else if (key == "path") {
       entry.path = Scalar(source, value, key);
@@ -191,16 +194,19 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
   if (entry.format.empty()) Fail(source, node, fmt::format("sequence '{}': no format", entry.name));
   if (!has_ground_truth) Fail(source, node, fmt::format("sequence '{}': no ground_truth", entry.name));
   if (entry.format == "simulated") {
-    if (!entry.path.empty()) Fail(source, node, fmt::format("sequence '{}': a simulated sequence has no path", entry.name));
-    if (entry.corrected_log) Fail(source, node, fmt::format("sequence '{}': a simulated sequence has no corrected_log", entry.name));
+    if (!entry.path.empty())
+      Fail(source, node, fmt::format("sequence '{}': a simulated sequence has no path", entry.name));
+    if (entry.corrected_log)
+      Fail(source, node, fmt::format("sequence '{}': a simulated sequence has no corrected_log", entry.name));
   } else if (entry.path.empty()) {
     Fail(source, node, fmt::format("sequence '{}': no path", entry.name));
   }
   if (entry.odometry == OdometryMode::kReference && !OdometryModeApplies(entry)) {
-    Fail(source, odometry_node,
-         fmt::format("sequence '{}': odometry: reference applies only to CARMEN logs whose logged pose is the corrected "
-                     "pose (format carmen, ground_truth corrected_poses); this sequence has only its recorded odometry",
-                     entry.name));
+    Fail(
+        source, odometry_node,
+        fmt::format("sequence '{}': odometry: reference applies only to CARMEN logs whose logged pose is the corrected "
+                    "pose (format carmen, ground_truth corrected_poses); this sequence has only its recorded odometry",
+                    entry.name));
   }
   return entry;
 }

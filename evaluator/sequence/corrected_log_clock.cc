@@ -15,7 +15,8 @@ void TakeClockFromCorrectedLog(Sequence& sequence, Sequence corrected, std::size
   if (readings.empty()) {
     throw InputError(Located(corrected_source, 0,
                              "corrected_log: the log has no recorded odometry stream, so no raw-scan clock to give "
-                             "sequence '" + sequence.name + "'"));
+                             "sequence '" +
+                                 sequence.name + "'"));
   }
   if (every == 0) throw InputError("corrected_log.every: expected a step of at least 1 reading, got 0");
   if (first_scan >= sequence.scans.size()) {
@@ -25,22 +26,23 @@ void TakeClockFromCorrectedLog(Sequence& sequence, Sequence corrected, std::size
   if (first_scan > 0) {
     const auto drop = static_cast<std::ptrdiff_t>(first_scan);
     sequence.scans.erase(sequence.scans.begin(), sequence.scans.begin() + drop);
-    sequence.odometry = Trajectory(
-        std::vector<double>(sequence.odometry.stamps_s().begin() + drop, sequence.odometry.stamps_s().end()),
-        std::vector<Pose>(sequence.odometry.poses().begin() + drop, sequence.odometry.poses().end()));
-    sequence.warnings.push_back(fmt::format("sequence '{}': its first {} scan(s) come before the corrected log's run "
-                                            "(corrected_log.first_scan) and were dropped",
-                                            sequence.name, first_scan));
+    sequence.odometry =
+        Trajectory(std::vector<double>(sequence.odometry.stamps_s().begin() + drop, sequence.odometry.stamps_s().end()),
+                   std::vector<Pose>(sequence.odometry.poses().begin() + drop, sequence.odometry.poses().end()));
+    sequence.warnings.push_back(
+        fmt::format("sequence '{}': its first {} scan(s) come before the corrected log's run "
+                    "(corrected_log.first_scan) and were dropped",
+                    sequence.name, first_scan));
   }
   const std::size_t count = sequence.scans.size();
   if (count == 0) return;
   const std::size_t last_reading = first_reading + every * (count - 1);
   if (last_reading >= readings.size()) {
-    throw InputError(Located(corrected_source, 0,
-                             fmt::format("corrected_log: sequence '{}' has {} scans, which need reading {} (first_reading "
-                                         "{} + every {} x {}); the log has {} readings",
-                                         sequence.name, count, last_reading, first_reading, every, count - 1,
-                                         readings.size())));
+    throw InputError(
+        Located(corrected_source, 0,
+                fmt::format("corrected_log: sequence '{}' has {} scans, which need reading {} (first_reading "
+                            "{} + every {} x {}); the log has {} readings",
+                            sequence.name, count, last_reading, first_reading, every, count - 1, readings.size())));
   }
   Trajectory odometry;
   odometry.Reserve(count);
@@ -70,9 +72,10 @@ void TakeClockFromCorrectedLog(Sequence& sequence, Sequence corrected, std::size
   }
   sequence.warnings.push_back(Located(
       corrected_source, 0,
-      fmt::format("scan stamps taken from the corrected log's recorded ODOM readings (scan {} + j = reading {} + {} j); "
-                  "{} scans held by both logs have identical ranges",
-                  first_scan, first_reading, every, shared)));
+      fmt::format(
+          "scan stamps taken from the corrected log's recorded ODOM readings (scan {} + j = reading {} + {} j); "
+          "{} scans held by both logs have identical ranges",
+          first_scan, first_reading, every, shared)));
   sequence.warnings.insert(sequence.warnings.end(), corrected.warnings.begin(), corrected.warnings.end());
   sequence.reference = std::move(corrected.reference);
   sequence.relations = std::move(corrected.relations);

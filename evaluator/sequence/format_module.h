@@ -24,9 +24,9 @@ inline constexpr int kFormatModuleVersion = 1;
 /// The sizes of every type that crosses the boundary, folded into one number.
 constexpr std::size_t FormatModuleLayout() {
   std::size_t fingerprint = 0;
-  for (std::size_t size : {sizeof(Sequence), sizeof(RobotLog), sizeof(RawlogReadOptions), sizeof(RawlogWriteOptions),
-                           sizeof(RawlogSummary), sizeof(RosbagReadOptions), sizeof(std::string),
-                           sizeof(std::filesystem::path)}) {
+  for (std::size_t size :
+       {sizeof(Sequence), sizeof(RobotLog), sizeof(RawlogReadOptions), sizeof(RawlogWriteOptions),
+        sizeof(RawlogSummary), sizeof(RosbagReadOptions), sizeof(std::string), sizeof(std::filesystem::path)}) {
     fingerprint = fingerprint * 1000003u + size;
   }
   return fingerprint;

@@ -42,8 +42,8 @@ class ModuleSlot {
     }
     const std::optional<std::filesystem::path> path = FindLibexecFile(file_name_);
     if (!path) {
-      why_not_ = std::string(support_) + ": module " + std::string(file_name_) + " not found; " +
-                 DescribeLibexecSearch();
+      why_not_ =
+          std::string(support_) + ": module " + std::string(file_name_) + " not found; " + DescribeLibexecSearch();
       return;
     }
     // RTLD_LOCAL: the module's own copies of slamsweep code and its libraries stay private to it.
@@ -78,7 +78,8 @@ ModuleSlot<RawlogModule>& RawlogSlot() {
 #else
   constexpr bool kBuilt = false;
 #endif
-  static ModuleSlot<RawlogModule> slot("MRPT rawlog support", kBuilt, "slamsweep-rawlog.so", "slamsweep_rawlog_module", kMrptMissing);
+  static ModuleSlot<RawlogModule> slot("MRPT rawlog support", kBuilt, "slamsweep-rawlog.so", "slamsweep_rawlog_module",
+                                       kMrptMissing);
   return slot;
 }
 
@@ -88,7 +89,8 @@ ModuleSlot<RosbagModule>& RosbagSlot() {
 #else
   constexpr bool kBuilt = false;
 #endif
-  static ModuleSlot<RosbagModule> slot("ROS bag support", kBuilt, "slamsweep-rosbag.so", "slamsweep_rosbag_module", kRosbagMissing);
+  static ModuleSlot<RosbagModule> slot("ROS bag support", kBuilt, "slamsweep-rosbag.so", "slamsweep_rosbag_module",
+                                       kRosbagMissing);
   return slot;
 }
 

@@ -84,11 +84,12 @@ RecordedOdometry RebuildRecordedOdometry(const CarmenLog& log, std::span<const C
     if (after_scan) {
       after_scan = false;
       if (!SamePose(odom.pose, previous_scan->robot_pose)) {
-        throw InputError(Located(source, odom.line,
-                                 fmt::format("the ODOM after the {} on line {} does not repeat its pose, as a corrected "
-                                             "log's reset does: the log has no odometry stream to rebuild (use "
-                                             "odometry: reference)",
-                                             previous_scan->type, previous_scan->line)));
+        throw InputError(
+            Located(source, odom.line,
+                    fmt::format("the ODOM after the {} on line {} does not repeat its pose, as a corrected "
+                                "log's reset does: the log has no odometry stream to rebuild (use "
+                                "odometry: reference)",
+                                previous_scan->type, previous_scan->line)));
       }
       ++out.resets;
       continue;
@@ -186,8 +187,8 @@ Trajectory ReadingsAtStamps(const Trajectory& readings, std::span<const double> 
   for (double stamp : stamps_s) {
     from = std::lower_bound(from, stamps.end(), stamp);
     if (from == stamps.end() || *from != stamp) {
-      throw InputError(fmt::format("no odometry reading at stamp {} s (readings cover {})", stamp,
-                                   DescribeTimeRange(readings)));
+      throw InputError(
+          fmt::format("no odometry reading at stamp {} s (readings cover {})", stamp, DescribeTimeRange(readings)));
     }
     out.Add(stamp, readings.poses()[static_cast<std::size_t>(from - stamps.begin())]);
   }

@@ -189,8 +189,8 @@ struct OffsetSearch {
 OffsetSearch SearchOffset(const std::function<double(double)>& disagreement, double low_s, double high_s) {
   std::vector<std::pair<double, double>> coarse;
   for (double offset = low_s; offset <= high_s; offset += 0.01) coarse.emplace_back(offset, disagreement(offset));
-  const auto best = std::min_element(coarse.begin(), coarse.end(),
-                                     [](const auto& a, const auto& b) { return a.second < b.second; });
+  const auto best =
+      std::min_element(coarse.begin(), coarse.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
   OffsetSearch search{best->first, best->second, std::numeric_limits<double>::infinity()};
   for (const auto& [offset, value] : coarse) {
     if (std::abs(offset - best->first) > 0.1) search.next_best = std::min(search.next_best, value);
@@ -338,8 +338,7 @@ class ScanOverlays {
       const std::optional<Pose> to_relation = odometry_.At(relation->t2_s + offset_s);
       const std::optional<Pose> to_scan = odometry_.At(stamps_[*to]);
       if (!from_scan || !from_relation || !to_relation || !to_scan) continue;
-      const Pose placement =
-          Relative(*from_scan, *from_relation) * relation->delta * Relative(*to_relation, *to_scan);
+      const Pose placement = Relative(*from_scan, *from_relation) * relation->delta * Relative(*to_relation, *to_scan);
       sum += OverlayResidual(neighbours_[*from], hits, placement.ToIsometry()) / static_cast<double>(hits.size());
       ++used;
     }
@@ -376,8 +375,7 @@ SearchedClockFit FitRelationsClockByScans(const Relations& relations, std::span<
   const Disagreement residual = [&overlays](const std::vector<const Relation*>& subset, double offset_s) {
     return overlays.MeanResidual(subset, offset_s);
   };
-  const HalvesFit halves =
-      FitOverHalves(all, residual, start_offset_s - search_s, start_offset_s + search_s, search_s);
+  const HalvesFit halves = FitOverHalves(all, residual, start_offset_s - search_s, start_offset_s + search_s, search_s);
   if (!std::isfinite(halves.whole.best)) {
     throw InputError("relations clock: no offset near the start lays a relation on the scans");
   }

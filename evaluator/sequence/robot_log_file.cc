@@ -74,8 +74,9 @@ std::string FormatCarmenLog(const RobotLog& log) {
   for (const LaserScan& scan : log.scans) flaser = flaser && IsFlaserFan(scan);
 
   std::string out = "# " + log.name + ": raw robot log written by slamsweep (scans and odometry only)\n";
-  out += FormatCarmenRecord(CarmenParam{std::string(kCarmenLoggedPoseParam), std::string(kCarmenLoggedPoseOdometry), 0}) +
-         '\n';
+  out +=
+      FormatCarmenRecord(CarmenParam{std::string(kCarmenLoggedPoseParam), std::string(kCarmenLoggedPoseOdometry), 0}) +
+      '\n';
   const double max_range_m = log.scans.front().range_max_m;
   bool same_max_range = true;
   for (const LaserScan& scan : log.scans) same_max_range = same_max_range && scan.range_max_m == max_range_m;

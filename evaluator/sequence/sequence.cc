@@ -23,8 +23,8 @@ void CheckScan(const std::string& name, const LaserScan& scan, std::size_t index
     Fail(name, where + "expected a finite start angle and a finite non-zero angle increment");
   }
   if (!(scan.range_min_m >= 0.0) || !(scan.range_max_m > scan.range_min_m) || !std::isfinite(scan.range_max_m)) {
-    Fail(name, where + fmt::format("expected 0 <= range_min_m < range_max_m (finite), got {} and {}",
-                                   scan.range_min_m, scan.range_max_m));
+    Fail(name, where + fmt::format("expected 0 <= range_min_m < range_max_m (finite), got {} and {}", scan.range_min_m,
+                                   scan.range_max_m));
   }
   if (!scan.sensor_pose_on_robot.IsValid()) Fail(name, where + "sensor pose is not a valid pose");
 }
@@ -41,13 +41,13 @@ void ValidateScansAndOdometry(const std::string& name, const std::vector<LaserSc
     }
   }
   if (odometry.size() != count) {
-    Fail(name, "expected one odometry pose per scan (" + std::to_string(count) + "), got " +
-                   std::to_string(odometry.size()));
+    Fail(name,
+         "expected one odometry pose per scan (" + std::to_string(count) + "), got " + std::to_string(odometry.size()));
   }
   for (std::size_t i = 0; i < count; ++i) {
     if (odometry.stamps_s()[i] != scans[i].stamp_s) {
-      Fail(name, fmt::format("odometry pose {} has stamp {} s, its scan {} s", i, odometry.stamps_s()[i],
-                             scans[i].stamp_s));
+      Fail(name,
+           fmt::format("odometry pose {} has stamp {} s, its scan {} s", i, odometry.stamps_s()[i], scans[i].stamp_s));
     }
   }
 }

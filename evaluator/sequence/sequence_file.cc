@@ -50,19 +50,14 @@ bool LooksLikeCarmen(std::string_view text) {
     if (first == std::string_view::npos || line[first] == '#') continue;
     const std::string_view rest = line.substr(first);
     const std::string_view word = rest.substr(0, rest.find_first_of(" \t\r"));
-    for (std::string_view message : {"FLASER", "RLASER", "ROBOTLASER1", "RAWLASER1", "ODOM", "PARAM", "NEFF",
-                                     "TRUEPOS", "SYNC"}) {
+    for (std::string_view message :
+         {"FLASER", "RLASER", "ROBOTLASER1", "RAWLASER1", "ODOM", "PARAM", "NEFF", "TRUEPOS", "SYNC"}) {
       if (word == message) return true;
     }
     return false;
   }
   return false;
 }
-
-
-
-
-
 
 }  // namespace
 

@@ -47,7 +47,7 @@ std::vector<double> ExactUCounts(std::size_t n_x, std::size_t n_y) {
   // table[m][u] for the current n (number of y's), built up from n = 0.
   const std::size_t max_u = n_x * n_y;
   std::vector<std::vector<double>> previous(n_x + 1);  // n - 1 y's
-  for (std::size_t m = 0; m <= n_x; ++m) {  // n = 0: U is 0 whatever m is
+  for (std::size_t m = 0; m <= n_x; ++m) {             // n = 0: U is 0 whatever m is
     previous[m].assign(max_u + 1, 0.0);
     previous[m][0] = 1.0;
   }

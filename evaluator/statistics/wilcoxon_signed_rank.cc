@@ -35,8 +35,7 @@ WilcoxonResult WilcoxonSignedRank(std::span<const double> x, std::span<const dou
   }
   result.pairs_used = differences.size();
   if (differences.empty()) return result;
-  std::sort(differences.begin(), differences.end(),
-            [](double a, double b) { return std::abs(a) < std::abs(b); });
+  std::sort(differences.begin(), differences.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
   double tie_term = 0.0;  // sum of t^3 - t over groups of tied |d|
   for (std::size_t i = 0; i < differences.size();) {
     std::size_t j = i;

@@ -95,7 +95,6 @@ class NearestStamp {
     return PartitionPointIndex(lower, known_false_or_end, before);
   }
 
-
   std::size_t MinIndex(std::size_t begin, std::size_t end) const {
     if (order_.empty()) return begin;
     const std::size_t n = sorted_.size();
@@ -219,7 +218,8 @@ Association Associate(Trajectory&& reference, Trajectory&& estimate, const Assoc
   const Pairing pairing = PairByStamp(reference, estimate, options);
   Trajectory& shorter = pairing.estimate_longer ? reference : estimate;
   Trajectory& longer = pairing.estimate_longer ? estimate : reference;
-  return Assemble(pairing, std::move(shorter).Select(pairing.shorter_ids), std::move(longer).Select(pairing.longer_ids));
+  return Assemble(pairing, std::move(shorter).Select(pairing.shorter_ids),
+                  std::move(longer).Select(pairing.longer_ids));
 }
 
 }  // namespace slamsweep::evaluator

@@ -92,7 +92,9 @@ ValidityCorrelation Correlate(const std::vector<ValidityPoint>& points, Validity
   return correlation;
 }
 
-nlohmann::json OptionalNumber(const std::optional<double>& value) { return value ? nlohmann::json(*value) : nlohmann::json(); }
+nlohmann::json OptionalNumber(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json();
+}
 
 nlohmann::json QuantitiesJson(std::span<const ValidityQuantity> quantities) {
   nlohmann::json out = nlohmann::json::array();
@@ -152,7 +154,8 @@ std::vector<ValidityPoint> ValidityPoints(std::span<const ValidityRun> runs, std
     const std::optional<double> x = ValueOf(run, candidate), y = ValueOf(run, target);
     if (x && y) points.push_back({*x, *y, run.run_id, run.sequence, run.noise, run.algorithm});
   }
-  std::sort(points.begin(), points.end(), [](const ValidityPoint& a, const ValidityPoint& b) { return a.run_id < b.run_id; });
+  std::sort(points.begin(), points.end(),
+            [](const ValidityPoint& a, const ValidityPoint& b) { return a.run_id < b.run_id; });
   return points;
 }
 
@@ -230,8 +233,9 @@ ValidityStudy ComputeValidityStudy(std::vector<ValidityRun> runs, const Validity
     if (c.verdict != ValidityVerdict::kTracksError && c.verdict != ValidityVerdict::kOpposite) continue;
     c.family_interval =
         PercentileInterval(decided_replicates[i], study.family_confidence, options.bootstrap.min_defined_fraction);
-    c.survives_family = c.family_interval && (c.verdict == ValidityVerdict::kTracksError ? c.family_interval->low > 0.0
-                                                                                         : c.family_interval->high < 0.0);
+    c.survives_family =
+        c.family_interval &&
+        (c.verdict == ValidityVerdict::kTracksError ? c.family_interval->low > 0.0 : c.family_interval->high < 0.0);
   }
   return study;
 }
@@ -257,8 +261,9 @@ nlohmann::json ToJson(const ValidityStudy& study) {
     }
   }
   return {{"method",
-           {{"statistic", "Spearman's rank correlation (average ranks for ties); over several strata, the Pearson "
-                          "correlation of within-stratum ranks centred on the stratum's mean rank and divided by its size"},
+           {{"statistic",
+             "Spearman's rank correlation (average ranks for ties); over several strata, the Pearson "
+             "correlation of within-stratum ranks centred on the stratum's mean rank and divided by its size"},
             {"interval", "percentile bootstrap, resampling runs with replacement within each stratum"},
             {"confidence", study.options.bootstrap.confidence},
             {"resamples", study.options.bootstrap.resamples},
@@ -352,8 +357,8 @@ ValidityStudy ValidityStudyFromJson(const nlohmann::json& json) {
     }
     const std::string verdict = FieldAs<std::string>(entry, "verdict", at);
     bool known = false;
-    for (ValidityVerdict v : {ValidityVerdict::kTooFewRuns, ValidityVerdict::kNoVariation, ValidityVerdict::kTracksError,
-                              ValidityVerdict::kOpposite, ValidityVerdict::kUnclear}) {
+    for (ValidityVerdict v : {ValidityVerdict::kTooFewRuns, ValidityVerdict::kNoVariation,
+                              ValidityVerdict::kTracksError, ValidityVerdict::kOpposite, ValidityVerdict::kUnclear}) {
       if (verdict == ValidityVerdictName(v)) {
         c.verdict = v;
         known = true;

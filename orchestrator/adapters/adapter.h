@@ -52,7 +52,8 @@ class Adapter {
   /// Reads the program's outputs after it exited normally. A missing file is a RunFailure
   /// kMissingOutput naming it (relative to the run folder), an unreadable one kCorruptOutput
   /// naming it with the reader's message.
-  virtual CollectedOutputs Collect(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const = 0;
+  virtual CollectedOutputs Collect(const RunSpec& spec, const evaluator::RobotLog& robot,
+                                   const RunPaths& paths) const = 0;
 
   /// What the program reads besides input/, its own file and the system folders: the paths its
   /// sandbox shows it read-only (orchestrator/worker/program_sandbox.h). Absolute; may not exist.

@@ -57,8 +57,15 @@ std::vector<std::pair<std::string, std::string>> KeyValueLines(const std::string
 }
 
 AlgorithmInfo DescribeRoster(const RosterAlgorithm& algorithm) {
-  AlgorithmInfo info{std::string(algorithm.name), std::string(algorithm.title), false, "", std::string(algorithm.license),
-                     std::string(SeedingName(algorithm.seeding)), {}, "upstream names; unknown names fail the run", ""};
+  AlgorithmInfo info{std::string(algorithm.name),
+                     std::string(algorithm.title),
+                     false,
+                     "",
+                     std::string(algorithm.license),
+                     std::string(SeedingName(algorithm.seeding)),
+                     {},
+                     "upstream names; unknown names fail the run",
+                     ""};
   std::optional<nlohmann::json> manifest;
   try {
     manifest = ReadRosterManifest(algorithm);
@@ -89,8 +96,15 @@ AlgorithmInfo DescribeRoster(const RosterAlgorithm& algorithm) {
 
 AlgorithmInfo DescribeMrpt(const std::string& adapter, const std::string& program, const std::string& title,
                            Seeding seeding, const std::vector<IniSetting>& defaults, const std::string& template_path) {
-  AlgorithmInfo info{adapter, title, false, "", "BSD-3-Clause", std::string(SeedingName(seeding)), {},
-                     "any Section.key of " + template_path, ""};
+  AlgorithmInfo info{adapter,
+                     title,
+                     false,
+                     "",
+                     "BSD-3-Clause",
+                     std::string(SeedingName(seeding)),
+                     {},
+                     "any Section.key of " + template_path,
+                     ""};
   try {
     ResolveProgram(program, fs::current_path());
     info.installed = true;
@@ -99,7 +113,8 @@ AlgorithmInfo DescribeMrpt(const std::string& adapter, const std::string& progra
   } catch (const evaluator::InputError&) {
     info.status = "not installed: apt install mrpt-apps (scripts/install-deps.sh)";
   }
-  for (const IniSetting& setting : defaults) info.parameters.emplace_back(setting.section + "." + setting.key, setting.value);
+  for (const IniSetting& setting : defaults)
+    info.parameters.emplace_back(setting.section + "." + setting.key, setting.value);
   return info;
 }
 
@@ -116,14 +131,28 @@ std::string DefaultsNote(const std::string& adapter) {
 std::vector<AlgorithmInfo> DescribeAlgorithms() {
   std::vector<AlgorithmInfo> all;
   for (const RosterAlgorithm& algorithm : Roster()) all.push_back(DescribeRoster(algorithm));
-  all.push_back(DescribeMrpt("mrpt-icp-slam", "icp-slam", "MRPT icp-slam", Seeding::kDeterministic, IcpSlamDefaultSettings(),
-                             kIcpSlamTemplate));
+  all.push_back(DescribeMrpt("mrpt-icp-slam", "icp-slam", "MRPT icp-slam", Seeding::kDeterministic,
+                             IcpSlamDefaultSettings(), kIcpSlamTemplate));
   all.push_back(DescribeMrpt("mrpt-rbpf-slam", "rbpf-slam", "MRPT rbpf-slam", Seeding::kSeeded,
                              {{"MappingApplication", "sampleSize", "5"}}, kRbpfSlamTemplate));
-  all.push_back(AlgorithmInfo{"odometry", "odometry baseline (the odometry as the trajectory)", true, "built in", "-",
-                              std::string(SeedingName(Seeding::kDeterministic)), {}, "none", ""});
-  all.push_back(AlgorithmInfo{"command", "any SLAM program through a declared command", true, "built in", "the program's",
-                              "seeded when its argv uses {seed} or {seed32}", {}, "{param:NAME} in its argv", ""});
+  all.push_back(AlgorithmInfo{"odometry",
+                              "odometry baseline (the odometry as the trajectory)",
+                              true,
+                              "built in",
+                              "-",
+                              std::string(SeedingName(Seeding::kDeterministic)),
+                              {},
+                              "none",
+                              ""});
+  all.push_back(AlgorithmInfo{"command",
+                              "any SLAM program through a declared command",
+                              true,
+                              "built in",
+                              "the program's",
+                              "seeded when its argv uses {seed} or {seed32}",
+                              {},
+                              "{param:NAME} in its argv",
+                              ""});
   for (AlgorithmInfo& info : all) info.defaults_note = DefaultsNote(info.adapter);
   return all;
 }

@@ -26,8 +26,9 @@ namespace {
 
 const CommandDeclaration& Declaration(const RunSpec& spec) {
   if (!spec.algorithm.command) {
-    throw ev::InputError("algorithm.command: the command adapter needs a command declaration (argv, input_format, "
-                         "trajectory and/or map)");
+    throw ev::InputError(
+        "algorithm.command: the command adapter needs a command declaration (argv, input_format, "
+        "trajectory and/or map)");
   }
   const CommandDeclaration& declaration = *spec.algorithm.command;
   if (declaration.argv.empty() || declaration.argv.front().empty()) {
@@ -44,8 +45,8 @@ PlaceholderValues Values(const RunSpec& spec, const RunPaths& paths) {
   const CommandDeclaration& declaration = Declaration(spec);
   const ev::SequenceWriteFormat format =
       ev::ParseSequenceWriteFormat(declaration.input_format, "algorithm.command.input_format");
-  values.input = (paths.InputDir() / (SafeFileStem(spec.sequence.entry.name) +
-                                      InputExtension(ev::SequenceWriteFormatName(format))))
+  values.input = (paths.InputDir() /
+                  (SafeFileStem(spec.sequence.entry.name) + InputExtension(ev::SequenceWriteFormatName(format))))
                      .string();
   values.input_dir = paths.InputDir().string();
   values.output_dir = paths.RawDir().string();
@@ -112,7 +113,8 @@ PreparedRun CommandAdapter::Prepare(const RunSpec& spec, const ev::RobotLog& rob
 
 std::vector<fs::path> CommandAdapter::ProgramReads(const RunSpec& spec) const {
   std::vector<fs::path> reads;
-  if (spec.algorithm.command) reads.assign(spec.algorithm.command->read_only.begin(), spec.algorithm.command->read_only.end());
+  if (spec.algorithm.command)
+    reads.assign(spec.algorithm.command->read_only.begin(), spec.algorithm.command->read_only.end());
   return reads;
 }
 
@@ -150,8 +152,8 @@ CollectedOutputs CommandAdapter::Collect(const RunSpec& spec, const ev::RobotLog
     try {
       rendered = RenderMapFromTrajectory(robot.scans, *outputs.trajectory, spec.evaluation);
     } catch (const ev::InputError& error) {
-      throw RunFailure(FailureKind::kCorruptOutput, std::string("no map can be rendered from the trajectory: ") +
-                                                        error.what());
+      throw RunFailure(FailureKind::kCorruptOutput,
+                       std::string("no map can be rendered from the trajectory: ") + error.what());
     }
     outputs.map = std::move(rendered.grid);
     outputs.map_rendered_from_trajectory = true;

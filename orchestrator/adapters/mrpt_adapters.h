@@ -9,9 +9,9 @@
 
 namespace slamsweep::orchestrator {
 
-/// MRPT's icp-slam: `icp-slam ../input/icp-slam.ini` (run in raw/), deterministic: ICP has no random draw. Outputs: raw/_finalmaps_.txt_mrpt__maps__
-/// COccupancyGridMap2D_00.png (+ _limits.txt) and raw/log_estimated_path.txt ("step x y yaw"; step k
-/// = scan k). It saves no stage maps: they are rendered from the estimated path.
+/// MRPT's icp-slam: `icp-slam ../input/icp-slam.ini` (run in raw/), deterministic: ICP has no random draw. Outputs:
+/// raw/_finalmaps_.txt_mrpt__maps__ COccupancyGridMap2D_00.png (+ _limits.txt) and raw/log_estimated_path.txt ("step x
+/// y yaw"; step k = scan k). It saves no stage maps: they are rendered from the estimated path.
 class IcpSlamAdapter : public Adapter {
  public:
   explicit IcpSlamAdapter(std::filesystem::path template_path = kIcpSlamTemplate);
@@ -23,8 +23,8 @@ class IcpSlamAdapter : public Adapter {
   std::filesystem::path template_path_;
 };
 
-/// MRPT's rbpf-slam: `rbpf-slam ../input/rbpf-slam.ini` (run in raw/), seeded through RANDOM_SEED, 5 particles unless the run says otherwise
-/// (MappingApplication.sampleSize). Outputs: raw/finalMap_mrpt__maps__COccupancyGridMap2D_00.png
+/// MRPT's rbpf-slam: `rbpf-slam ../input/rbpf-slam.ini` (run in raw/), seeded through RANDOM_SEED, 5 particles unless
+/// the run says otherwise (MappingApplication.sampleSize). Outputs: raw/finalMap_mrpt__maps__COccupancyGridMap2D_00.png
 /// (+ _limits.txt), raw/log_estimated_path.txt ("step x y z yaw pitch roll t") and every
 /// LOG_FREQUENCY steps raw/maps/mapbuilt_NNNNN__mrpt__maps__COccupancyGridMap2D_00.png (the stages).
 class RbpfSlamAdapter : public Adapter {

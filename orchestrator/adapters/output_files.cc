@@ -49,7 +49,8 @@ ev::OccupancyGrid ReadMapOutput(const RunPaths& paths, const fs::path& file, std
   try {
     return ev::ReadMap(file, options);
   } catch (const ev::InputError& error) {
-    throw RunFailure(FailureKind::kCorruptOutput, "corrupt " + std::string(what) + ": " + Shortened(paths, error.what()));
+    throw RunFailure(FailureKind::kCorruptOutput,
+                     "corrupt " + std::string(what) + ": " + Shortened(paths, error.what()));
   }
 }
 
@@ -60,7 +61,8 @@ ev::Trajectory ReadTrajectoryOutput(const RunPaths& paths, const fs::path& file,
     ev::TrajectoryFile read = ev::ReadTrajectoryFile(file, format, options);
     for (std::string& warning : read.warnings) warnings.push_back(Shortened(paths, std::move(warning)));
     if (read.trajectory.empty()) {
-      throw RunFailure(FailureKind::kCorruptOutput, "corrupt trajectory: " + RunRelative(paths, file) + " holds no pose");
+      throw RunFailure(FailureKind::kCorruptOutput,
+                       "corrupt trajectory: " + RunRelative(paths, file) + " holds no pose");
     }
     return std::move(read.trajectory);
   } catch (const ev::InputError& error) {

@@ -68,15 +68,17 @@ std::vector<fs::path> ProgramFilesOf(const AlgorithmSpec& algorithm) {
 Seeding SeedingOf(const AlgorithmSpec& algorithm) {
   const std::string& adapter = algorithm.adapter;
   if (adapter == "mrpt-icp-slam" || adapter == "odometry") return Seeding::kDeterministic;  // ICP draws nothing
-  if (adapter == "mrpt-rbpf-slam") return Seeding::kSeeded;                               // through RANDOM_SEED
+  if (adapter == "mrpt-rbpf-slam") return Seeding::kSeeded;                                 // through RANDOM_SEED
   if (adapter == "command") return CommandSeeding(algorithm);
   if (const RosterAlgorithm* roster = FindRosterAlgorithm(adapter)) return roster->seeding;
   ThrowUnknownAdapter(adapter);
 }
 
 void ThrowUnknownAdapter(std::string_view name) {
-  throw ev::InputError("algorithm.adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command, odometry, gmapping, "
-                       "tinyslam, vinyslam, hector or cartographer, got '" + std::string(name) + "'");
+  throw ev::InputError(
+      "algorithm.adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command, odometry, gmapping, "
+      "tinyslam, vinyslam, hector or cartographer, got '" +
+      std::string(name) + "'");
 }
 
 }  // namespace slamsweep::orchestrator

@@ -40,7 +40,8 @@ fs::path RosterPrefix() {
   const char* configured = std::getenv("SLAMSWEEP_SLAM_PREFIX");
   if (configured != nullptr && *configured != '\0') return configured;
   // An installation keeps the manifests in PREFIX/share/slamsweep/slam.
-  if (const auto installed = evaluator::FindInstalledData("slam")) return installed->parent_path().parent_path().parent_path();
+  if (const auto installed = evaluator::FindInstalledData("slam"))
+    return installed->parent_path().parent_path().parent_path();
   return SLAMSWEEP_DEFAULT_SLAM_PREFIX;
 }
 
@@ -64,8 +65,9 @@ fs::path RosterDriver(const RosterAlgorithm& algorithm) {
   try {
     return ResolveProgram(program, fs::current_path());
   } catch (const evaluator::InputError&) {
-    throw evaluator::InputError("algorithm.adapter " + std::string(algorithm.name) + ": " + program + " is not built (looked in " +
-                                looked + "and PATH); install it with scripts/install-slam.sh " +
+    throw evaluator::InputError("algorithm.adapter " + std::string(algorithm.name) + ": " + program +
+                                " is not built (looked in " + looked +
+                                "and PATH); install it with scripts/install-slam.sh " +
                                 std::string(algorithm.upstream) + " && scripts/build.sh");
   }
 }
@@ -120,7 +122,8 @@ std::vector<fs::path> RosterProgramFiles(const RosterAlgorithm& algorithm) {
   const fs::path manifest = RosterManifestPath(algorithm);
   if (!fs::is_regular_file(manifest)) {
     throw evaluator::InputError("algorithm.adapter " + std::string(algorithm.name) + ": " + manifest.string() +
-                                " missing: install the upstream with scripts/install-slam.sh " + std::string(algorithm.upstream));
+                                " missing: install the upstream with scripts/install-slam.sh " +
+                                std::string(algorithm.upstream));
   }
   files.push_back(manifest);
   return files;

@@ -22,8 +22,15 @@ PreparedRun RosterAdapter::Prepare(const RunSpec& spec, const ev::RobotLog& robo
   const std::string input = SafeFileStem(spec.sequence.entry.name) + ".log";
   ev::WriteRobotLog(robot, paths.InputDir() / input, ev::SequenceWriteFormat::kCarmen);
   PreparedRun run;
-  run.argv = {driver.string(), "--input",  "../input/" + input, "--output-dir", ".", "--seed", std::to_string(spec.seed),
-              "--stages",      std::to_string(spec.evaluation.stages)};
+  run.argv = {driver.string(),
+              "--input",
+              "../input/" + input,
+              "--output-dir",
+              ".",
+              "--seed",
+              std::to_string(spec.seed),
+              "--stages",
+              std::to_string(spec.evaluation.stages)};
   for (const auto& [key, value] : spec.algorithm.parameters.items()) {
     run.argv.push_back(key + "=" + RosterParameterText(value));
   }
@@ -34,11 +41,12 @@ std::vector<fs::path> RosterAdapter::ProgramReads(const RunSpec& /*spec*/) const
   return RosterProgramReads(algorithm_);
 }
 
-CollectedOutputs RosterAdapter::Collect(const RunSpec& spec, const ev::RobotLog& /*robot*/, const RunPaths& paths) const {
+CollectedOutputs RosterAdapter::Collect(const RunSpec& spec, const ev::RobotLog& /*robot*/,
+                                        const RunPaths& paths) const {
   CollectedOutputs outputs;
   outputs.map = ReadMapOutput(paths, paths.RawDir() / "map.yaml", "map");
-  outputs.trajectory = ReadTrajectoryOutput(paths, paths.RawDir() / "trajectory.tum", ev::TrajectoryFormat::kTum, {},
-                                            outputs.warnings);
+  outputs.trajectory =
+      ReadTrajectoryOutput(paths, paths.RawDir() / "trajectory.tum", ev::TrajectoryFormat::kTum, {}, outputs.warnings);
   if (spec.evaluation.stages == 0) return outputs;
   // stage-<scan index, 6 digits>: lexicographic order is build order.
   for (const fs::path& file : GlobFiles(paths.RawDir(), "stages/stage-*.yaml")) {

@@ -16,8 +16,8 @@
 namespace slamsweep::orchestrator {
 namespace {
 
-constexpr std::string_view kAdapters[] = {"mrpt-icp-slam", "mrpt-rbpf-slam", "command",  "odometry",    "gmapping",
-                                          "tinyslam",      "vinyslam",       "hector",   "cartographer"};
+constexpr std::string_view kAdapters[] = {"mrpt-icp-slam", "mrpt-rbpf-slam", "command", "odometry",    "gmapping",
+                                          "tinyslam",      "vinyslam",       "hector",  "cartographer"};
 constexpr std::string_view kInputFormats[] = {"rawlog", "carmen", "tum"};
 constexpr std::string_view kTrajectoryFormats[] = {"tum", "kitti", "csv", "mrpt", "carmen"};
 constexpr std::string_view kMapFormats[] = {"map_server", "mrpt", "pgm"};
@@ -97,7 +97,8 @@ std::optional<DeclaredOutput> ParseDeclaredOutput(const std::filesystem::path& f
   output.path = fields.RequiredText("path");
   CheckPlaceholders(file, fields.Get("path"), fields.PathOf("path"), output.path, parameters);
   output.format = fields.RequiredText("format");
-  if (!OneOf(output.format, formats)) FailExpected(file, fields.Get("format"), fields.PathOf("format"), Choices(formats));
+  if (!OneOf(output.format, formats))
+    FailExpected(file, fields.Get("format"), fields.PathOf("format"), Choices(formats));
   fields.Finish();
   return output;
 }
@@ -129,7 +130,8 @@ CommandDeclaration ParseCommand(const std::filesystem::path& file, const YAML::N
   YamlFields fields(file, node, path);
   CommandDeclaration command;
   const YAML::Node argv = fields.Get("argv");
-  if (!argv.IsDefined()) FailAt(file, node, fmt::format("{}: missing (required: the program and its arguments)", fields.PathOf("argv")));
+  if (!argv.IsDefined())
+    FailAt(file, node, fmt::format("{}: missing (required: the program and its arguments)", fields.PathOf("argv")));
   if (!argv.IsSequence() || argv.size() == 0) {
     FailExpected(file, argv, fields.PathOf("argv"), "a non-empty list: the program, then one item per argument");
   }
@@ -150,7 +152,8 @@ CommandDeclaration ParseCommand(const std::filesystem::path& file, const YAML::N
   command.map = ParseDeclaredOutput(file, fields.Get("map"), fields.PathOf("map"), kMapFormats, parameters);
   command.stage_maps_glob = fields.Text("stage_maps", "");
   const std::uint64_t unknown = fields.Unsigned("stage_unknown_value", 205);
-  if (unknown > 255) FailExpected(file, fields.Get("stage_unknown_value"), fields.PathOf("stage_unknown_value"), "a grey level 0..255");
+  if (unknown > 255)
+    FailExpected(file, fields.Get("stage_unknown_value"), fields.PathOf("stage_unknown_value"), "a grey level 0..255");
   command.stage_unknown_value = static_cast<int>(unknown);
   command.read_only = ParseReadOnly(file, fields.Get("read_only"), fields.PathOf("read_only"), policy);
   fields.Finish();
@@ -162,8 +165,8 @@ CommandDeclaration ParseCommand(const std::filesystem::path& file, const YAML::N
 
 }  // namespace
 
-AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YAML::Node& node,
-                                     const std::string& path, const InputPolicy& policy) {
+AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YAML::Node& node, const std::string& path,
+                                     const InputPolicy& policy) {
   YamlFields fields(file, node, path);
   AlgorithmConfig algorithm;
   algorithm.name = fields.RequiredText("name");
@@ -184,7 +187,8 @@ AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YA
   }
   algorithm.memory_limit_mb = fields.Unsigned("memory_limit_mb", algorithm.memory_limit_mb);
   algorithm.disk_limit_mb = fields.Unsigned("disk_limit_mb", algorithm.disk_limit_mb);
-  if (algorithm.disk_limit_mb == 0) FailExpected(file, fields.Get("disk_limit_mb"), fields.PathOf("disk_limit_mb"), "a number of MB >= 1");
+  if (algorithm.disk_limit_mb == 0)
+    FailExpected(file, fields.Get("disk_limit_mb"), fields.PathOf("disk_limit_mb"), "a number of MB >= 1");
   algorithm.process_limit = fields.Unsigned("process_limit", algorithm.process_limit);
   if (algorithm.process_limit < kMinProcessLimit) {
     FailExpected(file, fields.Get("process_limit"), fields.PathOf("process_limit"),
@@ -192,10 +196,11 @@ AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YA
   }
   algorithm.network = fields.Bool("network", algorithm.network);
   if (algorithm.network && !policy.allow_network) {
-    throw PolicyError(LocatedAt(file, fields.Get("network"),
-                                fmt::format("{}: this server gives programs no network (start it with --allow-network), "
-                                            "got network: true",
-                                            fields.PathOf("network"))));
+    throw PolicyError(
+        LocatedAt(file, fields.Get("network"),
+                  fmt::format("{}: this server gives programs no network (start it with --allow-network), "
+                              "got network: true",
+                              fields.PathOf("network"))));
   }
   if (fields.Has("iterations")) {
     const std::uint64_t iterations = fields.Unsigned("iterations", 1);
@@ -210,7 +215,8 @@ AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YA
   const YAML::Node command = fields.Get("command");
   if (algorithm.adapter == "command") {
     if (!command.IsDefined()) {
-      FailAt(file, node, fmt::format("{}: missing (the command adapter needs argv and outputs)", fields.PathOf("command")));
+      FailAt(file, node,
+             fmt::format("{}: missing (the command adapter needs argv and outputs)", fields.PathOf("command")));
     }
     algorithm.command = ParseCommand(file, command, fields.PathOf("command"), declared, policy);
   } else if (command.IsDefined()) {

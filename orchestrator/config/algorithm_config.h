@@ -13,7 +13,7 @@ namespace slamsweep::orchestrator {
 /// Checks the adapter name, parameter values (scalars or non-empty lists of scalars), and for the
 /// command adapter its argv, formats and placeholders ({param:X} must name a declared parameter).
 /// A command adapter that `policy` does not allow is a PolicyError at its `adapter:` value.
-AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YAML::Node& node,
-                                     const std::string& path, const InputPolicy& policy = {});
+AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YAML::Node& node, const std::string& path,
+                                     const InputPolicy& policy = {});
 
 }  // namespace slamsweep::orchestrator

@@ -29,15 +29,16 @@ bool Declares(const AlgorithmConfig& algorithm, const std::string& parameter) {
 
 }  // namespace
 
-std::vector<CellFilter> ParseCellFilters(const std::filesystem::path& file, const YAML::Node& node, std::string_view key,
-                                         const SweepConfig& config, bool is_include) {
+std::vector<CellFilter> ParseCellFilters(const std::filesystem::path& file, const YAML::Node& node,
+                                         std::string_view key, const SweepConfig& config, bool is_include) {
   std::vector<CellFilter> filters;
   if (!node.IsDefined() || node.IsNull()) return filters;
   if (!node.IsSequence()) FailExpected(file, node, key, "a list of {algorithm, sequence, noise, parameters}");
   for (std::size_t i = 0; i < node.size(); ++i) {
     YamlFields fields(file, node[i], fmt::format("{}[{}]", key, i));
     CellFilter filter;
-    filter.algorithm = KnownName(fields, "algorithm", config.algorithms, [](const AlgorithmConfig& a) { return a.name; });
+    filter.algorithm =
+        KnownName(fields, "algorithm", config.algorithms, [](const AlgorithmConfig& a) { return a.name; });
     filter.sequence =
         KnownName(fields, "sequence", config.sequences, [](const SequenceSpec& s) { return s.entry.name; });
     filter.noise = KnownName(fields, "noise", config.noise, [](const NoiseSpec& n) { return n.name; });
@@ -51,9 +52,10 @@ std::vector<CellFilter> ParseCellFilters(const std::filesystem::path& file, cons
       }
       for (const auto& item : parameters) {
         const std::string name = item.first.Scalar();
-        const bool declared = algorithm != nullptr ? Declares(*algorithm, name)
-                                                   : std::any_of(config.algorithms.begin(), config.algorithms.end(),
-                                                                 [&](const AlgorithmConfig& a) { return Declares(a, name); });
+        const bool declared = algorithm != nullptr
+                                  ? Declares(*algorithm, name)
+                                  : std::any_of(config.algorithms.begin(), config.algorithms.end(),
+                                                [&](const AlgorithmConfig& a) { return Declares(a, name); });
         if (!declared) {
           FailAt(file, item.first,
                  fmt::format("{}.{}: expected a parameter declared by {}, got an undeclared one", path, name,
@@ -68,7 +70,8 @@ std::vector<CellFilter> ParseCellFilters(const std::filesystem::path& file, cons
       FailAt(file, node[i], fmt::format("{}[{}]: expected at least an algorithm and a sequence to add", key, i));
     }
     if (!filter.algorithm && !filter.sequence && !filter.noise && filter.parameters.empty()) {
-      FailAt(file, node[i], fmt::format("{}[{}]: expected at least one of algorithm, sequence, noise, parameters", key, i));
+      FailAt(file, node[i],
+             fmt::format("{}[{}]: expected at least one of algorithm, sequence, noise, parameters", key, i));
     }
     filters.push_back(std::move(filter));
   }

@@ -14,7 +14,7 @@ namespace slamsweep::orchestrator {
 /// parsed into `config`. Every name must exist, and every parameter must be declared by the named
 /// algorithm (or, without one, by some algorithm), so that a typo cannot silently match nothing.
 /// An include needs an algorithm and a sequence; an exclude needs at least one field.
-std::vector<CellFilter> ParseCellFilters(const std::filesystem::path& file, const YAML::Node& node, std::string_view key,
-                                         const SweepConfig& config, bool is_include);
+std::vector<CellFilter> ParseCellFilters(const std::filesystem::path& file, const YAML::Node& node,
+                                         std::string_view key, const SweepConfig& config, bool is_include);
 
 }  // namespace slamsweep::orchestrator

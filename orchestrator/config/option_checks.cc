@@ -36,7 +36,8 @@ void ValidateEvaluationOptions(const EvaluationOptions& evaluation, const std::s
 }
 
 std::optional<std::vector<double>> ParseSegmentLengths(const nlohmann::json& value, const std::string& path) {
-  constexpr std::string_view kExpected = "expected auto or a list of distinct segment lengths > 0 m such as [5, 10, 20]";
+  constexpr std::string_view kExpected =
+      "expected auto or a list of distinct segment lengths > 0 m such as [5, 10, 20]";
   if (value.is_string() && value.get<std::string>() == "auto") return std::nullopt;
   if (!value.is_array()) throw InputError(path + ": " + std::string(kExpected) + ", got " + value.dump());
   std::vector<double> lengths;

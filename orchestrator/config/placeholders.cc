@@ -51,8 +51,8 @@ void CheckPlaceholderName(std::string_view name, std::span<const std::string> pa
     if (std::find(parameters.begin(), parameters.end(), parameter) != parameters.end()) return;
     std::string declared;
     for (const std::string& known : parameters) declared += (declared.empty() ? "" : ", ") + known;
-    throw evaluator::InputError(fmt::format("{{param:{}}} names no parameter of the algorithm (declared: {})", parameter,
-                                            declared.empty() ? "none" : declared));
+    throw evaluator::InputError(fmt::format("{{param:{}}} names no parameter of the algorithm (declared: {})",
+                                            parameter, declared.empty() ? "none" : declared));
   }
   if (std::find(std::begin(kPlaceholderNames), std::end(kPlaceholderNames), name) != std::end(kPlaceholderNames)) {
     return;

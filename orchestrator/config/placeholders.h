@@ -11,8 +11,8 @@ namespace slamsweep::orchestrator {
 /// {input} the program's input file, {input_dir} the folder holding it, {output_dir} the program's
 /// output folder (also its working directory), {seed} the run's 64-bit seed, {seed32} Seed32 of it,
 /// {iteration}. There is deliberately no placeholder for the run folder: it holds the run's record.
-inline constexpr std::string_view kPlaceholderNames[] = {"input", "input_dir", "output_dir", "seed", "seed32",
-                                                         "iteration"};
+inline constexpr std::string_view kPlaceholderNames[] = {"input", "input_dir", "output_dir",
+                                                         "seed",  "seed32",    "iteration"};
 inline constexpr std::string_view kParameterPlaceholderPrefix = "param:";
 
 /// One piece of a template: literal text, or the name inside a {placeholder}.

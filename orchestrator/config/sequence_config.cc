@@ -49,7 +49,8 @@ std::string ResolveExisting(const std::filesystem::path& file, const YAML::Node&
   return resolved.string();
 }
 
-std::optional<std::size_t> MaxScans(const std::filesystem::path& file, const YAML::Node& node, const std::string& path) {
+std::optional<std::size_t> MaxScans(const std::filesystem::path& file, const YAML::Node& node,
+                                    const std::string& path) {
   if (!node.IsDefined() || node.IsNull()) return std::nullopt;
   const bool ok = node.IsScalar() && node.Tag() != "!" && !node.Scalar().empty() &&
                   node.Scalar().find_first_not_of("0123456789") == std::string::npos && node.Scalar() != "0" &&
@@ -106,9 +107,8 @@ SequenceSpec ParseSequenceConfig(const std::filesystem::path& file, YAML::Node n
     spec.entry.path = ResolveExisting(file, node, path, spec.entry, "file", spec.entry.path, base, variables, policy);
   }
   if (!spec.entry.relations_path.empty()) {
-    spec.entry.relations_path =
-        ResolveExisting(file, node, path, spec.entry, "relations file", spec.entry.relations_path, base, variables,
-                        policy);
+    spec.entry.relations_path = ResolveExisting(file, node, path, spec.entry, "relations file",
+                                                spec.entry.relations_path, base, variables, policy);
   }
   if (spec.entry.corrected_log) {
     spec.entry.corrected_log->path = ResolveExisting(file, node, path, spec.entry, "corrected log",

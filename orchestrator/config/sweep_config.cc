@@ -19,10 +19,17 @@ namespace {
 
 using evaluator::InputError;
 
-constexpr std::string_view kMetrics[] = {"ape_trans",      "ape_rot",       "rpe_trans",
-                                         "rpe_rot",        "relations_trans", "relations_rot",
-                                         "occupied_to_free_unknown", "occupied_to_all", "unknown_to_all",
-                                         "corners",        "enclosed_areas"};
+constexpr std::string_view kMetrics[] = {"ape_trans",
+                                         "ape_rot",
+                                         "rpe_trans",
+                                         "rpe_rot",
+                                         "relations_trans",
+                                         "relations_rot",
+                                         "occupied_to_free_unknown",
+                                         "occupied_to_all",
+                                         "unknown_to_all",
+                                         "corners",
+                                         "enclosed_areas"};
 constexpr std::string_view kStatistics[] = {"rmse", "mean", "median", "std", "min", "max", "sse", "n", "value"};
 
 bool IsSafeName(const std::string& name) {
@@ -51,7 +58,8 @@ SeedPolicy ParseSeedPolicy(YamlFields& fields) {
   for (SeedPolicy policy : {SeedPolicy::kPerIteration, SeedPolicy::kPerRun, SeedPolicy::kFixed}) {
     if (text == SeedPolicyName(policy)) return policy;
   }
-  FailExpected(fields.file(), fields.Get("seed_policy"), fields.PathOf("seed_policy"), "per_iteration, per_run or fixed");
+  FailExpected(fields.file(), fields.Get("seed_policy"), fields.PathOf("seed_policy"),
+               "per_iteration, per_run or fixed");
 }
 
 EvaluationOptions ParseEvaluation(const std::filesystem::path& file, const YAML::Node& node) {
@@ -106,8 +114,8 @@ std::vector<NoiseSpec> ParseNoise(const std::filesystem::path& file, const YAML:
     NoiseSpec noise;
     noise.name = fields.RequiredText("name");
     if (!names.insert(noise.name).second) {
-      FailAt(file, fields.Get("name"), fmt::format("{}: expected a unique name, got '{}' a second time",
-                                                   fields.PathOf("name"), noise.name));
+      FailAt(file, fields.Get("name"),
+             fmt::format("{}: expected a unique name, got '{}' a second time", fields.PathOf("name"), noise.name));
     }
     if (const YAML::Node odometry = fields.Get("odometry"); odometry.IsDefined() && !odometry.IsNull()) {
       if (!odometry.IsMap()) FailExpected(file, odometry, fields.PathOf("odometry"), "a map of odometry noise fields");
@@ -233,8 +241,9 @@ SweepConfig ParseSweepConfig(std::string_view yaml_text, const std::filesystem::
     RequireAllowedPath(context.policy, file, fields.Get("validity_study"), "validity_study", "validity study file",
                        config.validity_study);
     if (!std::filesystem::is_regular_file(config.validity_study)) {
-      FailExpected(file, fields.Get("validity_study"), "validity_study",
-                   "a summary.json of a sweep with reference data (" + config.validity_study.string() + " is not a file)");
+      FailExpected(
+          file, fields.Get("validity_study"), "validity_study",
+          "a summary.json of a sweep with reference data (" + config.validity_study.string() + " is not a file)");
     }
   }
 

@@ -38,8 +38,8 @@
 //       parameters:                  # scalars; a LIST sweeps the parameter (cartesian product over lists)
 //         ICP.maxIterations: [40, 80]
 //     - name: my-slam                # configs/examples/command-adapter.yaml runs a real one
-//       adapter: command             # placeholders: {input} {input_dir} {output_dir} {seed} {seed32} {iteration} {param:NAME}
-//       command:
+//       adapter: command             # placeholders: {input} {input_dir} {output_dir} {seed} {seed32} {iteration}
+//       {param:NAME} command:
 //         argv: [my-slam, --log, "{input}", --out, "{output_dir}", --particles, "{param:particles}"]
 //         input_format: carmen       # carmen | rawlog (scans + odometry) | tum (the odometry alone)
 //         trajectory: {path: trajectory.tum, format: tum}   # tum | kitti | csv | mrpt | carmen

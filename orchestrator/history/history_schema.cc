@@ -43,8 +43,9 @@ DROP INDEX IF EXISTS samples_series;
 )sql");
   db.Execute(kSeriesTablesV2);
   // The mode of every cell whose night's result directory still says it; any other row gets "unknown".
-  db.Execute("CREATE TEMP TABLE cell_modes(night_id INTEGER, algorithm TEXT, sequence TEXT, noise TEXT, "
-             "odometry TEXT, PRIMARY KEY(night_id, algorithm, sequence, noise))");
+  db.Execute(
+      "CREATE TEMP TABLE cell_modes(night_id INTEGER, algorithm TEXT, sequence TEXT, noise TEXT, "
+      "odometry TEXT, PRIMARY KEY(night_id, algorithm, sequence, noise))");
   {
     auto nights = db.Prepare("SELECT id, result_dir, sweep_id FROM nights ORDER BY id");
     auto insert = db.Prepare("INSERT INTO cell_modes VALUES(?, ?, ?, ?, ?)");

@@ -47,9 +47,10 @@ std::vector<double> ParseValues(const std::filesystem::path& file, const std::st
   const nlohmann::json parsed = nlohmann::json::parse(text, nullptr, false);
   std::vector<double> values;
   if (!parsed.is_array()) {
-    throw InputError(fmt::format("{}: samples.values_json: expected a JSON array of numbers; the history database "
-                                 "was edited or is damaged",
-                                 file.string()));
+    throw InputError(
+        fmt::format("{}: samples.values_json: expected a JSON array of numbers; the history database "
+                    "was edited or is damaged",
+                    file.string()));
   }
   for (const auto& v : parsed) {
     if (v.is_number()) values.push_back(v.get<double>());
@@ -66,9 +67,10 @@ HistoryStore HistoryStore::Open(const std::filesystem::path& file) {
 
 HistoryStore HistoryStore::OpenExisting(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) {
-    throw InputError(fmt::format("{}: no such history database; record a night first with `slamsweep history "
-                                 "record RESULT_DIR --history {}`",
-                                 file.string(), file.string()));
+    throw InputError(
+        fmt::format("{}: no such history database; record a night first with `slamsweep history "
+                    "record RESULT_DIR --history {}`",
+                    file.string(), file.string()));
   }
   return OpenImpl(file, false);
 }
@@ -89,14 +91,16 @@ void HistoryStore::InitializeSchema() {
   const std::int64_t application_id = pragma("PRAGMA application_id");
   const std::int64_t tables = pragma("SELECT count(*) FROM sqlite_master WHERE type = 'table'");
   if (tables > 0 && application_id != kHistoryApplicationId) {
-    throw InputError(fmt::format("{}: an SQLite database but not a slamsweep history database (a results.sqlite?); "
-                                 "--history expects its own file, e.g. /var/lib/slamsweep/history.sqlite",
-                                 db_.file().string()));
+    throw InputError(
+        fmt::format("{}: an SQLite database but not a slamsweep history database (a results.sqlite?); "
+                    "--history expects its own file, e.g. /var/lib/slamsweep/history.sqlite",
+                    db_.file().string()));
   }
   if (version > kHistorySchemaVersion) {
-    throw InputError(fmt::format("{}: history schema version {} is newer than this slamsweep's ({}); use a newer "
-                                 "slamsweep",
-                                 db_.file().string(), version, kHistorySchemaVersion));
+    throw InputError(
+        fmt::format("{}: history schema version {} is newer than this slamsweep's ({}); use a newer "
+                    "slamsweep",
+                    db_.file().string(), version, kHistorySchemaVersion));
   }
   db_.Execute("PRAGMA journal_mode = WAL");
   if (version == kHistorySchemaVersion) return;
@@ -114,9 +118,10 @@ HistoryStore::RecordOutcome HistoryStore::Record(const Night& night) {
   SqliteTransaction transaction(db_);
   if (const auto existing = FindByKey(night.result_dir, night.sweep_id)) return {existing->id, false};
   if (const auto clash = FindByLabel(night.label)) {
-    throw InputError(fmt::format("--label: night '{}' is already recorded for {} (sweep {}); give this sweep another "
-                                 "label",
-                                 night.label, clash->result_dir.string(), clash->sweep_id));
+    throw InputError(
+        fmt::format("--label: night '{}' is already recorded for {} (sweep {}); give this sweep another "
+                    "label",
+                    night.label, clash->result_dir.string(), clash->sweep_id));
   }
   auto insert = db_.Prepare(
       "INSERT INTO nights(label, result_dir, sweep_id, sweep_name, started_at, recorded_at, report_index) "
@@ -213,8 +218,7 @@ Night HistoryStore::Load(std::int64_t night_id) const {
       "ORDER BY algorithm, sequence, noise, odometry");
   cells.Bind(1, night_id);
   while (cells.Step()) {
-    night.cells.push_back(
-        {cells.Text(0), cells.Text(1), cells.Text(2), cells.Text(3), cells.Int64(4), cells.Int64(5)});
+    night.cells.push_back({cells.Text(0), cells.Text(1), cells.Text(2), cells.Text(3), cells.Int64(4), cells.Int64(5)});
   }
   return night;
 }
@@ -261,7 +265,8 @@ std::optional<NightEntry> PreviousNight(const HistoryStore& store, const Night& 
   for (auto night = earlier.rbegin(); night != earlier.rend(); ++night) {
     if (modes.empty()) return *night;
     const std::set<std::string> its = ComparableModesOf(store.Load(night->id));
-    if (std::any_of(its.begin(), its.end(), [&](const std::string& mode) { return modes.contains(mode); })) return *night;
+    if (std::any_of(its.begin(), its.end(), [&](const std::string& mode) { return modes.contains(mode); }))
+      return *night;
   }
   return std::nullopt;
 }

@@ -25,9 +25,10 @@ Night ReadNight(const std::filesystem::path& result_dir, const std::string& labe
   const std::filesystem::path absolute = std::filesystem::absolute(result_dir).lexically_normal();
   const std::filesystem::path database = absolute / "results.sqlite";
   if (!std::filesystem::exists(database)) {
-    throw evaluator::InputError(fmt::format("{}: no results database; expected the output directory of "
-                                            "`slamsweep run` or `slamsweep merge`",
-                                            database.string()));
+    throw evaluator::InputError(
+        fmt::format("{}: no results database; expected the output directory of "
+                    "`slamsweep run` or `slamsweep merge`",
+                    database.string()));
   }
   const ResultsStore store = ResultsStore::OpenExisting(database);
   const std::vector<StoredSweep> sweeps = store.Sweeps();
@@ -88,8 +89,8 @@ Night ReadNight(const std::filesystem::path& result_dir, const std::string& labe
 }
 
 bool SameSeries(const SeriesKey& a, const SeriesKey& b) {
-  return a.algorithm == b.algorithm && a.sequence == b.sequence && a.noise == b.noise &&
-         a.odometry == b.odometry && a.metric == b.metric && a.statistic == b.statistic;
+  return a.algorithm == b.algorithm && a.sequence == b.sequence && a.noise == b.noise && a.odometry == b.odometry &&
+         a.metric == b.metric && a.statistic == b.statistic;
 }
 
 std::string SeriesName(const SeriesKey& key) {
@@ -98,8 +99,8 @@ std::string SeriesName(const SeriesKey& key) {
 }
 
 const SampleSeries* FindSeries(const Night& night, const SeriesKey& key) {
-  const auto it = std::find_if(night.series.begin(), night.series.end(),
-                               [&](const SampleSeries& s) { return SameSeries(s, key); });
+  const auto it =
+      std::find_if(night.series.begin(), night.series.end(), [&](const SampleSeries& s) { return SameSeries(s, key); });
   return it == night.series.end() ? nullptr : &*it;
 }
 

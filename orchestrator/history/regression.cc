@@ -29,9 +29,10 @@ json NumberOrNull(double value) { return std::isfinite(value) ? json(value) : js
 
 std::string NotComparableReason(const Finding& f) {
   if (!IsComparableOdometryMode(f.odometry)) {
-    return fmt::format("odometry mode {}: the series' runs cannot say which odometry they got, or had both "
-                       "(recorded before the history kept the mode); not compared",
-                       f.odometry);
+    return fmt::format(
+        "odometry mode {}: the series' runs cannot say which odometry they got, or had both "
+        "(recorded before the history kept the mode); not compared",
+        f.odometry);
   }
   return fmt::format("no samples to compare (baseline n = {}, current n = {})", f.baseline_n, f.current_n);
 }
@@ -171,22 +172,22 @@ std::string RenderComparisonJUnit(const Comparison& comparison) {
   xml += fmt::format("  <testsuite name=\"regressions\" tests=\"{}\" failures=\"{}\" skipped=\"{}\">\n",
                      comparison.findings.size(), comparison.Count(Verdict::kRegression),
                      comparison.Count(Verdict::kNotComparable));
-  xml += fmt::format("    <properties><property name=\"baseline\" value=\"{}\"/><property name=\"current\" "
-                     "value=\"{}\"/></properties>\n",
-                     XmlEscape(comparison.baseline_label), XmlEscape(comparison.current_label));
+  xml += fmt::format(
+      "    <properties><property name=\"baseline\" value=\"{}\"/><property name=\"current\" "
+      "value=\"{}\"/></properties>\n",
+      XmlEscape(comparison.baseline_label), XmlEscape(comparison.current_label));
   for (const Finding& f : comparison.findings) {
     xml += fmt::format("    <testcase classname=\"{}\" name=\"{}\"",
                        XmlEscape(fmt::format("{}.{}.{}.{}", f.algorithm, f.sequence, f.noise, f.odometry)),
                        XmlEscape(fmt::format("{}.{}", f.metric, f.statistic)));
     switch (f.verdict) {
       case Verdict::kRegression:
-        xml += fmt::format(">\n      <failure type=\"regression\" message=\"{}\"/>\n    </testcase>\n",
-                           XmlEscape(SeriesName(f) + " worse than " + comparison.baseline_label + ": " +
-                                     DescribeFinding(f)));
+        xml += fmt::format(
+            ">\n      <failure type=\"regression\" message=\"{}\"/>\n    </testcase>\n",
+            XmlEscape(SeriesName(f) + " worse than " + comparison.baseline_label + ": " + DescribeFinding(f)));
         break;
       case Verdict::kNotComparable:
-        xml += fmt::format(">\n      <skipped message=\"{}\"/>\n    </testcase>\n",
-                           XmlEscape(NotComparableReason(f)));
+        xml += fmt::format(">\n      <skipped message=\"{}\"/>\n    </testcase>\n", XmlEscape(NotComparableReason(f)));
         break;
       default:
         xml += fmt::format(">\n      <system-out>{}</system-out>\n    </testcase>\n",

@@ -14,7 +14,7 @@ bool IsComparableOdometryMode(std::string_view mode) {
 }
 
 std::map<NightCell, std::string> OdometryModesOfResultDir(const std::filesystem::path& result_dir,
-                                                         std::int64_t last_sweep_id) {
+                                                          std::int64_t last_sweep_id) {
   std::map<NightCell, std::set<std::string>> seen;
   try {
     const std::filesystem::path database = result_dir / "results.sqlite";

@@ -29,6 +29,6 @@ using NightCell = std::tuple<std::string, std::string, std::string>;
 /// `last_sweep_id`: one mode, or kOdometryMixed when the cell's runs had both. Empty when the directory or its
 /// database is gone or unreadable (the caller marks that night's series kOdometryUnknown).
 std::map<NightCell, std::string> OdometryModesOfResultDir(const std::filesystem::path& result_dir,
-                                                         std::int64_t last_sweep_id);
+                                                          std::int64_t last_sweep_id);
 
 }  // namespace slamsweep::orchestrator

@@ -55,8 +55,8 @@ class RunList {
     const auto [found, inserted] = identities_.emplace(spec.run_id, RunIdentity(spec).dump());
     if (!inserted) {
       if (found->second == RunIdentity(spec).dump()) return;
-      throw evaluator::InputError(fmt::format(
-          "run id {} names two different runs (a 32-bit hash collision); rename one of them", spec.run_id));
+      throw evaluator::InputError(
+          fmt::format("run id {} names two different runs (a 32-bit hash collision); rename one of them", spec.run_id));
     }
     runs_.push_back(std::move(spec));
   }
@@ -169,7 +169,8 @@ std::vector<RunSpec> ExpandMatrix(const SweepConfig& config) {
     for (const nlohmann::json& parameters : ParameterCombinations(algorithm.parameters)) {
       const AlgorithmSpec resolved = Resolve(algorithm, parameters);
       for (const SequenceSpec& sequence : config.sequences) {
-        for (const NoiseSpec& noise : config.noise) add_iterations(resolved, sequence, noise, true, iterations_of(algorithm));
+        for (const NoiseSpec& noise : config.noise)
+          add_iterations(resolved, sequence, noise, true, iterations_of(algorithm));
       }
     }
   }
@@ -198,10 +199,11 @@ std::vector<RunSpec> ExpandMatrix(const SweepConfig& config) {
 std::vector<RunSpec> ExpandMatrix(const SweepConfig& config, std::uint64_t max_runs) {
   const std::uint64_t product_runs = ProductRuns(config);
   if (max_runs < kMaxRuns / 16 && product_runs > 16 * max_runs) {
-    throw MatrixTooLargeError(fmt::format("{}: the sweep expands to {}{} runs before exclusions; at most {} are "
-                                          "accepted here: split it or shorten the parameter lists",
-                                          config.source.string(), product_runs > kMaxRuns ? "more than " : "",
-                                          std::min(product_runs, kMaxRuns), max_runs));
+    throw MatrixTooLargeError(
+        fmt::format("{}: the sweep expands to {}{} runs before exclusions; at most {} are "
+                    "accepted here: split it or shorten the parameter lists",
+                    config.source.string(), product_runs > kMaxRuns ? "more than " : "",
+                    std::min(product_runs, kMaxRuns), max_runs));
   }
   std::vector<RunSpec> runs = ExpandMatrix(config);
   if (runs.size() > max_runs) {

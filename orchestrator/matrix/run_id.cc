@@ -21,8 +21,8 @@ std::string SanitizeIdPart(std::string_view text) {
   for (const char c : text) {
     if (part.size() == kMaxChars) break;
     if (part.empty() && c == '.') continue;
-    const bool allowed = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
-                         c == '.' || c == '-';
+    const bool allowed =
+        (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.' || c == '-';
     part += allowed ? c : '_';
   }
   return part.empty() ? "_" : part;

@@ -156,7 +156,8 @@ AlgorithmSpec AlgorithmFromJson(const json& value, const std::string& path) {
   algorithm.disk_limit_mb = fields.Unsigned("disk_limit_mb", algorithm.disk_limit_mb);
   algorithm.process_limit = fields.Unsigned("process_limit", algorithm.process_limit);
   algorithm.network = fields.Bool("network", algorithm.network);
-  if (const json* command = fields.Object("command")) algorithm.command = CommandFromJson(*command, Join(path, "command"));
+  if (const json* command = fields.Object("command"))
+    algorithm.command = CommandFromJson(*command, Join(path, "command"));
   fields.Finish();
   if (algorithm.name.empty()) throw InputError(Join(path, "name") + ": expected a non-empty name");
   if (algorithm.adapter.empty()) throw InputError(Join(path, "adapter") + ": expected an adapter name");
@@ -194,7 +195,8 @@ NoiseSpec NoiseFromJson(const json& value, const std::string& path) {
   if (const json* odometry = fields.Object("odometry")) {
     noise.odometry = evaluator::OdometryNoiseFromJson(*odometry, Join(path, "odometry"));
   }
-  if (const json* range = fields.Object("range")) noise.range = evaluator::RangeNoiseFromJson(*range, Join(path, "range"));
+  if (const json* range = fields.Object("range"))
+    noise.range = evaluator::RangeNoiseFromJson(*range, Join(path, "range"));
   fields.Finish();
   if (noise.name.empty()) throw InputError(Join(path, "name") + ": expected a non-empty name");
   return noise;
@@ -598,9 +600,8 @@ std::string OdometryModeOfRunJson(const json& run_json) {
   const json* format = string_at("sequence", "format");
   const json* ground_truth = string_at("sequence", "ground_truth");
   if (format == nullptr || ground_truth == nullptr) return std::string(kOdometryUnknown);
-  const bool mode_applies =
-      *format == "carmen" &&
-      *ground_truth == evaluator::GroundTruthKindName(evaluator::GroundTruthKind::kCorrectedPoses);
+  const bool mode_applies = *format == "carmen" && *ground_truth == evaluator::GroundTruthKindName(
+                                                                        evaluator::GroundTruthKind::kCorrectedPoses);
   if (!mode_applies) return std::string(evaluator::OdometryModeName(evaluator::OdometryMode::kRecorded));
   // A corrected log: a mode written into the sequence counts; without one the run predates the mode, when
   // programs were given the logged (corrected) pose.

@@ -25,9 +25,8 @@ Shard ParseShard(std::string_view text, std::string_view option) {
   Shard shard;
   if (slash == std::string_view::npos || !ParseCount(text.substr(0, slash), shard.index) ||
       !ParseCount(text.substr(slash + 1), shard.count)) {
-    throw evaluator::InputError(
-        fmt::format("{}: expected I/N with whole numbers, e.g. 2/4 for the second of four shares, got '{}'", option,
-                    text));
+    throw evaluator::InputError(fmt::format(
+        "{}: expected I/N with whole numbers, e.g. 2/4 for the second of four shares, got '{}'", option, text));
   }
   if (shard.count == 0 || shard.index == 0 || shard.index > shard.count) {
     throw evaluator::InputError(fmt::format("{}: expected 1 <= I <= N in I/N, got '{}'", option, text));

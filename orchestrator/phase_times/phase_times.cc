@@ -76,9 +76,9 @@ void FlushPhaseTimes(std::string_view process_kind) {
   {
     const std::lock_guard lock(totals.mutex);
     if (totals.seconds.empty()) return;
-    line = "{\"process\": \"" + std::string(process_kind) + "\", \"phases\": " +
-           JsonObject(totals.seconds, &Seconds::wall) + ", \"cpu\": " + JsonObject(totals.seconds, &Seconds::cpu) +
-           "}\n";
+    line = "{\"process\": \"" + std::string(process_kind) +
+           "\", \"phases\": " + JsonObject(totals.seconds, &Seconds::wall) +
+           ", \"cpu\": " + JsonObject(totals.seconds, &Seconds::cpu) + "}\n";
     totals.seconds.clear();
   }
   // One write with O_APPEND: the lines of concurrent workers never interleave.

@@ -78,7 +78,7 @@ std::map<pid_t, GroupUsage> GroupUsageOf(const std::vector<pid_t>& leaders, cons
   const auto owner_of = [&](pid_t pid) {
     std::vector<pid_t> chain;
     pid_t found = 0;
-    for (pid_t at = pid; at > 0 && chain.size() < by_pid.size() + 1; ) {
+    for (pid_t at = pid; at > 0 && chain.size() < by_pid.size() + 1;) {
       if (const auto known = owner.find(at); known != owner.end()) {
         found = known->second;
         break;

@@ -155,8 +155,8 @@ SpawnResult SpawnChild(const ProcessSpec& spec) {
       user = spec.sandbox->user;
       if (!spec.sandbox->pids_cgroup_procs.empty()) cgroup_procs = spec.sandbox->pids_cgroup_procs.c_str();
     }
-    bp::child child(ChildSetup{{}, ::getpid(), status_write, user, cgroup_procs}, bp::posix::use_vfork, bp::exe = executable,
-                    bp::args = args, bp::std_in < bp::null, (bp::std_out & bp::std_err) > pipe,
+    bp::child child(ChildSetup{{}, ::getpid(), status_write, user, cgroup_procs}, bp::posix::use_vfork,
+                    bp::exe = executable, bp::args = args, bp::std_in<bp::null, (bp::std_out & bp::std_err)> pipe,
                     bp::start_dir = working_dir, environment, ec);
     if (status_write >= 0) ::close(status_write);
     status_write = -1;

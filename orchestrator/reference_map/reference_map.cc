@@ -30,7 +30,8 @@ ev::OccupancyGrid Render(const RunSpec& spec) {
   ev::Sequence sequence = ev::LoadCatalogSequence(spec.sequence.entry, {});
   if (spec.sequence.max_scans) sequence = CutSequence(std::move(sequence), *spec.sequence.max_scans);
   if (!sequence.reference) {
-    throw ev::InputError("sequence '" + spec.sequence.entry.name + "' has no reference trajectory to render a map from");
+    throw ev::InputError("sequence '" + spec.sequence.entry.name +
+                         "' has no reference trajectory to render a map from");
   }
   EvaluationOptions evaluation = spec.evaluation;
   evaluation.stages = 0;
@@ -40,10 +41,8 @@ ev::OccupancyGrid Render(const RunSpec& spec) {
 }  // namespace
 
 json ReferenceMap::ToJson() const {
-  json out = {{"source", source},
-              {"file", file.string()},
-              {"resolution_m", grid.resolution_m},
-              {"from_cache", from_cache}};
+  json out = {
+      {"source", source}, {"file", file.string()}, {"resolution_m", grid.resolution_m}, {"from_cache", from_cache}};
   if (!cache_problem.empty()) out["cache_problem"] = cache_problem;
   return out;
 }
@@ -69,8 +68,9 @@ json ReferenceMapKey(const RunSpec& spec) {
     const auto size = fs::file_size(spec.sequence.entry.path, error);
     const auto modified = fs::last_write_time(spec.sequence.entry.path, error);
     if (!error) {
-      key["file"] = {{"size", size}, {"modified_ns", std::chrono::duration_cast<std::chrono::nanoseconds>(
-                                                         modified.time_since_epoch()).count()}};
+      key["file"] = {
+          {"size", size},
+          {"modified_ns", std::chrono::duration_cast<std::chrono::nanoseconds>(modified.time_since_epoch()).count()}};
     }
   }
   return key;
@@ -107,7 +107,8 @@ std::optional<ReferenceMap> LoadReferenceMap(const RunSpec& spec, bool sequence_
     }
   };
   try {
-    MapCache::Entry entry = MapCache(cache_dir).LoadOrRender(ReferenceMapCacheName(spec), ReferenceMapKey(spec), render);
+    MapCache::Entry entry =
+        MapCache(cache_dir).LoadOrRender(ReferenceMapCacheName(spec), ReferenceMapKey(spec), render);
     map.grid = std::move(entry.grid);
     map.file = entry.yaml;
     map.from_cache = entry.found;

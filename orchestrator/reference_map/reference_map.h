@@ -44,17 +44,17 @@ nlohmann::json ReferenceMapKey(const RunSpec& spec);
 std::string ReferenceMapCacheName(const RunSpec& spec);
 
 /// The run's reference map, or nullopt when its sequence has neither a reference map file nor a
-/// reference trajectory (`sequence_has_reference`, known to the worker from the run's inputs). A catalog entry's reference_map file is read (and resampled to the
-/// evaluation's cell size when its own differs). Otherwise the map is rendered as the odometry
-/// baseline renders its map (the same occupancy mapping), at the evaluation's cell size, from
+/// reference trajectory (`sequence_has_reference`, known to the worker from the run's inputs). A catalog entry's
+/// reference_map file is read (and resampled to the evaluation's cell size when its own differs). Otherwise the map is
+/// rendered as the odometry baseline renders its map (the same occupancy mapping), at the evaluation's cell size, from
 /// the sequence's reference poses and its CLEAN scans (before the run's range noise), cut to the
 /// run's max_scans, and cached in `cache_dir` under ReferenceMapCacheName: many workers may ask
 /// at once; one renders (under an exclusive lock on the entry), the others wait and read it;
 /// files are renamed into place complete, and a damaged entry is rendered again. Every caller,
 /// the one that rendered included, gets the map as read back from the cache; the map holds only
-/// the classes map comparison sees (occupied, free, unknown), which the file keeps exactly. When the cache cannot be written the map is
-/// rendered for this run alone and `cache_problem` says why. Throws InputError when the map file
-/// or the sequence cannot be read or the map cannot be rendered.
+/// the classes map comparison sees (occupied, free, unknown), which the file keeps exactly. When the cache cannot be
+/// written the map is rendered for this run alone and `cache_problem` says why. Throws InputError when the map file or
+/// the sequence cannot be read or the map cannot be rendered.
 std::optional<ReferenceMap> LoadReferenceMap(const RunSpec& spec, bool sequence_has_reference,
                                              const std::filesystem::path& cache_dir);
 

@@ -25,7 +25,8 @@ namespace ev = slamsweep::evaluator;
 class ExclusiveLock {
  public:
   explicit ExclusiveLock(const fs::path& path) : fd_(::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
-    if (fd_ < 0) throw fs::filesystem_error("cannot open the lock file", path, std::error_code(errno, std::generic_category()));
+    if (fd_ < 0)
+      throw fs::filesystem_error("cannot open the lock file", path, std::error_code(errno, std::generic_category()));
     while (::flock(fd_, LOCK_EX) != 0) {
       if (errno == EINTR) continue;
       const int error = errno;

@@ -14,8 +14,8 @@ constexpr const char* kSystemRoots[] = {"/usr", "/bin", "/sbin", "/lib", "/lib32
 // What the dynamic linker, the C library and libraries in /usr read from /etc; nothing that is a secret
 // (no shadow, ssh, ssl keys, machine-id) or names this machine's services.
 constexpr const char* kSystemEtc[] = {
-    "/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/alternatives", "/etc/localtime",
-    "/etc/timezone",    "/etc/passwd",     "/etc/group",        "/etc/nsswitch.conf", "/etc/hosts",
+    "/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/alternatives",   "/etc/localtime",
+    "/etc/timezone",    "/etc/passwd",     "/etc/group",        "/etc/nsswitch.conf",  "/etc/hosts",
     "/etc/host.conf",   "/etc/gai.conf",   "/etc/os-release",   "/etc/debian_version", "/etc/fonts"};
 
 // POSIX shared memory, as much as a container gets by default.
@@ -77,8 +77,8 @@ std::vector<std::string> BwrapCommand(const SandboxSpec& spec, const std::vector
   // Memory-backed folders, each bounded: the program cannot fill the machine's memory through them.
   const std::string tmpfs_size = std::to_string(spec.file_size_limit_bytes);
   if (spec.fresh_proc) Append(argv, {"--proc", "/proc"});
-  Append(argv, {"--dev", "/dev", "--size", std::to_string(kDevShmBytes), "--tmpfs", "/dev/shm",
-                "--remount-ro", "/dev"});
+  Append(argv,
+         {"--dev", "/dev", "--size", std::to_string(kDevShmBytes), "--tmpfs", "/dev/shm", "--remount-ro", "/dev"});
   if (spec.file_size_limit_bytes > 0) Append(argv, {"--size", tmpfs_size});
   Append(argv, {"--tmpfs", "/tmp"});
   // System folders, then the run's own paths with parents before children, so that a writable folder
@@ -109,7 +109,8 @@ std::vector<std::string> BwrapCommand(const SandboxSpec& spec, const std::vector
   binds.push_back({init, false});
   std::stable_sort(binds.begin(), binds.end(), [](const Bind& a, const Bind& b) { return a.path < b.path; });
   for (const Bind& bind : binds) {
-    const bool covered = std::any_of(bound.begin(), bound.end(), [&](const fs::path& folder) { return Inside(bind.path, folder); });
+    const bool covered =
+        std::any_of(bound.begin(), bound.end(), [&](const fs::path& folder) { return Inside(bind.path, folder); });
     if (covered && !bind.writable) continue;
     Append(argv, {bind.writable ? "--bind" : "--ro-bind", bind.path.string(), bind.path.string()});
     if (!bind.writable) bound.push_back(bind.path);

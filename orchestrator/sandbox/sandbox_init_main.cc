@@ -66,8 +66,10 @@ bool RefuseUserNamespaces() {
       ok = ok && (added == 0 || added == -EEXIST);
     }
   }
-  ok = ok && ::seccomp_rule_add(filter, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(unshare), 1, SCMP_A0(SCMP_CMP_MASKED_EQ, user, user)) == 0;
-  ok = ok && ::seccomp_rule_add(filter, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(clone), 1, SCMP_A0(SCMP_CMP_MASKED_EQ, user, user)) == 0;
+  ok = ok && ::seccomp_rule_add(filter, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(unshare), 1,
+                                SCMP_A0(SCMP_CMP_MASKED_EQ, user, user)) == 0;
+  ok = ok && ::seccomp_rule_add(filter, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(clone), 1,
+                                SCMP_A0(SCMP_CMP_MASKED_EQ, user, user)) == 0;
   ok = ok && ::seccomp_rule_add(filter, SCMP_ACT_ERRNO(ENOSYS), SCMP_SYS(clone3), 0) == 0;
   ok = ok && ::seccomp_load(filter) == 0;
   ::seccomp_release(filter);
@@ -109,8 +111,9 @@ int main(int argc, char** argv) {
     ++first;
   }
   if (status_fd < 0 || first >= argc) {
-    std::fprintf(stderr, "usage: slamsweep-sandbox-init --status-fd FD [--process-limit N] "
-                         "[--file-size-limit BYTES] [--no-user-namespaces] -- PROGRAM ARGS...\n");
+    std::fprintf(stderr,
+                 "usage: slamsweep-sandbox-init --status-fd FD [--process-limit N] "
+                 "[--file-size-limit BYTES] [--no-user-namespaces] -- PROGRAM ARGS...\n");
     return kUsageError;
   }
   // The program must not inherit the status pipe, nor read this process's memory, descriptors or

@@ -10,8 +10,8 @@ namespace slamsweep::orchestrator {
 /// What a program started in a sandbox (bubblewrap, orchestrator/sandbox/bwrap_command.h) may see and
 /// use. Its file system is built from nothing: the system folders it needs read-only (SystemPaths),
 /// then exactly the paths named here at their own paths, a private /tmp, a minimal /dev and a /proc
-/// of its own PID namespace (or none: `fresh_proc`). It runs in its own user, PID, mount, network, IPC and UTS namespaces
-/// with no capability, no_new_privs, its own session, and dies with the process that started it.
+/// of its own PID namespace (or none: `fresh_proc`). It runs in its own user, PID, mount, network, IPC and UTS
+/// namespaces with no capability, no_new_privs, its own session, and dies with the process that started it.
 struct SandboxSpec {
   /// Files and folders bound read-only (the program, its libraries and configuration, input/).
   std::vector<std::filesystem::path> read_only;

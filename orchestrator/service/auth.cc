@@ -33,23 +33,25 @@ std::string_view Trimmed(std::string_view text) {
 
 std::string ReadTokenFile(const std::filesystem::path& file) {
   struct stat info = {};
-  if (::stat(file.c_str(), &info) != 0) throw evaluator::InputError(fmt::format("--token-file {}: no such file", file.string()));
-  if (!S_ISREG(info.st_mode)) throw evaluator::InputError(fmt::format("--token-file {}: not a regular file", file.string()));
+  if (::stat(file.c_str(), &info) != 0)
+    throw evaluator::InputError(fmt::format("--token-file {}: no such file", file.string()));
+  if (!S_ISREG(info.st_mode))
+    throw evaluator::InputError(fmt::format("--token-file {}: not a regular file", file.string()));
   if ((info.st_mode & 077) != 0) {
-    throw evaluator::InputError(fmt::format(
-        "--token-file {}: mode {:04o} lets other users read the token; expected 0600 (chmod 600 {})", file.string(),
-        info.st_mode & 07777, file.string()));
+    throw evaluator::InputError(
+        fmt::format("--token-file {}: mode {:04o} lets other users read the token; expected 0600 (chmod 600 {})",
+                    file.string(), info.st_mode & 07777, file.string()));
   }
   if (info.st_uid != ::geteuid()) {
-    throw evaluator::InputError(
-        fmt::format("--token-file {}: owned by uid {}, expected the server's user (uid {})", file.string(),
-                    info.st_uid, ::geteuid()));
+    throw evaluator::InputError(fmt::format("--token-file {}: owned by uid {}, expected the server's user (uid {})",
+                                            file.string(), info.st_uid, ::geteuid()));
   }
   std::ifstream in(file);
   std::stringstream text;
   text << in.rdbuf();
   const std::string token(Trimmed(text.str()));
-  if (token.empty()) throw evaluator::InputError(fmt::format("--token-file {}: empty; expected a token", file.string()));
+  if (token.empty())
+    throw evaluator::InputError(fmt::format("--token-file {}: empty; expected a token", file.string()));
   if (token.find_first_of(" \t\r\n") != std::string::npos) {
     throw evaluator::InputError(fmt::format("--token-file {}: expected one token without white space", file.string()));
   }

@@ -49,12 +49,20 @@ std::string ReadFile(const fs::path& file) {
 }
 
 std::string ContentType(const fs::path& file) {
-  static const std::map<std::string, std::string> kTypes = {
-      {".html", "text/html; charset=utf-8"}, {".css", "text/css"},        {".png", "image/png"},
-      {".gif", "image/gif"},                 {".svg", "image/svg+xml"},   {".json", "application/json"},
-      {".geojson", "application/geo+json"},  {".csv", "text/csv"},        {".xml", "application/xml"},
-      {".txt", "text/plain; charset=utf-8"}, {".tum", "text/plain"},      {".yaml", "text/plain"},
-      {".log", "text/plain"},                {".pgm", "image/x-portable-graymap"}};
+  static const std::map<std::string, std::string> kTypes = {{".html", "text/html; charset=utf-8"},
+                                                            {".css", "text/css"},
+                                                            {".png", "image/png"},
+                                                            {".gif", "image/gif"},
+                                                            {".svg", "image/svg+xml"},
+                                                            {".json", "application/json"},
+                                                            {".geojson", "application/geo+json"},
+                                                            {".csv", "text/csv"},
+                                                            {".xml", "application/xml"},
+                                                            {".txt", "text/plain; charset=utf-8"},
+                                                            {".tum", "text/plain"},
+                                                            {".yaml", "text/plain"},
+                                                            {".log", "text/plain"},
+                                                            {".pgm", "image/x-portable-graymap"}};
   const auto found = kTypes.find(file.extension().string());
   return found == kTypes.end() ? "application/octet-stream" : found->second;
 }
@@ -111,15 +119,15 @@ void RegisterReads(httplib::Server& server, ApiContext& context) {
     if (!view || !runs) return SendError(response, 404, "no such sweep");
     response.set_content(RenderSweepPage(*view, *runs), "text/html; charset=utf-8");
   });
-  server.Get(R"(/sweeps/(\d{1,18})/report/(.+))", [&scheduler](const httplib::Request& request,
-                                                               httplib::Response& response) {
-    const auto id = SweepId(request);
-    const auto view = id ? scheduler.Sweep(*id) : std::nullopt;
-    if (!view) return SendError(response, 404, "no such sweep");
-    const auto file = ReportFile(view->sweep.result_dir / "report", request.matches[2].str());
-    if (!file) return SendError(response, 404, "no such report file");
-    response.set_content(ReadFile(*file), ContentType(*file));
-  });
+  server.Get(R"(/sweeps/(\d{1,18})/report/(.+))",
+             [&scheduler](const httplib::Request& request, httplib::Response& response) {
+               const auto id = SweepId(request);
+               const auto view = id ? scheduler.Sweep(*id) : std::nullopt;
+               if (!view) return SendError(response, 404, "no such sweep");
+               const auto file = ReportFile(view->sweep.result_dir / "report", request.matches[2].str());
+               if (!file) return SendError(response, 404, "no such report file");
+               response.set_content(ReadFile(*file), ContentType(*file));
+             });
   server.Get("/api/sweeps", [&scheduler](const httplib::Request&, httplib::Response& response) {
     nlohmann::json sweeps = nlohmann::json::array();
     for (const SweepView& view : scheduler.Sweeps()) sweeps.push_back(SweepJson(view));
@@ -131,15 +139,15 @@ void RegisterReads(httplib::Server& server, ApiContext& context) {
     if (!view) return SendError(response, 404, "no such sweep");
     SendJson(response, 200, SweepJson(*view));
   });
-  server.Get(R"(/api/sweeps/(\d{1,18})/runs)", [&scheduler](const httplib::Request& request,
-                                                           httplib::Response& response) {
-    const auto id = SweepId(request);
-    const auto runs = id ? scheduler.Runs(*id) : std::nullopt;
-    if (!runs) return SendError(response, 404, "no such sweep");
-    nlohmann::json list = nlohmann::json::array();
-    for (const RunView& run : *runs) list.push_back(RunJson(run));
-    SendJson(response, 200, {{"sweep", *id}, {"runs", list}});
-  });
+  server.Get(R"(/api/sweeps/(\d{1,18})/runs)",
+             [&scheduler](const httplib::Request& request, httplib::Response& response) {
+               const auto id = SweepId(request);
+               const auto runs = id ? scheduler.Runs(*id) : std::nullopt;
+               if (!runs) return SendError(response, 404, "no such sweep");
+               nlohmann::json list = nlohmann::json::array();
+               for (const RunView& run : *runs) list.push_back(RunJson(run));
+               SendJson(response, 200, {{"sweep", *id}, {"runs", list}});
+             });
   server.Get(R"(/api/sweeps/(\d{1,18})/(junit\.xml|summary\.json|summary\.csv))",
              [&scheduler](const httplib::Request& request, httplib::Response& response) {
                const auto id = SweepId(request);
@@ -148,27 +156,31 @@ void RegisterReads(httplib::Server& server, ApiContext& context) {
                const std::string name = request.matches[2].str();
                const std::string& state = view->sweep.state;
                if (state != "ok" && state != "failed" && state != "cancelled") {
-                 return SendError(response, 409, fmt::format("sweep {} is {}: {} is written when it ends", *id, state, name));
+                 return SendError(response, 409,
+                                  fmt::format("sweep {} is {}: {} is written when it ends", *id, state, name));
                }
                const fs::path file = view->sweep.result_dir / name;
-               if (!fs::is_regular_file(file)) return SendError(response, 404, name + " was not written (see the sweep's message)");
+               if (!fs::is_regular_file(file))
+                 return SendError(response, 404, name + " was not written (see the sweep's message)");
                response.set_header("Cache-Control", "no-store");
                response.set_content(ReadFile(file), ContentType(file));
              });
-  server.Get(R"(/api/sweeps/(\d{1,18})/report)", [&scheduler](const httplib::Request& request,
-                                                             httplib::Response& response) {
-    const auto id = SweepId(request);
-    const auto view = id ? scheduler.Sweep(*id) : std::nullopt;
-    if (!view) return SendError(response, 404, "no such sweep");
-    if (view->report != "ready") return SendError(response, 409, "the report is " + view->report);
-    const fs::path root = view->sweep.result_dir / "report";
-    nlohmann::json files = nlohmann::json::array();
-    std::error_code error;
-    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(root, error)) {
-      if (entry.is_regular_file() && !entry.is_symlink()) files.push_back(fs::relative(entry.path(), root).string());
-    }
-    SendJson(response, 200, {{"sweep", *id}, {"base", "/sweeps/" + std::to_string(*id) + "/report/"}, {"files", files}});
-  });
+  server.Get(R"(/api/sweeps/(\d{1,18})/report)",
+             [&scheduler](const httplib::Request& request, httplib::Response& response) {
+               const auto id = SweepId(request);
+               const auto view = id ? scheduler.Sweep(*id) : std::nullopt;
+               if (!view) return SendError(response, 404, "no such sweep");
+               if (view->report != "ready") return SendError(response, 409, "the report is " + view->report);
+               const fs::path root = view->sweep.result_dir / "report";
+               nlohmann::json files = nlohmann::json::array();
+               std::error_code error;
+               for (const fs::directory_entry& entry : fs::recursive_directory_iterator(root, error)) {
+                 if (entry.is_regular_file() && !entry.is_symlink())
+                   files.push_back(fs::relative(entry.path(), root).string());
+               }
+               SendJson(response, 200,
+                        {{"sweep", *id}, {"base", "/sweeps/" + std::to_string(*id) + "/report/"}, {"files", files}});
+             });
 }
 
 void RegisterWrites(httplib::Server& server, ApiContext& context) {
@@ -177,16 +189,17 @@ void RegisterWrites(httplib::Server& server, ApiContext& context) {
     for (const auto& [name, value] : answer.headers) response.set_header(name, value);
     SendJson(response, answer.status, answer.body);
   });
-  server.Post(R"(/api/sweeps/(\d{1,18})/cancel)", [&context](const httplib::Request& request,
-                                                            httplib::Response& response) {
-    const auto id = SweepId(request);
-    std::string state;
-    if (!id || !context.scheduler.Cancel(*id, state)) return SendError(response, 404, "no such sweep");
-    if (state != "cancelling") {
-      return SendJson(response, 409, {{"error", fmt::format("sweep {} already ended ({})", *id, state)}, {"state", state}});
-    }
-    SendJson(response, 202, {{"id", *id}, {"state", state}});
-  });
+  server.Post(
+      R"(/api/sweeps/(\d{1,18})/cancel)", [&context](const httplib::Request& request, httplib::Response& response) {
+        const auto id = SweepId(request);
+        std::string state;
+        if (!id || !context.scheduler.Cancel(*id, state)) return SendError(response, 404, "no such sweep");
+        if (state != "cancelling") {
+          return SendJson(response, 409,
+                          {{"error", fmt::format("sweep {} already ended ({})", *id, state)}, {"state", state}});
+        }
+        SendJson(response, 202, {{"id", *id}, {"state", state}});
+      });
 }
 
 }  // namespace
@@ -218,32 +231,36 @@ void RegisterRoutes(httplib::Server& server, ApiContext& context) {
     SendError(response, 401, std::string(why) + ": send 'Authorization: Bearer TOKEN' (slamsweep submit --token-file)");
     return httplib::Server::HandlerResponse::Handled;
   });
-  server.set_error_handler(httplib::Server::HandlerWithResponse([&context](const httplib::Request& request,
-                                                                           httplib::Response& response) {
-    if (!response.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
-    if (response.status == 413) {
-      SendError(response, 413,
-                fmt::format("request body larger than this server accepts ({} bytes)", context.options.limits.max_body_bytes));
-    } else if (response.status == 404) {
-      SendError(response, 404, "no such resource: " + request.path);
-    } else {
-      SendError(response, response.status, fmt::format("HTTP error {} for {} {}", response.status, request.method, request.path));
-    }
-    return httplib::Server::HandlerResponse::Handled;
-  }));
-  server.set_exception_handler([](const httplib::Request& request, httplib::Response& response, std::exception_ptr error) {
-    std::string what = "unknown error";
-    try {
-      std::rethrow_exception(error);
-    } catch (const std::exception& exception) {
-      what = exception.what();
-    } catch (...) {
-    }
-    spdlog::error("500 {} {}: {}", request.method, request.path, what);
-    SendError(response, 500, "internal error: " + what);
-  });
+  server.set_error_handler(
+      httplib::Server::HandlerWithResponse([&context](const httplib::Request& request, httplib::Response& response) {
+        if (!response.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
+        if (response.status == 413) {
+          SendError(response, 413,
+                    fmt::format("request body larger than this server accepts ({} bytes)",
+                                context.options.limits.max_body_bytes));
+        } else if (response.status == 404) {
+          SendError(response, 404, "no such resource: " + request.path);
+        } else {
+          SendError(response, response.status,
+                    fmt::format("HTTP error {} for {} {}", response.status, request.method, request.path));
+        }
+        return httplib::Server::HandlerResponse::Handled;
+      }));
+  server.set_exception_handler(
+      [](const httplib::Request& request, httplib::Response& response, std::exception_ptr error) {
+        std::string what = "unknown error";
+        try {
+          std::rethrow_exception(error);
+        } catch (const std::exception& exception) {
+          what = exception.what();
+        } catch (...) {
+        }
+        spdlog::error("500 {} {}: {}", request.method, request.path, what);
+        SendError(response, 500, "internal error: " + what);
+      });
   server.set_logger([&context](const httplib::Request& request, const httplib::Response& response) {
-    context.metrics.HttpRequest(response.status, std::chrono::duration<double>(Clock::now() - t_request_started).count());
+    context.metrics.HttpRequest(response.status,
+                                std::chrono::duration<double>(Clock::now() - t_request_started).count());
     if (request.method != "GET" || response.status >= 400) {
       spdlog::info("{} {} {} from {}", response.status, request.method, request.path, request.remote_addr);
     }

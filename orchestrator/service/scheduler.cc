@@ -221,8 +221,9 @@ bool Scheduler::Activate(SweepEntry& entry) {
   settings.output_dir = entry.sweep.result_dir;
   settings.config_path = entry.sweep.config_name;
   settings.config_sha = fmt::format("{:016x}", Fnv1a64(entry.sweep.config_text));
-  settings.command_line = fmt::format("slamsweep submit {} (sweep {} of the service in {}, by {})",
-                                      entry.sweep.config_name, entry.sweep.id, data_dir_.string(), entry.sweep.submitter);
+  settings.command_line =
+      fmt::format("slamsweep submit {} (sweep {} of the service in {}, by {})", entry.sweep.config_name, entry.sweep.id,
+                  data_dir_.string(), entry.sweep.submitter);
   try {
     entry.lock = std::make_unique<OutputLock>(settings.output_dir);
     entry.store.emplace(ResultsStore::Open(settings.output_dir / "results.sqlite"));
@@ -288,7 +289,8 @@ void Scheduler::HandleCancels(Executor& executor) {
     }
   }
   for (SweepEntry* entry : cancelled) {
-    for (const std::size_t index : entry->pending) SetRunState(*entry, index, "cancelled", false, std::nullopt, "sweep cancelled");
+    for (const std::size_t index : entry->pending)
+      SetRunState(*entry, index, "cancelled", false, std::nullopt, "sweep cancelled");
     entry->pending.clear();
     for (RunEntry& run : entry->runs) {
       if (run.view.state != "running" || run.stop_sent) continue;

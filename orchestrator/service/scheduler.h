@@ -75,8 +75,8 @@ struct SweepView {
 /// from any thread (the HTTP handlers).
 class Scheduler {
  public:
-  Scheduler(QueueStore& queue, std::mutex& queue_mutex, const std::filesystem::path& data_dir,
-            SchedulerOptions options, ServiceMetrics& metrics);
+  Scheduler(QueueStore& queue, std::mutex& queue_mutex, const std::filesystem::path& data_dir, SchedulerOptions options,
+            ServiceMetrics& metrics);
   ~Scheduler();
 
   /// Loads the queue after a (re)start: runs left "running" are queued again, and unfinished sweeps are

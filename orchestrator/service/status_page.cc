@@ -54,12 +54,23 @@ std::string HtmlEscape(std::string_view text) {
   out.reserve(text.size());
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -75,11 +86,13 @@ std::string RenderIndexPage(const std::vector<SweepView>& sweeps, const QueueGau
   if (sweeps.empty()) {
     html += "<p>No sweep submitted yet: <code>slamsweep submit CONFIG --server URL</code>.</p>\n";
   } else {
-    html += "<table>\n<thead><tr><th>sweep</th><th>name</th><th>submitted by</th><th>priority</th><th>state</th>"
-            "<th>progress</th><th>failed</th><th>reused</th><th>ETA</th><th>results</th></tr></thead>\n<tbody>\n";
+    html +=
+        "<table>\n<thead><tr><th>sweep</th><th>name</th><th>submitted by</th><th>priority</th><th>state</th>"
+        "<th>progress</th><th>failed</th><th>reused</th><th>ETA</th><th>results</th></tr></thead>\n<tbody>\n";
     std::vector<const SweepView*> ordered;
     for (const SweepView& view : sweeps) ordered.push_back(&view);
-    std::sort(ordered.begin(), ordered.end(), [](const SweepView* a, const SweepView* b) { return a->sweep.id > b->sweep.id; });
+    std::sort(ordered.begin(), ordered.end(),
+              [](const SweepView* a, const SweepView* b) { return a->sweep.id > b->sweep.id; });
     for (const SweepView* view : ordered) {
       const std::string id = std::to_string(view->sweep.id);
       html += fmt::format(
@@ -121,8 +134,9 @@ std::string RenderSweepPage(const SweepView& view, const std::vector<RunView>& r
   item("results", HtmlEscape(sweep.result_dir.string()));
   const std::string links = Links(view);
   if (!links.empty()) item("files", links);
-  html += "</dl>\n</header>\n<main>\n<table>\n<thead><tr><th>run</th><th>state</th><th>attempts</th>"
-          "<th>wall s</th><th>reason</th></tr></thead>\n<tbody>\n";
+  html +=
+      "</dl>\n</header>\n<main>\n<table>\n<thead><tr><th>run</th><th>state</th><th>attempts</th>"
+      "<th>wall s</th><th>reason</th></tr></thead>\n<tbody>\n";
   for (const RunView& run : runs) {
     std::string state = run.state;
     if (run.reused_from) state += " from sweep " + std::to_string(*run.reused_from);

@@ -24,7 +24,8 @@ namespace fs = std::filesystem;
 SubmissionAnswer Error(int status, const std::string& message) { return {status, ErrorJson(message), {}}; }
 
 bool HasControlCharacters(std::string_view text) {
-  return std::any_of(text.begin(), text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
+  return std::any_of(text.begin(), text.end(),
+                     [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
 }
 
 bool IsPlainName(std::string_view text) {
@@ -58,7 +59,9 @@ std::string ReplaceAll(std::string text, const std::string& from, const std::str
 SubmissionAnswer Submit(ApiContext& context, const httplib::Request& request) {
   const ServiceOptions& options = context.options;
   if (context.scheduler.Draining()) {
-    return {503, ErrorJson("the server is draining (shutting down): submit again once it is back"), {{"Retry-After", "60"}}};
+    return {503,
+            ErrorJson("the server is draining (shutting down): submit again once it is back"),
+            {{"Retry-After", "60"}}};
   }
   if (context.scheduler.UnfinishedSweeps() >= options.limits.max_unfinished_sweeps) {
     return {429,
@@ -89,8 +92,8 @@ SubmissionAnswer Submit(ApiContext& context, const httplib::Request& request) {
   }
   // Relative paths of the file are anchored where the submitter's copy lives; messages name the file as
   // the submitter typed it, so they read exactly as `slamsweep plan NAME` prints them there.
-  const fs::path anchored = fs::path(name).is_absolute() ? fs::path(name).lexically_normal()
-                                                         : (base / name).lexically_normal();
+  const fs::path anchored =
+      fs::path(name).is_absolute() ? fs::path(name).lexically_normal() : (base / name).lexically_normal();
   PlanLimits limits;
   limits.policy.allowed_roots = options.allowed_roots;
   limits.policy.allow_commands = options.allow_commands;
@@ -139,8 +142,12 @@ SubmissionAnswer Submit(ApiContext& context, const httplib::Request& request) {
   for (const RunSpec& run : planned.runs) run_ids.push_back(run.run_id);
   const std::string location = "/api/sweeps/" + std::to_string(sweep.id);
   return {201,
-          {{"id", sweep.id}, {"name", sweep.name}, {"state", sweep.state}, {"priority", sweep.priority},
-           {"runs", run_ids}, {"links", {{"self", location}, {"page", "/sweeps/" + std::to_string(sweep.id)}}}},
+          {{"id", sweep.id},
+           {"name", sweep.name},
+           {"state", sweep.state},
+           {"priority", sweep.priority},
+           {"runs", run_ids},
+           {"links", {{"self", location}, {"page", "/sweeps/" + std::to_string(sweep.id)}}}},
           {{"Location", location}}};
 }
 

@@ -33,8 +33,8 @@ struct PlanLimits {
 /// InputError ("FILE:LINE:COLUMN: ..."), PolicyError (a path outside the roots, a command adapter
 /// not allowed) or MatrixTooLargeError (more than max_runs runs). The command line supplies it (the
 /// same loading as `slamsweep plan`), so the service never reads a sweep differently from `run`.
-using SweepPlanner =
-    std::function<PlannedSweep(std::string_view yaml_text, const std::filesystem::path& file, const PlanLimits& limits)>;
+using SweepPlanner = std::function<PlannedSweep(std::string_view yaml_text, const std::filesystem::path& file,
+                                                const PlanLimits& limits)>;
 
 /// Writes a finished sweep's HTML report into RESULT_DIR/report (the command line supplies it: the
 /// report is not the orchestrator's business). Throws on failure.

@@ -30,7 +30,8 @@ CommandOutput RunSlurmCommand(const std::vector<std::string>& argv, double timeo
   bool timed_out = false;
   char buffer[8192];
   for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) {
       timed_out = true;
       break;

@@ -107,8 +107,9 @@ class SlurmExecutor final : public Executor {
     }
     for (SubmittedJob& job : jobs_) {
       for (const auto& [task_id, run_id] : job.tasks) {
-        ready_.push_back({run_id, true, "Slurm task " + job.job_id + "_" + std::to_string(task_id) +
-                                            " still running 90 s after scancel"});
+        ready_.push_back(
+            {run_id, true,
+             "Slurm task " + job.job_id + "_" + std::to_string(task_id) + " still running 90 s after scancel"});
       }
       job.tasks.clear();
     }

@@ -110,9 +110,9 @@ std::vector<SlurmTaskState> ParseSacct(std::string_view text) {
 }
 
 bool IsFinalState(std::string_view state) {
-  static const std::set<std::string_view> kFinal = {"COMPLETED", "FAILED",     "TIMEOUT",  "OUT_OF_MEMORY",
-                                                     "CANCELLED", "NODE_FAIL",  "PREEMPTED", "BOOT_FAIL",
-                                                     "DEADLINE",  "SPECIAL_EXIT", "REVOKED"};
+  static const std::set<std::string_view> kFinal = {"COMPLETED", "FAILED",       "TIMEOUT",   "OUT_OF_MEMORY",
+                                                    "CANCELLED", "NODE_FAIL",    "PREEMPTED", "BOOT_FAIL",
+                                                    "DEADLINE",  "SPECIAL_EXIT", "REVOKED"};
   return kFinal.count(state) > 0;
 }
 
@@ -130,7 +130,8 @@ SlurmTaskEnding EndingForState(const SlurmTaskState& task, bool cancelled_by_us)
   if (state == "DEADLINE") return {"Slurm DEADLINE (the job's --deadline passed)", false};
   std::string detail;
   if (task.signal != 0) {
-    detail = "worker killed by " + std::string(SignalName(task.signal)) + " (signal " + std::to_string(task.signal) + ")";
+    detail =
+        "worker killed by " + std::string(SignalName(task.signal)) + " (signal " + std::to_string(task.signal) + ")";
   } else if (task.exit_code >= 0) {
     detail = "worker exit code " + std::to_string(task.exit_code);
   } else {

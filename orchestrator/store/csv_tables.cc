@@ -58,8 +58,9 @@ std::string GroupsCsv(const std::vector<GroupSummary>& groups) {
       }
     }
   }
-  std::vector<std::string> header = {"sequence", "algorithm", "parameters",            "noise",   "odometry", "n_runs",
-                                     "n_ok",     "n_failed",  "odometry_is_reference", "seeding", "flags",    "build"};
+  std::vector<std::string> header = {
+      "sequence", "algorithm", "parameters", "noise", "odometry", "n_runs", "n_ok", "n_failed", "odometry_is_reference",
+      "seeding",  "flags",     "build"};
   for (const auto& [metric, statistic] : headline) {
     for (const char* part : {"n", "mean", "std", "min", "max"}) {
       header.push_back(fmt::format("{}.{}.{}", metric, statistic, part));
@@ -67,19 +68,12 @@ std::string GroupsCsv(const std::vector<GroupSummary>& groups) {
   }
   std::string out = Row(header);
   for (const GroupSummary& group : groups) {
-    std::vector<std::string> fields = {group.group.sequence,
-                                       group.group.algorithm,
-                                       group.group.parameters,
-                                       group.group.noise,
-                                       group.group.odometry,
-                                       std::to_string(group.runs),
-                                       std::to_string(group.ok),
-                                       std::to_string(group.failed),
-                                       group.odometry_is_reference ? "true" : "false",
-                                       group.seeding,
-                                       RunFlagsText(group.flags),
-                                       // A build apart from the group's others is named; one build alone is not.
-                                       group.build_split ? group.build : ""};
+    std::vector<std::string> fields = {
+        group.group.sequence, group.group.algorithm, group.group.parameters, group.group.noise, group.group.odometry,
+        std::to_string(group.runs), std::to_string(group.ok), std::to_string(group.failed),
+        group.odometry_is_reference ? "true" : "false", group.seeding, RunFlagsText(group.flags),
+        // A build apart from the group's others is named; one build alone is not.
+        group.build_split ? group.build : ""};
     for (const auto& [metric, statistic] : headline) {
       const MetricAggregate* found = nullptr;
       for (const MetricAggregate& aggregate : group.metrics) {
@@ -102,9 +96,22 @@ std::string RunsCsv(const std::vector<StoredRun>& runs) {
   for (const StoredRun& run : runs) {
     for (const StoredMetric& metric : run.metrics) names.emplace(metric.metric, metric.statistic);
   }
-  std::vector<std::string> header = {"run_id", "sequence",     "algorithm",             "parameters", "noise",
-                                     "iteration", "seed",      "status",                "failure_kind", "reason",
-                                     "odometry_is_reference", "seeding", "flags", "wall_s", "cpu_s", "peak_rss_kb"};
+  std::vector<std::string> header = {"run_id",
+                                     "sequence",
+                                     "algorithm",
+                                     "parameters",
+                                     "noise",
+                                     "iteration",
+                                     "seed",
+                                     "status",
+                                     "failure_kind",
+                                     "reason",
+                                     "odometry_is_reference",
+                                     "seeding",
+                                     "flags",
+                                     "wall_s",
+                                     "cpu_s",
+                                     "peak_rss_kb"};
   for (const auto& [metric, statistic] : names) header.push_back(fmt::format("{}.{}", metric, statistic));
   std::string out = Row(header);
   for (const StoredRun& run : runs) {
@@ -143,7 +150,8 @@ std::string ValidityCsv(const evaluator::ValidityStudy& study) {
                 std::to_string(c.runs), std::to_string(c.strata), Number(c.rho),
                 Number(c.interval ? std::optional(c.interval->low) : std::nullopt),
                 Number(c.interval ? std::optional(c.interval->high) : std::nullopt),
-                c.interval ? std::to_string(c.interval->defined) : "", std::string(evaluator::ValidityVerdictName(c.verdict))});
+                c.interval ? std::to_string(c.interval->defined) : "",
+                std::string(evaluator::ValidityVerdictName(c.verdict))});
   }
   return out;
 }

@@ -41,7 +41,8 @@ std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs) {
   // Runs on recorded and on reference odometry never share a group.
   using GroupKey = std::tuple<std::string, std::string, std::string, std::string, std::string, std::string>;
   std::map<GroupKey, Collected> groups;
-  std::map<std::tuple<std::string, std::string, std::string, std::string, std::string>, std::set<std::string>> builds_of;
+  std::map<std::tuple<std::string, std::string, std::string, std::string, std::string>, std::set<std::string>>
+      builds_of;
   for (const StoredRun& run : runs) {
     const std::string build = BuildSignatureOfRunJson(run.spec);
     const std::string odometry = OdometryModeOfRunJson(run.spec);
@@ -92,12 +93,9 @@ nlohmann::json ToJson(const GroupSummary& group) {
   nlohmann::json metrics = nlohmann::json::object();
   for (const MetricAggregate& aggregate : group.metrics) {
     const evaluator::MeanStd& s = aggregate.summary;
-    metrics[aggregate.metric][aggregate.statistic] = {{"n", s.n},
-                                                      {"mean", s.mean},
-                                                      {"std", s.std ? nlohmann::json(*s.std) : nlohmann::json()},
-                                                      {"min", s.min},
-                                                      {"max", s.max},
-                                                      {"unit", aggregate.unit}};
+    metrics[aggregate.metric][aggregate.statistic] = {
+        {"n", s.n},     {"mean", s.mean}, {"std", s.std ? nlohmann::json(*s.std) : nlohmann::json()},
+        {"min", s.min}, {"max", s.max},   {"unit", aggregate.unit}};
   }
   return {{"sequence", group.group.sequence},
           {"algorithm", group.group.algorithm},

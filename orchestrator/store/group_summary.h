@@ -54,7 +54,8 @@ struct GroupSummary {
 /// (OdometryModeOfRunJson), build.
 std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs);
 
-/// {"sequence", "algorithm", "parameters", "noise", "odometry", "build", "build_split", "build_description", "n_runs", "n_ok", "n_failed", "odometry_is_reference",
+/// {"sequence", "algorithm", "parameters", "noise", "odometry", "build", "build_split", "build_description", "n_runs",
+/// "n_ok", "n_failed", "odometry_is_reference",
 ///  "flags", "seeding", "metrics": {metric: {statistic: {"n", "mean", "std", "min", "max", "unit"}}},
 ///  "rpe_segments_m": [...], "rpe_segments_consistent": bool}
 nlohmann::json ToJson(const GroupSummary& group);

@@ -96,8 +96,8 @@ Testcase RenderTestcase(const StoredRun& run) {
     const std::string reason = Text(FieldOrNull(run.result, "reason"));
     std::string kind = Text(FieldOrNull(run.result, "failure_kind"));
     if (kind.empty()) kind = "failed";
-    body += fmt::format("      <failure message=\"{0}\" type=\"{1}\">{0}</failure>\n", XmlEscape(reason),
-                        XmlEscape(kind));
+    body +=
+        fmt::format("      <failure message=\"{0}\" type=\"{1}\">{0}</failure>\n", XmlEscape(reason), XmlEscape(kind));
   } else {
     // Thresholds judge numbers; a run that produced none already failed above.
     ThresholdCheck check = CheckThresholds(run);
@@ -126,10 +126,9 @@ Testcase RenderTestcase(const StoredRun& run) {
   // Jenkins groups by classname: one class per sequence x noise, the rows a report table compares;
   // the name says which group (algorithm and parameters) and iteration the run is.
   const std::string group = AlgorithmLabel(run.algorithm, run.parameters);
-  const std::string open = fmt::format("    <testcase classname=\"{}\" name=\"{}\" time=\"{}\"",
-                                       XmlEscape(run.sequence + "." + run.noise),
-                                       XmlEscape(fmt::format("{} i{} ({})", group, run.iteration, run.run_id)),
-                                       Seconds(testcase.time_s));
+  const std::string open =
+      fmt::format("    <testcase classname=\"{}\" name=\"{}\" time=\"{}\"", XmlEscape(run.sequence + "." + run.noise),
+                  XmlEscape(fmt::format("{} i{} ({})", group, run.iteration, run.run_id)), Seconds(testcase.time_s));
   testcase.xml = body.empty() ? open + "/>\n" : open + ">\n" + body + "    </testcase>\n";
   return testcase;
 }
@@ -201,16 +200,33 @@ std::string XmlEscape(std::string_view text) {
     i += d.length;
     if (!IsXmlChar(d.code_point)) continue;
     switch (d.code_point) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
       // References, because a parser turns literal tabs and newlines in attributes into spaces.
-      case '\t': out += "&#9;"; break;
-      case '\n': out += "&#10;"; break;
-      case '\r': out += "&#13;"; break;
-      default: AppendUtf8(out, d.code_point);
+      case '\t':
+        out += "&#9;";
+        break;
+      case '\n':
+        out += "&#10;";
+        break;
+      case '\r':
+        out += "&#13;";
+        break;
+      default:
+        AppendUtf8(out, d.code_point);
     }
   }
   return out;
@@ -236,9 +252,9 @@ std::string RenderJUnit(const std::vector<StoredRun>& runs) {
   xml += fmt::format("<testsuites name=\"slamsweep\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{}\">\n",
                      runs.size(), failures, Seconds(time_s));
   for (const auto& [sequence, suite] : suites) {
-    xml += fmt::format(
-        "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"0\" skipped=\"0\" time=\"{}\">\n",
-        XmlEscape(sequence), suite.tests, suite.failures, Seconds(suite.time_s));
+    xml +=
+        fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"0\" skipped=\"0\" time=\"{}\">\n",
+                    XmlEscape(sequence), suite.tests, suite.failures, Seconds(suite.time_s));
     xml += suite.testcases;
     xml += "  </testsuite>\n";
   }

@@ -26,8 +26,8 @@ constexpr const char* kStoreName = "results.sqlite";
 bool IsSafeRunId(const std::string& run_id) {
   if (run_id.empty() || run_id == "." || run_id == "..") return false;
   for (const char c : run_id) {
-    const bool allowed = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-                         c == '.' || c == '-';
+    const bool allowed =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '.' || c == '-';
     if (!allowed) return false;
   }
   return true;
@@ -85,7 +85,9 @@ void PlaceRunFolder(const fs::path& from, const fs::path& to) {
 class Merger {
  public:
   Merger(const fs::path& out, MergeReport& report)
-      : out_(out), store_(ResultsStore::Open(out / kStoreName)), report_(report),
+      : out_(out),
+        store_(ResultsStore::Open(out / kStoreName)),
+        report_(report),
         recorded_(store_.RecordedIdentities()) {}
 
   void MergeInput(const fs::path& input) {
@@ -161,8 +163,8 @@ class Merger {
     if (fs::exists(input / run_dir)) {
       PlaceRunFolder(input / run_dir, out_ / run_dir);
     } else {
-      report_.warnings.push_back(fmt::format("run {}: folder {} is missing; recorded without it", run.run_id,
-                                             (input / run_dir).string()));
+      report_.warnings.push_back(
+          fmt::format("run {}: folder {} is missing; recorded without it", run.run_id, (input / run_dir).string()));
     }
     // The folder first, then the index: a recorded run always has its files.
     store_.ImportRun(sweep_id, run, run_dir);
@@ -194,8 +196,8 @@ MergeReport MergeResultDirs(const std::vector<fs::path>& inputs, const fs::path&
     }
     std::error_code error;
     if (fs::equivalent(input, out, error)) {
-      throw InputError(fmt::format("{}: is the merge output itself; give a different output directory",
-                                   input.string()));
+      throw InputError(
+          fmt::format("{}: is the merge output itself; give a different output directory", input.string()));
     }
   }
   std::error_code error;

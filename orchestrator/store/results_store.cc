@@ -39,8 +39,8 @@ RunColumns ValidateRun(const json& run_spec, const json& result) {
   RunColumns columns{run_id->get<std::string>(), {}};
   const std::string where = fmt::format("result.json of run {}", columns.run_id);
   if (const json* result_id = FindField(result, "run_id"); result_id != nullptr && *result_id != *run_id) {
-    throw InputError(fmt::format("{}: run_id: expected \"{}\" (the run.json's), found {}", where, columns.run_id,
-                                 Dump(*result_id)));
+    throw InputError(
+        fmt::format("{}: run_id: expected \"{}\" (the run.json's), found {}", where, columns.run_id, Dump(*result_id)));
   }
   const json* status = FindField(result, "status");
   if (status == nullptr || !status->is_string() || (*status != "ok" && *status != "failed")) {
@@ -91,8 +91,8 @@ double Median(std::vector<double> values) {
 // run.json members that differ from run to run of a group; the rest of run.json is shared (a document).
 constexpr const char* kSpecOwnMembers[] = {"run_id", "iteration", "seed"};
 // result.json members kept as columns (read back as they are; absent ones come back as null).
-constexpr const char* kResultColumns[] = {"failure_kind", "reason", "exit_code", "signal", "wall_s",
-                                          "cpu_s", "peak_rss_kb", "started_at", "finished_at"};
+constexpr const char* kResultColumns[] = {"failure_kind", "reason",      "exit_code",  "signal",     "wall_s",
+                                          "cpu_s",        "peak_rss_kb", "started_at", "finished_at"};
 // result.json members a query needs beyond its columns, kept as one shared document per distinct value.
 constexpr const char* kResultSharedMembers[] = {"command", "outputs", "warnings", "odometry_is_reference"};
 // Where each of kResultColumns is in kRunColumns.
@@ -142,9 +142,10 @@ json ParseDocument(const std::filesystem::path& file, const std::string& run_id,
                    const std::string& text) {
   json parsed = json::parse(text, nullptr, false);
   if (parsed.is_discarded()) {
-    throw InputError(fmt::format("{}: run {}: its {} is not valid JSON; the database was edited or is damaged: "
-                                 "record the run again from its runs/ folder",
-                                 file.string(), run_id, what));
+    throw InputError(
+        fmt::format("{}: run {}: its {} is not valid JSON; the database was edited or is damaged: "
+                    "record the run again from its runs/ folder",
+                    file.string(), run_id, what));
   }
   return parsed;
 }
@@ -202,14 +203,16 @@ void ResultsStore::InitializeSchema() {
     db_.Execute("COMMIT");
   }
   if (version > kResultsSchemaVersion) {
-    throw InputError(fmt::format("{}: results database schema version {} is newer than this slamsweep's ({}); "
-                                 "use a newer slamsweep or another output directory",
-                                 db_.file().string(), version, kResultsSchemaVersion));
+    throw InputError(
+        fmt::format("{}: results database schema version {} is newer than this slamsweep's ({}); "
+                    "use a newer slamsweep or another output directory",
+                    db_.file().string(), version, kResultsSchemaVersion));
   }
   if (version == 0 && tables > 0) {
-    throw InputError(fmt::format("{}: an SQLite database but not a slamsweep results database (it has tables and "
-                                 "no schema version); use another output directory",
-                                 db_.file().string()));
+    throw InputError(
+        fmt::format("{}: an SQLite database but not a slamsweep results database (it has tables and "
+                    "no schema version); use another output directory",
+                    db_.file().string()));
   }
   // WAL lets readers (status, report) work while a sweep writes; it is a property of the file, kept once set.
   db_.ExecuteRetryingWhileBusy("PRAGMA journal_mode = WAL");
@@ -443,9 +446,9 @@ void ResultsStore::WriteRun(std::int64_t sweep_id, const json& run_spec, const j
     std::int64_t position = 0;
     for (const json* m : DistinctMetrics(*metrics)) {
       const json& unit = FieldOrNull(*m, "unit");
-      const std::tuple<std::string, std::string, std::string> key{
-          m->at("metric").get<std::string>(), m->at("statistic").get<std::string>(),
-          unit.is_string() ? unit.get<std::string>() : ""};
+      const std::tuple<std::string, std::string, std::string> key{m->at("metric").get<std::string>(),
+                                                                  m->at("statistic").get<std::string>(),
+                                                                  unit.is_string() ? unit.get<std::string>() : ""};
       auto known = metric_name_ids_.find(key);
       if (known == metric_name_ids_.end()) {
         // Another process may have added it meanwhile: insert unless there, then read its id.
@@ -525,15 +528,16 @@ std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const s
   std::unordered_map<std::string, json> parsed_documents;
   const auto document = [&](const std::string& text, const std::string& id, const char* what) -> const json& {
     auto it = parsed_documents.find(text);
-    if (it == parsed_documents.end()) it = parsed_documents.emplace(text, ParseDocument(db_.file(), id, what, text)).first;
+    if (it == parsed_documents.end())
+      it = parsed_documents.emplace(text, ParseDocument(db_.file(), id, what, text)).first;
     return it->second;
   };
   {
-    auto select = db_.Prepare(fmt::format(
-        "SELECT {} FROM runs JOIN documents AS spec_doc ON spec_doc.id = runs.spec_shared "
-        "JOIN documents AS result_doc ON result_doc.id = runs.result_shared {} "
-        "ORDER BY sequence, algorithm, noise, iteration, run_id",
-        kRunColumns, where));
+    auto select =
+        db_.Prepare(fmt::format("SELECT {} FROM runs JOIN documents AS spec_doc ON spec_doc.id = runs.spec_shared "
+                                "JOIN documents AS result_doc ON result_doc.id = runs.result_shared {} "
+                                "ORDER BY sequence, algorithm, noise, iteration, run_id",
+                                kRunColumns, where));
     if (!where.empty()) select.Bind(1, run_id);
     while (select.Step()) {
       StoredRun run;
@@ -601,8 +605,7 @@ std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const s
 }
 
 std::map<std::string, double> ResultsStore::TypicalWallSeconds() const {
-  auto select = db_.Prepare(
-      "SELECT algorithm, sequence, wall_s FROM runs WHERE status = 'ok' AND wall_s IS NOT NULL");
+  auto select = db_.Prepare("SELECT algorithm, sequence, wall_s FROM runs WHERE status = 'ok' AND wall_s IS NOT NULL");
   std::map<std::string, std::vector<double>> walls;
   while (select.Step()) {
     walls[TypicalWallKey(NullableText(select, 0), NullableText(select, 1))].push_back(select.Double(2));

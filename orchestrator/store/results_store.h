@@ -19,7 +19,6 @@
 
 namespace slamsweep::orchestrator {
 
-
 /// What is known about a sweep when it starts.
 struct SweepInfo {
   std::string name;

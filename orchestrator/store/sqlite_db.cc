@@ -144,9 +144,10 @@ nlohmann::json SqliteStatement::Json(int column) const {
 
 SqliteDb SqliteDb::Open(const std::filesystem::path& file, bool create) {
   if (!create && !std::filesystem::exists(file)) {
-    throw InputError(fmt::format("{}: no such results database (expected the results.sqlite of a slamsweep output "
-                                 "directory)",
-                                 file.string()));
+    throw InputError(
+        fmt::format("{}: no such results database (expected the results.sqlite of a slamsweep output "
+                    "directory)",
+                    file.string()));
   }
   sqlite3* db = nullptr;
   const int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0) | SQLITE_OPEN_NOMUTEX;
@@ -163,8 +164,7 @@ SqliteDb SqliteDb::Open(const std::filesystem::path& file, bool create) {
 
 SqliteDb::~SqliteDb() { sqlite3_close(db_); }
 
-SqliteDb::SqliteDb(SqliteDb&& other) noexcept
-    : db_(std::exchange(other.db_, nullptr)), file_(std::move(other.file_)) {}
+SqliteDb::SqliteDb(SqliteDb&& other) noexcept : db_(std::exchange(other.db_, nullptr)), file_(std::move(other.file_)) {}
 
 SqliteDb& SqliteDb::operator=(SqliteDb&& other) noexcept {
   if (this != &other) {

@@ -66,9 +66,10 @@ CREATE VIEW metric_specs(run_id, metric, spec_json) AS
 json ParseV3(const SqliteDb& db, const std::string& run_id, const char* column, const std::string& text) {
   json parsed = json::parse(text, nullptr, false);
   if (parsed.is_discarded()) {
-    throw evaluator::InputError(fmt::format("{}: run {}: column {} does not hold valid JSON; the database was "
-                                            "edited or is damaged: re-record the run from its runs/ folder",
-                                            db.file().string(), run_id, column));
+    throw evaluator::InputError(
+        fmt::format("{}: run {}: column {} does not hold valid JSON; the database was "
+                    "edited or is damaged: re-record the run from its runs/ folder",
+                    db.file().string(), run_id, column));
   }
   return parsed;
 }
@@ -85,7 +86,8 @@ DROP TABLE metric_specs;
 )sql");
   db.Execute(kSchemaV4);
   {
-    auto select = db.Prepare("SELECT run_id, sweep_id, spec_json, result_json, run_dir, flags FROM runs_v3 ORDER BY rowid");
+    auto select =
+        db.Prepare("SELECT run_id, sweep_id, spec_json, result_json, run_dir, flags FROM runs_v3 ORDER BY rowid");
     while (select.Step()) {
       V3Run run;
       const std::string run_id = select.Text(0);
@@ -105,9 +107,10 @@ DROP TABLE metric_specs;
 void CreateOrMigrateSchema(SqliteDb& db, std::int64_t from_version,
                            const std::function<void(const V3Run&)>& record_v3_run) {
   if (from_version == 0) {
-    db.Execute("CREATE TABLE sweeps(id INTEGER PRIMARY KEY, name TEXT, config_path TEXT, config_sha TEXT, "
-               "started_at TEXT, finished_at TEXT, status TEXT, host TEXT, slamsweep_version TEXT, "
-               "run_count INTEGER, command_line TEXT)");
+    db.Execute(
+        "CREATE TABLE sweeps(id INTEGER PRIMARY KEY, name TEXT, config_path TEXT, config_sha TEXT, "
+        "started_at TEXT, finished_at TEXT, status TEXT, host TEXT, slamsweep_version TEXT, "
+        "run_count INTEGER, command_line TEXT)");
     db.Execute(kSchemaV4);
   } else {
     if (from_version < 2) db.Execute(kMigrationV2);
@@ -125,9 +128,10 @@ std::int64_t DocumentId(SqliteDb& db, const json& value) {
   find.Bind(1, digest);
   if (find.Step()) {
     if (find.Text(1) != text) {
-      throw evaluator::InputError(fmt::format("{}: two different documents share the digest {:016x}; record the "
-                                              "sweep into a new output directory",
-                                              db.file().string(), static_cast<std::uint64_t>(digest)));
+      throw evaluator::InputError(
+          fmt::format("{}: two different documents share the digest {:016x}; record the "
+                      "sweep into a new output directory",
+                      db.file().string(), static_cast<std::uint64_t>(digest)));
     }
     return find.Int64(0);
   }

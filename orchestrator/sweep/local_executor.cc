@@ -22,8 +22,7 @@ void LocalExecutor::Start(const RunSpec& run, const std::filesystem::path& run_d
   run_ids_[processes_.Start(spec)] = run.run_id;
 }
 
-std::vector<WorkerEnding> LocalExecutor::Endings(
-    const std::vector<std::pair<ProcessSet::Id, ProcessOutcome>>& ended) {
+std::vector<WorkerEnding> LocalExecutor::Endings(const std::vector<std::pair<ProcessSet::Id, ProcessOutcome>>& ended) {
   std::vector<WorkerEnding> endings;
   for (const auto& [id, outcome] : ended) {
     const auto found = run_ids_.find(id);

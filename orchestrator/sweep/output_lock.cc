@@ -30,9 +30,8 @@ OutputLock::OutputLock(const std::filesystem::path& directory) {
     fd_ = -1;
     std::string pid = got > 0 ? std::string(holder, static_cast<std::size_t>(got)) : "unknown";
     while (!pid.empty() && (pid.back() == '\n' || pid.back() == ' ')) pid.pop_back();
-    throw evaluator::InputError("output directory " + directory.string() +
-                                " is in use by another slamsweep (pid " + pid +
-                                "); wait for it to finish or choose another --output");
+    throw evaluator::InputError("output directory " + directory.string() + " is in use by another slamsweep (pid " +
+                                pid + "); wait for it to finish or choose another --output");
   }
   // The pid is only for the message above; the lock itself is the flock.
   const std::string pid = std::to_string(::getpid()) + "\n";

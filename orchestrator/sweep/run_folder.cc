@@ -11,8 +11,8 @@ namespace slamsweep::orchestrator {
 bool IsSafeRunId(std::string_view run_id) {
   if (run_id.empty() || run_id.size() > 200 || run_id.front() == '.') return false;
   for (const char c : run_id) {
-    const bool allowed = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-                         c == '-' || c == '.';
+    const bool allowed =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
     if (!allowed) return false;
   }
   return true;

@@ -55,8 +55,8 @@ class SweepLoop {
     }
     outcome.not_started += queue_.size();
     if (!queue_.empty() && !outcome.interrupted) {
-      status_.Message(fmt::format("failure budget of {} exhausted: {} runs not started", settings_.failure_budget,
-                                  queue_.size()));
+      status_.Message(
+          fmt::format("failure budget of {} exhausted: {} runs not started", settings_.failure_budget, queue_.size()));
     }
   }
 
@@ -64,8 +64,7 @@ class SweepLoop {
   bool BudgetExhausted() const { return settings_.failure_budget > 0 && failures_ >= settings_.failure_budget; }
 
   void StartWhileAllowed() {
-    while (!queue_.empty() && executor_.Running() < settings_.jobs && !BudgetExhausted() &&
-           !executor_.Interrupted()) {
+    while (!queue_.empty() && executor_.Running() < settings_.jobs && !BudgetExhausted() && !executor_.Interrupted()) {
       const RunSpec& run = *queue_.front();
       queue_.pop_front();
       std::optional<PhaseTimer> phase(std::in_place, "run_folder");

@@ -54,8 +54,8 @@ std::vector<Secret> Secrets(const RunSpec& spec, const RunPaths& paths) {
   const fs::path run_dir = fs::absolute(paths.root).lexically_normal();
   // OUT/runs/<id>: all of OUT; a run folder elsewhere: that folder.
   const bool in_sweep = run_dir.parent_path().filename() == "runs";
-  std::vector<Secret> secrets = {{Resolved(in_sweep ? run_dir.parent_path().parent_path() : run_dir),
-                                  "the sweep's output folder"}};
+  std::vector<Secret> secrets = {
+      {Resolved(in_sweep ? run_dir.parent_path().parent_path() : run_dir), "the sweep's output folder"}};
   const auto& entry = spec.sequence.entry;
   // Their whole folders: a dataset's folder holds its other references too. A log is a reference
   // only when its poses are the ground truth (a corrected log).

@@ -31,12 +31,11 @@ void DecideSandboxProcForWorkers();
 /// `read_only`), writable raw/ (its working folder), with the algorithm's disk and process limits
 /// and network. When this process is root, the process limit is `pids_cgroup_procs` (the sandbox's
 /// own pids cgroup) or, where none could be made, the sandbox runs as `nobody`, who is given raw/ and
-/// input/ (RLIMIT_NPROC does not bind root). Throws InputError when one of those paths would show the run's truth: the sweep's
-/// output folder (every run's reference.tum and result.json, results.sqlite, the reference-map
-/// cache), the folders of the catalog files with the sequence's reference (the corrected log, the
-/// relations, a reference map) or a folder of SLAMSWEEP_PRIVATE_DIRS. Such a folder inside the system
-/// paths every sandbox shows (a dataset under /usr/share) is covered by an empty one instead.
-/// Its /proc is `fresh_proc`'s (ChosenSandboxProc).
+/// input/ (RLIMIT_NPROC does not bind root). Throws InputError when one of those paths would show the run's truth: the
+/// sweep's output folder (every run's reference.tum and result.json, results.sqlite, the reference-map cache), the
+/// folders of the catalog files with the sequence's reference (the corrected log, the relations, a reference map) or a
+/// folder of SLAMSWEEP_PRIVATE_DIRS. Such a folder inside the system paths every sandbox shows (a dataset under
+/// /usr/share) is covered by an empty one instead. Its /proc is `fresh_proc`'s (ChosenSandboxProc).
 SandboxSpec ProgramSandbox(const RunSpec& spec, const RunPaths& paths, const std::vector<std::filesystem::path>& reads,
                            const std::string& program, const SandboxPrograms& programs,
                            const std::filesystem::path& pids_cgroup_procs = {}, bool fresh_proc = true);

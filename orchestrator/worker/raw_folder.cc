@@ -6,12 +6,17 @@ namespace {
 
 std::string KindOf(const fs::file_status& status) {
   switch (status.type()) {
-    case fs::file_type::symlink: return "a symbolic link";
-    case fs::file_type::fifo: return "a FIFO";
-    case fs::file_type::socket: return "a socket";
+    case fs::file_type::symlink:
+      return "a symbolic link";
+    case fs::file_type::fifo:
+      return "a FIFO";
+    case fs::file_type::socket:
+      return "a socket";
     case fs::file_type::block:
-    case fs::file_type::character: return "a device";
-    default: return "not a plain file";
+    case fs::file_type::character:
+      return "a device";
+    default:
+      return "not a plain file";
   }
 }
 

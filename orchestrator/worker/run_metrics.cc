@@ -37,8 +37,8 @@ void AddStatistics(RunMetrics& out, const std::string& name, const ev::MetricRes
   out.details[name] = result.ToJson();
 }
 
-void AddSegmentStatistics(RunMetrics& out, const std::string& name, const std::optional<ev::ErrorStatistics>& statistics,
-                          const char* unit) {
+void AddSegmentStatistics(RunMetrics& out, const std::string& name,
+                          const std::optional<ev::ErrorStatistics>& statistics, const char* unit) {
   if (!statistics) return;
   const ev::ErrorStatistics& s = *statistics;
   // The mean is the headline (KITTI's drift); no rmse, whose square weighs the worst segments.
@@ -62,7 +62,8 @@ void AddSegmentRpe(RunMetrics& out, const EvaluationOptions& evaluation, const e
       evaluation.rpe_segments_m ? *evaluation.rpe_segments_m : ev::DefaultSegmentLengthsM(path_m);
   if (lengths.empty()) {
     if (!evaluation.rpe_segments_m) {
-      out.warnings.push_back(fmt::format("segment_rpe: the reference path ({} m) is too short for segments of 1 m", path_m));
+      out.warnings.push_back(
+          fmt::format("segment_rpe: the reference path ({} m) is too short for segments of 1 m", path_m));
     }
     return;
   }
@@ -74,11 +75,12 @@ void AddSegmentRpe(RunMetrics& out, const EvaluationOptions& evaluation, const e
   std::vector<ev::SegmentErrorRecord> records;
   for (const ev::SegmentLengthResult& segments : result.lengths) {
     if (segments.pairs.empty()) {
-      out.warnings.push_back(
-          fmt::format("segment_rpe: no segment of {} m fits in the part of the reference the estimate covers", segments.length_m));
+      out.warnings.push_back(fmt::format(
+          "segment_rpe: no segment of {} m fits in the part of the reference the estimate covers", segments.length_m));
     }
     AddSegmentStatistics(out, SegmentRpeMetricName("trans", segments.length_m), segments.translation_m_statistics, "m");
-    AddSegmentStatistics(out, SegmentRpeMetricName("drift", segments.length_m), segments.translation_pct_statistics, "%");
+    AddSegmentStatistics(out, SegmentRpeMetricName("drift", segments.length_m), segments.translation_pct_statistics,
+                         "%");
     AddSegmentStatistics(out, SegmentRpeMetricName("rot", segments.length_m), segments.rotation_deg_per_m_statistics,
                          "deg/m");
     for (std::size_t k = 0; k < segments.pairs.size(); ++k) {
@@ -157,8 +159,9 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
       out.details["coverage"] = out.coverage->ToJson();
       out.details["coverage"]["min_coverage"] = evaluation.min_coverage;
     });
-    for (const auto& [name, relation] : {std::pair<const char*, ev::PoseRelation>{"ape_trans", ev::PoseRelation::kTranslation},
-                                         {"ape_rot", ev::PoseRelation::kRotationDeg}}) {
+    for (const auto& [name, relation] :
+         {std::pair<const char*, ev::PoseRelation>{"ape_trans", ev::PoseRelation::kTranslation},
+          {"ape_rot", ev::PoseRelation::kRotationDeg}}) {
       Attempt(out, name, [&, name = std::string(name), relation = relation] {
         const ev::Ape ape({relation, association, alignment});
         const ev::MetricResult result = ape.Compute(*inputs.reference, *inputs.estimate);
@@ -166,8 +169,9 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
         AddStatistics(out, name, result);
       });
     }
-    for (const auto& [name, relation] : {std::pair<const char*, ev::PoseRelation>{"rpe_trans", ev::PoseRelation::kTranslation},
-                                         {"rpe_rot", ev::PoseRelation::kRotationDeg}}) {
+    for (const auto& [name, relation] :
+         {std::pair<const char*, ev::PoseRelation>{"rpe_trans", ev::PoseRelation::kTranslation},
+          {"rpe_rot", ev::PoseRelation::kRotationDeg}}) {
       Attempt(out, name, [&, name = std::string(name), relation = relation] {
         ev::RpeOptions options;
         options.pose_relation = relation;
@@ -249,7 +253,8 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
       if (estimate.resolution_m != scored.resolution_m) {
         out.details["map_compare"]["resampled_from_m"] = scored.resolution_m;
       }
-      if (!inputs.reference_map_record.is_null()) out.details["map_compare"]["reference_map"] = inputs.reference_map_record;
+      if (!inputs.reference_map_record.is_null())
+        out.details["map_compare"]["reference_map"] = inputs.reference_map_record;
     });
   }
   return out;

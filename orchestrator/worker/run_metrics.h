@@ -50,9 +50,9 @@ struct MetricInputs {
   /// scores are computed on it, so whoever reads the run's map file counts the same cells; the paper
   /// metrics need the program's grey levels and use `map`. null: `map` is used for both.
   const evaluator::OccupancyGrid* written_map = nullptr;
-  const evaluator::Trajectory* estimate = nullptr;    ///< null: trajectory metrics are skipped
-  const evaluator::Trajectory* reference = nullptr;   ///< null: APE and RPE are skipped
-  const evaluator::Relations* relations = nullptr;    ///< null: the relations metric is skipped
+  const evaluator::Trajectory* estimate = nullptr;   ///< null: trajectory metrics are skipped
+  const evaluator::Trajectory* reference = nullptr;  ///< null: APE and RPE are skipped
+  const evaluator::Relations* relations = nullptr;   ///< null: the relations metric is skipped
   /// The odometry the program was given (its readings where denser than its scans): the relations
   /// metric moves the estimate by it between the estimate's poses. null: linear interpolation.
   const evaluator::Trajectory* odometry = nullptr;

@@ -36,8 +36,8 @@ std::vector<cv::Mat> OnCommonCanvas(const std::vector<cv::Mat>& stages) {
       continue;
     }
     cv::Mat frame(canvas, CV_8UC1, cv::Scalar(kUnknownGrey));
-    stage.copyTo(frame(cv::Rect((canvas.width - stage.cols) / 2, (canvas.height - stage.rows) / 2, stage.cols,
-                                stage.rows)));
+    stage.copyTo(
+        frame(cv::Rect((canvas.width - stage.cols) / 2, (canvas.height - stage.rows) / 2, stage.cols, stage.rows)));
     placed.push_back(frame);
   }
   return placed;

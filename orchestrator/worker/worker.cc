@@ -169,7 +169,8 @@ bool RunProgram(const RunSpec& spec, const RunPaths& paths, const Adapter& adapt
                                      cgroup ? cgroup->ProcsFile() : fs::path(), proc.fresh_proc);
     result.sandbox = SandboxRecord(*process.sandbox, proc);
     if (!proc.fresh_proc) {
-      result.warnings.push_back("the program's sandbox had no /proc (" + proc.why + "); it was isolated as fully "
+      result.warnings.push_back("the program's sandbox had no /proc (" + proc.why +
+                                "); it was isolated as fully "
                                 "otherwise, nested user namespaces refused by a seccomp filter");
     }
     outcome = RunProcess(process);
@@ -178,8 +179,9 @@ bool RunProgram(const RunSpec& spec, const RunPaths& paths, const Adapter& adapt
   if (cgroup && outcome && !outcome->sandbox_failed && outcome->ending != ProcessEnding::kProcessLimit) {
     // Exact, where the sampling of the running sandbox may miss a program that gave up at once.
     if (const std::uint64_t refused = cgroup->Refusals(); refused > 0) {
-      result.Fail(FailureKind::kProcessLimit, fmt::format("{}: {} fork{} refused", ProcessLimitReason(spec.algorithm.process_limit),
-                                                           refused, refused == 1 ? "" : "s"));
+      result.Fail(FailureKind::kProcessLimit,
+                  fmt::format("{}: {} fork{} refused", ProcessLimitReason(spec.algorithm.process_limit), refused,
+                              refused == 1 ? "" : "s"));
     }
   }
   if (!unisolated.empty()) {
@@ -187,8 +189,10 @@ bool RunProgram(const RunSpec& spec, const RunPaths& paths, const Adapter& adapt
     process.sandbox.reset();
     result.sandbox = {{"isolated", false}, {"why", unisolated}};
     result.flags.Set(RunFlag::kUnisolated);
-    result.warnings.push_back("unisolated: the program ran without a sandbox and could read every file this machine "
-                              "lets slamsweep read, the reference included (" + unisolated + ")");
+    result.warnings.push_back(
+        "unisolated: the program ran without a sandbox and could read every file this machine "
+        "lets slamsweep read, the reference included (" +
+        unisolated + ")");
     outcome = RunProcess(process);
   }
   const std::uint64_t disk_limit_bytes = spec.algorithm.disk_limit_mb << 20;
@@ -209,10 +213,10 @@ bool RunProgram(const RunSpec& spec, const RunPaths& paths, const Adapter& adapt
     return false;
   }
   if (process.sandbox && raw.total_bytes > disk_limit_bytes) {
-    result.Fail(FailureKind::kDiskLimit, fmt::format("raw/ holds {:.0f} MB, more than the disk limit of {} MB "
-                                                     "(disk_limit_mb)",
-                                                     static_cast<double>(raw.total_bytes) / (1 << 20),
-                                                     spec.algorithm.disk_limit_mb));
+    result.Fail(FailureKind::kDiskLimit,
+                fmt::format("raw/ holds {:.0f} MB, more than the disk limit of {} MB "
+                            "(disk_limit_mb)",
+                            static_cast<double>(raw.total_bytes) / (1 << 20), spec.algorithm.disk_limit_mb));
     return false;
   }
   return true;
@@ -284,7 +288,8 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   metric_inputs.estimate = collected.trajectory ? &*collected.trajectory : nullptr;
   metric_inputs.reference = reference;
   metric_inputs.relations = inputs.truth.relations ? &*inputs.truth.relations : nullptr;
-  metric_inputs.odometry = inputs.robot.odometry_readings.empty() ? &inputs.robot.odometry : &inputs.robot.odometry_readings;
+  metric_inputs.odometry =
+      inputs.robot.odometry_readings.empty() ? &inputs.robot.odometry : &inputs.robot.odometry_readings;
   // The reference map is truth: read or rendered only now, after the program has exited, and
   // never into the run folder (orchestrator/reference_map: the catalog's file, or the clean scans
   // at the reference poses, cached per sequence beside runs/).

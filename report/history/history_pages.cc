@@ -81,8 +81,8 @@ Html FindingsTable(const std::vector<const Finding*>& findings, const std::strin
 }  // namespace
 
 std::string HistoryPageStem(const orchestrator::SeriesKey& key) {
-  return "history/" + SafeFileName(key.algorithm + "-" + key.sequence + "-" + key.noise + "-" + key.odometry + "-" +
-                                   key.metric);
+  return "history/" +
+         SafeFileName(key.algorithm + "-" + key.sequence + "-" + key.noise + "-" + key.odometry + "-" + key.metric);
 }
 
 NightPoint SummarizeNight(const std::vector<double>& values) {
@@ -115,8 +115,7 @@ std::string RenderHistoryPage(const HistorySeriesPage& page) {
     body += T("<figure>") +
             T("<img class=\"plot\" src=\"" + EscapeHtml(plot_src) + "\" alt=\"" +
               EscapeHtml("history plot of " + title) + "\">") +
-            Element("figcaption", "", E("Mean per night with the min–max band of the iterations.")) +
-            T("</figure>\n");
+            Element("figcaption", "", E("Mean per night with the min–max band of the iterations.")) + T("</figure>\n");
   } else {
     body += Element("p", "note", E("No plot: " + (page.plot_note.empty() ? "not drawn" : page.plot_note)));
   }
@@ -137,22 +136,21 @@ std::string RenderHistoryPage(const HistorySeriesPage& page) {
                 night.failed_runs > 0 ? "failures" : "");
   }
   body += Element("h2", "", E("Nights"));
-  body += T("<table>\n") +
-          Header({"night", "started", "ok runs", "mean" + unit, "std", "min", "max", "failed runs"}) +
+  body += T("<table>\n") + Header({"night", "started", "ok runs", "mean" + unit, "std", "min", "max", "failed runs"}) +
           Element("tbody", "", rows) + T("</table>\n");
   body += Element("p", "note",
                   E("A night links to its own report when that report can be reached from here; otherwise it is "
                     "named only."));
-  return RenderTemplate(kPageTemplate, {{"title", E("History: " + title)}, {"body", body}})
-      .str();
+  return RenderTemplate(kPageTemplate, {{"title", E("History: " + title)}, {"body", body}}).str();
 }
 
 Html RenderHistorySection(const HistorySection& section) {
   Html body = Element("h2", "", E("Nightly history"));
   Html nights;
   for (const NightLink& night : section.nights) {
-    nights += Element("li", "", NightName(night.label, night.report_href, night.current) +
-                                    E(night.started_at.empty() ? "" : " (started " + night.started_at + ")"));
+    nights += Element("li", "",
+                      NightName(night.label, night.report_href, night.current) +
+                          E(night.started_at.empty() ? "" : " (started " + night.started_at + ")"));
   }
   body += Element("p", "", E(fmt::format("{} nights in {}.", section.nights.size(), section.history_file.string())));
   if (!section.nights.empty()) body += Element("ul", "nights", nights);
@@ -165,13 +163,13 @@ Html RenderHistorySection(const HistorySection& section) {
       if (f.verdict == Verdict::kRegression) regressions.push_back(&f);
       if (f.verdict == Verdict::kImprovement) improvements.push_back(&f);
     }
-    const std::string test = fmt::format("two-sided Mann-Whitney U, p < {}, |Cliff's delta| ≥ {}", c.options.alpha,
-                                         c.options.min_effect);
+    const std::string test =
+        fmt::format("two-sided Mann-Whitney U, p < {}, |Cliff's delta| ≥ {}", c.options.alpha, c.options.min_effect);
     body += Element("h3", "", E("Compared with night " + c.baseline_label));
-    body += Element("p", regressions.empty() ? "summary" : "summary failures",
-                    E(fmt::format("{} regressions, {} improvements, {} unchanged, {} not comparable ({}).",
-                                  regressions.size(), improvements.size(), c.Count(Verdict::kUnchanged),
-                                  c.Count(Verdict::kNotComparable), test)));
+    body += Element(
+        "p", regressions.empty() ? "summary" : "summary failures",
+        E(fmt::format("{} regressions, {} improvements, {} unchanged, {} not comparable ({}).", regressions.size(),
+                      improvements.size(), c.Count(Verdict::kUnchanged), c.Count(Verdict::kNotComparable), test)));
     if (!regressions.empty()) body += Element("div", "failures", FindingsTable(regressions, "Regressions"));
     if (!improvements.empty()) body += Element("div", "status-ok", FindingsTable(improvements, "Improvements"));
   } else if (!section.comparison_note.empty()) {
@@ -180,8 +178,8 @@ Html RenderHistorySection(const HistorySection& section) {
 
   Html links;
   for (const HistorySeriesPage& page : section.pages) {
-    links += Element("li", "", Link(page.page, E(SeriesTitle(page.key))) +
-                                   E(fmt::format(" ({} nights)", page.nights.size())));
+    links += Element("li", "",
+                     Link(page.page, E(SeriesTitle(page.key))) + E(fmt::format(" ({} nights)", page.nights.size())));
   }
   if (!section.pages.empty()) {
     body += Element("details", "", Element("summary", "", E("History of every series")) + Element("ul", "", links));

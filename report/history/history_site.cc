@@ -72,9 +72,8 @@ class HistorySite final : public SiteExtension {
     section.history_file = options_.history_file;
     for (const NightEntry& night : nights) {
       const bool is_current = SameNight(night, current);
-      section.nights.push_back(
-          {night.label, night.started_at, is_current ? "index.html" : ReportHref(night.report_index, out_dir),
-           is_current});
+      section.nights.push_back({night.label, night.started_at,
+                                is_current ? "index.html" : ReportHref(night.report_index, out_dir), is_current});
     }
     if (current && !current_recorded) {
       section.nights.push_back({current->label + " (not recorded)", current->started_at, "index.html", true});
@@ -83,8 +82,8 @@ class HistorySite final : public SiteExtension {
     std::vector<orchestrator::SeriesKey> keys = store.SeriesKeys();
     if (current && !current_recorded) {
       for (const orchestrator::SampleSeries& s : current->series) {
-        const bool known = std::any_of(keys.begin(), keys.end(),
-                                       [&](const orchestrator::SeriesKey& k) { return orchestrator::SameSeries(k, s); });
+        const bool known = std::any_of(
+            keys.begin(), keys.end(), [&](const orchestrator::SeriesKey& k) { return orchestrator::SameSeries(k, s); });
         if (!known) keys.push_back(s);
       }
     }

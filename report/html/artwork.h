@@ -70,8 +70,7 @@ class Artwork {
   virtual void StagesGif(const std::vector<std::filesystem::path>& stage_pngs, const std::filesystem::path& gif,
                          const GifSettings& settings) = 0;
   /// A PNG of the map image (PGM or PNG) whose longer side is at most `max_side_px`.
-  virtual void Thumbnail(const std::filesystem::path& map_image, const std::filesystem::path& png,
-                         int max_side_px) = 0;
+  virtual void Thumbnail(const std::filesystem::path& map_image, const std::filesystem::path& png, int max_side_px) = 0;
   /// The estimated trajectory (and the reference, when `reference_tum` is not empty) over the map.
   virtual void TrajectoryOverlay(const std::filesystem::path& map_yaml, const std::filesystem::path& estimate_tum,
                                  const std::filesystem::path& reference_tum, const std::filesystem::path& png,

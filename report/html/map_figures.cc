@@ -176,7 +176,8 @@ std::vector<PlannedMapComparison> PlanMapComparisons(const fs::path& out_dir, Si
     std::error_code error_code;
     fs::create_directories(out_dir / folder, error_code);
     if (error_code) {
-      throw evaluator::InputError((out_dir / folder).string() + ": cannot create folder (" + error_code.message() + ")");
+      throw evaluator::InputError((out_dir / folder).string() + ": cannot create folder (" + error_code.message() +
+                                  ")");
     }
     maps.error = "no image maker configured";
     site.maps_compared[sequence.key] = std::move(maps);
@@ -215,10 +216,11 @@ Html MapsComparedSection(const SiteData& site, const SequenceModel& sequence, st
   };
   Html panels;
   if (drawn.reference_made) {
-    panels += Element("figure", "map-panel",
-                      ImageElement(std::string(root) + maps.reference_path, "reference map", "map-panel") +
-                          Element("figcaption", "",
-                                  E("reference map" + (maps.reference_source.empty() ? "" : " (" + maps.reference_source + ")"))));
+    panels += Element(
+        "figure", "map-panel",
+        ImageElement(std::string(root) + maps.reference_path, "reference map", "map-panel") +
+            Element("figcaption", "",
+                    E("reference map" + (maps.reference_source.empty() ? "" : " (" + maps.reference_source + ")"))));
   }
   Html differences;
   for (std::size_t i = 0; i < maps.panels.size(); ++i) {
@@ -230,12 +232,14 @@ Html MapsComparedSection(const SiteData& site, const SequenceModel& sequence, st
       panels += Element("p", "note", run_caption(panel) + E(": map not drawn (" + made.note + ")"));
       continue;
     }
-    panels += Element("figure", "map-panel",
-                      ImageElement(std::string(root) + panel.path, "map of " + site.model->runs[panel.run].run_id, "map-panel") +
-                          Element("figcaption", "", run_caption(panel) + E(" · " + panel.placement)));
+    panels += Element(
+        "figure", "map-panel",
+        ImageElement(std::string(root) + panel.path, "map of " + site.model->runs[panel.run].run_id, "map-panel") +
+            Element("figcaption", "", run_caption(panel) + E(" · " + panel.placement)));
     if (panel.difference_path.empty()) continue;
     if (!made.difference_made) {
-      differences += Element("p", "note", run_caption(panel) + E(": difference not drawn (" + made.difference_note + ")"));
+      differences +=
+          Element("p", "note", run_caption(panel) + E(": difference not drawn (" + made.difference_note + ")"));
       continue;
     }
     Html caption = run_caption(panel);
@@ -245,11 +249,11 @@ Html MapsComparedSection(const SiteData& site, const SequenceModel& sequence, st
                                        made.counts->run_only, made.counts->reference_only, made.counts->both)));
     }
     caption += ScoresList(panel.scores);
-    differences += Element("figure", "map-panel",
-                           ImageElement(std::string(root) + panel.difference_path,
-                                        "walls of " + site.model->runs[panel.run].run_id + " against the reference map",
-                                        "map-panel") +
-                               Element("figcaption", "", caption));
+    differences += Element(
+        "figure", "map-panel",
+        ImageElement(std::string(root) + panel.difference_path,
+                     "walls of " + site.model->runs[panel.run].run_id + " against the reference map", "map-panel") +
+            Element("figcaption", "", caption));
   }
   body += Element("div", "gallery maps", panels);
   if (!differences.str().empty()) {
@@ -264,13 +268,14 @@ Html MapsComparedSection(const SiteData& site, const SequenceModel& sequence, st
               "from results that were computed on the program's map before it was written, so a cell near a "
               "threshold can count differently.";
     body += Element("h3", "", E("Walls against the reference map"));
-    body += Element("p", "legend-note",
-                    Element("span", "wall-key wall-run-only", E("■")) + E(" only in the run · ") +
-                        Element("span", "wall-key wall-reference-only", E("■")) + E(" only in the reference · ") +
-                        Element("span", "wall-key wall-both", E("■")) +
-                        E(fmt::format(" in both (an occupied cell within {} {} of an occupied cell of the other map, the "
-                                      "match radius of the scores below) · white: free · grey: unknown. {}",
-                                      radius, radius == 1 ? "cell" : "cells", counts_note)));
+    body +=
+        Element("p", "legend-note",
+                Element("span", "wall-key wall-run-only", E("■")) + E(" only in the run · ") +
+                    Element("span", "wall-key wall-reference-only", E("■")) + E(" only in the reference · ") +
+                    Element("span", "wall-key wall-both", E("■")) +
+                    E(fmt::format(" in both (an occupied cell within {} {} of an occupied cell of the other map, the "
+                                  "match radius of the scores below) · white: free · grey: unknown. {}",
+                                  radius, radius == 1 ? "cell" : "cells", counts_note)));
     body += Element("div", "gallery maps", differences);
   }
   return body;

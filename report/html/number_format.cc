@@ -41,7 +41,8 @@ std::string FormatMeanStd(const MeanStd& value) {
   // Mean and std with the same decimals: the mean's 4 significant digits, or more when the std
   // needs them for 2 significant digits (a whole mean of 13 with std 2.13 reads "13.0 ± 2.1").
   int decimals = Decimals(value.mean);
-  if (value.std && std::isfinite(*value.std) && *value.std > 0) decimals = std::max(decimals, SpreadDecimals(*value.std));
+  if (value.std && std::isfinite(*value.std) && *value.std > 0)
+    decimals = std::max(decimals, SpreadDecimals(*value.std));
   std::string out = Fixed(value.mean, decimals);
   out += " ± ";
   out += value.std && std::isfinite(*value.std) ? Fixed(*value.std, decimals) : std::string("n/a");

@@ -98,13 +98,13 @@ Html OverviewSection(const SiteData& site, const std::vector<TableSignificance>&
     const Scale scale = ScaleOf(t.entries);
     for (const RankedEntry& entry : t.entries) {
       const AlgorithmRow& row = table.rows[entry.row];
-      rows += Element("tr", entry.rank ? (*entry.rank == 1 ? "best" : "") : "beside",
-                      Element("td", "", E(entry.rank ? std::to_string(*entry.rank) : "–")) +
-                          Element("td", "", E(row.algorithm)) + Element("td", "num", E(IntervalText(entry, row))) +
-                          Element("td", "num", E(entry.n_runs == 0 ? std::string("–")
-                                                                   : fmt::format("{} / {}", entry.n_ok, entry.n_runs))) +
-                          Element("td", "", DotPlot(entry, scale)) +
-                          Element("td", "", E(entry.unranked_because)));
+      rows += Element(
+          "tr", entry.rank ? (*entry.rank == 1 ? "best" : "") : "beside",
+          Element("td", "", E(entry.rank ? std::to_string(*entry.rank) : "–")) + Element("td", "", E(row.algorithm)) +
+              Element("td", "num", E(IntervalText(entry, row))) +
+              Element("td", "num",
+                      E(entry.n_runs == 0 ? std::string("–") : fmt::format("{} / {}", entry.n_ok, entry.n_runs))) +
+              Element("td", "", DotPlot(entry, scale)) + Element("td", "", E(entry.unranked_because)));
     }
     block += Element("table", "overview", rows);
     block += Element("p", t.vs_runner_up && t.vs_runner_up->p_holm <= 0.05 ? "verdict" : "note", E(t.verdict));

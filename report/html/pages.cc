@@ -35,15 +35,17 @@ constexpr std::string_view kPageTemplate = R"(<!DOCTYPE html>
 using html_shorthand::E;
 using html_shorthand::T;
 
-std::string Page(std::string_view title, std::string_view root, const Html& body) { return RenderPage(title, root, body); }
+std::string Page(std::string_view title, std::string_view root, const Html& body) {
+  return RenderPage(title, root, body);
+}
 
 Html Image(std::string_view src, std::string_view alt, std::string_view css_class) {
   return ImageElement(src, alt, css_class);
 }
 
 std::string CountsText(const RunCounts& counts) {
-  std::string text = std::to_string(counts.total) + (counts.total == 1 ? " run: " : " runs: ") + std::to_string(counts.ok) + " ok, " +
-                     std::to_string(counts.failed) + " failed";
+  std::string text = std::to_string(counts.total) + (counts.total == 1 ? " run: " : " runs: ") +
+                     std::to_string(counts.ok) + " ok, " + std::to_string(counts.failed) + " failed";
   if (counts.unfinished > 0) text += ", " + std::to_string(counts.unfinished) + " unfinished";
   return text;
 }
@@ -82,19 +84,22 @@ Html RowNotes(const AlgorithmRow& row) {
     notes += T("<br>") + Element("span", "baseline-note", E("published figure, not measured here; never ranked"));
   }
   if (row.build_split) {
-    notes += T("<br>") + Element("span", "warning",
-                                 E("build " + row.build + " (" + row.build_description +
-                                   "): runs of this algorithm by other builds are other rows, never pooled with these"));
+    notes +=
+        T("<br>") + Element("span", "warning",
+                            E("build " + row.build + " (" + row.build_description +
+                              "): runs of this algorithm by other builds are other rows, never pooled with these"));
   }
   if (row.kind == RowKind::kContestant && row.counts.ok < row.counts.total) {
     notes += T("<br>") + Element("span", "warning",
                                  E("not ranked: " + std::to_string(row.counts.total - row.counts.ok) + " of " +
-                                   std::to_string(row.counts.total) + " runs did not succeed, so its mean rests on the "
+                                   std::to_string(row.counts.total) +
+                                   " runs did not succeed, so its mean rests on the "
                                    "draws it survived"));
   }
   for (const orchestrator::RunFlag flag : row.flags) {
-    notes += T("<br>") + Element("span", "warning", E(std::string(orchestrator::RunFlagLabel(flag)) + ": " +
-                                                      std::string(orchestrator::RunFlagMeaning(flag))));
+    notes += T("<br>") + Element("span", "warning",
+                                 E(std::string(orchestrator::RunFlagLabel(flag)) + ": " +
+                                   std::string(orchestrator::RunFlagMeaning(flag))));
   }
   if (row.seeding == "unseeded" || row.seeding == "mixed") {
     notes += T("<br>") + Element("span", "warning",
@@ -119,7 +124,7 @@ std::string RowClass(const AlgorithmRow& row) {
 }
 
 Html MetricTableHtml(const SiteData& site, const SequenceModel& sequence, const std::vector<MetricColumn>& columns,
-                     std::vector<MetricCell> AlgorithmRow::* cells, std::string_view caption, std::string_view root) {
+                     std::vector<MetricCell> AlgorithmRow::*cells, std::string_view caption, std::string_view root) {
   Html header = Element("th", "", E("Algorithm")) + Element("th", "", E("Runs"));
   for (const MetricColumn& column : columns) header += ColumnHeader(column);
   Html rows;
@@ -128,8 +133,8 @@ Html MetricTableHtml(const SiteData& site, const SequenceModel& sequence, const 
     if (row.median_run) name = Link(std::string(root) + site.layout->RunPage(*row.median_run), name);
     name = AlgorithmSwatch(site, row.name) + name;
     name += RowNotes(row);
-    Html line = Element("th", "", name) +
-                Element("td", row.counts.failed + row.counts.unfinished > 0 ? "failures" : "", E(CountsText(row.counts)));
+    Html line = Element("th", "", name) + Element("td", row.counts.failed + row.counts.unfinished > 0 ? "failures" : "",
+                                                  E(CountsText(row.counts)));
     for (const MetricCell& cell : row.*cells) line += Cell(cell);
     rows += Element("tr", RowClass(row), line) + T("\n");
   }
@@ -207,15 +212,15 @@ Html RunList(const SiteData& site, const SequenceModel& sequence, std::string_vi
       const std::string status(RunStatusName(record.status));
       rows += Element("tr", "",
                       Element("td", "", Link(std::string(root) + site.layout->RunPage(run), E(record.run_id))) +
-                          Element("td", "", E(row.algorithm)) +
-                          Element("td", "", E(std::to_string(record.iteration))) +
+                          Element("td", "", E(row.algorithm)) + Element("td", "", E(std::to_string(record.iteration))) +
                           Element("td", "status-" + status, E(status)) + Element("td", "", E(record.reason))) +
               T("\n");
     }
   }
   Html header;
   for (const char* name : {"Run", "Algorithm", "Iteration", "Status", "Reason"}) header += Element("th", "", E(name));
-  return T("<table>\n<thead>") + Element("tr", "", header) + T("</thead>\n<tbody>\n") + rows + T("</tbody>\n</table>\n");
+  return T("<table>\n<thead>") + Element("tr", "", header) + T("</thead>\n<tbody>\n") + rows +
+         T("</tbody>\n</table>\n");
 }
 
 /// Links to the table's segment-length and parameter pages, when it has them.
@@ -224,19 +229,22 @@ Html ViewLinks(const SiteData& site, const SequenceModel& sequence, std::string_
   if (views == site.views.end()) return {};
   Html links;
   if (!views->second.segments_page.empty()) {
-    links += Element("li", "", Link(std::string(root) + views->second.segments_page,
-                                    E("Drift over segment lengths (segment RPE) on " + sequence.title)));
+    links += Element("li", "",
+                     Link(std::string(root) + views->second.segments_page,
+                          E("Drift over segment lengths (segment RPE) on " + sequence.title)));
   }
   if (!views->second.parameters_page.empty()) {
-    links += Element("li", "", Link(std::string(root) + views->second.parameters_page,
-                                    E("Parameters: metrics against parameter values on " + sequence.title)));
+    links += Element("li", "",
+                     Link(std::string(root) + views->second.parameters_page,
+                          E("Parameters: metrics against parameter values on " + sequence.title)));
   }
   return links.str().empty() ? Html() : Element("ul", "views", links);
 }
 
 Html KeyValueTable(const std::vector<std::pair<std::string, std::string>>& rows) {
   Html body;
-  for (const auto& [key, value] : rows) body += Element("tr", "", Element("th", "", E(key)) + Element("td", "", E(value)));
+  for (const auto& [key, value] : rows)
+    body += Element("tr", "", Element("th", "", E(key)) + Element("td", "", E(value)));
   return T("<table class=\"facts\">\n") + body + T("</table>\n");
 }
 
@@ -249,15 +257,17 @@ std::string RenderIndexPage(const SiteData& site) {
                         " sequences and " + std::to_string(model.algorithms.size()) + " algorithms."));
   Html downloads;
   if (site.has_summary_csv) {
-    downloads += Element("li", "", Link("summary.csv", E("summary.csv")) +
-                                       E(" (one line per sequence x algorithm x parameters x noise)"));
+    downloads +=
+        Element("li", "",
+                Link("summary.csv", E("summary.csv")) + E(" (one line per sequence x algorithm x parameters x noise)"));
   }
   if (site.has_runs_csv) downloads += Element("li", "", Link("runs.csv", E("runs.csv")) + E(" (one line per run)"));
   if (site.has_summary_json) downloads += Element("li", "", Link("summary.json", E("summary.json")));
   downloads += Element("li", "", Link("metrics.html", E("Metric specification")) + E(" (every metric's definition)"));
   if (site.has_validity_page) {
-    downloads += Element("li", "", Link("validity.html", E("Which metrics can be trusted?")) +
-                                       E(" (each ground-truth-free metric against the real error)"));
+    downloads += Element("li", "",
+                         Link("validity.html", E("Which metrics can be trusted?")) +
+                             E(" (each ground-truth-free metric against the real error)"));
   }
   body += Element("ul", "downloads", downloads);
   body += OverviewSection(site, site.significance);
@@ -265,8 +275,8 @@ std::string RenderIndexPage(const SiteData& site) {
     Html section = Element("h2", "", Link(site.layout->SequencePage(sequence.key), E("Sequence " + sequence.title)));
     section += SequenceTables(site, sequence, "");
     section += Plots(site, sequence, "");
-    section += Element("p", "", Link(site.layout->SequencePage(sequence.key),
-                                     E("Map gallery and every run of " + sequence.title)));
+    section += Element(
+        "p", "", Link(site.layout->SequencePage(sequence.key), E("Map gallery and every run of " + sequence.title)));
     section += ViewLinks(site, sequence, "");
     Html files;
     for (const AlgorithmRow& row : sequence.rows) {
@@ -358,8 +368,9 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
                       E("Status: " + status + (record.failure_kind.empty() ? "" : " (" + record.failure_kind + ")") +
                         (record.reason.empty() ? "" : ": " + record.reason)));
   for (const orchestrator::RunFlag flag : record.flags) {
-    body += Element("p", "warning", E(std::string(orchestrator::RunFlagLabel(flag)) + ": " +
-                                      std::string(orchestrator::RunFlagMeaning(flag))));
+    body += Element(
+        "p", "warning",
+        E(std::string(orchestrator::RunFlagLabel(flag)) + ": " + std::string(orchestrator::RunFlagMeaning(flag))));
   }
   body += KeyValueTable({
       {"Algorithm", record.algorithm},
@@ -379,27 +390,32 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
   });
   Html images;
   if (!artifacts.animation.empty()) {
-    images += Element("figure", "map", Image(dir + artifacts.animation, "the map being built", "animation") +
-                                           Element("figcaption", "", E("Map being built (stage maps)")));
+    images += Element("figure", "map",
+                      Image(dir + artifacts.animation, "the map being built", "animation") +
+                          Element("figcaption", "", E("Map being built (stage maps)")));
   } else if (artifacts.gif) {
-    images += Element("figure", "map", Image(dir + "stages.gif", "the map being built", "animation") +
-                                           Element("figcaption", "", E("Map being built (stage maps)")));
+    images += Element("figure", "map",
+                      Image(dir + "stages.gif", "the map being built", "animation") +
+                          Element("figcaption", "", E("Map being built (stage maps)")));
   }
   if (artifacts.overlay) {
     images += Element("figure", "map",
                       Image(dir + "trajectory.png", "estimated trajectory over the map", "overlay") +
-                          Element("figcaption", "", E("Estimated trajectory over the map, with the aligned reference "
-                                                      "when there is one")));
+                          Element("figcaption", "",
+                                  E("Estimated trajectory over the map, with the aligned reference "
+                                    "when there is one")));
   } else if (artifacts.thumbnail) {
-    images += Element("figure", "map", Image(dir + "thumbnail.png", "final map", "thumbnail") +
-                                           Element("figcaption", "", E("Final map")));
+    images +=
+        Element("figure", "map",
+                Image(dir + "thumbnail.png", "final map", "thumbnail") + Element("figcaption", "", E("Final map")));
   }
   if (artifacts.path_error_made) {
     images += Element("figure", "figure-small",
                       Image(root + artifacts.path_error, "translation error along the path", "figure-small") +
-                          Element("figcaption", "", E("Translation error along the path: the trajectory aligned onto "
-                                                      "the reference as its ATE was computed, coloured by the error "
-                                                      "at every associated pose")));
+                          Element("figcaption", "",
+                                  E("Translation error along the path: the trajectory aligned onto "
+                                    "the reference as its ATE was computed, coloured by the error "
+                                    "at every associated pose")));
   }
   if (!images.str().empty()) body += Element("div", "gallery", images);
   for (const std::string& note : artifacts.notes) body += Element("p", "note", E(note));
@@ -417,12 +433,13 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
     body += MetricsTable(record);
   }
   if (!record.metric_details.empty()) {
-    const bool linked = std::find(artifacts.downloads.begin(), artifacts.downloads.end(), "result.json") !=
-                        artifacts.downloads.end();
-    body += Element("p", "", linked ? T("Full specification and statistics of every metric: ") +
-                                          Link(dir + "result.json", E("result.json")) + T(" (metric_details).")
-                                    : E("Full specification and statistics of every metric: result.json "
-                                        "(metric_details) in the run folder."));
+    const bool linked =
+        std::find(artifacts.downloads.begin(), artifacts.downloads.end(), "result.json") != artifacts.downloads.end();
+    body += Element("p", "",
+                    linked ? T("Full specification and statistics of every metric: ") +
+                                 Link(dir + "result.json", E("result.json")) + T(" (metric_details).")
+                           : E("Full specification and statistics of every metric: result.json "
+                               "(metric_details) in the run folder."));
   }
   if (!record.warnings.empty()) {
     Html items;
@@ -436,15 +453,17 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
   body += Element("h2", "", E("Resolved configuration (run.json)"));
   body += Element("pre", "", E(record.run_spec.dump(2)));
   body += Element("h2", "", E("Log tail"));
-  if (artifacts.log_truncated) body += Element("p", "note", E("Only the last lines are shown; the whole log is below."));
+  if (artifacts.log_truncated)
+    body += Element("p", "note", E("Only the last lines are shown; the whole log is below."));
   body += Element("pre", "log", E(artifacts.log_tail.empty() ? "(empty or missing)" : artifacts.log_tail));
   body += Element("h2", "", E("Files"));
   Html files;
   for (const std::string& name : artifacts.downloads) files += Element("li", "", Link(dir + name, E(name)));
   body += files.str().empty() ? Element("p", "note", E("No file to download.")) : Element("ul", "downloads", files);
   const std::string table_key = record.sequence + "/" + record.noise;
-  body += Element("p", "", Link(root + site.layout->SequencePage(table_key),
-                                E("Sequence " + record.sequence + ", noise " + record.noise)));
+  body += Element(
+      "p", "",
+      Link(root + site.layout->SequencePage(table_key), E("Sequence " + record.sequence + ", noise " + record.noise)));
   return Page("Run " + record.run_id, root, body);
 }
 

@@ -52,9 +52,10 @@ Html BestTable(const SequenceModel& sequence, const ParameterSweep& sweep, const
     }
     line += Element("td", best.tie ? "" : "best", E(Coordinates(sweep, slice, *best.row)));
     line += Element("td", "", E(ValueText(sequence, *best.row, column)));
-    line += Element("td", "", best.runner_up ? E(Coordinates(sweep, slice, *best.runner_up) + ": " +
-                                                  ValueText(sequence, *best.runner_up, column))
-                                             : E("-"));
+    line += Element("td", "",
+                    best.runner_up ? E(Coordinates(sweep, slice, *best.runner_up) + ": " +
+                                       ValueText(sequence, *best.runner_up, column))
+                                   : E("-"));
     std::string note;
     if (!best.runner_up) {
       note = "the only value with a result";
@@ -69,8 +70,10 @@ Html BestTable(const SequenceModel& sequence, const ParameterSweep& sweep, const
   return T("<table>\n") +
          Element("caption", "",
                  E("Best value per metric: the lowest mean (every metric here is lower is better) among these rows "
-                   "only; rows with a run mark (odometry = reference, stale, unisolated) or a failed run are never best, nor "
-                   "are ground-truth-free metrics the validity study does not support. \"within noise\": the next best mean is "
+                   "only; rows with a run mark (odometry = reference, stale, unisolated) or a failed run are never "
+                   "best, nor "
+                   "are ground-truth-free metrics the validity study does not support. \"within noise\": the next best "
+                   "mean is "
                    "within one standard deviation of it, or a value has a single run; \"tie\": equal means.")) +
          T("\n<thead>") + Element("tr", "", header) + T("</thead>\n<tbody>\n") + rows + T("</tbody>\n</table>\n");
 }
@@ -93,15 +96,17 @@ Html Figures(const TableViews& views, const SequenceModel& sequence, std::size_t
 
 std::string RenderParametersPage(const SiteData& site, const SequenceModel& sequence, const TableViews& views) {
   const ParameterTable& table = *views.parameters;
-  Html body = Element("p", "", Link(std::string(kParametersPageRoot) + site.layout->SequencePage(sequence.key),
-                                    E("Back to the tables of " + sequence.title)));
-  body += Element("p", "",
-                  E("Which parameter value to ship: each metric of the tables against the values of the parameters an "
-                    "algorithm was swept over, on this sequence and noise setting. Every point or cell is one row of the "
-                    "tables (mean ± sample std over its runs). Rows are compared only with rows of the same algorithm "
-                    "whose other parameters are the same. One varying parameter gives a curve per metric, two give a "
-                    "heatmap (light = lower = better); with three or more, the two with the most values are drawn and "
-                    "there is one heatmap per combination of the others."));
+  Html body = Element("p", "",
+                      Link(std::string(kParametersPageRoot) + site.layout->SequencePage(sequence.key),
+                           E("Back to the tables of " + sequence.title)));
+  body +=
+      Element("p", "",
+              E("Which parameter value to ship: each metric of the tables against the values of the parameters an "
+                "algorithm was swept over, on this sequence and noise setting. Every point or cell is one row of the "
+                "tables (mean ± sample std over its runs). Rows are compared only with rows of the same algorithm "
+                "whose other parameters are the same. One varying parameter gives a curve per metric, two give a "
+                "heatmap (light = lower = better); with three or more, the two with the most values are drawn and "
+                "there is one heatmap per combination of the others."));
   for (std::size_t s = 0; s < table.sweeps.size(); ++s) {
     const ParameterSweep& sweep = table.sweeps[s];
     std::string drawn = sweep.axes[0].name + (sweep.axes.size() > 1 ? " × " + sweep.axes[1].name : "");

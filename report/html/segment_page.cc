@@ -21,7 +21,7 @@ Html Figure(const TableViews& views, const std::string& id, std::string_view cap
 
 /// One table of the page: a row per table row, a column per length.
 Html LengthTable(const SiteData& site, const SequenceModel& sequence, const SegmentTable& table,
-                 MeanStd SegmentCell::* value, bool mark_best, std::string_view caption, std::string_view unit) {
+                 MeanStd SegmentCell::*value, bool mark_best, std::string_view caption, std::string_view unit) {
   Html header = Element("th", "", E("Algorithm"));
   for (const double length : table.lengths_m) header += Element("th", "", E(LengthLabel(length)));
   Html rows;
@@ -29,8 +29,9 @@ Html LengthTable(const SiteData& site, const SequenceModel& sequence, const Segm
     const AlgorithmRow& algorithm = sequence.rows[row.row];
     Html name = AlgorithmSwatch(site, algorithm.name) + E(algorithm.algorithm);
     for (const orchestrator::RunFlag flag : algorithm.flags) {
-      name += T("<br>") + Element("span", "warning", E(std::string(orchestrator::RunFlagLabel(flag)) + ": " +
-                                                       std::string(orchestrator::RunFlagMeaning(flag))));
+      name += T("<br>") + Element("span", "warning",
+                                  E(std::string(orchestrator::RunFlagLabel(flag)) + ": " +
+                                    std::string(orchestrator::RunFlagMeaning(flag))));
     }
     for (const std::string& note : row.notes) name += T("<br>") + Element("span", "warning", E(note));
     Html line = Element("th", "", name);
@@ -56,8 +57,9 @@ Html LengthTable(const SiteData& site, const SequenceModel& sequence, const Segm
 
 std::string RenderSegmentPage(const SiteData& site, const SequenceModel& sequence, const TableViews& views) {
   const SegmentTable& table = *views.segments;
-  Html body = Element("p", "", Link(std::string(kSegmentPageRoot) + site.layout->SequencePage(sequence.key),
-                                    E("Back to the tables of " + sequence.title)));
+  Html body = Element("p", "",
+                      Link(std::string(kSegmentPageRoot) + site.layout->SequencePage(sequence.key),
+                           E("Back to the tables of " + sequence.title)));
   body += Element(
       "p", "",
       E("How far each algorithm drifts over a stretch of path, by the length of the stretch (the relative pose error "
@@ -81,11 +83,12 @@ std::string RenderSegmentPage(const SiteData& site, const SequenceModel& sequenc
                       "deg/m");
 
   body += Element("h2", "", E("Figures"));
-  body += Element("p", "legend-note",
-                  E("Colours and markers are the algorithms' throughout this report; the legends follow the table's row "
-                    "order. A second row of the same algorithm (other parameter values) is hatched or dashed. Boxes pool "
-                    "every segment of every successful run of a row: quartiles, median (black line), mean (the "
-                    "algorithm's marker), whiskers to the furthest segment within 1.5 interquartile ranges."));
+  body +=
+      Element("p", "legend-note",
+              E("Colours and markers are the algorithms' throughout this report; the legends follow the table's row "
+                "order. A second row of the same algorithm (other parameter values) is hatched or dashed. Boxes pool "
+                "every segment of every successful run of a row: quartiles, median (black line), mean (the "
+                "algorithm's marker), whiskers to the furthest segment within 1.5 interquartile ranges."));
   body += Element(
       "div", "plots",
       Figure(views, SegmentFigureId("translation"), "Translation error of every segment (m), per segment length") +

@@ -64,9 +64,9 @@ struct MapScores {
 
 /// One row's panel of a table's "Maps compared" (report/html/map_figures.h).
 struct MapPanelShown {
-  std::size_t row = 0;  ///< in SequenceModel::rows
-  std::size_t run = 0;  ///< in SweepModel::runs: the row's median run
-  std::string path;     ///< the map panel, relative to the report root
+  std::size_t row = 0;          ///< in SequenceModel::rows
+  std::size_t run = 0;          ///< in SweepModel::runs: the row's median run
+  std::string path;             ///< the map panel, relative to the report root
   std::string difference_path;  ///< the difference image; empty without a reference map
   std::string placement;        ///< how the map was placed in the common frame, for the caption
   MapScores scores;
@@ -93,8 +93,8 @@ struct SiteData {
   const ReportLayout* layout = nullptr;
   /// Per table (parallel to model->sequences): the ranking and the significance of its best row.
   std::vector<TableSignificance> significance;
-  std::string title;                   ///< the sweep's name ("slamsweep report — <result dir name>" without one)
-  std::vector<RunArtifacts> runs;      ///< parallel to model->runs
+  std::string title;               ///< the sweep's name ("slamsweep report — <result dir name>" without one)
+  std::vector<RunArtifacts> runs;  ///< parallel to model->runs
   std::map<std::string, std::vector<PlotArtifact>> plots;  ///< by table key (SequenceModel::key)
   /// Files copied from the result directory into the report.
   bool has_summary_json = false;
@@ -102,11 +102,11 @@ struct SiteData {
   bool has_runs_csv = false;
   /// (row label, table key) with files/.../pose_log.tum
   std::set<std::pair<std::string, std::string>> pose_logs;
-  Html history_section;  ///< the index's nightly-history section (SiteExtension), empty without one
+  Html history_section;            ///< the index's nightly-history section (SiteExtension), empty without one
   bool has_validity_page = false;  ///< validity.html ("Which metrics can be trusted?") was written
   /// One colour and marker per algorithm in every plot and table of the report.
   const AlgorithmPalette* palette = nullptr;
-  std::map<std::string, TableViews> views;  ///< by table key (SequenceModel::key)
+  std::map<std::string, TableViews> views;            ///< by table key (SequenceModel::key)
   std::map<std::string, MapsCompared> maps_compared;  ///< by table key, tables with at least one map
 };
 

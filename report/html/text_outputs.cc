@@ -29,8 +29,7 @@ std::string Header(const SequenceModel& sequence, const AlgorithmRow& row) {
   return "algorithm: " + row.name + "\nparameters: " + (row.parameters.empty() ? "-" : row.parameters) +
          "\nsequence: " + sequence.name + "\nnoise: " + sequence.noise +
          (row.flags.empty() ? "" : "\nflags: " + orchestrator::RunFlagsLabel(row.flags)) +
-         "\nruns: " +
-         std::to_string(row.counts.total) + "\nok: " + std::to_string(row.counts.ok) +
+         "\nruns: " + std::to_string(row.counts.total) + "\nok: " + std::to_string(row.counts.ok) +
          "\nfailed: " + std::to_string(row.counts.failed) + "\n";
 }
 
@@ -52,7 +51,8 @@ std::string RmseText(const SequenceModel& sequence, const AlgorithmRow& row) {
 std::string MapMetricText(const SequenceModel& sequence, const AlgorithmRow& row, const std::string& metric) {
   std::string out = Header(sequence, row);
   for (std::size_t c = 0; c < sequence.map_columns.size(); ++c) {
-    if (sequence.map_columns[c].metric == metric) return out + CellText(metric, sequence.map_columns[c], row.map_cells[c]);
+    if (sequence.map_columns[c].metric == metric)
+      return out + CellText(metric, sequence.map_columns[c], row.map_cells[c]);
   }
   return out + metric + "_mean: n/a\n" + metric + "_std: n/a\nnote: no run produced this metric\n";
 }

@@ -26,19 +26,21 @@ std::size_t Stride(std::size_t size) { return std::max<std::size_t>(1, (size + k
 
 struct AlignedRun {
   evaluator::Trajectory reference;
-  evaluator::Trajectory estimate;  ///< whole trajectory, aligned onto the reference
+  evaluator::Trajectory estimate;         ///< whole trajectory, aligned onto the reference
   evaluator::Trajectory paired_estimate;  ///< associated poses, aligned
   evaluator::Trajectory paired_reference;
 };
 
 // The run's trajectory aligned onto its reference as its ATE was computed (the run's evaluation settings).
 std::optional<AlignedRun> Align(const RunRecord& run) {
-  if (run.status != RunStatus::kOk || run.outputs.trajectory.empty() || run.outputs.reference.empty()) return std::nullopt;
+  if (run.status != RunStatus::kOk || run.outputs.trajectory.empty() || run.outputs.reference.empty())
+    return std::nullopt;
   const OverlaySettings settings = OverlaySettingsOf(run);
   AlignedRun aligned;
   aligned.reference = evaluator::ReadTum(run.dir / run.outputs.reference);
   aligned.estimate = evaluator::ReadTum(run.dir / run.outputs.trajectory);
-  const evaluator::Association pairs = evaluator::Associate(aligned.reference, aligned.estimate, {.t_max_diff_s = settings.t_max_diff_s});
+  const evaluator::Association pairs =
+      evaluator::Associate(aligned.reference, aligned.estimate, {.t_max_diff_s = settings.t_max_diff_s});
   aligned.paired_reference = pairs.reference;
   aligned.paired_estimate = pairs.estimate;
   const evaluator::AlignmentMode mode = evaluator::ParseAlignmentMode(settings.align);
@@ -135,12 +137,14 @@ void PlanTrajectoryFigures(const fs::path& out_dir, SiteData& site, std::vector<
     std::error_code error_code;
     fs::create_directories(out_dir / folder, error_code);
     if (error_code) {
-      throw evaluator::InputError((out_dir / folder).string() + ": cannot create folder (" + error_code.message() + ")");
+      throw evaluator::InputError((out_dir / folder).string() + ": cannot create folder (" + error_code.message() +
+                                  ")");
     }
     TableViews& views = site.views[sequence.key];
     AddFigure(views, figures, out_dir, kTrajectoriesFigureId, folder + "trajectories.png", std::move(together));
     for (auto& [row, figure] : errors) {
-      AddFigure(views, figures, out_dir, PathErrorFigureId(row), folder + fmt::format("path-error-{}.png", row), std::move(figure));
+      AddFigure(views, figures, out_dir, PathErrorFigureId(row), folder + fmt::format("path-error-{}.png", row),
+                std::move(figure));
     }
   }
 }
@@ -215,10 +219,11 @@ Html TrajectoriesSection(const SiteData& site, const SequenceModel& sequence, st
   Html together = figure(kTrajectoriesFigureId, "figure");
   if (together.str().empty()) return {};
   Html body = Element("h2", "", E("Trajectories"));
-  body += Element("p", "note",
-                  E("Each row's median run by ATE, aligned onto the reference as its ATE was computed (the run's "
-                    "alignment and time tolerance), at one scale. Below, each of those runs coloured by its translation "
-                    "error at every associated pose."));
+  body +=
+      Element("p", "note",
+              E("Each row's median run by ATE, aligned onto the reference as its ATE was computed (the run's "
+                "alignment and time tolerance), at one scale. Below, each of those runs coloured by its translation "
+                "error at every associated pose."));
   body += together;
   Html errors;
   for (std::size_t r = 0; r < sequence.rows.size(); ++r) errors += figure(PathErrorFigureId(r), "figure-small");

@@ -128,7 +128,8 @@ std::set<std::string, decltype(&NaturalLess)> NoiseSettings(const std::vector<ev
 /// natural order of their names (light first, dark last: what "all noise levels" ranks across) and the
 /// marker is the algorithm's; with one, colour and marker are the algorithm's, as in every other plot of
 /// the report.
-std::vector<ScatterSeries> ScatterSeriesOf(const std::vector<ev::ValidityPoint>& points, const AlgorithmPalette& palette) {
+std::vector<ScatterSeries> ScatterSeriesOf(const std::vector<ev::ValidityPoint>& points,
+                                           const AlgorithmPalette& palette) {
   const auto noises = NoiseSettings(points);
   const bool several_algorithms = SeveralAlgorithms(points);
   std::map<std::pair<std::size_t, std::string>, ScatterSeries> by_noise_and_algorithm;
@@ -225,36 +226,39 @@ std::string RenderValidityPage(const SiteData& /*site*/, const ValiditySite& val
         "the number of runs n and a verdict. Every metric reads \"higher is worse\": one that can be trusted has ρ "
         "near +1 with its whole interval above 0 (\"tracks error\")."));
   Html method;
-  method += Element("li", "", E("Runs: the successful runs whose odometry was not the reference (" +
-                                std::to_string(study.runs_used) + " used" +
-                                (study.runs_odometry_is_reference > 0
-                                     ? ", " + std::to_string(study.runs_odometry_is_reference) +
-                                           " left out because their odometry was the reference"
-                                     : std::string()) +
-                                ")."));
+  method += Element(
+      "li", "",
+      E("Runs: the successful runs whose odometry was not the reference (" + std::to_string(study.runs_used) + " used" +
+        (study.runs_odometry_is_reference > 0 ? ", " + std::to_string(study.runs_odometry_is_reference) +
+                                                    " left out because their odometry was the reference"
+                                              : std::string()) +
+        ")."));
   if (study.family_size > 0) {
     std::size_t decided = 0, survive = 0;
     for (const ev::ValidityCorrelation& c : study.correlations) {
       decided += c.family_interval ? 1 : 0;
       survive += c.survives_family ? 1 : 0;
     }
-    method += Element("li", "", E(fmt::format(
-                                    "Multiple comparisons: this page reports {} intervals, and some 95 % intervals "
+    method += Element("li", "",
+                      E(fmt::format("Multiple comparisons: this page reports {} intervals, and some 95 % intervals "
                                     "exclude 0 by chance alone. Each decided verdict's interval is redrawn at the "
                                     "Bonferroni level {:.4g} (1 - 0.05 / {}, the same resamples); {} of {} decided "
                                     "verdicts survive it.",
                                     study.family_size, study.family_confidence, study.family_size, survive, decided)));
   }
-  method += Element("li", "", E("\"All noise levels\": the sequence's runs ranked together, every noise setting "
-                                "mixed: does the metric follow the error as the conditions get worse? \"Within each "
-                                "noise level\": runs ranked only against runs of the same sequence and noise setting "
-                                "(those a table of this report compares), the ranks then pooled."));
-  method += Element("li", "", E("\"All sequences\": runs are never ranked against runs of another sequence; each "
-                                "rank is centred on its sequence's (or sequence and noise setting's) mean rank and "
-                                "divided by its size, and these pooled ranks are correlated."));
-  method += Element("li", "", E(fmt::format("Interval: percentile bootstrap, {} resamples drawn within each stratum, "
-                                            "seed {}; fewer than {} runs give \"too few runs\" instead of a number.",
-                                            options.bootstrap.resamples, options.bootstrap.seed, options.min_runs)));
+  method += Element("li", "",
+                    E("\"All noise levels\": the sequence's runs ranked together, every noise setting "
+                      "mixed: does the metric follow the error as the conditions get worse? \"Within each "
+                      "noise level\": runs ranked only against runs of the same sequence and noise setting "
+                      "(those a table of this report compares), the ranks then pooled."));
+  method += Element("li", "",
+                    E("\"All sequences\": runs are never ranked against runs of another sequence; each "
+                      "rank is centred on its sequence's (or sequence and noise setting's) mean rank and "
+                      "divided by its size, and these pooled ranks are correlated."));
+  method += Element("li", "",
+                    E(fmt::format("Interval: percentile bootstrap, {} resamples drawn within each stratum, "
+                                  "seed {}; fewer than {} runs give \"too few runs\" instead of a number.",
+                                  options.bootstrap.resamples, options.bootstrap.seed, options.min_runs)));
   Html links = Link("metrics.html", E("metric specification"));
   if (validity.has_csv) links += T(" · ") + Link("validity.csv", E("validity.csv"));
   links += T(" · ") + Link("summary.json", E("summary.json (\"validity\")"));
@@ -265,7 +269,8 @@ std::string RenderValidityPage(const SiteData& /*site*/, const ValiditySite& val
     // The target's scopes in the study's order: its sequences, then all of them together.
     std::vector<std::pair<std::string, ev::ValidityPooling>> scopes;
     for (const ev::ValidityCorrelation& c : study.correlations) {
-      if (c.target == target && c.candidate == ev::ValidityCandidates().front().key) scopes.emplace_back(c.sequence, c.pooling);
+      if (c.target == target && c.candidate == ev::ValidityCandidates().front().key)
+        scopes.emplace_back(c.sequence, c.pooling);
     }
     body += Element("h2", "", E("Against " + QuantityTitle(target)));
     Html header = Element("th", "", E("Metric"));
@@ -279,23 +284,25 @@ std::string RenderValidityPage(const SiteData& /*site*/, const ValiditySite& val
         any_run = any_run || (c != nullptr && c->runs > 0);
       }
       if (!any_run) continue;
-      Html line = Element("th", "", E(std::string(candidate.title)) + T("<br>") +
-                                        Element("span", "spec", E(std::string(candidate.kind))));
+      Html line = Element(
+          "th", "",
+          E(std::string(candidate.title)) + T("<br>") + Element("span", "spec", E(std::string(candidate.kind))));
       for (const auto& [sequence, pooling] : scopes) {
         line += CorrelationCell(study.Find(candidate.key, target, sequence, pooling));
       }
       rows += Element("tr", "", line) + T("\n");
     }
     body += T("<table class=\"validity\">\n") +
-            Element("caption", "", E("Spearman's ρ with " + QuantityTitle(target) +
-                                     " [95 % bootstrap interval], runs and verdict")) +
+            Element("caption", "",
+                    E("Spearman's ρ with " + QuantityTitle(target) + " [95 % bootstrap interval], runs and verdict")) +
             T("\n<thead>") + Element("tr", "", header) + T("</thead>\n<tbody>\n") + rows + T("</tbody>\n</table>\n");
     Html figures;
     for (const ValidityPlot& plot : validity.plots) {
       if (plot.target != target) continue;
-      Html content = plot.made ? T("<img class=\"plot\" src=\"" + EscapeHtml(plot.path) + "\" alt=\"" +
-                                   EscapeHtml(plot.title) + "\">")
-                               : Element("p", "note", E("Plot not available: " + plot.note));
+      Html content =
+          plot.made
+              ? T("<img class=\"plot\" src=\"" + EscapeHtml(plot.path) + "\" alt=\"" + EscapeHtml(plot.title) + "\">")
+              : Element("p", "note", E("Plot not available: " + plot.note));
       figures += Element("figure", "plot", content + Element("figcaption", "", E(plot.title)));
     }
     if (!figures.str().empty()) {

@@ -18,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 BoxplotFigure SegmentBoxplot(const SiteData& site, const SequenceModel& sequence, const SegmentTable& table,
-                             std::optional<BoxSummary> SegmentCell::* box, const std::string& what,
+                             std::optional<BoxSummary> SegmentCell::*box, const std::string& what,
                              const std::string& unit) {
   BoxplotFigure figure;
   // Short titles: gnuplot centres them over the picture; the page's caption names the sequence.
@@ -142,8 +142,8 @@ std::string TableFolder(const ReportLayout& layout, const std::string& table_key
 }
 
 /// Adds a figure: its artefact (not made until drawn) and its job.
-void AddFigure(TableViews& views, std::vector<FigureJob>& figures, const std::filesystem::path& out_dir, const std::string& id,
-               const std::string& path, ViewFigure figure) {
+void AddFigure(TableViews& views, std::vector<FigureJob>& figures, const std::filesystem::path& out_dir,
+               const std::string& id, const std::string& path, ViewFigure figure) {
   PlotArtifact artifact;
   artifact.metric = id;
   artifact.title = FigureTitle(figure);
@@ -154,7 +154,8 @@ void AddFigure(TableViews& views, std::vector<FigureJob>& figures, const std::fi
 }
 
 void Artwork::Figures(const std::vector<FigureJob>& figures) {
-  if (!figures.empty()) throw std::runtime_error("this image maker draws no figures of the segment-length and parameter pages");
+  if (!figures.empty())
+    throw std::runtime_error("this image maker draws no figures of the segment-length and parameter pages");
 }
 
 std::string LengthLabel(double length_m) { return fmt::format("{} m", length_m); }
@@ -187,7 +188,8 @@ void PlanViewPages(const fs::path& out_dir, SiteData& site, std::vector<FigureJo
     if (!views.segments && !views.parameters) continue;
     std::error_code error;
     fs::create_directories(out_dir / folder, error);
-    if (error) throw evaluator::InputError((out_dir / folder).string() + ": cannot create folder (" + error.message() + ")");
+    if (error)
+      throw evaluator::InputError((out_dir / folder).string() + ": cannot create folder (" + error.message() + ")");
 
     if (views.segments) {
       views.segments_page = folder + "segments.html";
@@ -209,9 +211,11 @@ void PlanViewPages(const fs::path& out_dir, SiteData& site, std::vector<FigureJo
             const std::string id = ParameterFigureId(s, slice, c);
             const std::string path = folder + fmt::format("parameters-{}-{}-{}.png", s, slice, c);
             if (sweep.axes.size() == 1) {
-              AddFigure(views, figures, out_dir, id, path, ParameterCurve(site, sequence, sweep, sweep.slices[slice], columns[c]));
+              AddFigure(views, figures, out_dir, id, path,
+                        ParameterCurve(site, sequence, sweep, sweep.slices[slice], columns[c]));
             } else {
-              AddFigure(views, figures, out_dir, id, path, ParameterHeatmap(sequence, sweep, sweep.slices[slice], columns[c]));
+              AddFigure(views, figures, out_dir, id, path,
+                        ParameterHeatmap(sequence, sweep, sweep.slices[slice], columns[c]));
             }
           }
         }

@@ -41,8 +41,8 @@ constexpr const char* kMarker = ".slamsweep-report";
 
 // Files of a run folder (orchestrator/DESIGN.md) offered for download, in display order. Fixed
 // names only: paths named inside result.json are not trusted to stay inside the run folder.
-constexpr const char* kDownloads[] = {"map.png",     "map.pgm",  "map.yaml",    "trajectory.tum",
-                                      "reference.tum", "map.geojson", "stages.png", "log.txt",
+constexpr const char* kDownloads[] = {"map.png",       "map.pgm",     "map.yaml",    "trajectory.tum",
+                                      "reference.tum", "map.geojson", "stages.png",  "log.txt",
                                       "command.txt",   "run.json",    "result.json", "rpe_segments.csv"};
 
 void WriteTextFile(const fs::path& path, std::string_view content) {
@@ -196,7 +196,8 @@ std::vector<PlotRequest> PlanPlots(const SweepModel& model, const ReportLayout& 
   for (const SequenceModel& sequence : model.sequences) {
     std::vector<PlotSpec> specs;
     for (std::size_t c = 0; c < sequence.trajectory_columns.size(); ++c) {
-      if (sequence.trajectory_columns[c].metric == "ape_trans") specs.push_back({&sequence.trajectory_columns[c], c, true});
+      if (sequence.trajectory_columns[c].metric == "ape_trans")
+        specs.push_back({&sequence.trajectory_columns[c], c, true});
     }
     for (std::size_t c = 0; c < sequence.map_columns.size(); ++c) specs.push_back({&sequence.map_columns[c], c, false});
     for (const PlotSpec& spec : specs) {
@@ -208,7 +209,8 @@ std::vector<PlotRequest> PlanPlots(const SweepModel& model, const ReportLayout& 
       request.log_scale = true;
       for (const AlgorithmRow& row : sequence.rows) {
         const MetricCell& cell = spec.trajectory ? row.trajectory_cells[spec.index] : row.map_cells[spec.index];
-        if (!cell.values.empty()) request.series.push_back({row.algorithm, cell.values, RowStyle(site, sequence, row_index)});
+        if (!cell.values.empty())
+          request.series.push_back({row.algorithm, cell.values, RowStyle(site, sequence, row_index)});
         ++row_index;
       }
       if (request.series.empty()) continue;
@@ -323,7 +325,8 @@ void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const fs
     };
     const fs::path map_image = MapImage(run);
     const bool has_map = IsRegularFileNoFollow(map_image);
-    const bool can_overlay = has_map && IsRegularFileNoFollow(run.dir / "map.yaml") && IsRegularFileNoFollow(run.dir / "trajectory.tum");
+    const bool can_overlay =
+        has_map && IsRegularFileNoFollow(run.dir / "map.yaml") && IsRegularFileNoFollow(run.dir / "trajectory.tum");
     if (!every_run && !in_gallery[i] && run.status == RunStatus::kOk) {
       if (has_map) artifacts->figures_left_out = model.runs.size();
       if (!artifacts->animation.empty()) continue;
@@ -339,7 +342,8 @@ void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const fs
                       }});
     }
     if (can_overlay) {
-      const fs::path reference = IsRegularFileNoFollow(run.dir / "reference.tum") ? run.dir / "reference.tum" : fs::path();
+      const fs::path reference =
+          IsRegularFileNoFollow(run.dir / "reference.tum") ? run.dir / "reference.tum" : fs::path();
       OverlaySettings overlay = OverlaySettingsOf(run);
       overlay.max_side_px = options.overlay_px;
       jobs.push_back({[=] {
@@ -410,7 +414,8 @@ ReportSummary CountImages(const fs::path& out_dir, bool drawing, SiteData& site)
   }
   for (const RunArtifacts& artifacts : site.runs) {
     summary.images += static_cast<std::size_t>(artifacts.thumbnail) + artifacts.overlay + artifacts.gif;
-    for (const std::string& note : artifacts.notes) summary.images_missing += note.find(" not made: ") != std::string::npos;
+    for (const std::string& note : artifacts.notes)
+      summary.images_missing += note.find(" not made: ") != std::string::npos;
   }
   return summary;
 }
@@ -454,8 +459,9 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   std::vector<FigureJob> figures;
   PlanViewPages(out_dir, site, figures);
   PlanTrajectoryFigures(out_dir, site, figures);
-  PlanRunPathErrorFigures(out_dir, site, figures,
-                          options.run_figures_for_every_run || model.runs.size() <= options.figures_for_every_run_up_to);
+  PlanRunPathErrorFigures(
+      out_dir, site, figures,
+      options.run_figures_for_every_run || model.runs.size() <= options.figures_for_every_run_up_to);
   std::vector<PlannedMapComparison> map_comparisons = PlanMapComparisons(out_dir, site);
   std::string figures_error;
   std::vector<ImageJob> jobs;
@@ -466,7 +472,8 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
                       [&site](const std::string& error) {
                         // Made or not is decided below from the files; this keeps the reason.
                         for (auto& [sequence, artifacts] : site.plots) {
-                          for (PlotArtifact& plot : artifacts) plot.note = error.empty() ? "the plot file is missing" : error;
+                          for (PlotArtifact& plot : artifacts)
+                            plot.note = error.empty() ? "the plot file is missing" : error;
                         }
                       }});
     }
@@ -474,7 +481,8 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
       Artwork* artwork = options.artwork;
       jobs.push_back({[artwork, &scatter_plots] { artwork->ScatterPlots(scatter_plots); },
                       [&validity](const std::string& error) {
-                        for (ValidityPlot& plot : validity.plots) plot.note = error.empty() ? "the plot file is missing" : error;
+                        for (ValidityPlot& plot : validity.plots)
+                          plot.note = error.empty() ? "the plot file is missing" : error;
                       }});
     }
     if (!figures.empty()) {
@@ -506,7 +514,8 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   phase.emplace("pages");
   ReportSummary summary = CountImages(out_dir, options.artwork != nullptr, site);
   CountValidityPlots(out_dir, options.artwork != nullptr, validity, summary);
-  const auto [figures_made, figures_missing] = MarkViewFigures(out_dir, options.artwork != nullptr, figures_error, site);
+  const auto [figures_made, figures_missing] =
+      MarkViewFigures(out_dir, options.artwork != nullptr, figures_error, site);
   summary.images += figures_made;
   summary.images_missing += figures_missing;
   const auto [run_figures_made, run_figures_missing] =
@@ -526,7 +535,8 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   site.has_summary_json = CopyResultFile(result_dir, out_dir, "summary.json");
   site.has_summary_csv = CopyResultFile(result_dir, out_dir, "summary.csv");
   site.has_runs_csv = CopyResultFile(result_dir, out_dir, "runs.csv");
-  WriteTextFile(out_dir / "style.css", std::string(StyleSheet()) + ViewStyleSheet() + std::string(MapsComparedStyleSheet()));
+  WriteTextFile(out_dir / "style.css",
+                std::string(StyleSheet()) + ViewStyleSheet() + std::string(MapsComparedStyleSheet()));
   WritePaperFiles(model, layout, out_dir, site);
   if (options.history != nullptr) site.history_section = options.history->Write(out_dir, summary);
   validity.has_csv = CopyResultFile(result_dir, out_dir, "validity.csv");

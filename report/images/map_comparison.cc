@@ -70,11 +70,13 @@ MapComparisonDrawn WriteMapComparison(const MapComparisonJob& job) {
       continue;
     }
     if (table_reference) continue;  // the reference's window
-    if (const auto extent = KnownExtent(*maps[i], request.placement)) window = window ? window->Union(*extent) : *extent;
+    if (const auto extent = KnownExtent(*maps[i], request.placement))
+      window = window ? window->Union(*extent) : *extent;
   }
   if (!window) {
-    throw evaluator::InputError("maps compared: no map has a known cell" +
-                                (reference_error.empty() ? std::string() : " (reference map: " + reference_error + ")"));
+    throw evaluator::InputError(
+        "maps compared: no map has a known cell" +
+        (reference_error.empty() ? std::string() : " (reference map: " + reference_error + ")"));
   }
   const PanelGeometry panel = ChoosePanelGeometry(*window, job.max_side_px);
   drawn.metres_per_pixel = panel.metres_per_pixel;

@@ -27,7 +27,9 @@ struct Point {
 struct Rigid {
   explicit Rigid(const MapPlacement& placement)
       : p(placement), c(std::cos(placement.yaw_rad)), s(std::sin(placement.yaw_rad)) {}
-  Point Place(double x, double y) const { return {p.x_m + p.scale * (c * x - s * y), p.y_m + p.scale * (s * x + c * y)}; }
+  Point Place(double x, double y) const {
+    return {p.x_m + p.scale * (c * x - s * y), p.y_m + p.scale * (s * x + c * y)};
+  }
   /// The inverse of Place: from the common frame back to the map's own world coordinates.
   Point Unplace(double x, double y) const {
     const double dx = (x - p.x_m) / p.scale, dy = (y - p.y_m) / p.scale;
@@ -79,11 +81,16 @@ cv::Mat WithinRadius(const cv::Mat& occupied, int radius) {
 
 cv::Vec3b ClassColour(unsigned char wall_class) {
   switch (wall_class) {
-    case kWallBoth: return {kBothBgr[0], kBothBgr[1], kBothBgr[2]};
-    case kWallRunOnly: return {kRunOnlyBgr[0], kRunOnlyBgr[1], kRunOnlyBgr[2]};
-    case kWallReferenceOnly: return {kReferenceOnlyBgr[0], kReferenceOnlyBgr[1], kReferenceOnlyBgr[2]};
-    case kWallFree: return {255, 255, 255};
-    default: return {kDifferenceUnknownGrey, kDifferenceUnknownGrey, kDifferenceUnknownGrey};
+    case kWallBoth:
+      return {kBothBgr[0], kBothBgr[1], kBothBgr[2]};
+    case kWallRunOnly:
+      return {kRunOnlyBgr[0], kRunOnlyBgr[1], kRunOnlyBgr[2]};
+    case kWallReferenceOnly:
+      return {kReferenceOnlyBgr[0], kReferenceOnlyBgr[1], kReferenceOnlyBgr[2]};
+    case kWallFree:
+      return {255, 255, 255};
+    default:
+      return {kDifferenceUnknownGrey, kDifferenceUnknownGrey, kDifferenceUnknownGrey};
   }
 }
 
@@ -138,7 +145,8 @@ OccupancyGrid KnownPart(OccupancyGrid grid, double later_resolution_m) {
 }
 
 PanelGeometry ChoosePanelGeometry(const WorldWindow& window, int max_side_px, double margin_fraction) {
-  if (max_side_px < 1) throw evaluator::InputError("map panel: expected at least 1 pixel, got " + std::to_string(max_side_px));
+  if (max_side_px < 1)
+    throw evaluator::InputError("map panel: expected at least 1 pixel, got " + std::to_string(max_side_px));
   if (!(window.Width() > 0.0 && window.Height() > 0.0) || !std::isfinite(window.Width() + window.Height())) {
     throw evaluator::InputError("map panel: the maps have no extent to draw");
   }
@@ -157,9 +165,10 @@ PanelGeometry ChoosePanelGeometry(const WorldWindow& window, int max_side_px, do
 cv::Mat RenderMapPanel(const OccupancyGrid& grid, const MapPlacement& placement, const PanelGeometry& panel) {
   // Cells smaller than a pixel are merged first (keeping the highest probability), so walls survive.
   const double cell_in_panel = grid.resolution_m * placement.scale;
-  const OccupancyGrid merged = cell_in_panel < panel.metres_per_pixel
-                                   ? evaluator::ResampleKeepingProbabilities(grid, panel.metres_per_pixel / placement.scale)
-                                   : OccupancyGrid();
+  const OccupancyGrid merged =
+      cell_in_panel < panel.metres_per_pixel
+          ? evaluator::ResampleKeepingProbabilities(grid, panel.metres_per_pixel / placement.scale)
+          : OccupancyGrid();
   const OccupancyGrid& shown = merged.cells.empty() ? grid : merged;
   cv::Mat grey(panel.height_px, panel.width_px, CV_8U, cv::Scalar(kUnknownGrey));
   const Rigid rigid(placement);
@@ -179,7 +188,8 @@ WallDifference CompareWalls(const OccupancyGrid& run, const MapPlacement& placem
                             const WallMatchOptions& options) {
   if (!(reference.resolution_m > 0.0)) throw evaluator::InputError("reference map: cell size must be positive");
   const double res = reference.resolution_m;
-  const OccupancyGrid resampled = evaluator::ResampleToResolution(run, res / placement.scale, CompareOptionsOf(options));
+  const OccupancyGrid resampled =
+      evaluator::ResampleToResolution(run, res / placement.scale, CompareOptionsOf(options));
   WorldWindow extent{reference.origin.x_m, reference.origin.y_m, reference.origin.x_m + reference.width * res,
                      reference.origin.y_m + reference.height * res};
   if (const std::optional<WorldWindow> known = KnownExtent(resampled, placement)) extent = extent.Union(*known);
@@ -199,7 +209,8 @@ WallDifference CompareWalls(const OccupancyGrid& run, const MapPlacement& placem
   const int col0 = static_cast<int>(-first_col);
   const int row0 = height - reference.height + static_cast<int>(first_row);
   for (int r = 0; r < reference.height; ++r) {
-    for (int c = 0; c < reference.width; ++c) reference_class.at<unsigned char>(row0 + r, col0 + c) = Classify(reference.at(r, c), options);
+    for (int c = 0; c < reference.width; ++c)
+      reference_class.at<unsigned char>(row0 + r, col0 + c) = Classify(reference.at(r, c), options);
   }
   const Rigid rigid(placement);
   for (int r = 0; r < height; ++r) {
@@ -231,7 +242,8 @@ WallDifference CompareWalls(const OccupancyGrid& run, const MapPlacement& placem
       } else if (in_reference) {
         cell = kWallReferenceOnly;
         ++out.counts.reference_only;
-      } else if (run_class.at<unsigned char>(r, c) == kFreeCell || reference_class.at<unsigned char>(r, c) == kFreeCell) {
+      } else if (run_class.at<unsigned char>(r, c) == kFreeCell ||
+                 reference_class.at<unsigned char>(r, c) == kFreeCell) {
         cell = kWallFree;
       }
     }
@@ -253,7 +265,8 @@ cv::Mat RenderDifferencePanel(const WallDifference& difference, const PanelGeome
     for (int c = 0; c < panel.width_px; ++c) {
       const double x_left = panel.window.min_x + c * mpp;
       // The cells whose centres fall in the pixel, or the one under its centre when none does.
-      int c0 = static_cast<int>(std::ceil(column(x_left) - 0.5)), c1 = static_cast<int>(std::ceil(column(x_left + mpp) - 0.5));
+      int c0 = static_cast<int>(std::ceil(column(x_left) - 0.5)),
+          c1 = static_cast<int>(std::ceil(column(x_left + mpp) - 0.5));
       int r0 = static_cast<int>(std::ceil(row(y_top) - 0.5)), r1 = static_cast<int>(std::ceil(row(y_top - mpp) - 0.5));
       if (c1 <= c0) c0 = static_cast<int>(std::floor(column(x_left + mpp / 2))), c1 = c0 + 1;
       if (r1 <= r0) r0 = static_cast<int>(std::floor(row(y_top - mpp / 2))), r1 = r0 + 1;

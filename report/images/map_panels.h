@@ -50,7 +50,13 @@ PanelGeometry ChoosePanelGeometry(const WorldWindow& window, int max_side_px, do
 cv::Mat RenderMapPanel(const evaluator::OccupancyGrid& grid, const MapPlacement& placement, const PanelGeometry& panel);
 
 /// Classes of a difference image, in drawing priority (a coarse pixel shows the highest class it covers).
-enum WallClass : unsigned char { kWallUnknown = 0, kWallFree = 1, kWallBoth = 2, kWallRunOnly = 3, kWallReferenceOnly = 4 };
+enum WallClass : unsigned char {
+  kWallUnknown = 0,
+  kWallFree = 1,
+  kWallBoth = 2,
+  kWallRunOnly = 3,
+  kWallReferenceOnly = 4
+};
 
 /// The run's walls against the reference's, on the reference's cell lattice (the run's map brought to
 /// the reference's cell size as the scores do: evaluator ResampleToResolution, then the cell under each

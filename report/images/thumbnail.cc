@@ -13,7 +13,6 @@
 namespace slamsweep::report {
 namespace {
 
-
 cv::Mat GreyOf(const cv::Mat& image) {
   if (image.channels() == 1) return image;
   cv::Mat grey;

@@ -12,8 +12,8 @@ namespace slamsweep::report {
 
 namespace {
 
-using nlohmann::json;
 using evaluator::InputError;
+using nlohmann::json;
 
 json ReadJsonFile(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

@@ -11,7 +11,9 @@ using nlohmann::json;
 
 /// Numbers by value first, then booleans, then text, then anything else by its JSON; null first of all.
 bool ValueLess(const json& a, const json& b) {
-  const auto rank = [](const json& v) { return v.is_null() ? 0 : v.is_number() ? 1 : v.is_boolean() ? 2 : v.is_string() ? 3 : 4; };
+  const auto rank = [](const json& v) {
+    return v.is_null() ? 0 : v.is_number() ? 1 : v.is_boolean() ? 2 : v.is_string() ? 3 : 4;
+  };
   if (rank(a) != rank(b)) return rank(a) < rank(b);
   if (a.is_number()) return a.get<double>() < b.get<double>();
   if (a.is_boolean()) return !a.get<bool>() && b.get<bool>();
@@ -112,7 +114,8 @@ std::optional<ParameterTable> BuildParameterTable(const SweepModel& model, const
     for (const auto& [r, parameters] : rows) {
       std::vector<json> fixed;
       for (const ParameterAxis& axis : sweep.sliced) fixed.push_back(ValueOf(*parameters, axis.name));
-      auto slice = std::find_if(slices.begin(), slices.end(), [&](const ParameterSlice& s) { return s.fixed == fixed; });
+      auto slice =
+          std::find_if(slices.begin(), slices.end(), [&](const ParameterSlice& s) { return s.fixed == fixed; });
       if (slice == slices.end()) {
         ParameterSlice created;
         created.fixed = fixed;
@@ -156,8 +159,7 @@ BestValue FindBest(const SequenceModel& sequence, const std::vector<std::size_t>
     const MetricCell& cell = CellOf(row, column);
     if (IsBestCandidate(row, ColumnOf(sequence, column), cell)) ranked.emplace_back(cell.summary.mean, r);
   }
-  std::stable_sort(ranked.begin(), ranked.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   BestValue best;
   if (ranked.empty()) return best;
   best.row = ranked[0].second;

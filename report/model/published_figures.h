@@ -13,7 +13,7 @@ struct PublishedFigure {
   std::string label;     ///< "Cartographer", "graph mapping"
   std::string source;    ///< the source's key ("hess2016")
   std::string citation;
-  bool verified = false;  ///< read in the paper itself
+  bool verified = false;                               ///< read in the paper itself
   std::optional<std::pair<double, double>> trans_abs;  ///< mean, std (m)
   std::optional<std::pair<double, double>> rot_abs;    ///< mean, std (deg)
 };

@@ -44,10 +44,10 @@ struct RunOutputs {
 /// One run of a sweep as the report sees it: run.json and result.json of runs/<id>/ (orchestrator/DESIGN.md).
 /// Every string is untrusted input: pages escape it and file names are derived with SafeFileName.
 struct RunRecord {
-  std::string run_id;          ///< the folder name (what exists on disk)
-  std::filesystem::path dir;   ///< absolute run folder
-  std::string algorithm;       ///< "?" when unknown
-  std::string sequence;        ///< "?" when unknown
+  std::string run_id;         ///< the folder name (what exists on disk)
+  std::filesystem::path dir;  ///< absolute run folder
+  std::string algorithm;      ///< "?" when unknown
+  std::string sequence;       ///< "?" when unknown
   std::string noise;
   /// run.json's group.parameters ("k=v;...", "" for none): with algorithm, sequence and noise, the
   /// comparison group. `parameter_values` holds them as JSON for labels that show what varies.

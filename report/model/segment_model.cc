@@ -102,9 +102,10 @@ std::optional<SegmentTable> BuildSegmentTable(const SweepModel& model, const Seq
   table.lengths_m.assign(lengths.begin(), lengths.end());
   table.lengths_from = LengthsFrom(all_runs);
   if (length_sets.size() > 1) {
-    table.notes.push_back("The runs of this table were scored at different sets of segment lengths (their sweeps had "
-                          "different evaluation.rpe_segments_m): each length pools only the runs scored at it, and a row "
-                          "with fewer runs at a length says so.");
+    table.notes.push_back(
+        "The runs of this table were scored at different sets of segment lengths (their sweeps had "
+        "different evaluation.rpe_segments_m): each length pools only the runs scored at it, and a row "
+        "with fewer runs at a length says so.");
   }
 
   for (std::size_t r = 0; r < sequence.rows.size(); ++r) {
@@ -124,7 +125,8 @@ std::optional<SegmentTable> BuildSegmentTable(const SweepModel& model, const Seq
         if (const auto drift = segments.mean_drift_pct.find(length); drift != segments.mean_drift_pct.end()) {
           run_drift[k].push_back(drift->second);
         }
-        if (const auto turn = segments.mean_rotation_deg_per_m.find(length); turn != segments.mean_rotation_deg_per_m.end()) {
+        if (const auto turn = segments.mean_rotation_deg_per_m.find(length);
+            turn != segments.mean_rotation_deg_per_m.end()) {
           run_rotation[k].push_back(turn->second);
         }
       }
@@ -147,8 +149,9 @@ std::optional<SegmentTable> BuildSegmentTable(const SweepModel& model, const Seq
       }
     }
     if (row_sets.size() > 1) {
-      row.notes.push_back("runs of this row were scored at different segment lengths; each length pools only the "
-                          "runs scored at it");
+      row.notes.push_back(
+          "runs of this row were scored at different segment lengths; each length pools only the "
+          "runs scored at it");
     }
     for (std::size_t k = 0; k < table.lengths_m.size(); ++k) {
       SegmentCell cell;
@@ -174,7 +177,8 @@ std::optional<SegmentTable> BuildSegmentTable(const SweepModel& model, const Seq
     for (const SegmentRow& row : table.rows) {
       if (candidate(row, k)) best = std::min(best, row.cells[k].mean_drift_pct.mean);
     }
-    for (SegmentRow& row : table.rows) row.cells[k].best = candidate(row, k) && row.cells[k].mean_drift_pct.mean == best;
+    for (SegmentRow& row : table.rows)
+      row.cells[k].best = candidate(row, k) && row.cells[k].mean_drift_pct.mean == best;
   }
   return table;
 }

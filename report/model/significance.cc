@@ -74,25 +74,29 @@ RowTest Compare(const SweepModel& model, const SequenceModel& table, const Metri
 
 std::string Verdict(const TableSignificance& t, const RowTest& test, double alpha, std::size_t tests) {
   if (test.identical) {
-    return fmt::format("tied with {}: every run of both rows gave the same value (identical runs are ties, "
-                       "not evidence)",
-                       test.other);
+    return fmt::format(
+        "tied with {}: every run of both rows gave the same value (identical runs are ties, "
+        "not evidence)",
+        test.other);
   }
   if (test.p_holm <= alpha) {
-    return fmt::format("best, significantly: lower than {} ({}, p = {:.3g}, Holm-adjusted {:.3g}, Cliff's delta "
-                       "{:.2f})",
-                       test.other, test.test, test.p_value, test.p_holm, test.cliffs_delta);
+    return fmt::format(
+        "best, significantly: lower than {} ({}, p = {:.3g}, Holm-adjusted {:.3g}, Cliff's delta "
+        "{:.2f})",
+        test.other, test.test, test.p_value, test.p_holm, test.cliffs_delta);
   }
   if (test.min_p > alpha / static_cast<double>(tests)) {
-    return fmt::format("best, not significantly different from {}: too few runs for any test to reach the level "
-                       "({} {} reach at best p = {:.3g} against alpha / {} tests = {:.3g}); {} iterations per row "
-                       "are needed",
-                       test.other, test.n, test.paired ? "pairs" : "runs", test.min_p, tests,
-                       alpha / static_cast<double>(tests), t.iterations_needed);
+    return fmt::format(
+        "best, not significantly different from {}: too few runs for any test to reach the level "
+        "({} {} reach at best p = {:.3g} against alpha / {} tests = {:.3g}); {} iterations per row "
+        "are needed",
+        test.other, test.n, test.paired ? "pairs" : "runs", test.min_p, tests, alpha / static_cast<double>(tests),
+        t.iterations_needed);
   }
-  return fmt::format("best, not significantly different from {} ({}, p = {:.3g}, Holm-adjusted {:.3g}, Cliff's "
-                     "delta {:.2f})",
-                     test.other, test.test, test.p_value, test.p_holm, test.cliffs_delta);
+  return fmt::format(
+      "best, not significantly different from {} ({}, p = {:.3g}, Holm-adjusted {:.3g}, Cliff's "
+      "delta {:.2f})",
+      test.other, test.test, test.p_value, test.p_holm, test.cliffs_delta);
 }
 
 std::string UnrankedBecause(const AlgorithmRow& row, const MetricColumn& column, const MetricCell& cell) {
@@ -111,7 +115,8 @@ std::string UnrankedBecause(const AlgorithmRow& row, const MetricColumn& column,
   if (row.counts.ok != row.counts.total) {
     return fmt::format("{} of {} runs ok", row.counts.ok, row.counts.total);
   }
-  if (cell.summary.n != row.counts.total) return fmt::format("a value from {} of {} runs", cell.summary.n, row.counts.total);
+  if (cell.summary.n != row.counts.total)
+    return fmt::format("a value from {} of {} runs", cell.summary.n, row.counts.total);
   if (!column.best_withheld.empty()) return column.best_withheld;
   return "";
 }
@@ -147,8 +152,7 @@ std::vector<RankedEntry> Entries(const SequenceModel& table, std::size_t column)
 
 std::size_t IterationsNeeded(double level, bool paired) {
   for (std::size_t n = 1; n <= 64; ++n) {
-    const double min_p =
-        paired ? evaluator::WilcoxonMinimumOneSidedP(n) : evaluator::MannWhitneyMinimumOneSidedP(n, n);
+    const double min_p = paired ? evaluator::WilcoxonMinimumOneSidedP(n) : evaluator::MannWhitneyMinimumOneSidedP(n, n);
     if (min_p <= level) return n;
   }
   return 65;

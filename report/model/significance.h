@@ -17,10 +17,10 @@ struct RowTest {
   /// "Wilcoxon signed-rank" (runs paired by iteration seed) or "Mann-Whitney U".
   std::string test;
   bool paired = false;
-  std::size_t n = 0;        ///< pairs used (paired: non-zero differences) or the best row's runs
-  std::size_t n_other = 0;  ///< the other row's runs (unpaired) or 0
-  double p_value = 1.0;     ///< one-sided
-  double p_holm = 1.0;      ///< Holm-adjusted over every test of the report
+  std::size_t n = 0;          ///< pairs used (paired: non-zero differences) or the best row's runs
+  std::size_t n_other = 0;    ///< the other row's runs (unpaired) or 0
+  double p_value = 1.0;       ///< one-sided
+  double p_holm = 1.0;        ///< Holm-adjusted over every test of the report
   double cliffs_delta = 0.0;  ///< of the best row against the other: negative when the best row is lower
   /// The smallest p-value these run counts can reach (5 pairs: 1/32).
   double min_p = 1.0;
@@ -30,9 +30,9 @@ struct RowTest {
 
 /// One row of a table's ranking on the headline metric.
 struct RankedEntry {
-  std::size_t row = 0;              ///< index into SequenceModel::rows
-  std::optional<std::size_t> rank;  ///< 1 = best; none for rows shown beside the ranking
-  MeanStd summary;                  ///< of the row's values of the headline metric
+  std::size_t row = 0;                              ///< index into SequenceModel::rows
+  std::optional<std::size_t> rank;                  ///< 1 = best; none for rows shown beside the ranking
+  MeanStd summary;                                  ///< of the row's values of the headline metric
   std::optional<evaluator::MeanInterval> interval;  ///< 95 % Student t interval (two or more values)
   std::size_t n_ok = 0;
   std::size_t n_runs = 0;

@@ -27,9 +27,12 @@ struct ColumnCandidate {
 // Freiburg logs it is the only score against something other than one SLAM program's output. Then
 // Table I of the paper (trajectory RMSE) and RPE.
 constexpr ColumnCandidate kTrajectoryCandidates[] = {
-    {"relations_trans", "mean", "Relations translation mean"}, {"relations_rot", "mean", "Relations rotation mean"},
-    {"ape_trans", "rmse", "ATE translation RMSE"},    {"ape_rot", "rmse", "ATE rotation RMSE"},
-    {"rpe_trans", "rmse", "RPE translation RMSE"},    {"rpe_rot", "rmse", "RPE rotation RMSE"},
+    {"relations_trans", "mean", "Relations translation mean"},
+    {"relations_rot", "mean", "Relations rotation mean"},
+    {"ape_trans", "rmse", "ATE translation RMSE"},
+    {"ape_rot", "rmse", "ATE rotation RMSE"},
+    {"rpe_trans", "rmse", "RPE translation RMSE"},
+    {"rpe_rot", "rmse", "RPE rotation RMSE"},
 };
 
 /// What ATE and RPE measure on a sequence whose reference is a corrected log.
@@ -106,7 +109,7 @@ std::string AdapterOf(const RunRecord& run) {
 }
 
 void MarkBest(std::vector<AlgorithmRow>& rows, const std::vector<MetricColumn>& columns,
-              std::vector<MetricCell> AlgorithmRow::* cells) {
+              std::vector<MetricCell> AlgorithmRow::*cells) {
   for (std::size_t c = 0; c < columns.size(); ++c) {
     double best = std::numeric_limits<double>::infinity();
     for (const AlgorithmRow& row : rows) {
@@ -126,9 +129,9 @@ void WithholdUnsupportedBest(SequenceModel& sequence, const SweepModel& model, c
     const std::string key = column.metric + "." + column.statistic;
     const evaluator::ValidityQuantity* quantity = evaluator::FindValidityQuantity(key);
     if (!quantity || quantity->kind != std::string_view("paper map metric")) continue;  // a real error
-    const ValiditySupport support = SupportFor(key, sequence.name, model.validity,
-                                               options.named_study ? &*options.named_study : nullptr,
-                                               options.named_study_source);
+    const ValiditySupport support =
+        SupportFor(key, sequence.name, model.validity, options.named_study ? &*options.named_study : nullptr,
+                   options.named_study_source);
     if (!support.supported) column.best_withheld = support.reason;
   }
 }
@@ -257,9 +260,10 @@ std::vector<AlgorithmRow> PublishedRows(const std::vector<RunRecord>& runs, cons
     bool any = false;
     for (const MetricColumn& column : sequence.trajectory_columns) {
       MetricCell cell;
-      const auto& value = column.metric == "relations_trans" && column.statistic == "mean" && column.unit == "m"   ? figure.trans_abs
-                          : column.metric == "relations_rot" && column.statistic == "mean" && column.unit == "deg" ? figure.rot_abs
-                                                                                                                    : std::nullopt;
+      const auto& value =
+          column.metric == "relations_trans" && column.statistic == "mean" && column.unit == "m"   ? figure.trans_abs
+          : column.metric == "relations_rot" && column.statistic == "mean" && column.unit == "deg" ? figure.rot_abs
+                                                                                                   : std::nullopt;
       if (value) {
         cell.values = {value->first};
         cell.summary = ComputeMeanStd(cell.values);
@@ -310,7 +314,8 @@ std::string MetricSpecLabel(const RunRecord& run, const std::string& metric) {
     if (const json* align = specification ? Find(*specification, "alignment") : nullptr) {
       return "alignment " + JsonScalarText(*align);
     }
-    if (const json* align = evaluation ? Find(*evaluation, "align") : nullptr) return "alignment " + JsonScalarText(*align);
+    if (const json* align = evaluation ? Find(*evaluation, "align") : nullptr)
+      return "alignment " + JsonScalarText(*align);
     return "alignment unstated";
   }
   if (metric.starts_with("rpe_")) {
@@ -331,14 +336,16 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions&
   model.runs = std::move(runs);
   model.validity = evaluator::ComputeValidityStudy(ToValidityRuns(model.runs));
   // Table (sequence, noise) -> row (algorithm name, parameters) -> runs.
-  using RowKey = std::tuple<std::string, std::string, std::string, std::string>;  // algorithm, parameters, odometry, build
+  using RowKey =
+      std::tuple<std::string, std::string, std::string, std::string>;  // algorithm, parameters, odometry, build
   std::map<std::pair<std::string, std::string>, std::map<RowKey, std::vector<std::size_t>>> tables;
   std::set<std::string> algorithms;
   std::set<std::string> sweep_names;
   for (std::size_t i = 0; i < model.runs.size(); ++i) {
     const RunRecord& run = model.runs[i];
-    tables[{run.sequence, run.noise}][{run.algorithm, run.parameters, run.odometry, orchestrator::BuildSignatureOfRunJson(run.run_spec)}]
-        .push_back(i);
+    tables[{run.sequence, run.noise}]
+          [{run.algorithm, run.parameters, run.odometry, orchestrator::BuildSignatureOfRunJson(run.run_spec)}]
+              .push_back(i);
     algorithms.insert(run.algorithm);
     if (!run.sweep.empty()) sweep_names.insert(run.sweep);
     Count(run, model.counts);
@@ -355,9 +362,8 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions&
     sequence.title = sequence.noise.empty() ? sequence.name : sequence.name + ", noise " + sequence.noise;
     std::vector<std::size_t> all;
     for (auto& [row_key, indices] : rows) {
-      std::stable_sort(indices.begin(), indices.end(), [&](std::size_t a, std::size_t b) {
-        return model.runs[a].iteration < model.runs[b].iteration;
-      });
+      std::stable_sort(indices.begin(), indices.end(),
+                       [&](std::size_t a, std::size_t b) { return model.runs[a].iteration < model.runs[b].iteration; });
       all.insert(all.end(), indices.begin(), indices.end());
     }
     sequence.trajectory_columns = BuildColumns(model.runs, all, kTrajectoryCandidates);

@@ -104,7 +104,7 @@ struct SequenceModel {
   std::string key;
   /// For headings: "intel, noise odo-low".
   std::string title;
-  bool has_reference = false;  ///< some run has a trajectory metric
+  bool has_reference = false;                    ///< some run has a trajectory metric
   std::vector<MetricColumn> trajectory_columns;  ///< Table I: ATE, RPE, relations
   std::vector<MetricColumn> map_columns;         ///< occupied proportion, corners, enclosed areas
   std::vector<AlgorithmRow> rows;                ///< sorted by name, then parameters
@@ -124,7 +124,7 @@ struct SweepModelOptions {
 
 /// The whole sweep, ready to render.
 struct SweepModel {
-  std::vector<RunRecord> runs;  ///< sorted by run id
+  std::vector<RunRecord> runs;           ///< sorted by run id
   std::vector<SequenceModel> sequences;  ///< one per sequence x noise, sorted by sequence, then noise
   std::vector<std::string> algorithms;   ///< names, sorted, distinct
   /// The sweep's name (run.json's "sweep"; the names joined by ", " when a merged directory holds several).

@@ -12,7 +12,8 @@ evaluator::ValidityRun ToValidityRun(const RunRecord& run) {
   out.odometry_is_reference = run.odometry_is_reference;
   for (const FlatMetric& metric : run.metrics) out.values[metric.metric + "." + metric.statistic] = metric.value;
   if (!run.command.empty()) {
-    for (const auto& [key, value] : {std::pair{"wall_s", run.wall_s}, {"cpu_s", run.cpu_s}, {"peak_rss_kb", run.peak_rss_kb}}) {
+    for (const auto& [key, value] :
+         {std::pair{"wall_s", run.wall_s}, {"cpu_s", run.cpu_s}, {"peak_rss_kb", run.peak_rss_kb}}) {
       if (value) out.values[key] = *value;
     }
   }

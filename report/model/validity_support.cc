@@ -14,7 +14,7 @@ namespace {
 
 // The most independent error first: the corrected logs' ATE measures agreement with GMapping.
 constexpr std::array<std::string_view, 3> kTargetPreference = {"relations_trans.mean", "ape_trans.rmse",
-                                                              "map_chamfer.value"};
+                                                               "map_chamfer.value"};
 
 std::string TitleOf(std::string_view key) {
   const ev::ValidityQuantity* quantity = ev::FindValidityQuantity(key);
@@ -41,8 +41,8 @@ std::string Evidence(const ev::ValidityCorrelation& c, const ev::ValidityStudy& 
   if (c.verdict == ev::ValidityVerdict::kTooFewRuns) text += fmt::format(" (fewer than {})", study.options.min_runs);
   if (c.rho) text += fmt::format(", Spearman's rho {:.2f}", *c.rho);
   if (c.interval) {
-    text += fmt::format(", {:.0f} % interval [{:.2f}, {:.2f}]", 100.0 * study.options.bootstrap.confidence, c.interval->low,
-                        c.interval->high);
+    text += fmt::format(", {:.0f} % interval [{:.2f}, {:.2f}]", 100.0 * study.options.bootstrap.confidence,
+                        c.interval->low, c.interval->high);
   }
   return text;
 }
@@ -50,10 +50,12 @@ std::string Evidence(const ev::ValidityCorrelation& c, const ev::ValidityStudy& 
 ValiditySupport FromCorrelation(const ev::ValidityCorrelation* c, const ev::ValidityStudy& study,
                                 std::string_view candidate, const std::string& where) {
   if (c && c->verdict == ev::ValidityVerdict::kTracksError) return {true, {}};
-  if (!c) return {false, fmt::format("{}: not marked best: the validity study of {} has no correlation for it",
-                                     TitleOf(candidate), where)};
-  return {false, fmt::format("{}: not marked best: the validity study of {} does not show that it tracks the error ({})",
-                             TitleOf(candidate), where, Evidence(*c, study))};
+  if (!c)
+    return {false, fmt::format("{}: not marked best: the validity study of {} has no correlation for it",
+                               TitleOf(candidate), where)};
+  return {false,
+          fmt::format("{}: not marked best: the validity study of {} does not show that it tracks the error ({})",
+                      TitleOf(candidate), where, Evidence(*c, study))};
 }
 
 /// The study's scope standing in for a sequence it does not cover: all its sequences pooled, or its only one.
@@ -73,10 +75,10 @@ ValiditySupport SupportFor(std::string_view candidate, std::string_view sequence
   std::optional<ValiditySupport> from_own;
   if (!own.empty()) {
     const std::string scope = StandInScope(own);
-    const std::string where = (scope.empty() ? "this sweep's " + std::to_string(own.sequences.size()) +
-                                                   " sequences with a reference (pooled)"
-                                             : "this sweep's sequence " + scope) +
-                              ", as this one has no reference";
+    const std::string where =
+        (scope.empty() ? "this sweep's " + std::to_string(own.sequences.size()) + " sequences with a reference (pooled)"
+                       : "this sweep's sequence " + scope) +
+        ", as this one has no reference";
     const ev::ValidityCorrelation* c = Deciding(own, candidate, scope);
     from_own = FromCorrelation(c, own, candidate, where);
     if (c && c->verdict != ev::ValidityVerdict::kTooFewRuns) return *from_own;

@@ -14,8 +14,8 @@ namespace slamsweep::report {
 struct AlgorithmStyle {
   /// Index into the style table: colour = slot % kPaletteColours, marker = slot % kPaletteMarkers.
   std::size_t slot = 0;
-  std::uint32_t rgb = 0;        ///< 0xRRGGBB
-  int point_type = 7;           ///< gnuplot pngcairo point type of the (filled) marker
+  std::uint32_t rgb = 0;         ///< 0xRRGGBB
+  int point_type = 7;            ///< gnuplot pngcairo point type of the (filled) marker
   std::string_view colour_name;  ///< "blue", for captions and alt texts
   std::string_view marker_name;  ///< "circle"
   std::string_view glyph;        ///< the marker as a character ("●"), for HTML legends

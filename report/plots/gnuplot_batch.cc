@@ -63,8 +63,8 @@ void RunGnuplotBatch(const std::vector<GnuplotBatchJob>& jobs) {
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     const std::string section = SectionOf(outcome.stderr_text, i, jobs.size());
     if (HasError(section) || !NonEmptyFile(jobs[i].png)) {
-      throw std::runtime_error(fmt::format("gnuplot could not draw the plot '{}' ({}), exit code {}: {}",
-                                           jobs[i].title, jobs[i].png.string(), outcome.exit_code,
+      throw std::runtime_error(fmt::format("gnuplot could not draw the plot '{}' ({}), exit code {}: {}", jobs[i].title,
+                                           jobs[i].png.string(), outcome.exit_code,
                                            Trimmed(section.empty() ? outcome.stderr_text : section)));
     }
   }

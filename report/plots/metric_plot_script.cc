@@ -89,8 +89,8 @@ std::string MetricPlotScript(const MetricPlot& plot, const std::filesystem::path
     for (const double v : series.values) {
       if (!std::isfinite(v)) continue;
       if (plot.log_scale && v <= 0.0) ++numbers.at_floor;
-      points += fmt::format("{} {} {} {}\n", Number(x + JitterOffset(drawn_index++, spread.n)), Number(drawn(v)), colour,
-                            series.style.point_type);
+      points += fmt::format("{} {} {} {}\n", Number(x + JitterOffset(drawn_index++, spread.n)), Number(drawn(v)),
+                            colour, series.style.point_type);
     }
     if (spread.n > 0) {
       any_point = true;

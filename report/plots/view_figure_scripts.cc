@@ -128,7 +128,8 @@ std::string BoxplotScript(const BoxplotFigure& figure, const std::filesystem::pa
   const int width = std::clamp(360 + static_cast<int>(categories * series_count) * 22, 800, 1400);
   std::vector<std::string> labels;
   for (const BoxSeries& series : figure.series) {
-    const bool empty = std::none_of(series.boxes.begin(), series.boxes.end(), [](const auto& box) { return box.has_value(); });
+    const bool empty =
+        std::none_of(series.boxes.begin(), series.boxes.end(), [](const auto& box) { return box.has_value(); });
     labels.push_back(series.label + (empty ? " (no segments)" : ""));
   }
   const KeyPlacement key = PlaceKey(labels, width, 2);
@@ -155,15 +156,17 @@ std::string BoxplotScript(const BoxplotFigure& figure, const std::filesystem::pa
     for (std::size_t k = 0; k < categories && k < series.boxes.size(); ++k) {
       if (!series.boxes[k]) continue;
       const BoxStats& b = *series.boxes[k];
-      rows += fmt::format("{} {} {} {} {} {} {}\n", GnuplotNumber(static_cast<double>(k + 1) + offset), GnuplotNumber(b.q1),
-                          GnuplotNumber(b.whisker_low), GnuplotNumber(b.whisker_high), GnuplotNumber(b.q3), GnuplotNumber(b.median), GnuplotNumber(b.mean));
+      rows += fmt::format("{} {} {} {} {} {} {}\n", GnuplotNumber(static_cast<double>(k + 1) + offset),
+                          GnuplotNumber(b.q1), GnuplotNumber(b.whisker_low), GnuplotNumber(b.whisker_high),
+                          GnuplotNumber(b.q3), GnuplotNumber(b.median), GnuplotNumber(b.mean));
     }
     const std::string name = fmt::format("$box_{}_{}", index, s);
     const std::string colour = GnuplotColour(series.style.rgb);
     if (rows.empty()) {
       // Still in the key, so that the legend lists every row of the table.
-      clauses += fmt::format("{}NaN with boxes {} fillcolor rgb {} linecolor rgb {} title {}", clauses.empty() ? "" : ", ",
-                             BoxFill(series.style), colour, colour, GnuplotQuoted(series.label + " (no segments)"));
+      clauses +=
+          fmt::format("{}NaN with boxes {} fillcolor rgb {} linecolor rgb {} title {}", clauses.empty() ? "" : ", ",
+                      BoxFill(series.style), colour, colour, GnuplotQuoted(series.label + " (no segments)"));
       continue;
     }
     script += Datablock(name, rows);
@@ -171,15 +174,17 @@ std::string BoxplotScript(const BoxplotFigure& figure, const std::filesystem::pa
     clauses += fmt::format(
         "{}{} using 1:2:3:4:5:{} with candlesticks whiskerbars 0.6 {} fillcolor rgb {} linecolor rgb {} linewidth 1.3 "
         "title {}",
-        clauses.empty() ? "" : ", ", name, width_column, BoxFill(series.style), colour, colour, GnuplotQuoted(series.label));
+        clauses.empty() ? "" : ", ", name, width_column, BoxFill(series.style), colour, colour,
+        GnuplotQuoted(series.label));
     // The median in black, or white on a dark colour (black, dark grey) where black would vanish.
     const bool dark = RelativeLuminance(series.style.rgb) < 0.1;
     clauses += fmt::format(", {} using 1:6:6:6:6:{} with candlesticks linecolor rgb {} linewidth 2 notitle", name,
                            width_column, dark ? "'#FFFFFF'" : "'#000000'");
     // The mean as the algorithm's marker, outlined in black so it shows on its own box.
-    clauses += fmt::format(", {0} using 1:7 with points pointtype {1} pointsize 1.25 linecolor rgb '#000000' notitle"
-                           ", {0} using 1:7 with points pointtype {1} pointsize 0.85 linecolor rgb {2} notitle",
-                           name, series.style.point_type, colour);
+    clauses += fmt::format(
+        ", {0} using 1:7 with points pointtype {1} pointsize 1.25 linecolor rgb '#000000' notitle"
+        ", {0} using 1:7 with points pointtype {1} pointsize 0.85 linecolor rgb {2} notitle",
+        name, series.style.point_type, colour);
   }
   script += clauses.empty() ? EmptyPlot(index) : "plot " + clauses + "\n";
   script += "unset output\n";
@@ -219,7 +224,8 @@ std::string LineFigureScript(const LineFigure& figure, const std::filesystem::pa
     script += fmt::format("set xrange [-0.5:{}]\n", GnuplotNumber(static_cast<double>(figure.x_tics.size()) - 0.5));
   } else if (figure.log_x) {
     script += "set logscale x\n";
-    if (std::isfinite(x_min)) script += fmt::format("set xrange [{}:{}]\n", GnuplotNumber(x_min / 1.3), GnuplotNumber(x_max * 1.3));
+    if (std::isfinite(x_min))
+      script += fmt::format("set xrange [{}:{}]\n", GnuplotNumber(x_min / 1.3), GnuplotNumber(x_max * 1.3));
   } else if (std::isfinite(x_min)) {
     const double margin = x_max > x_min ? 0.06 * (x_max - x_min) : std::max(1.0, std::abs(x_min) * 0.1);
     script += fmt::format("set xrange [{}:{}]\n", GnuplotNumber(x_min - margin), GnuplotNumber(x_max + margin));
@@ -254,8 +260,8 @@ std::string LineFigureScript(const LineFigure& figure, const std::filesystem::pa
     for (const LinePoint& point : series.points) {
       rows += fmt::format("{} {}\n", GnuplotNumber(x_of(point.x)), GnuplotNumber(point.y));
       if (point.spread) {
-        bars += fmt::format("{} {} {} {}\n", GnuplotNumber(x_of(point.x)), GnuplotNumber(point.y), GnuplotNumber(point.y - *point.spread),
-                            GnuplotNumber(point.y + *point.spread));
+        bars += fmt::format("{} {} {} {}\n", GnuplotNumber(x_of(point.x)), GnuplotNumber(point.y),
+                            GnuplotNumber(point.y - *point.spread), GnuplotNumber(point.y + *point.spread));
       }
     }
     const std::string colour = GnuplotColour(series.style.rgb);
@@ -264,8 +270,9 @@ std::string LineFigureScript(const LineFigure& figure, const std::filesystem::pa
     script += Datablock(name, rows);
     if (!bars.empty()) {
       script += Datablock(name + "_bars", bars);
-      clauses += fmt::format("{}{}_bars using 1:2:3:4 with yerrorbars pointtype -1 linecolor rgb {} linewidth 1.2 notitle",
-                             clauses.empty() ? "" : ", ", name, colour);
+      clauses +=
+          fmt::format("{}{}_bars using 1:2:3:4 with yerrorbars pointtype -1 linecolor rgb {} linewidth 1.2 notitle",
+                      clauses.empty() ? "" : ", ", name, colour);
     }
     clauses += fmt::format(
         "{}{} using 1:2 with linespoints linewidth 2 dashtype {} pointtype {} pointsize 1.1 linecolor rgb {} title {}",
@@ -277,8 +284,9 @@ std::string LineFigureScript(const LineFigure& figure, const std::filesystem::pa
     const LinePoint& point = figure.series[figure.highlight->series].points[figure.highlight->point];
     const std::string name = fmt::format("$best_{}", index);
     script += Datablock(name, fmt::format("{} {}\n", GnuplotNumber(point.x), GnuplotNumber(point.y)));
-    clauses += fmt::format("{}{} using 1:2 with points pointtype 6 pointsize 3 linewidth 2 linecolor rgb '#000000' title {}",
-                           clauses.empty() ? "" : ", ", name, GnuplotQuoted(figure.highlight->label));
+    clauses +=
+        fmt::format("{}{} using 1:2 with points pointtype 6 pointsize 3 linewidth 2 linecolor rgb '#000000' title {}",
+                    clauses.empty() ? "" : ", ", name, GnuplotQuoted(figure.highlight->label));
   }
   script += clauses.empty() ? EmptyPlot(index) : "plot " + clauses + "\n";
   script += "unset output\n";
@@ -308,7 +316,8 @@ std::string HeatmapScript(const HeatmapFigure& figure, const std::filesystem::pa
   script += "unset key\nset border 0\nset tics scale 0\nset size ratio -1\n";
   std::string palette;
   for (std::size_t i = 0; i < kViridisReversed.size(); ++i) {
-    palette += fmt::format("{}{} '#{:06X}'", i == 0 ? "" : ", ", GnuplotNumber(kViridisReversed[i].t), kViridisReversed[i].rgb);
+    palette += fmt::format("{}{} '#{:06X}'", i == 0 ? "" : ", ", GnuplotNumber(kViridisReversed[i].t),
+                           kViridisReversed[i].rgb);
   }
   script += "set palette defined (" + palette + ")\n";
   if (any) {
@@ -352,8 +361,10 @@ std::string HeatmapScript(const HeatmapFigure& figure, const std::filesystem::pa
                             ys, white ? "'#FFFFFF'" : "'#000000'");
       if (cell.best) {
         script += fmt::format(
-            "set object {} rectangle from {},{} to {},{} fillstyle empty border linecolor rgb '#D55E00' linewidth 4 front\n",
-            object++, GnuplotNumber(x - 0.46), GnuplotNumber(y - 0.46), GnuplotNumber(x + 0.46), GnuplotNumber(y + 0.46));
+            "set object {} rectangle from {},{} to {},{} fillstyle empty border linecolor rgb '#D55E00' linewidth 4 "
+            "front\n",
+            object++, GnuplotNumber(x - 0.46), GnuplotNumber(y - 0.46), GnuplotNumber(x + 0.46),
+            GnuplotNumber(y + 0.46));
       }
     }
   }
@@ -363,8 +374,8 @@ std::string HeatmapScript(const HeatmapFigure& figure, const std::filesystem::pa
     const std::string name = fmt::format("$heat_{}", index);
     script += Datablock(name, values);
     // Each value a 1 x 1 cell: centre, half widths 0.5, coloured by the palette.
-    script += fmt::format("plot {} using 1:2:(0.5):(0.5):3 with boxxyerror fillstyle solid 1.0 noborder linecolor palette\n",
-                          name);
+    script += fmt::format(
+        "plot {} using 1:2:(0.5):(0.5):3 with boxxyerror fillstyle solid 1.0 noborder linecolor palette\n", name);
   }
   script += "unset output\n";
   return script;
@@ -379,13 +390,15 @@ std::string PathFigureScript(const PathFigure& figure, const std::filesystem::pa
   }
   const int width_px = 900;
   const KeyPlacement key = PlaceKey(labels, width_px, 3);
-  std::string script = Head(figure.title, figure.x_label, figure.y_label, png, index, width_px, 720 + key.extra_height_px);
+  std::string script =
+      Head(figure.title, figure.x_label, figure.y_label, png, index, width_px, 720 + key.extra_height_px);
   script += key.command;
   script += "set size ratio -1\nset grid\n";
   if (coloured) {
     std::string palette;
     for (std::size_t i = 0; i < kViridisReversed.size(); ++i) {
-      palette += fmt::format("{}{} '#{:06X}'", i == 0 ? "" : ", ", GnuplotNumber(kViridisReversed[i].t), kViridisReversed[i].rgb);
+      palette += fmt::format("{}{} '#{:06X}'", i == 0 ? "" : ", ", GnuplotNumber(kViridisReversed[i].t),
+                             kViridisReversed[i].rgb);
     }
     script += "set palette defined (" + palette + ")\n";
     script += fmt::format("set cblabel {} noenhanced\n", GnuplotQuoted(figure.colour_label));
@@ -399,7 +412,8 @@ std::string PathFigureScript(const PathFigure& figure, const std::filesystem::pa
     const bool by_colour = series.colour_values.size() == series.x.size() && !series.x.empty();
     for (std::size_t i = 0; i < series.x.size() && i < series.y.size(); ++i) {
       if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
-      rows += by_colour ? fmt::format("{} {} {}\n", GnuplotNumber(series.x[i]), GnuplotNumber(series.y[i]), GnuplotNumber(series.colour_values[i]))
+      rows += by_colour ? fmt::format("{} {} {}\n", GnuplotNumber(series.x[i]), GnuplotNumber(series.y[i]),
+                                      GnuplotNumber(series.colour_values[i]))
                         : fmt::format("{} {}\n", GnuplotNumber(series.x[i]), GnuplotNumber(series.y[i]));
     }
     if (rows.empty()) continue;

@@ -73,7 +73,8 @@ class Cartographer : public Algorithm {
   void Run(const evaluator::RobotLog& robot, DriverOutputs& outputs) override {
     auto map_builder = carto::mapping::CreateMapBuilder(options_.map_builder);
     std::map<std::int64_t, std::size_t> scan_by_ticks;
-    for (std::size_t i = 0; i < robot.scans.size(); ++i) scan_by_ticks[carto::common::ToUniversal(ToTime(robot.scans[i].stamp_s))] = i;
+    for (std::size_t i = 0; i < robot.scans.size(); ++i)
+      scan_by_ticks[carto::common::ToUniversal(ToTime(robot.scans[i].stamp_s))] = i;
     // The local SLAM result of each scan, in the trajectory's local frame (written as the scans go,
     // so a stopped run keeps them; replaced by the optimised poses at the end).
     std::map<std::size_t, carto::transform::Rigid3d> local_poses;
@@ -99,13 +100,15 @@ class Cartographer : public Algorithm {
       // the odometry's yaw rate over each interval, from just after the previous scan, lets it turn
       // the robot by the odometry's rotation instead. It is robot data: wheel odometry, resampled.
       const double previous = i > 0 ? robot.scans[i - 1].stamp_s : stamp - 1.0;
-      const double turn = i > 0 ? std::remainder(robot.odometry.poses()[i].Yaw() - robot.odometry.poses()[i - 1].Yaw(), 2 * M_PI) : 0.0;
+      const double turn =
+          i > 0 ? std::remainder(robot.odometry.poses()[i].Yaw() - robot.odometry.poses()[i - 1].Yaw(), 2 * M_PI) : 0.0;
       const double interval = std::max(stamp - previous, 1e-3);
       if (use_imu) {
         builder->AddSensorData(kImuSensor, carto::sensor::ImuData{ToTime(previous + 1e-4), Eigen::Vector3d(0, 0, 9.81),
                                                                   Eigen::Vector3d(0, 0, turn / interval)});
       }
-      builder->AddSensorData(kOdometrySensor, carto::sensor::OdometryData{ToTime(stamp), Rigid(robot.odometry.poses()[i])});
+      builder->AddSensorData(kOdometrySensor,
+                             carto::sensor::OdometryData{ToTime(stamp), Rigid(robot.odometry.poses()[i])});
       builder->AddSensorData(kScanSensor, ToPointCloud(robot.scans[i]));
       if (const auto found = local_poses.find(i); found != local_poses.end()) {
         const carto::transform::Rigid3d global =
@@ -137,7 +140,8 @@ class Cartographer : public Algorithm {
   CartographerOptions options_;
 };
 
-std::unique_ptr<Algorithm> Configure(Parameters& parameters, const DriverArgs& /*args*/, const evaluator::RobotLog& /*robot*/) {
+std::unique_ptr<Algorithm> Configure(Parameters& parameters, const DriverArgs& /*args*/,
+                                     const evaluator::RobotLog& /*robot*/) {
   return std::make_unique<Cartographer>(ReadCartographerOptions(parameters));
 }
 

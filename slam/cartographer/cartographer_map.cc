@@ -37,9 +37,9 @@ evaluator::OccupancyGrid PaintSubmaps(const carto::mapping::PoseGraphInterface& 
     const double width = limits.cell_limits().num_x_cells * limits.resolution();
     const double height = limits.cell_limits().num_y_cells * limits.resolution();
     for (const Eigen::Vector2d& corner : {Eigen::Vector2d(limits.max().x(), limits.max().y()),
-                                         Eigen::Vector2d(limits.max().x() - width, limits.max().y()),
-                                         Eigen::Vector2d(limits.max().x(), limits.max().y() - height),
-                                         Eigen::Vector2d(limits.max().x() - width, limits.max().y() - height)}) {
+                                          Eigen::Vector2d(limits.max().x() - width, limits.max().y()),
+                                          Eigen::Vector2d(limits.max().x(), limits.max().y() - height),
+                                          Eigen::Vector2d(limits.max().x() - width, limits.max().y() - height)}) {
       const Eigen::Vector2d global = local_to_global * corner;
       min_x = std::min(min_x, global.x()), max_x = std::max(max_x, global.x());
       min_y = std::min(min_y, global.y()), max_y = std::max(max_y, global.y());

@@ -111,7 +111,8 @@ CartographerOptions ReadCartographerOptions(Parameters& parameters) {
   // Beside the program (the build and the installation put slamsweep_2d.lua there): a file a run reads as
   // configuration sits where slamsweep's build identity finds and hashes it (orchestrator/adapters/roster.h).
   const std::filesystem::path self = evaluator::RunningProgram();
-  if (self.empty()) throw evaluator::InputError("cannot find the Cartographer driver's own folder (no /proc/self/exe, no AT_EXECFN)");
+  if (self.empty())
+    throw evaluator::InputError("cannot find the Cartographer driver's own folder (no /proc/self/exe, no AT_EXECFN)");
   const std::string base = ReadFile((self.parent_path() / "slamsweep-slam-cartographer.lua").string());
   const std::string upstream_files = OptionsPath("configuration_files", CARTOGRAPHER_CONFIGURATION_FILES);
   auto resolver = [&upstream_files] {
@@ -125,13 +126,14 @@ CartographerOptions ReadCartographerOptions(Parameters& parameters) {
   std::string overrides;
   for (const std::string& key : parameters.GivenKeys()) {
     if (!HasPath(*plain, key)) {
-      throw evaluator::InputError("parameter " + key + ": not an option of Cartographer's options table "
+      throw evaluator::InputError("parameter " + key +
+                                  ": not an option of Cartographer's options table "
                                   "(e.g. trajectory_builder.trajectory_builder_2d.max_range)");
     }
     overrides += "options." + key + " = " + LuaLiteral(parameters.Text(key, "")) + "\n";
   }
-  auto dictionary = carto::common::LuaParameterDictionary::NonReferenceCounted(
-      base + overrides + "return options\n", resolver());
+  auto dictionary =
+      carto::common::LuaParameterDictionary::NonReferenceCounted(base + overrides + "return options\n", resolver());
   CartographerOptions options;
   options.map_builder = carto::mapping::CreateMapBuilderOptions(dictionary->GetDictionary("map_builder").get());
   options.trajectory_builder =

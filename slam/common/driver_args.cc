@@ -64,7 +64,9 @@ DriverArgs ParseDriverArgs(std::span<const char* const> arguments) {
 std::string DriverUsage(std::string_view program) {
   return "usage: " + std::string(program) +
          " --input FILE --output-dir DIR [--seed N] [--stages N] [key=value ...]\n"
-         "       " + std::string(program) + " --list-parameters\n"
+         "       " +
+         std::string(program) +
+         " --list-parameters\n"
          "  FILE: a CARMEN log or MRPT rawlog holding scans and odometry\n"
          "  DIR:  receives trajectory.tum (one pose per scan), map.yaml + map.png, stages/stage-*.yaml\n";
 }

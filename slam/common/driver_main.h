@@ -21,8 +21,8 @@ class Algorithm {
 };
 
 /// Reads every parameter the algorithm accepts (upstream names, upstream defaults) and builds it.
-using Configure =
-    std::function<std::unique_ptr<Algorithm>(Parameters& parameters, const DriverArgs& args, const evaluator::RobotLog& robot)>;
+using Configure = std::function<std::unique_ptr<Algorithm>(Parameters& parameters, const DriverArgs& args,
+                                                           const evaluator::RobotLog& robot)>;
 
 /// The main of a driver: parses the command line, reads the input, configures the algorithm,
 /// refuses parameters it did not read, writes parameters.txt (every parameter with the value used)

@@ -87,7 +87,8 @@ void Parameters::RejectUnread(std::string_view algorithm) const {
   if (unknown.empty()) return;
   std::string accepted;
   for (const auto& [key, value] : used_) accepted += (accepted.empty() ? "" : ", ") + key;
-  throw InputError("unknown parameter(s) for " + std::string(algorithm) + ": " + unknown + " (accepted: " + accepted + ")");
+  throw InputError("unknown parameter(s) for " + std::string(algorithm) + ": " + unknown + " (accepted: " + accepted +
+                   ")");
 }
 
 }  // namespace slamsweep::slam

@@ -49,7 +49,8 @@ GmappingOptions ReadGmappingOptions(Parameters& parameters, const evaluator::Las
   if (o.kernelSize < 0 || o.iterations < 0 || o.lskip < 0) {
     throw evaluator::InputError("parameters kernelSize, iterations, lskip: expected values >= 0");
   }
-  if (!(o.xmin < o.xmax && o.ymin < o.ymax)) throw evaluator::InputError("parameters xmin/xmax, ymin/ymax: expected min < max");
+  if (!(o.xmin < o.xmax && o.ymin < o.ymax))
+    throw evaluator::InputError("parameters xmin/xmax, ymin/ymax: expected min < max");
   return o;
 }
 

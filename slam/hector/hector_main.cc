@@ -33,7 +33,8 @@ void FillScanPoints(const evaluator::LaserScan& scan, const HectorOptions& o, he
   const float scale = static_cast<float>(1.0 / o.map_resolution);
   const evaluator::Pose& mount = scan.sensor_pose_on_robot;
   const double mount_yaw = mount.Yaw();
-  points.setOrigo(Eigen::Vector2f(static_cast<float>(mount.position.x()), static_cast<float>(mount.position.y())) * scale);
+  points.setOrigo(Eigen::Vector2f(static_cast<float>(mount.position.x()), static_cast<float>(mount.position.y())) *
+                  scale);
   for (std::size_t b = 0; b < scan.BeamCount(); ++b) {
     const float range = scan.ranges_m[b];
     if (!scan.IsHit(range) || range < o.laser_min_dist || range > o.laser_max_dist) continue;
@@ -50,9 +51,9 @@ class Hector : public Algorithm {
 
   void Run(const evaluator::RobotLog& robot, DriverOutputs& outputs) override {
     const HectorOptions& o = options_;
-    hectorslam::HectorSlamProcessor processor(static_cast<float>(o.map_resolution), o.map_size, o.map_size,
-                                              Eigen::Vector2f(static_cast<float>(o.map_start_x), static_cast<float>(o.map_start_y)),
-                                              o.map_multi_res_levels);
+    hectorslam::HectorSlamProcessor processor(
+        static_cast<float>(o.map_resolution), o.map_size, o.map_size,
+        Eigen::Vector2f(static_cast<float>(o.map_start_x), static_cast<float>(o.map_start_y)), o.map_multi_res_levels);
     processor.setUpdateFactorFree(static_cast<float>(o.update_factor_free));
     processor.setUpdateFactorOccupied(static_cast<float>(o.update_factor_occupied));
     processor.setMapUpdateMinDistDiff(static_cast<float>(o.map_update_distance_thresh));
@@ -84,7 +85,8 @@ class Hector : public Algorithm {
   HectorOptions options_;
 };
 
-std::unique_ptr<Algorithm> Configure(Parameters& parameters, const DriverArgs& /*args*/, const evaluator::RobotLog& /*robot*/) {
+std::unique_ptr<Algorithm> Configure(Parameters& parameters, const DriverArgs& /*args*/,
+                                     const evaluator::RobotLog& /*robot*/) {
   return std::make_unique<Hector>(ReadHectorOptions(parameters));
 }
 

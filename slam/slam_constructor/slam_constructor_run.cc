@@ -106,14 +106,16 @@ class SlamConstructorAlgorithm : public Algorithm {
 }  // namespace
 
 std::filesystem::path ConfigFile(std::string_view relative, const std::filesystem::path& built_root) {
-  if (const auto installed = evaluator::FindInstalledData("slam-constructor/config/" + std::string(relative))) return *installed;
+  if (const auto installed = evaluator::FindInstalledData("slam-constructor/config/" + std::string(relative)))
+    return *installed;
   return built_root / "config" / relative;
 }
 
 std::unique_ptr<Algorithm> ConfigureFromProperties(const std::filesystem::path& properties_file, Parameters& parameters,
                                                    const DriverArgs& args) {
   if (!std::filesystem::is_regular_file(properties_file)) {
-    throw evaluator::InputError(properties_file.string() + " missing: reinstall with scripts/install-slam.sh slam-constructor");
+    throw evaluator::InputError(properties_file.string() +
+                                " missing: reinstall with scripts/install-slam.sh slam-constructor");
   }
   FilePropertiesProvider properties;
   properties.append_file_content(properties_file.string());
@@ -129,11 +131,13 @@ std::unique_ptr<Algorithm> ConfigureFromProperties(const std::filesystem::path& 
     properties.set_property(key, parameters.Text(key, properties.get_str(key, "")));
   }
   if (parameters.Has(kSeedProperty)) {
-    throw evaluator::InputError("parameter " + kSeedProperty + ": the scan matcher's seed comes from --seed (the run's seed)");
+    throw evaluator::InputError("parameter " + kSeedProperty +
+                                ": the scan matcher's seed comes from --seed (the run's seed)");
   }
   // std::mt19937 takes 32 bits: the fold keeps the high half of the run's 64-bit seed.
   const std::uint64_t seed = args.seed.value_or(0);
-  properties.set_property(kSeedProperty, std::to_string(static_cast<std::int32_t>((seed ^ (seed >> 32)) & 0x7fffffffU)));
+  properties.set_property(kSeedProperty,
+                          std::to_string(static_cast<std::int32_t>((seed ^ (seed >> 32)) & 0x7fffffffU)));
   return std::make_unique<SlamConstructorAlgorithm>(std::move(properties));
 }
 

@@ -4,9 +4,10 @@
 int main(int argc, char** argv) {
   return slamsweep::slam::DriverMain(
       argc, argv, "slamsweep-slam-vinyslam",
-      [](slamsweep::slam::Parameters& parameters, const slamsweep::slam::DriverArgs& args, const slamsweep::evaluator::RobotLog&) {
+      [](slamsweep::slam::Parameters& parameters, const slamsweep::slam::DriverArgs& args,
+         const slamsweep::evaluator::RobotLog&) {
         return slamsweep::slam::slam_constructor::ConfigureFromProperties(
-            slamsweep::slam::slam_constructor::ConfigFile("slams/viny_slam_base.properties", SLAM_CONSTRUCTOR_ROOT), parameters,
-            args);
+            slamsweep::slam::slam_constructor::ConfigFile("slams/viny_slam_base.properties", SLAM_CONSTRUCTOR_ROOT),
+            parameters, args);
       });
 }

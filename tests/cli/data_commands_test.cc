@@ -104,7 +104,7 @@ TEST(DataInfoCommandTest, MissingFileAndUnknownNameExitTwoNamingThem) {
   const auto unknown = RunCli({"data", "info", "no-such-dataset"});
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_THAT(unknown.err, HasSubstr("no-such-dataset"));
-  EXPECT_THAT(unknown.err, HasSubstr("intel"));  // lists what the catalog knows
+  EXPECT_THAT(unknown.err, HasSubstr("intel"));                 // lists what the catalog knows
   const auto absent = RunCli({"data", "info", "mit-killian"});  // only its relations are shipped
   EXPECT_EQ(absent.exit_code, 2);
   EXPECT_THAT(absent.err, HasSubstr("mit-killian.clf is missing"));
@@ -115,10 +115,24 @@ TEST(DataConvertCommandTest, NoisyCarmenIsReproducibleAndRecordsItsNoise) {
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
   testing::TempDir dir;
   // Noise drawn around the reference (the corrected path handed as odometry).
-  const std::vector<std::string> args = {"data", "convert", "intel", "--odometry", "reference", "--to", "carmen",
+  const std::vector<std::string> args = {"data",
+                                         "convert",
+                                         "intel",
+                                         "--odometry",
+                                         "reference",
+                                         "--to",
+                                         "carmen",
                                          "--odometry-noise",
-                                         "0.01,0.001,0.01,0.001", "--drift", "0.002", "--range-noise", "0.02",
-                                         "--seed", "7", "--reference-out", (dir / "ref.tum").string(), "-o"};
+                                         "0.01,0.001,0.01,0.001",
+                                         "--drift",
+                                         "0.002",
+                                         "--range-noise",
+                                         "0.02",
+                                         "--seed",
+                                         "7",
+                                         "--reference-out",
+                                         (dir / "ref.tum").string(),
+                                         "-o"};
   auto first_args = args;
   first_args.push_back((dir / "a.log").string());
   auto second_args = args;
@@ -153,8 +167,8 @@ TEST(DataConvertCommandTest, NoisyCarmenIsReproducibleAndRecordsItsNoise) {
 TEST(DataConvertCommandTest, TumHoldsTheOdometry) {
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
   testing::TempDir dir;
-  const auto run = RunCli({"data", "convert", log.string(), "--to", "tum", "--odometry", "reference", "-o",
-                           (dir / "intel.tum").string()});
+  const auto run = RunCli(
+      {"data", "convert", log.string(), "--to", "tum", "--odometry", "reference", "-o", (dir / "intel.tum").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const evaluator::Trajectory tum = evaluator::ReadTum(dir / "intel.tum");
   ASSERT_EQ(tum.size(), 910u);
@@ -249,8 +263,8 @@ TEST(DataSimulateCommandTest, WritesFloorPlanSequenceAndTrajectories) {
   testing::TempDir dir;
   const auto run = RunCli({"data", "simulate", "-o", (dir / "sim").string(), "--scans", "40", "--seed", "3"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  for (const char* file : {"floor_plan.yaml", "floor_plan.pgm", "sequence.log", "ground_truth.tum", "odometry.tum",
-                           "simulation.json"}) {
+  for (const char* file :
+       {"floor_plan.yaml", "floor_plan.pgm", "sequence.log", "ground_truth.tum", "odometry.tum", "simulation.json"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / "sim" / file)) << file;
   }
   EXPECT_EQ(std::filesystem::exists(dir / "sim" / "sequence.rawlog"), evaluator::RawlogSupported());

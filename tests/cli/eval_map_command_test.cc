@@ -27,8 +27,8 @@ void ExpectRbpfValues(const std::string& reference_json, const std::vector<std::
     if (entry.at("map") == "telecom_rbpf.pgm") expected = entry;
   }
   ASSERT_FALSE(expected.is_null());
-  std::vector<std::string> args = {"eval", "map", (expected_path.parent_path() / "telecom_rbpf.pgm").string(),
-                                   "--unknown-value", "205", "--json"};
+  std::vector<std::string> args = {
+      "eval", "map", (expected_path.parent_path() / "telecom_rbpf.pgm").string(), "--unknown-value", "205", "--json"};
   args.insert(args.end(), extra_args.begin(), extra_args.end());
   const auto run = RunCli(args);
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -86,7 +86,8 @@ namespace {
 std::string WriteRoom(const std::filesystem::path& yaml, double origin_x) {
   evaluator::OccupancyGrid grid(100, 60, 0.05, {origin_x, 0.0, 0.0});
   for (int r = 5; r < 55; ++r) {
-    for (int c = 5; c < 95; ++c) grid.at(r, c) = (r == 5 || r == 54 || c == 5 || c == 94 || (c == 40 && r < 35)) ? 1.0f : 0.0f;
+    for (int c = 5; c < 95; ++c)
+      grid.at(r, c) = (r == 5 || r == 54 || c == 5 || c == 94 || (c == 40 && r < 35)) ? 1.0f : 0.0f;
   }
   evaluator::WriteMapServer(grid, yaml);
   return yaml.string();

@@ -28,10 +28,11 @@ TEST(EvalSegmentRpeCommandTest, EachLengthEqualsRpeAtThatDeltaFromTheReference) 
     const double d = length.at("length_m").get<double>();
     EXPECT_GT(d, previous);  // ascending
     previous = d;
-    for (const auto& [relation, key] : {std::pair<const char*, const char*>{"trans", "translation_m"}, {"rot-deg", "rotation_deg_per_m"}}) {
-      const auto per_delta = RunCli({"eval", "rpe", reference.string(), estimate.string(), "--delta", std::to_string(d),
-                                     "--delta-unit", "m", "--all-pairs", "--pairs-from-reference", "--pose-relation",
-                                     relation, "--json"});
+    for (const auto& [relation, key] :
+         {std::pair<const char*, const char*>{"trans", "translation_m"}, {"rot-deg", "rotation_deg_per_m"}}) {
+      const auto per_delta =
+          RunCli({"eval", "rpe", reference.string(), estimate.string(), "--delta", std::to_string(d), "--delta-unit",
+                  "m", "--all-pairs", "--pairs-from-reference", "--pose-relation", relation, "--json"});
       ASSERT_EQ(per_delta.exit_code, 0) << per_delta.err;
       const nlohmann::json rpe = nlohmann::json::parse(per_delta.out);
       EXPECT_EQ(rpe.at("specification").at("pairs_from"), "reference");

@@ -30,8 +30,7 @@ TEST(EvalApeCommandTest, JsonMatchesEvoOnIntelGmapping) {
   const nlohmann::json result = nlohmann::json::parse(run.out);
   const nlohmann::json expected = ExpectedEvoCase("intel_gmapping_ape_se3");
   for (const char* key : {"rmse", "mean", "median", "std", "min", "max", "sse"}) {
-    EXPECT_NEAR(result.at(key).get<double>(), expected.at(key).get<double>(),
-                1e-6 * expected.at(key).get<double>())
+    EXPECT_NEAR(result.at(key).get<double>(), expected.at(key).get<double>(), 1e-6 * expected.at(key).get<double>())
         << key;
   }
   EXPECT_EQ(result.at("n"), expected.at("n"));
@@ -40,9 +39,9 @@ TEST(EvalApeCommandTest, JsonMatchesEvoOnIntelGmapping) {
 
 TEST(EvalRpeCommandTest, JsonMatchesEvoForOneMetreDelta) {
   SLAMSWEEP_REQUIRE_SHARED(dir, "reference/trajectories/expected_evo.json");
-  const auto run = RunCli({"eval", "rpe", (dir.parent_path() / "intel_corrected.tum").string(),
-                           (dir.parent_path() / "intel_gmapping.tum").string(), "--delta", "1", "--delta-unit", "m",
-                           "--json"});
+  const auto run =
+      RunCli({"eval", "rpe", (dir.parent_path() / "intel_corrected.tum").string(),
+              (dir.parent_path() / "intel_gmapping.tum").string(), "--delta", "1", "--delta-unit", "m", "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json result = nlohmann::json::parse(run.out);
   const nlohmann::json expected = ExpectedEvoCase("intel_gmapping_rpe_1m");
@@ -100,8 +99,8 @@ TEST(EvalRelationsCommandTest, ExactTrajectoryGivesZeroError) {
                      "0.7071067811865476 0.7071067811865476\n");
   // Pose at t=2 in the frame of the pose at t=1: 1 m ahead (+x of a frame facing +y), no turn.
   testing::WriteFile(dir / "rel.relations", "1 2 1 0 0 0 0 0\n");
-  const auto run = RunCli({"eval", "relations", (dir / "traj.tum").string(), (dir / "rel.relations").string(),
-                           "--json"});
+  const auto run =
+      RunCli({"eval", "relations", (dir / "traj.tum").string(), (dir / "rel.relations").string(), "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json result = nlohmann::json::parse(run.out);
   EXPECT_EQ(result.at("used"), 1);
@@ -115,8 +114,8 @@ TEST(EvalRelationsCommandTest, KnownOffsetGivesKnownError) {
   testing::TempDir dir;
   testing::WriteFile(dir / "traj.tum", "0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n");
   testing::WriteFile(dir / "rel.relations", "0 1 1.5 0 0 0 0 0\n5 6 1 0 0 0 0 0\n");
-  const auto run = RunCli({"eval", "relations", (dir / "traj.tum").string(), (dir / "rel.relations").string(),
-                           "--json"});
+  const auto run =
+      RunCli({"eval", "relations", (dir / "traj.tum").string(), (dir / "rel.relations").string(), "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json result = nlohmann::json::parse(run.out);
   EXPECT_EQ(result.at("used"), 1);

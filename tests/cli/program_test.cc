@@ -54,7 +54,8 @@ TEST(ProgramTest, TheCoreListsEachHelperCommandAsItsHelperDescribesIt) {
     ++listed[std::string(command.program)];
   }
   for (const auto& [program, register_commands] : helpers) {
-    EXPECT_EQ(listed[program], CommandsOf(register_commands).size()) << program << " has a command the core cannot reach";
+    EXPECT_EQ(listed[program], CommandsOf(register_commands).size())
+        << program << " has a command the core cannot reach";
   }
 }
 

@@ -59,8 +59,8 @@ TEST(PlanCommand, ListsTheQuickstartMatrixAndItsSelections) {
 
 TEST(PlanCommand, ASelectionKeepsRunIdsSoAShortSweepSharesResultsWithTheLongOne) {
   const auto full = nlohmann::json::parse(RunCli({"plan", Repo("configs/quickstart.yaml"), "--json"}).out);
-  const auto first = nlohmann::json::parse(
-      RunCli({"plan", Repo("configs/quickstart.yaml"), "--json", "--iterations", "1"}).out);
+  const auto first =
+      nlohmann::json::parse(RunCli({"plan", Repo("configs/quickstart.yaml"), "--json", "--iterations", "1"}).out);
   std::set<std::string> ids;
   for (const auto& run : full) ids.insert(run["run_id"].get<std::string>());
   ASSERT_EQ(first.size(), 6u);
@@ -93,10 +93,10 @@ TEST(PlanCommand, MrptParametersWithoutASectionAreRefusedBeforeAnythingRuns) {
 
 TEST(PlanCommand, AMissingRosterAlgorithmIsNamedWithItsInstallCommandAndNotBuiltOutsideTheBuildsOwnPrefix) {
   slamsweep::testing::TempDir dir;
-  const auto config = slamsweep::testing::WriteFile(
-      dir / "roster.yaml",
-      "name: roster\nalgorithms:\n  - {name: gm, adapter: gmapping}\n"
-      "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 40}\n");
+  const auto config =
+      slamsweep::testing::WriteFile(dir / "roster.yaml",
+                                    "name: roster\nalgorithms:\n  - {name: gm, adapter: gmapping}\n"
+                                    "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 40}\n");
   // An empty roster prefix of the user's choosing: plan and run build only into the build's own prefix.
   std::filesystem::create_directories(dir / "prefix");
   ASSERT_EQ(setenv("SLAMSWEEP_SLAM_PREFIX", (dir / "prefix").c_str(), 1), 0);
@@ -123,11 +123,13 @@ std::filesystem::path SmallSweep(const slamsweep::testing::TempDir& dir, bool wi
       "name: small\noutput: out\niterations: 2\nseed: 7\nworkers: 2\nevaluation: {stages: 4}\n"
       "algorithms:\n  - name: odometry\n    adapter: odometry\n";
   if (with_failing_program) {
-    text += "  - name: broken\n    adapter: command\n    timeout_s: 30\n    command:\n"
-            "      argv: [/bin/false]\n      input_format: tum\n      trajectory: {path: traj.tum, format: tum}\n";
+    text +=
+        "  - name: broken\n    adapter: command\n    timeout_s: 30\n    command:\n"
+        "      argv: [/bin/false]\n      input_format: tum\n      trajectory: {path: traj.tum, format: tum}\n";
   }
-  text += "noise:\n  - name: noisy\n    odometry: {alpha1: 0.01, alpha3: 0.01}\n"
-          "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 40}\n";
+  text +=
+      "noise:\n  - name: noisy\n    odometry: {alpha1: 0.01, alpha3: 0.01}\n"
+      "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 40}\n";
   return slamsweep::testing::WriteFile(dir / "small.yaml", text);
 }
 
@@ -178,10 +180,12 @@ TEST(MergeCommand, ShardsMergedEqualTheWholeSweep) {
   slamsweep::testing::TempDir dir;
   const auto config = SmallSweep(dir, false);
   ASSERT_EQ(RunCli({"run", config.string(), "--no-report", "-o", (dir / "whole").string()}).exit_code, 0);
-  ASSERT_EQ(RunCli({"run", config.string(), "--no-report", "--shard", "1/2", "-o", (dir / "s1").string()}).exit_code, 0);
-  ASSERT_EQ(RunCli({"run", config.string(), "--no-report", "--shard", "2/2", "-o", (dir / "s2").string()}).exit_code, 0);
-  const auto merged = RunCli({"merge", (dir / "s1").string(), (dir / "s2").string(), "-o", (dir / "merged").string(),
-                              "--no-report"});
+  ASSERT_EQ(RunCli({"run", config.string(), "--no-report", "--shard", "1/2", "-o", (dir / "s1").string()}).exit_code,
+            0);
+  ASSERT_EQ(RunCli({"run", config.string(), "--no-report", "--shard", "2/2", "-o", (dir / "s2").string()}).exit_code,
+            0);
+  const auto merged =
+      RunCli({"merge", (dir / "s1").string(), (dir / "s2").string(), "-o", (dir / "merged").string(), "--no-report"});
   ASSERT_EQ(merged.exit_code, 0) << merged.err;
   auto by_id = [](const nlohmann::json& summary) {
     std::map<std::string, nlohmann::json> runs;

@@ -45,21 +45,24 @@ class SweepProcessTest : public ::testing::Test {
                                   "if [ \"$4\" = slow ] && [ -e \"$3/slow\" ]; then sleep 120; fi\n"
                                   "cp \"$1\" \"$2/traj.tum\"\n");
     std::filesystem::permissions(program_, std::filesystem::perms::owner_all | std::filesystem::perms::group_read |
-                                               std::filesystem::perms::group_exec | std::filesystem::perms::others_read |
+                                               std::filesystem::perms::group_exec |
+                                               std::filesystem::perms::others_read |
                                                std::filesystem::perms::others_exec);
     std::filesystem::create_directories(dir_ / "control");
     std::string algorithms;
     for (const std::string name : {"fast", "slow"}) {
       algorithms += "  - name: " + name + "\n    adapter: command\n    timeout_s: 300\n    command:\n" +
-                    "      argv: [" + program_.string() + ", \"{input}\", \"{output_dir}\", " + (dir_ / "control").string() +
-                    ", " + name + "]\n      input_format: tum\n      trajectory: {path: traj.tum, format: tum}\n" +
+                    "      argv: [" + program_.string() + ", \"{input}\", \"{output_dir}\", " +
+                    (dir_ / "control").string() + ", " + name +
+                    "]\n      input_format: tum\n      trajectory: {path: traj.tum, format: tum}\n" +
                     "      read_only: [" + (dir_ / "control").string() + "]\n";
     }
-    config_ = testing::WriteFile(dir_ / "sweep.yaml",
-                                 "name: process-test\noutput: out\niterations: 2\nseed: 1\nworkers: 2\n"
-                                 "evaluation: {stages: 4}\n"
-                                 "algorithms:\n" + algorithms +
-                                 "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 40}\n");
+    config_ =
+        testing::WriteFile(dir_ / "sweep.yaml",
+                           "name: process-test\noutput: out\niterations: 2\nseed: 1\nworkers: 2\n"
+                           "evaluation: {stages: 4}\n"
+                           "algorithms:\n" +
+                               algorithms + "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 40}\n");
     testing::WriteFile(dir_ / "control" / "slow", "");
   }
 
@@ -87,7 +90,8 @@ class SweepProcessTest : public ::testing::Test {
         for (const auto& entry : std::filesystem::directory_iterator(dir_ / "out" / "runs")) {
           const std::string name = entry.path().filename().string();
           if (name.rfind("fast-", 0) == 0 && std::filesystem::exists(entry.path() / "result.json")) ++fast_results;
-          if (name.rfind("slow-", 0) == 0 && std::filesystem::exists(entry.path() / "raw" / "invocation.txt")) ++slow_running;
+          if (name.rfind("slow-", 0) == 0 && std::filesystem::exists(entry.path() / "raw" / "invocation.txt"))
+            ++slow_running;
         }
       }
       if (fast_results == 2 && slow_running >= 2) return true;

@@ -42,10 +42,12 @@ nlohmann::json ReadJsonFile(const std::filesystem::path& file) { return nlohmann
 
 /// A command algorithm that echoes one pose field of its CARMEN input as its trajectory.
 std::string EchoAlgorithm(const std::string& name, const std::string& field) {
-  return "  - name: " + name + "\n    adapter: command\n    timeout_s: 60\n    command:\n      argv: [awk, -v, field=" +
-         field + ", -v, \"out={output_dir}/trajectory.tum\", -f, " + Fixture("echo_pose.awk") +
+  return "  - name: " + name +
+         "\n    adapter: command\n    timeout_s: 60\n    command:\n      argv: [awk, -v, field=" + field +
+         ", -v, \"out={output_dir}/trajectory.tum\", -f, " + Fixture("echo_pose.awk") +
          ", \"{input}\"]\n      input_format: carmen\n      trajectory: {path: trajectory.tum, format: tum}\n"
-         "      read_only: [" + Fixture("") + "]\n";
+         "      read_only: [" +
+         Fixture("") + "]\n";
 }
 
 /// The headline value of `metric` for each algorithm of a sequence x noise table in summary.json.
@@ -73,7 +75,8 @@ TEST(TrustTest, ProgramsThatEchoTheirInputPosesNeverBeatTheOdometryBaseline) {
       EchoAlgorithm("echo-robotlaser-robot", "robotlaser_robot") +
       EchoAlgorithm("echo-robotlaser-laser", "robotlaser_laser") + EchoAlgorithm("echo-odom", "odom") +
       "  - name: echo-tum\n    adapter: command\n    command:\n      argv: [" + Fixture("echo_tum.sh") +
-      ", \"{input}\", \"{output_dir}\"]\n      input_format: tum\n      trajectory: {path: trajectory.tum, format: tum}\n"
+      ", \"{input}\", \"{output_dir}\"]\n      input_format: tum\n      trajectory: {path: trajectory.tum, format: "
+      "tum}\n"
       "sequences:\n"
       "  - {catalog: intel, name: intel-300, max_scans: 300}\n"
       "  - name: floor\n    format: simulated\n    ground_truth: exact\n"
@@ -217,7 +220,10 @@ TEST(TrustTest, AChangedProgramIsRunAgainUnlessStaleResultsAreAllowed) {
   testing::WriteFile(program, ReadText(program) + "# edited\n");
   const auto reused = RunCli({"run", file.string(), "--reuse-stale"});
   EXPECT_THAT(reused.out, HasSubstr("0 ok, 0 failed, 1 done earlier"));
-  EXPECT_THAT(reused.out, HasSubstr("1 earlier result computed by another slamsweep revision, program build or evaluation setting was reused"));
+  EXPECT_THAT(
+      reused.out,
+      HasSubstr(
+          "1 earlier result computed by another slamsweep revision, program build or evaluation setting was reused"));
   // The reused run is marked stale in every output a reader or CI reads.
   const std::filesystem::path out = dir / "out";
   const nlohmann::json summary = ReadJsonFile(out / "summary.json");
@@ -248,10 +254,12 @@ TEST(TrustTest, AProgramThatCannotBeIsolatedFailsItsRunUnlessAllowedAndIsThenFla
   const auto file = testing::WriteFile(
       dir / "open.yaml",
       "name: open\noutput: out\nevaluation: {stages: 0}\nalgorithms:\n  - name: echo\n    adapter: command\n"
-      "    command:\n      argv: [" + Fixture("echo_tum.sh") + ", \"{input}\", \"{output_dir}\"]\n"
-      "      input_format: tum\n      trajectory: {path: trajectory.tum, format: tum}\n"
-      "sequences:\n  - name: floor\n    format: simulated\n    ground_truth: exact\n"
-      "    simulation: {floor_plan: {seed: 1, rooms_per_side: 1}, path: {rate_hz: 2.0}, noise_seed: 1}\n");
+      "    command:\n      argv: [" +
+          Fixture("echo_tum.sh") +
+          ", \"{input}\", \"{output_dir}\"]\n"
+          "      input_format: tum\n      trajectory: {path: trajectory.tum, format: tum}\n"
+          "sequences:\n  - name: floor\n    format: simulated\n    ground_truth: exact\n"
+          "    simulation: {floor_plan: {seed: 1, rooms_per_side: 1}, path: {rate_hz: 2.0}, noise_seed: 1}\n");
   // A PATH with what the program calls but no bubblewrap: the workers started from here cannot make a sandbox.
   std::filesystem::create_directories(dir / "bin");
   for (const char* tool : {"cp", "pwd", "ls", "env", "sh"}) {
@@ -260,7 +268,8 @@ TEST(TrustTest, AProgramThatCannotBeIsolatedFailsItsRunUnlessAllowedAndIsThenFla
   const std::string path = std::getenv("PATH");
   ::setenv("PATH", (dir.path() / "bin").c_str(), 1);
   const auto refused = RunCli({"run", file.string(), "--no-report"});
-  const auto allowed = RunCli({"run", file.string(), "--no-report", "-o", (dir / "allowed").string(), "--allow-unisolated"});
+  const auto allowed =
+      RunCli({"run", file.string(), "--no-report", "-o", (dir / "allowed").string(), "--allow-unisolated"});
   ::setenv("PATH", path.c_str(), 1);
 
   EXPECT_EQ(refused.exit_code, 1) << refused.out << refused.err;
@@ -284,7 +293,8 @@ TEST(TrustTest, AProgramThatCannotBeIsolatedFailsItsRunUnlessAllowedAndIsThenFla
 
 TEST(TrustTest, RbpfSlamWithTheSameSeedGivesTheSameTrajectory) {
   SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
-  if (std::system("command -v rbpf-slam > /dev/null") != 0) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("rbpf-slam not installed (mrpt-apps)");
+  if (std::system("command -v rbpf-slam > /dev/null") != 0)
+    SLAMSWEEP_SKIP_OR_FAIL_IN_CI("rbpf-slam not installed (mrpt-apps)");
   testing::TempDir dir;
   // seed_policy fixed: both iterations get the same seed, hence the same noisy input and RANDOM_SEED.
   const std::string config =
@@ -394,7 +404,6 @@ TEST(TrustTest, OdometryBaselineOnIntelsRecordedOdometryIsNoUpperBound) {
   }
   EXPECT_EQ(runs, 1u);
 }
-
 
 }  // namespace
 }  // namespace slamsweep

@@ -28,8 +28,8 @@ std::filesystem::path WriteBlockMap(const testing::TempDir& dir) {
 TEST(VectorizeCommandTest, WritesGeoJsonInWorldMetres) {
   testing::TempDir dir;
   const auto yaml = WriteBlockMap(dir);
-  const auto run = RunCli({"vectorize", yaml.string(), "--threshold", "75", "-o", (dir / "out.geojson").string(),
-                           "--json"});
+  const auto run =
+      RunCli({"vectorize", yaml.string(), "--threshold", "75", "-o", (dir / "out.geojson").string(), "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json stats = nlohmann::json::parse(run.out);
   EXPECT_EQ(stats.at("obstacle_count"), 1);

@@ -20,11 +20,11 @@
 namespace slamsweep::report {
 namespace {
 
-using ::testing::HasSubstr;
-using ::testing::Not;
 using slamsweep::testing::TempDir;
 using testing::FixtureRun;
+using ::testing::HasSubstr;
 using testing::MakeRun;
+using ::testing::Not;
 
 const SequenceModel& Sequence(const SweepModel& model, const std::string& name) {
   for (const SequenceModel& sequence : model.sequences) {
@@ -58,8 +58,8 @@ std::vector<FixtureRun> BestFixtureRuns(bool with_floor = true) {
     const char* adapter;
     double ate;
   };
-  const Algorithm algorithms[] = {{"good", "generic", 0.10}, {"fair", "generic", 0.20}, {"flaky", "generic", 0.05},
-                                  {"odometry", "odometry", 1.00}};
+  const Algorithm algorithms[] = {
+      {"good", "generic", 0.10}, {"fair", "generic", 0.20}, {"flaky", "generic", 0.05}, {"odometry", "odometry", 1.00}};
   std::vector<FixtureRun> runs;
   for (const Algorithm& algorithm : algorithms) {
     for (int i = 0; i < 4; ++i) {
@@ -265,7 +265,6 @@ TEST(BestMarksTest, ANamedStudyThatIsNotAStudyIsAnErrorNamingTheFile) {
   }
 }
 
-
 /// A run on a corrected log with relations: ATE, relations and the reference floor as result.json has them.
 RunRecord CorrectedLogRun(const std::string& algorithm, const std::string& adapter, double ate_m, double relations_m,
                           double floor_m) {
@@ -275,8 +274,10 @@ RunRecord CorrectedLogRun(const std::string& algorithm, const std::string& adapt
   run.sequence = "intel";
   run.noise = "none";
   run.status = RunStatus::kOk;
-  run.run_spec = nlohmann::json{{"algorithm", {{"adapter", adapter}}}, {"sequence", {{"ground_truth", "corrected_poses"}}}};
-  run.metrics = {{"ape_trans", "rmse", ate_m, "m"}, {"relations_trans", "mean", relations_m, "m"},
+  run.run_spec =
+      nlohmann::json{{"algorithm", {{"adapter", adapter}}}, {"sequence", {{"ground_truth", "corrected_poses"}}}};
+  run.metrics = {{"ape_trans", "rmse", ate_m, "m"},
+                 {"relations_trans", "mean", relations_m, "m"},
                  {"relations_trans", "n", 2984.0, "count"}};
   run.reference_floor = {{"relations_trans", "mean", floor_m, "m"}, {"relations_trans", "n", 2984.0, "count"}};
   return run;

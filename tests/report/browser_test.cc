@@ -59,11 +59,12 @@ class BrowserTest : public ::testing::Test {
     options.artwork = artwork_ ? artwork_.get() : &fake_;
     WriteReport(dir_ / "sweep", dir_ / "report", options);
     server_ = std::make_unique<ChildProcess>(
-        std::vector<std::string>{kPython, SLAMSWEEP_CSP_SERVER, (dir_ / "report").string(),
-                                 (dir_ / "port").string(), (dir_ / "requests.log").string()},
+        std::vector<std::string>{kPython, SLAMSWEEP_CSP_SERVER, (dir_ / "report").string(), (dir_ / "port").string(),
+                                 (dir_ / "requests.log").string()},
         dir_ / "server.out", dir_ / "server.err");
     ASSERT_TRUE(server_->started());
-    for (int i = 0; i < 200 && !fs::exists(dir_ / "port"); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    for (int i = 0; i < 200 && !fs::exists(dir_ / "port"); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
     ASSERT_TRUE(fs::exists(dir_ / "port")) << ReadAll(dir_ / "server.err");
     base_url_ = "http://127.0.0.1:" + ReadAll(dir_ / "port") + "/";
   }
@@ -173,7 +174,8 @@ TEST_F(MapsBrowserTest, MapPanelsLoadUnderJenkinsCsp) {
   std::cout << "screenshot of the maps compared (sequences/intel-clean.html): " << screenshot.string() << "\n";
   RecordProperty("screenshot maps", screenshot.string());
   // The DOM as the browser built it: the reference, one map per row and one difference per row.
-  const ChromiumPage dom = LoadInHeadlessChromium(base_url_ + "sequences/intel-clean.html", dir_.path(), "maps-dom", {});
+  const ChromiumPage dom =
+      LoadInHeadlessChromium(base_url_ + "sequences/intel-clean.html", dir_.path(), "maps-dom", {});
   ASSERT_TRUE(dom.finished);
   std::size_t panels = 0;
   for (std::size_t at = dom.dom.find("class=\"map-panel\" src="); at != std::string::npos;
@@ -195,8 +197,9 @@ TEST_F(MapsBrowserTest, MapPanelsLoadUnderJenkinsCsp) {
 // The detector itself: a page with an inline style must be reported, or a silent browser would
 // pass every check above.
 TEST_F(BrowserTest, InlineStyleIsReportedAsViolation) {
-  slamsweep::testing::WriteFile(dir_ / "report/bad.html",
-                                "<!DOCTYPE html><html><head><style>p{color:red}</style></head><body><p>x</p></body></html>");
+  slamsweep::testing::WriteFile(
+      dir_ / "report/bad.html",
+      "<!DOCTYPE html><html><head><style>p{color:red}</style></head><body><p>x</p></body></html>");
   const ChromiumPage run = LoadInHeadlessChromium(base_url_ + "bad.html", dir_.path(), "bad", {});
   EXPECT_TRUE(run.finished);
   EXPECT_FALSE(CspViolations(run.log).empty()) << run.log;

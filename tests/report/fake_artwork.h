@@ -27,9 +27,9 @@ class FakeArtwork : public Artwork {
                          const OverlaySettings& settings) override;
 
   bool fail_thumbnails = false;
-  std::vector<PlotRequest> plots;  ///< written by Plots (called once, from one thread)
+  std::vector<PlotRequest> plots;             ///< written by Plots (called once, from one thread)
   std::vector<ScatterPlotJob> scatter_plots;  ///< written by ScatterPlots (called once, from one thread)
-  std::vector<FigureJob> figures;  ///< written by Figures (called once, from one thread)
+  std::vector<FigureJob> figures;             ///< written by Figures (called once, from one thread)
   std::mutex map_mutex;
   std::vector<MapComparisonJob> map_comparisons;  ///< every job given to MapComparison
   std::atomic<int> gifs{0};

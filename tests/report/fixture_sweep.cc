@@ -26,7 +26,8 @@ namespace ev = slamsweep::evaluator;
 
 std::string Readable(const std::string& text) {
   std::string out;
-  for (char c : text) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-') ? c : '_';
+  for (char c : text)
+    out += (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-') ? c : '_';
   while (!out.empty() && out.front() == '.') out.erase(0, 1);
   return out.substr(0, 32);
 }
@@ -111,17 +112,18 @@ json MapCompareDetails(const FixtureRun& run, const fs::path& dir) {
     ev::WriteMapServer(RoomGrid(0), reference);
   }
   const double chamfer = *run.map_chamfer_m;
-  return {{"chamfer_m", chamfer},
-          {"f1", 1.0 / (1.0 + chamfer)},
-          {"accuracy", 1.0 / (1.0 + 0.5 * chamfer)},
-          {"completeness", 1.0 / (1.0 + 2.0 * chamfer)},
-          {"iou_occupied", 0.5},
-          {"iou_free", 0.9},
-          {"placement", "ATE alignment"},
-          {"transform", {{"x_m", 2.0 * chamfer}, {"y_m", 0.0}, {"yaw_rad", 0.0}}},
-          {"specification", {{"occupied_threshold", 0.65}, {"free_threshold", 0.196}, {"match_radius_cells", 1},
-                             {"alignment", "given"}}},
-          {"reference_map", {{"file", fs::absolute(reference).string()}, {"source", "rendered"}, {"resolution_m", 0.1}}}};
+  return {
+      {"chamfer_m", chamfer},
+      {"f1", 1.0 / (1.0 + chamfer)},
+      {"accuracy", 1.0 / (1.0 + 0.5 * chamfer)},
+      {"completeness", 1.0 / (1.0 + 2.0 * chamfer)},
+      {"iou_occupied", 0.5},
+      {"iou_free", 0.9},
+      {"placement", "ATE alignment"},
+      {"transform", {{"x_m", 2.0 * chamfer}, {"y_m", 0.0}, {"yaw_rad", 0.0}}},
+      {"specification",
+       {{"occupied_threshold", 0.65}, {"free_threshold", 0.196}, {"match_radius_cells", 1}, {"alignment", "given"}}},
+      {"reference_map", {{"file", fs::absolute(reference).string()}, {"source", "rendered"}, {"resolution_m", 0.1}}}};
 }
 
 }  // namespace
@@ -150,12 +152,23 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
     const json spec = {
         {"run_id", id},
         {"sweep", "fixture"},
-        {"algorithm", {{"name", run.algorithm}, {"adapter", run.adapter}, {"parameters", run.parameters},
-                       {"timeout_s", 300}, {"memory_limit_mb", 4096}, {"command", nullptr}}},
-        {"group", {{"sequence", run.sequence}, {"algorithm", run.algorithm}, {"parameters", ParametersTextOf(run.parameters)},
-                   {"noise", run.noise}}},
-        {"sequence", {{"name", run.sequence}, {"format", "carmen"}, {"path", "/data/" + run.sequence + ".clf"},
-                      {"ground_truth", run.with_reference ? "reference.tum" : "none"}}},
+        {"algorithm",
+         {{"name", run.algorithm},
+          {"adapter", run.adapter},
+          {"parameters", run.parameters},
+          {"timeout_s", 300},
+          {"memory_limit_mb", 4096},
+          {"command", nullptr}}},
+        {"group",
+         {{"sequence", run.sequence},
+          {"algorithm", run.algorithm},
+          {"parameters", ParametersTextOf(run.parameters)},
+          {"noise", run.noise}}},
+        {"sequence",
+         {{"name", run.sequence},
+          {"format", "carmen"},
+          {"path", "/data/" + run.sequence + ".clf"},
+          {"ground_truth", run.with_reference ? "reference.tum" : "none"}}},
         {"noise", {{"name", run.noise}, {"odometry", nullptr}, {"range", nullptr}}},
         {"iteration", run.iteration},
         {"seed", 1000 + run.iteration},
@@ -212,10 +225,13 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
       if (run.ape_rmse_m) {
         metrics.push_back(Metric("ape_trans", "rmse", *run.ape_rmse_m, "m"));
         metrics.push_back(Metric("ape_trans", "mean", *run.ape_rmse_m * 0.9, "m"));
-        details["ape_trans"] = {{"metric", "ape"}, {"unit", "m"}, {"rmse", *run.ape_rmse_m},
+        details["ape_trans"] = {{"metric", "ape"},
+                                {"unit", "m"},
+                                {"rmse", *run.ape_rmse_m},
                                 {"specification", {{"pose_relation", "translation_part"}, {"alignment", "se2"}}}};
       }
-      if (run.occupied_ratio) metrics.push_back(Metric("occupied_to_free_unknown", "value", *run.occupied_ratio, "ratio"));
+      if (run.occupied_ratio)
+        metrics.push_back(Metric("occupied_to_free_unknown", "value", *run.occupied_ratio, "ratio"));
       if (run.corners) metrics.push_back(Metric("corners", "value", *run.corners, "count"));
       if (run.with_reference && !run.segment_lengths_m.empty()) {
         WriteSegments(run, run_dir, metrics, details);
@@ -232,8 +248,11 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
     result["metrics"] = metrics;
     result["metric_details"] = details;
     Write(run_dir / "result.json", result.dump(2));
-    summary["runs"].push_back({{"run_id", id}, {"algorithm", run.algorithm}, {"sequence", run.sequence},
-                               {"status", result["status"]}, {"metrics", metrics}});
+    summary["runs"].push_back({{"run_id", id},
+                               {"algorithm", run.algorithm},
+                               {"sequence", run.sequence},
+                               {"status", result["status"]},
+                               {"metrics", metrics}});
   }
   Write(dir / "summary.json", summary.dump(2));
   // Stand-ins for the orchestrator's tables (orchestrator/store/csv_tables.h): the report copies them.
@@ -321,8 +340,8 @@ std::vector<FixtureRun> ViewsFixtureRuns() {
   }
   for (const int particles : {10, 30}) {
     for (const double resample : {0.5, 1.0}) {
-      add("rbpf-slam", json{{"particles", particles}, {"resample", resample}}, 2,
-          0.5 / particles + 0.1 * resample, 2.0 + resample);
+      add("rbpf-slam", json{{"particles", particles}, {"resample", resample}}, 2, 0.5 / particles + 0.1 * resample,
+          2.0 + resample);
     }
   }
   FixtureRun no_reference = MakeRun("gmapping", "mit-no-ref", 0);

@@ -22,9 +22,9 @@ struct FixtureRun {
   std::string noise = "clean";
   int iteration = 0;
   bool ok = true;
-  std::string failure_kind = "exit_code";  ///< used when !ok
+  std::string failure_kind = "exit_code";    ///< used when !ok
   std::string reason = "killed by SIGSEGV";  ///< used when !ok
-  bool with_reference = true;  ///< reference.tum written (and the ATE, when ape_rmse_m is set)
+  bool with_reference = true;                ///< reference.tum written (and the ATE, when ape_rmse_m is set)
   std::optional<double> ape_rmse_m;
   std::optional<double> occupied_ratio;
   std::optional<double> corners;

@@ -23,8 +23,9 @@ TEST(HtmlTest, ElementEscapesTextButKeepsTrustedMarkup) {
 }
 
 TEST(RenderTemplateTest, FillsPlaceholders) {
-  EXPECT_EQ(RenderTemplate("<p>{{a}} and {{b}}</p>", {{"a", Html::Escape("1<2")}, {"b", Html::Trusted("<i>x</i>")}}).str(),
-            "<p>1&lt;2 and <i>x</i></p>");
+  EXPECT_EQ(
+      RenderTemplate("<p>{{a}} and {{b}}</p>", {{"a", Html::Escape("1<2")}, {"b", Html::Trusted("<i>x</i>")}}).str(),
+      "<p>1&lt;2 and <i>x</i></p>");
 }
 
 TEST(RenderTemplateTest, MissingOrUnusedFieldIsAProgrammingError) {

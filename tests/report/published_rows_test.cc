@@ -14,7 +14,7 @@ namespace slamsweep::report {
 namespace {
 
 RunRecord MakeRecord(const std::string& algorithm, const std::string& sequence, int iteration, double relations_m,
-              const nlohmann::json& max_scans) {
+                     const nlohmann::json& max_scans) {
   RunRecord run;
   run.run_id = algorithm + "-" + sequence + "-i" + std::to_string(iteration);
   run.algorithm = algorithm;
@@ -23,8 +23,9 @@ RunRecord MakeRecord(const std::string& algorithm, const std::string& sequence, 
   run.iteration = iteration;
   run.status = RunStatus::kOk;
   run.metrics = {{"relations_trans", "mean", relations_m, "m"}, {"relations_rot", "mean", 1.0, "deg"}};
-  run.run_spec = {{"algorithm", {{"adapter", algorithm}}},
-                  {"sequence", {{"name", sequence}, {"relations", "/data/intel/intel.relations"}, {"max_scans", max_scans}}}};
+  run.run_spec = {
+      {"algorithm", {{"adapter", algorithm}}},
+      {"sequence", {{"name", sequence}, {"relations", "/data/intel/intel.relations"}, {"max_scans", max_scans}}}};
   return run;
 }
 
@@ -88,7 +89,8 @@ TEST(PublishedRowsTest, ACutOfTheLogGetsNone) {
 
 TEST(PublishedRowsTest, AMalformedEntryIsNamed) {
   slamsweep::testing::TempDir dir;
-  const auto file = slamsweep::testing::WriteFile(dir / "bad.yaml", "sources: {}\npublished:\n  - {sequence: intel, label: X, source: nowhere}\n");
+  const auto file = slamsweep::testing::WriteFile(
+      dir / "bad.yaml", "sources: {}\npublished:\n  - {sequence: intel, label: X, source: nowhere}\n");
   try {
     ReadPublishedFigures(file);
     FAIL() << "no error";

@@ -18,9 +18,9 @@
 namespace slamsweep::report {
 namespace {
 
-using ::testing::HasSubstr;
 using slamsweep::testing::TempDir;
 using testing::FixtureRun;
+using ::testing::HasSubstr;
 using testing::MakeRun;
 
 /// `iterations` runs each of "good", "fair" and the odometry baseline on "floor"; good is lower than fair in
@@ -87,7 +87,9 @@ TEST(SignificanceTest, TheRankingListsCandidatesByMeanAndShowsTheOthersBeside) {
   runs.push_back(failed);
   const TableSignificance t = Significance(runs).at(0);
   ASSERT_EQ(t.entries.size(), 4u);
-  auto name = [&](const RankedEntry& entry) { return std::vector<std::string>{"fair", "flaky", "good", "odometry"}[entry.row]; };
+  auto name = [&](const RankedEntry& entry) {
+    return std::vector<std::string>{"fair", "flaky", "good", "odometry"}[entry.row];
+  };
   EXPECT_EQ(name(t.entries[0]), "good");
   EXPECT_EQ(t.entries[0].rank, 1u);
   EXPECT_EQ(name(t.entries[1]), "fair");
@@ -157,10 +159,10 @@ TEST(SignificanceTest, ATableWithoutReferenceHasNoHeadline) {
 }
 
 TEST(SignificanceTest, IterationsNeededFollowTheSmallestReachablePValue) {
-  EXPECT_EQ(IterationsNeeded(0.05, true), 5u);     // 1/32 <= 0.05, 1/16 is not
-  EXPECT_EQ(IterationsNeeded(0.025, true), 6u);    // 1/64
-  EXPECT_EQ(IterationsNeeded(0.04, false), 4u);    // 1/C(8,4) = 1/70; 1/C(6,3) = 1/20 is not
-  EXPECT_EQ(IterationsNeeded(0.001, false), 7u);   // 1/C(14,7) = 1/3432; 1/C(12,6) = 1/924 is not
+  EXPECT_EQ(IterationsNeeded(0.05, true), 5u);    // 1/32 <= 0.05, 1/16 is not
+  EXPECT_EQ(IterationsNeeded(0.025, true), 6u);   // 1/64
+  EXPECT_EQ(IterationsNeeded(0.04, false), 4u);   // 1/C(8,4) = 1/70; 1/C(6,3) = 1/20 is not
+  EXPECT_EQ(IterationsNeeded(0.001, false), 7u);  // 1/C(14,7) = 1/3432; 1/C(12,6) = 1/924 is not
 }
 
 }  // namespace

@@ -17,9 +17,9 @@ namespace slamsweep::report {
 namespace {
 
 namespace fs = std::filesystem;
+using slamsweep::testing::TempDir;
 using ::testing::HasSubstr;
 using ::testing::Not;
-using slamsweep::testing::TempDir;
 using testing::ReadAll;
 
 /// An artwork whose figures fail, to see the pages say so.
@@ -56,8 +56,10 @@ TEST_F(ViewPagesTest, EveryTableWithSegmentsOrParameterSweepsGetsItsPagesLinkedF
   EXPECT_TRUE(fs::exists(report / "sequences/intel-clean/segments.html"));
   EXPECT_TRUE(fs::exists(report / "sequences/intel-clean/parameters.html"));
   // Its folder holds the maps compared, but no extra page.
-  EXPECT_FALSE(fs::exists(report / "sequences/mit-no-ref-clean/segments.html")) << "no reference, one row: no extra page";
-  EXPECT_FALSE(fs::exists(report / "sequences/mit-no-ref-clean/parameters.html")) << "no reference, one row: no extra page";
+  EXPECT_FALSE(fs::exists(report / "sequences/mit-no-ref-clean/segments.html"))
+      << "no reference, one row: no extra page";
+  EXPECT_FALSE(fs::exists(report / "sequences/mit-no-ref-clean/parameters.html"))
+      << "no reference, one row: no extra page";
   for (const char* page : {"index.html", "sequences/intel-clean.html"}) {
     const std::string html = ReadAll(report / page);
     EXPECT_THAT(html, HasSubstr("intel-clean/segments.html")) << page;
@@ -87,8 +89,9 @@ TEST_F(ViewPagesTest, TheIndexLinksEveryExtraPageAndTheSpecificationDefinesTheSe
   Write(&fake_);
   const fs::path report = dir_ / "report";
   const std::string index = ReadAll(report / "index.html");
-  for (const char* link : {"href=\"metrics.html\"", "href=\"validity.html\"", "href=\"sequences/intel-clean/segments.html\"",
-                           "href=\"sequences/intel-clean/parameters.html\""}) {
+  for (const char* link :
+       {"href=\"metrics.html\"", "href=\"validity.html\"", "href=\"sequences/intel-clean/segments.html\"",
+        "href=\"sequences/intel-clean/parameters.html\""}) {
     EXPECT_THAT(index, HasSubstr(link));
   }
   for (const char* page : {"sequences/intel-clean/segments.html", "sequences/intel-clean/parameters.html"}) {

@@ -15,9 +15,9 @@
 namespace slamsweep::report {
 namespace {
 
+using slamsweep::testing::TempDir;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
-using slamsweep::testing::TempDir;
 
 TEST(BoxSummaryTest, QuartilesInterpolateBetweenOrderStatistics) {
   // 1..9: h = 8p, so the quartiles fall on 3, 5 and 7; nothing beyond 1.5 IQR.
@@ -79,8 +79,9 @@ TEST_F(ViewsModelTest, SegmentTablePoolsEverySegmentAndAveragesEachRunsDrift) {
   EXPECT_THAT(table->lengths_from, HasSubstr("10, 20, 30, 40 and 50 % of the reference path (100.0 m)"));
   EXPECT_TRUE(table->notes.empty());
   EXPECT_EQ(table->rows.size(), intel.rows.size());  // every row of intel has segment RPE
-  const auto gmapping = std::find_if(table->rows.begin(), table->rows.end(),
-                                     [&](const SegmentRow& row) { return intel.rows[row.row].algorithm == "gmapping"; });
+  const auto gmapping = std::find_if(table->rows.begin(), table->rows.end(), [&](const SegmentRow& row) {
+    return intel.rows[row.row].algorithm == "gmapping";
+  });
   ASSERT_NE(gmapping, table->rows.end());
   // Drift of iteration i at 10 m: 1.5 * 1.1 + 0.05 i -> 1.65, 1.70, 1.75.
   const SegmentCell& at_10 = gmapping->cells[0];
@@ -118,8 +119,8 @@ TEST_F(ViewsModelTest, RunsScoredAtOtherLengthsAreNamedAndNeverPooled) {
   EXPECT_EQ(table->notes.size(), 1u);
   ASSERT_EQ(table->rows.size(), 1u);
   const SegmentRow& row = table->rows[0];
-  EXPECT_EQ(row.cells[0].mean_drift_pct.n, 2u);  // 10 m: runs 0 and 1
-  EXPECT_EQ(row.cells[1].mean_drift_pct.n, 1u);  // 15 m: run 2 only
+  EXPECT_EQ(row.cells[0].mean_drift_pct.n, 2u);     // 10 m: runs 0 and 1
+  EXPECT_EQ(row.cells[1].mean_drift_pct.n, 1u);     // 15 m: run 2 only
   EXPECT_EQ(row.cells[0].translation_pct->n, 20u);  // run 1's file is unreadable
   ASSERT_EQ(row.notes.size(), 2u);
   EXPECT_THAT(row.notes[0], HasSubstr(model.runs[1].run_id));

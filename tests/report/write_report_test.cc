@@ -48,15 +48,13 @@ TEST_F(WriteReportTest, WritesTheSite) {
   EXPECT_EQ(summary.runs, 10u);
   EXPECT_EQ(summary.pages, 1u + 2u + 10u + 2u);  // index, 2 sequences, 10 runs, metrics.html, validity.html
   const fs::path out = dir_ / "report";
-  for (const char* file : {"index.html", "style.css", "summary.csv", "runs.csv", "summary.json", "sequences/intel-clean.html",
-                           "sequences/mit-no-ref-clean.html", "files/gmapping/intel-clean/rmse.txt",
-                           "files/gmapping/intel-clean/pose_log.tum", "files/gmapping/mit-no-ref-clean/corners.txt",
-                           "runs/gmapping-intel-clean-i1-0000abcd.html",
-                           "runs/gmapping-intel-clean-i1-0000abcd/map.pgm",
-                           "runs/gmapping-intel-clean-i1-0000abcd/map.yaml",
-                           "runs/gmapping-intel-clean-i1-0000abcd/trajectory.tum",
-                           "runs/gmapping-intel-clean-i1-0000abcd/map.geojson",
-                           "runs/gmapping-intel-clean-i1-0000abcd/stages.gif"}) {
+  for (const char* file :
+       {"index.html", "style.css", "summary.csv", "runs.csv", "summary.json", "sequences/intel-clean.html",
+        "sequences/mit-no-ref-clean.html", "files/gmapping/intel-clean/rmse.txt",
+        "files/gmapping/intel-clean/pose_log.tum", "files/gmapping/mit-no-ref-clean/corners.txt",
+        "runs/gmapping-intel-clean-i1-0000abcd.html", "runs/gmapping-intel-clean-i1-0000abcd/map.pgm",
+        "runs/gmapping-intel-clean-i1-0000abcd/map.yaml", "runs/gmapping-intel-clean-i1-0000abcd/trajectory.tum",
+        "runs/gmapping-intel-clean-i1-0000abcd/map.geojson", "runs/gmapping-intel-clean-i1-0000abcd/stages.gif"}) {
     EXPECT_TRUE(fs::is_regular_file(out / file)) << file;
   }
   // 9 successful runs: an overlay and a GIF each, the reference on the overlay for the 6 on intel
@@ -280,8 +278,8 @@ TEST_F(WriteReportTest, EveryPageLinksTheMetricSpecification) {
                              "map_iou_occupied", "map_iou_free", "wall_s", "peak_rss_kb", "spearman_rho"}) {
     EXPECT_NE(spec.find("<code>" + std::string(metric) + "</code>"), std::string::npos) << metric;
   }
-  for (const char* page : {"index.html", "sequences/intel-clean.html", "runs/gmapping-intel-clean-i1-0000abcd.html",
-                           "validity.html"}) {
+  for (const char* page :
+       {"index.html", "sequences/intel-clean.html", "runs/gmapping-intel-clean-i1-0000abcd.html", "validity.html"}) {
     const std::string root = std::string(page).find('/') == std::string::npos ? "" : "../";
     EXPECT_NE(ReadAll(dir_ / "report" / page).find("<a href=\"" + root + "metrics.html\">metric specification</a>"),
               std::string::npos)
@@ -347,7 +345,8 @@ TEST_F(WriteReportTest, TheValidityPageShowsCorrelationsIntervalsAndPlots) {
   for (const ScatterSeries& series : corners->series) EXPECT_EQ(series.style.point_type, icp_marker) << series.label;
   EXPECT_NE(page.find("colour: its noise setting"), std::string::npos);
   EXPECT_EQ(testing::ImageSources(dir_ / "report/validity.html").size(), 24u);
-  EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty()) << ::testing::PrintToString(testing::BrokenLinks(dir_ / "report"));
+  EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty())
+      << ::testing::PrintToString(testing::BrokenLinks(dir_ / "report"));
 }
 
 /// The report of `runs` (icp-slam and gmapping on the validity fixture) and its first scatter plot
@@ -375,8 +374,9 @@ TEST_F(ValidityPlotTest, ValidityPlotsOfSeveralAlgorithmsMarkEachWithItsPaletteM
   std::string labels;
   for (const ScatterSeries& series : plot.series) labels += series.label + ";";
   // Noise settings in natural order, the algorithms by name within each; colour by setting, marker by algorithm.
-  EXPECT_EQ(labels, "odo-1 · gmapping;odo-1 · icp-slam;odo-2 · gmapping;odo-2 · icp-slam;odo-10 · gmapping;"
-                    "odo-10 · icp-slam;");
+  EXPECT_EQ(labels,
+            "odo-1 · gmapping;odo-1 · icp-slam;odo-2 · gmapping;odo-2 · icp-slam;odo-10 · gmapping;"
+            "odo-10 · icp-slam;");
   ASSERT_EQ(plot.series.size(), 6u);
   EXPECT_EQ(plot.series[0].style.rgb, plot.series[1].style.rgb);
   EXPECT_EQ(plot.series[4].style.rgb, GradedColour(2, 3));

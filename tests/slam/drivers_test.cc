@@ -91,12 +91,12 @@ fs::path NoisyIntelInput(const fs::path& dir) {
 TEST_P(DriverTest, AMalformedInputIsAClearErrorNamingTheFile) {
   testing::TempDir dir;
   const fs::path bad = testing::WriteFile(dir / "broken.log", "ODOM 1 2\nFLASER 3 1.0 oops\n");
-  const ProgramRun run = RunProgram({Driver(), "--input", bad.string(), "--output-dir", (dir / "out").string()},
-                                    dir / "out.txt", 30);
+  const ProgramRun run =
+      RunProgram({Driver(), "--input", bad.string(), "--output-dir", (dir / "out").string()}, dir / "out.txt", 30);
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_THAT(run.output, HasSubstr("broken.log"));
-  const ProgramRun missing = RunProgram({Driver(), "--input", (dir / "none.log").string(), "--output-dir", "x"},
-                                        dir / "out2.txt", 30);
+  const ProgramRun missing =
+      RunProgram({Driver(), "--input", (dir / "none.log").string(), "--output-dir", "x"}, dir / "out2.txt", 30);
   EXPECT_EQ(missing.exit_code, 2) << missing.output;
   EXPECT_THAT(missing.output, HasSubstr("none.log"));
 }
@@ -105,9 +105,9 @@ TEST_P(DriverTest, AnUnknownParameterIsRefusedByName) {
   SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
   testing::TempDir dir;
   const fs::path input = NoisyIntelInput(dir.path());
-  const ProgramRun run = RunProgram({Driver(), "--input", input.string(), "--output-dir", (dir / "out").string(),
-                                     "no_such_parameter=1"},
-                                    dir / "out.txt", 30);
+  const ProgramRun run =
+      RunProgram({Driver(), "--input", input.string(), "--output-dir", (dir / "out").string(), "no_such_parameter=1"},
+                 dir / "out.txt", 30);
   EXPECT_EQ(run.exit_code, 2) << run.output;
   // Each driver says it its own way (Cartographer's options are Lua paths), but always by name.
   EXPECT_THAT(run.output, HasSubstr("no_such_parameter"));
@@ -129,7 +129,8 @@ TEST_P(DriverTest, TheSameSeedGivesTheSameTrajectoryAndEveryOutput) {
     EXPECT_TRUE(fs::is_regular_file(dir / out / "map.png"));
     EXPECT_TRUE(fs::is_regular_file(dir / out / "parameters.txt"));
     std::size_t stages = 0;
-    for (const auto& entry : fs::directory_iterator(dir / out / "stages")) stages += entry.path().extension() == ".yaml";
+    for (const auto& entry : fs::directory_iterator(dir / out / "stages"))
+      stages += entry.path().extension() == ".yaml";
     EXPECT_EQ(stages, 3u);
   }
   // One pose per scan (plus the header line).
@@ -159,7 +160,8 @@ GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(DriverTest);
 
 TEST(GmappingSeedTest, AnotherSeedDrawsOtherParticles) {
   const std::vector<std::string> built = Built();
-  if (std::find(built.begin(), built.end(), "gmapping") == built.end()) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("gmapping not built: scripts/install-slam.sh gmapping && scripts/build.sh");
+  if (std::find(built.begin(), built.end(), "gmapping") == built.end())
+    SLAMSWEEP_SKIP_OR_FAIL_IN_CI("gmapping not built: scripts/install-slam.sh gmapping && scripts/build.sh");
   SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
   testing::TempDir dir;
   const fs::path input = NoisyIntelInput(dir.path());
@@ -176,16 +178,17 @@ TEST(GmappingSeedTest, AnotherSeedDrawsOtherParticles) {
 
 TEST(CartographerImuTest, WithoutImuDataTheYawRateGyroIsNotFedAndTheRunStillWorks) {
   const std::vector<std::string> built = Built();
-  if (std::find(built.begin(), built.end(), "cartographer") == built.end()) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("cartographer not built: scripts/install-slam.sh cartographer && scripts/build.sh");
+  if (std::find(built.begin(), built.end(), "cartographer") == built.end())
+    SLAMSWEEP_SKIP_OR_FAIL_IN_CI("cartographer not built: scripts/install-slam.sh cartographer && scripts/build.sh");
   SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
   testing::TempDir dir;
   const fs::path input = NoisyIntelInput(dir.path());
   const std::string driver = std::string(SLAMSWEEP_SLAM_DRIVER_DIR) + "/slamsweep-slam-cartographer";
   for (const char* imu : {"true", "false"}) {
-    const ProgramRun run = RunProgram({driver, "--input", input.string(), "--output-dir", (dir / imu).string(),
-                                       "--seed", "1", "--stages", "0",
-                                       std::string("trajectory_builder.trajectory_builder_2d.use_imu_data=") + imu},
-                                      dir / "out.txt", 300);
+    const ProgramRun run =
+        RunProgram({driver, "--input", input.string(), "--output-dir", (dir / imu).string(), "--seed", "1", "--stages",
+                    "0", std::string("trajectory_builder.trajectory_builder_2d.use_imu_data=") + imu},
+                   dir / "out.txt", 300);
     ASSERT_EQ(run.exit_code, 0) << run.output;
   }
   // Cartographer refuses IMU data it was told not to expect; and the gyro changes the motion prior.

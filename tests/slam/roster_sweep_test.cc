@@ -102,7 +102,8 @@ struct ExpectedFailure {
 };
 
 std::map<std::string, ExpectedFailure> ReadExpectedFailures() {
-  const std::filesystem::path file = std::filesystem::path(SLAMSWEEP_SOURCE_DIR) / "tests/slam/roster_expected_failures.json";
+  const std::filesystem::path file =
+      std::filesystem::path(SLAMSWEEP_SOURCE_DIR) / "tests/slam/roster_expected_failures.json";
   const nlohmann::json list = ReadJson(file);
   std::map<std::string, ExpectedFailure> failures;
   for (const auto& entry : list.at("expected_failures")) {
@@ -119,24 +120,29 @@ std::map<std::string, ExpectedFailure> ReadExpectedFailures() {
 TEST(RosterSweepTest, EveryBuiltAlgorithmBeatsTheOdometryItWasGivenByASignTest) {
   SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
   const std::vector<std::string> built = BuiltRoster();
-  if (built.empty()) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("no roster driver built: scripts/install-slam.sh && scripts/build.sh");
+  if (built.empty())
+    SLAMSWEEP_SKIP_OR_FAIL_IN_CI("no roster driver built: scripts/install-slam.sh && scripts/build.sh");
   slamsweep::testing::TempDir dir;
-  std::string config = "name: roster\noutput: out\niterations: " + std::to_string(kDraws) +
-                       "\nseed: 7\nworkers: 2\nevaluation: {align: se2, stages: 0}\n"
-                       "algorithms:\n  - name: odometry\n    adapter: odometry\n"
-                       // The negative control: a program that hands back its odometry must fail the test.
-                       "  - name: echo-odometry\n    adapter: command\n    command:\n"
-                       "      argv: [" + std::string(SLAMSWEEP_SOURCE_DIR) + "/tests/slam/echo_odometry.sh, \"{input}\", "
-                       "\"{output_dir}\"]\n      input_format: tum\n      trajectory: {path: trajectory.tum, format: tum}\n"
-                       "  - name: gmapping-misspelt\n    adapter: gmapping\n    parameters: {particels: 30}\n";
-  for (const std::string& name : built) config += "  - name: " + name + "\n    adapter: " + name + "\n    timeout_s: 600\n";
-  config += "sequences:\n  - {catalog: intel, name: " + std::string(kSequence) + ", max_scans: " +
-            std::to_string(kRosterScans) +
-            ", odometry: " + std::string(kOdometry) + "}\n"
+  std::string config =
+      "name: roster\noutput: out\niterations: " + std::to_string(kDraws) +
+      "\nseed: 7\nworkers: 2\nevaluation: {align: se2, stages: 0}\n"
+      "algorithms:\n  - name: odometry\n    adapter: odometry\n"
+      // The negative control: a program that hands back its odometry must fail the test.
+      "  - name: echo-odometry\n    adapter: command\n    command:\n"
+      "      argv: [" +
+      std::string(SLAMSWEEP_SOURCE_DIR) +
+      "/tests/slam/echo_odometry.sh, \"{input}\", "
+      "\"{output_dir}\"]\n      input_format: tum\n      trajectory: {path: trajectory.tum, format: tum}\n"
+      "  - name: gmapping-misspelt\n    adapter: gmapping\n    parameters: {particels: 30}\n";
+  for (const std::string& name : built)
+    config += "  - name: " + name + "\n    adapter: " + name + "\n    timeout_s: 600\n";
+  config += "sequences:\n  - {catalog: intel, name: " + std::string(kSequence) +
+            ", max_scans: " + std::to_string(kRosterScans) + ", odometry: " + std::string(kOdometry) +
+            "}\n"
             // The quick start's mild odometry noise (the alphas are variances: 4.5 % of each distance
             // and turn, 0.6 deg per metre), one seeded draw per iteration, the same draw for every algorithm.
-            "noise:\n  - name: " + std::string(kNoise) +
-            "\n    odometry: {alpha1: 0.002, alpha2: 0.0001, alpha3: 0.002, alpha4: 0.0001}\n";
+            "noise:\n  - name: " +
+            std::string(kNoise) + "\n    odometry: {alpha1: 0.002, alpha2: 0.0001, alpha3: 0.002, alpha4: 0.0001}\n";
   const auto file = slamsweep::testing::WriteFile(dir / "roster.yaml", config);
   const auto run = RunCli({"run", file.string(), "--no-report", "-k"});
   ASSERT_LE(run.exit_code, 1) << run.out << run.err;
@@ -239,7 +245,8 @@ TEST(RosterSweepTest, AlgorithmsListsEveryAdapterWithWhatIsInstalled) {
   EXPECT_EQ(by_adapter.at("gmapping").at("defaults_note"), "");
   if (std::find(built.begin(), built.end(), "vinyslam") != built.end()) {
     // slam-constructor's parameters are the properties of its file, under their own names.
-    EXPECT_TRUE(by_adapter.at("vinyslam").at("parameters").contains("slam/mapping/blur")) << by_adapter.at("vinyslam").dump();
+    EXPECT_TRUE(by_adapter.at("vinyslam").at("parameters").contains("slam/mapping/blur"))
+        << by_adapter.at("vinyslam").dump();
   }
 }
 
@@ -247,7 +254,8 @@ TEST(RosterSweepTest, TheCommandAdapterExampleRunsARealProgramLikeItsBuiltInAdap
   SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
   const std::vector<std::string> built = BuiltRoster();
   if (std::find(built.begin(), built.end(), "hector") == built.end()) {
-    SLAMSWEEP_SKIP_OR_FAIL_IN_CI("the example runs the Hector driver: scripts/install-slam.sh hector && scripts/build.sh");
+    SLAMSWEEP_SKIP_OR_FAIL_IN_CI(
+        "the example runs the Hector driver: scripts/install-slam.sh hector && scripts/build.sh");
   }
   slamsweep::testing::TempDir dir;
   std::ifstream in(std::string(SLAMSWEEP_SOURCE_DIR) + "/configs/examples/command-adapter.yaml");

@@ -73,9 +73,16 @@ void ChildProcess::Stop() {
 ChromiumPage LoadInHeadlessChromium(const std::string& url, const std::filesystem::path& work, const std::string& name,
                                     const std::filesystem::path& screenshot, int window_height_px) {
   // Without the background-networking flags Chromium keeps trying hosts this closed network refuses.
-  std::vector<std::string> argv = {kChromium, "--headless=new", "--no-sandbox", "--disable-gpu", "--no-first-run",
-                                   "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                                   "--enable-logging=stderr", "--v=0",
+  std::vector<std::string> argv = {kChromium,
+                                   "--headless=new",
+                                   "--no-sandbox",
+                                   "--disable-gpu",
+                                   "--no-first-run",
+                                   "--disable-background-networking",
+                                   "--disable-component-update",
+                                   "--disable-sync",
+                                   "--enable-logging=stderr",
+                                   "--v=0",
                                    "--user-data-dir=" + (work / ("profile-" + name)).string(),
                                    "--window-size=1280," + std::to_string(window_height_px)};
   argv.push_back(screenshot.empty() ? std::string("--dump-dom") : "--screenshot=" + screenshot.string());

@@ -36,9 +36,9 @@ class ChildProcess {
 };
 
 struct ChromiumPage {
-  bool finished = false;    ///< Chromium ended by itself within its time
-  std::string dom;          ///< the DOM after load (when no screenshot was asked for)
-  std::string log;          ///< its stderr: console messages and CSP reports
+  bool finished = false;  ///< Chromium ended by itself within its time
+  std::string dom;        ///< the DOM after load (when no screenshot was asked for)
+  std::string log;        ///< its stderr: console messages and CSP reports
 };
 
 /// Loads `url` once: with an empty `screenshot` it dumps the DOM, otherwise it saves a PNG of a

@@ -41,18 +41,17 @@ std::filesystem::path WriteFile(const std::filesystem::path& path, const std::st
 /// Skips the test with `why` (a stream expression naming what is missing and how to install it), or
 /// fails it under CI=true: there everything a test needs is installed by the project's scripts, so a
 /// missing piece is a broken setup, never a pass.
-#define SLAMSWEEP_SKIP_OR_FAIL_IN_CI(why)                                                   \
-  do {                                                                                      \
-    if (::slamsweep::testing::RunningInCi()) FAIL() << "under CI=true: " << why;            \
-    GTEST_SKIP() << why;                                                                    \
+#define SLAMSWEEP_SKIP_OR_FAIL_IN_CI(why)                                        \
+  do {                                                                           \
+    if (::slamsweep::testing::RunningInCi()) FAIL() << "under CI=true: " << why; \
+    GTEST_SKIP() << why;                                                         \
   } while (false)
 
 /// Declares `var` as the absolute path of a file under the shared folder. When it is
 /// missing the test is skipped (failed under CI) with a message naming what is missing.
-#define SLAMSWEEP_REQUIRE_SHARED(var, relative)                                          \
-  const std::filesystem::path var = ::slamsweep::testing::SharedRoot() / (relative);     \
-  if (const std::string why = ::slamsweep::testing::MissingSharedFile(relative);         \
-      !why.empty()) {                                                                    \
-    if (::slamsweep::testing::RunningInCi()) FAIL() << why;                              \
-    GTEST_SKIP() << why;                                                                 \
+#define SLAMSWEEP_REQUIRE_SHARED(var, relative)                                                  \
+  const std::filesystem::path var = ::slamsweep::testing::SharedRoot() / (relative);             \
+  if (const std::string why = ::slamsweep::testing::MissingSharedFile(relative); !why.empty()) { \
+    if (::slamsweep::testing::RunningInCi()) FAIL() << why;                                      \
+    GTEST_SKIP() << why;                                                                         \
   }

@@ -156,7 +156,8 @@ cv::Rect ChangedRect(const cv::Mat& before, const cv::Mat& after) {
 std::string EncodeCompactGreyPng(const cv::Mat& grey) {
   CheckGrey(grey, "image");
   std::array<std::uint8_t, 256> identity{};
-  for (int level = 0; level < 256; ++level) identity[static_cast<std::size_t>(level)] = static_cast<std::uint8_t>(level);
+  for (int level = 0; level < 256; ++level)
+    identity[static_cast<std::size_t>(level)] = static_cast<std::uint8_t>(level);
   std::string png(kSignature);
   PutChunk(png, "IHDR", Header(grey.cols, grey.rows, 8, 0));
   PutChunk(png, "IDAT", Zlib(PackedRows(8, grey, cv::Rect(0, 0, grey.cols, grey.rows), identity)));
@@ -197,7 +198,8 @@ std::optional<std::string> EncodePalettePng(const cv::Mat& bgr) {
   const auto colours = index_of_colour.size();
   const int bit_depth = colours <= 2 ? 1 : colours <= 4 ? 2 : colours <= 16 ? 4 : 8;
   std::array<std::uint8_t, 256> identity{};
-  for (int level = 0; level < 256; ++level) identity[static_cast<std::size_t>(level)] = static_cast<std::uint8_t>(level);
+  for (int level = 0; level < 256; ++level)
+    identity[static_cast<std::size_t>(level)] = static_cast<std::uint8_t>(level);
   std::string png(kSignature);
   PutChunk(png, "IHDR", Header(bgr.cols, bgr.rows, bit_depth, 3));
   PutChunk(png, "PLTE", palette);

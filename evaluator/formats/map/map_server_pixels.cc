@@ -32,11 +32,11 @@ std::uint8_t MapServerPixelValue(const std::uint8_t* samples, int channels, cons
 namespace {
 
 [[noreturn]] void ThrowRawValue(const MapServerMetadata& metadata, int row, int col, std::uint8_t value) {
-  throw InputError(Located(
-      metadata.image, 0,
-      fmt::format("raw mode: pixel (row {}, column {}) has value {}; raw map values are 0..100 (occupancy "
-                  "percent) or 255 (unknown){}",
-                  row, col, value, metadata.negate ? " after negate" : "")));
+  throw InputError(
+      Located(metadata.image, 0,
+              fmt::format("raw mode: pixel (row {}, column {}) has value {}; raw map values are 0..100 (occupancy "
+                          "percent) or 255 (unknown){}",
+                          row, col, value, metadata.negate ? " after negate" : "")));
 }
 
 /// The cell of a map_server value (MapServerPixelValue), or nullopt for a raw value without meaning.

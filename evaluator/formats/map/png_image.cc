@@ -128,11 +128,10 @@ int PackTwoBitRowQuick(const std::uint8_t* pixels, int width, const std::vector<
                                                       _mm_and_si128(_mm_cmpeq_epi8(p, level2), _mm_set1_epi8(2))),
                                          _mm_and_si128(_mm_cmpeq_epi8(p, level3), _mm_set1_epi8(3)));
       // Lane bytes b0 b1 b2 b3 (b0 lowest) -> b0 << 6 | b1 << 4 | b2 << 2 | b3.
-      lanes[k] = _mm_or_si128(
-          _mm_or_si128(_mm_slli_epi32(_mm_and_si128(index, two_bits), 6),
-                       _mm_slli_epi32(_mm_and_si128(_mm_srli_epi32(index, 8), two_bits), 4)),
-          _mm_or_si128(_mm_slli_epi32(_mm_and_si128(_mm_srli_epi32(index, 16), two_bits), 2),
-                       _mm_and_si128(_mm_srli_epi32(index, 24), two_bits)));
+      lanes[k] = _mm_or_si128(_mm_or_si128(_mm_slli_epi32(_mm_and_si128(index, two_bits), 6),
+                                           _mm_slli_epi32(_mm_and_si128(_mm_srli_epi32(index, 8), two_bits), 4)),
+                              _mm_or_si128(_mm_slli_epi32(_mm_and_si128(_mm_srli_epi32(index, 16), two_bits), 2),
+                                           _mm_and_si128(_mm_srli_epi32(index, 24), two_bits)));
     }
     const __m128i bytes = _mm_packus_epi16(_mm_packs_epi32(lanes[0], lanes[1]), _mm_packs_epi32(lanes[2], lanes[3]));
     _mm_storeu_si128(reinterpret_cast<__m128i*>(out + col / 4), bytes);
@@ -230,22 +229,23 @@ std::string EncodePngBytes(const cv::Mat& image) {
   for (int row = 0; row < image.rows; ++row) {
     rows[static_cast<std::size_t>(row)] = const_cast<png_bytep>(image.ptr<png_byte>(row));
   }
-  const bool written = info != nullptr && RunPngStep(png, [&] {
-    png_set_write_fn(png, &out, AppendToString, FlushNothing);
-    // OpenCV's choices when no compression level is given ("tuned for speed").
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
-    png_set_compression_level(png, Z_BEST_SPEED);
-    png_set_compression_strategy(png, Z_RLE);
-    png_set_IHDR(png, info, static_cast<png_uint_32>(image.cols), static_cast<png_uint_32>(image.rows), 8,
-                 channels == 1   ? PNG_COLOR_TYPE_GRAY
-                 : channels == 3 ? PNG_COLOR_TYPE_RGB
-                                 : PNG_COLOR_TYPE_RGB_ALPHA,
-                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_write_info(png, info);
-    png_set_bgr(png);
-    png_write_image(png, rows.data());
-    png_write_end(png, info);
-  });
+  const bool written =
+      info != nullptr && RunPngStep(png, [&] {
+        png_set_write_fn(png, &out, AppendToString, FlushNothing);
+        // OpenCV's choices when no compression level is given ("tuned for speed").
+        png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+        png_set_compression_level(png, Z_BEST_SPEED);
+        png_set_compression_strategy(png, Z_RLE);
+        png_set_IHDR(png, info, static_cast<png_uint_32>(image.cols), static_cast<png_uint_32>(image.rows), 8,
+                     channels == 1   ? PNG_COLOR_TYPE_GRAY
+                     : channels == 3 ? PNG_COLOR_TYPE_RGB
+                                     : PNG_COLOR_TYPE_RGB_ALPHA,
+                     PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+        png_write_info(png, info);
+        png_set_bgr(png);
+        png_write_image(png, rows.data());
+        png_write_end(png, info);
+      });
   png_destroy_write_struct(&png, &info);
   if (!written) throw InputError("PNG encoding failed: " + errors.message);
   return out;
@@ -265,8 +265,7 @@ std::string EncodeGreyPalettePng(const cv::Mat& grey) {
     palette.push_back(png_color{value, value, value});
   }
   const int bit_depth = palette.size() <= 2 ? 1 : palette.size() <= 4 ? 2 : palette.size() <= 16 ? 4 : 8;
-  const std::size_t row_bytes =
-      (static_cast<std::size_t>(grey.cols) * static_cast<std::size_t>(bit_depth) + 7) / 8;
+  const std::size_t row_bytes = (static_cast<std::size_t>(grey.cols) * static_cast<std::size_t>(bit_depth) + 7) / 8;
   std::vector<png_byte> packed(row_bytes * static_cast<std::size_t>(grey.rows));
   std::vector<png_bytep> rows(static_cast<std::size_t>(grey.rows));
   for (int row = 0; row < grey.rows; ++row) {
@@ -297,19 +296,20 @@ std::string EncodeGreyPalettePng(const cv::Mat& grey) {
   if (png == nullptr) throw InputError("PNG encoding failed (out of memory?)");
   png_infop info = png_create_info_struct(png);
   std::string encoded;
-  const bool written = info != nullptr && RunPngStep(png, [&] {
-    png_set_write_fn(png, &encoded, AppendToString, FlushNothing);
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
-    png_set_compression_level(png, Z_BEST_SPEED);
-    png_set_compression_strategy(png, Z_RLE);
-    png_set_IHDR(png, info, static_cast<png_uint_32>(grey.cols), static_cast<png_uint_32>(grey.rows), bit_depth,
-                 PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_set_PLTE(png, info, palette.data(), static_cast<int>(palette.size()));
-    png_set_check_for_invalid_index(png, 0);  // every index is below the palette size by construction
-    png_write_info(png, info);
-    png_write_image(png, rows.data());
-    png_write_end(png, info);
-  });
+  const bool written =
+      info != nullptr && RunPngStep(png, [&] {
+        png_set_write_fn(png, &encoded, AppendToString, FlushNothing);
+        png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
+        png_set_compression_level(png, Z_BEST_SPEED);
+        png_set_compression_strategy(png, Z_RLE);
+        png_set_IHDR(png, info, static_cast<png_uint_32>(grey.cols), static_cast<png_uint_32>(grey.rows), bit_depth,
+                     PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+        png_set_PLTE(png, info, palette.data(), static_cast<int>(palette.size()));
+        png_set_check_for_invalid_index(png, 0);  // every index is below the palette size by construction
+        png_write_info(png, info);
+        png_write_image(png, rows.data());
+        png_write_end(png, info);
+      });
   png_destroy_write_struct(&png, &info);
   if (!written) throw InputError("PNG encoding failed: " + errors.message);
   return encoded;

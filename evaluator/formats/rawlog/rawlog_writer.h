@@ -42,8 +42,8 @@ struct RawlogSummary {
   double last_stamp_s = 0.0;
 };
 
-/// Writes a robot log (scans and odometry: what a SLAM program may read) as an MRPT rawlog with libmrpt-obs's own serialization (gzip-compressed, as
-/// MRPT writes them). kActionsSensoryFrames, per scan i:
+/// Writes a robot log (scans and odometry: what a SLAM program may read) as an MRPT rawlog with libmrpt-obs's own
+/// serialization (gzip-compressed, as MRPT writes them). kActionsSensoryFrames, per scan i:
 ///   CActionCollection{ CActionRobotMovement2D: odometry increment odometry[i-1]^-1 * odometry[i]
 ///     (for i = 0 the odometry pose itself, the move from the odometry origin, so that a SLAM run
 ///     starts in the odometry frame), Gaussian motion model with MRPT's default parameters },

@@ -390,9 +390,9 @@ void InflateAndParse(const std::string& compressed, const std::filesystem::path&
   }
   if (code != Z_STREAM_END) {
     const std::string message = z.stream.msg != nullptr ? z.stream.msg : "unexpected end of data";
-    throw InputError(Located(path, 0,
-                             "truncated or corrupt gzip file (" + message + ") after " + std::to_string(produced) +
-                                 " decompressed bytes"));
+    throw InputError(Located(
+        path, 0,
+        "truncated or corrupt gzip file (" + message + ") after " + std::to_string(produced) + " decompressed bytes"));
   }
   parser.ParseLines(std::string_view(window.data(), held));
 }

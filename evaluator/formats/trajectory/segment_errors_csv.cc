@@ -40,7 +40,8 @@ std::vector<SegmentErrorRecord> ParseSegmentErrorsCsv(std::string_view content, 
           return;
         }
         if (record.size() != 6) {
-          record.Fail("expected 6 fields (" + std::string(kSegmentErrorsHeader) + "), got " + std::to_string(record.size()));
+          record.Fail("expected 6 fields (" + std::string(kSegmentErrorsHeader) + "), got " +
+                      std::to_string(record.size()));
         }
         records.push_back({record.Number(0, "length_m"), record.Number(1, "start_s"), record.Number(2, "end_s"),
                            record.Number(3, "translation_m"), record.Number(4, "translation_pct"),

@@ -86,7 +86,8 @@ TEST(VectorMapExportTest, CoordinatesAreRoundedToTheMicrometre) {
   // 0.05 m cells from an origin of -13.65 m: floating point puts the corner at 1.1750000000000007.
   const double corner = -13.65 + 0.05 * 296.5;
   ASSERT_NE(corner, 1.175);
-  map.polygons.push_back(Polygon{BorderKind::kOuter, {{corner, 2.0000004}, {corner, 2.0000004}}, 2, 0.1000000000000001});
+  map.polygons.push_back(
+      Polygon{BorderKind::kOuter, {{corner, 2.0000004}, {corner, 2.0000004}}, 2, 0.1000000000000001});
   const nlohmann::json geo = ToGeoJson(map);
   EXPECT_EQ(geo.at("features")[0].at("geometry").at("coordinates"), nlohmann::json({1.175, 2.0}));
   EXPECT_EQ(geo.at("features")[0].at("properties").at("border_length_m"), 0.1);

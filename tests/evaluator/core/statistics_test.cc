@@ -28,9 +28,7 @@ TEST(StatisticsTest, OddCountMedianIsMiddleValue) {
   EXPECT_DOUBLE_EQ(ComputeStatistics(errors).median, 5.0);
 }
 
-TEST(StatisticsTest, EmptyInputIsAnError) {
-  EXPECT_THROW(ComputeStatistics({}), InputError);
-}
+TEST(StatisticsTest, EmptyInputIsAnError) { EXPECT_THROW(ComputeStatistics({}), InputError); }
 
 TEST(StatisticsTest, JsonRoundTrip) {
   const std::vector<double> errors = {0.5, 0.25};

@@ -74,12 +74,12 @@ TEST(TextFileTest, NumberLinesTakeExactlyTheCountOfFiniteNumbersAndPassOnTheRest
       " 1.5\t-2e3  7\r\n"  // numbers, any blanks
       "\n"
       "  # indented comment\n"
-      "1 2 0x\n"          // not a number
-      "1 2\n"             // too few
-      "1 2 3 4\n"         // too many
-      "1 nan 3\n"         // not finite
-      "1 2-3 4\n"         // fields must be separated by blanks
-      "4 5 6";            // last line without a newline
+      "1 2 0x\n"   // not a number
+      "1 2\n"      // too few
+      "1 2 3 4\n"  // too many
+      "1 nan 3\n"  // not finite
+      "1 2-3 4\n"  // fields must be separated by blanks
+      "4 5 6";     // last line without a newline
   std::vector<std::pair<std::size_t, std::array<double, 3>>> numbers;
   std::vector<std::pair<std::size_t, std::string>> others;
   ForEachNumberLine<3>(
@@ -99,10 +99,36 @@ TEST(TextFileTest, NumberLinesTakeExactlyTheCountOfFiniteNumbersAndPassOnTheRest
 
 TEST(TextFileTest, QuickNumberReaderAgreesWithFromChars) {
   // TextRecord::Number's rule (std::from_chars, finite only) is the specification.
-  std::vector<std::string> tokens = {"0", "-0", "0.000", "0e-999", "00012", ".5", "5.", "-.5e3", "1e", "1e+", "1E-3",
-                                     "1e-320", "4.9406564584124654e-324", "1e-400", "-1e-400", "1e308", "1e309",
-                                     "-1e400", "inf", "nan", "+1", "--1", "0x1p3", "1.5x", "123456789012345678901234567890",
-                                     "0.1000000000000000055511151231257827", "2.2250738585072011e-308", "e5", "-", ""};
+  std::vector<std::string> tokens = {"0",
+                                     "-0",
+                                     "0.000",
+                                     "0e-999",
+                                     "00012",
+                                     ".5",
+                                     "5.",
+                                     "-.5e3",
+                                     "1e",
+                                     "1e+",
+                                     "1E-3",
+                                     "1e-320",
+                                     "4.9406564584124654e-324",
+                                     "1e-400",
+                                     "-1e-400",
+                                     "1e308",
+                                     "1e309",
+                                     "-1e400",
+                                     "inf",
+                                     "nan",
+                                     "+1",
+                                     "--1",
+                                     "0x1p3",
+                                     "1.5x",
+                                     "123456789012345678901234567890",
+                                     "0.1000000000000000055511151231257827",
+                                     "2.2250738585072011e-308",
+                                     "e5",
+                                     "-",
+                                     ""};
   std::mt19937_64 random(3);
   for (int i = 0; i < 2000; ++i) {
     const double x = std::ldexp(std::uniform_real_distribution<double>(-1.0, 1.0)(random),

@@ -24,9 +24,7 @@ TEST(TrajectoryTest, RejectsNanPoseWithItsIndex) {
   EXPECT_EQ(trajectory.size(), 1u);
 }
 
-TEST(TrajectoryTest, MismatchedSizesAreRejected) {
-  EXPECT_THROW(Trajectory({0.0, 1.0}, {Pose()}), InputError);
-}
+TEST(TrajectoryTest, MismatchedSizesAreRejected) { EXPECT_THROW(Trajectory({0.0, 1.0}, {Pose()}), InputError); }
 
 TEST(TrajectoryTest, SubsetShiftAndPlanarity) {
   Trajectory trajectory({0.0, 1.0, 2.0}, {Pose::Planar(0, 0, 0), Pose::Planar(1, 0, 0.1), Pose::Planar(2, 0, 0.2)});

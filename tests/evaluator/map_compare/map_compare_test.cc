@@ -218,7 +218,7 @@ TEST(MapResampleTest, CoarserCellsKeepOneCellWallsAndUnknownStaysUnknown) {
 
 TEST(MapResampleTest, FinerCellsSplitEachCell) {
   OccupancyGrid coarse(3, 2, 0.1, {1.0, 2.0, 0.0}, 0.0f);
-  coarse.at(0, 2) = 1.0f;                   // top right occupied
+  coarse.at(0, 2) = 1.0f;                     // top right occupied
   coarse.at(1, 0) = OccupancyGrid::kUnknown;  // bottom left unknown
   const OccupancyGrid fine = ResampleToResolution(coarse, 0.05);
   ASSERT_EQ(fine.width, 6);

@@ -48,9 +48,20 @@ TEST(RandomTest, StandardNormalHasUnitVarianceAndZeroMean) {
 TEST(RandomTest, UniformIndexSamplerDrawsWhatUniformIndexDraws) {
   // Counts where the remainder by multiplication is easy to get wrong: powers of two and their
   // neighbours, counts with rejection thresholds near 2^63, and the largest count.
-  const std::uint64_t counts[] = {1,          2,          3,          7,          1000,       4096,
-                                  65537,      (1ull << 32) - 1,       (1ull << 32) + 5,      (1ull << 63) - 1,
-                                  1ull << 63, (1ull << 63) + 1,       0xffffffffffffffffull, 0x9e3779b97f4a7c15ull};
+  const std::uint64_t counts[] = {1,
+                                  2,
+                                  3,
+                                  7,
+                                  1000,
+                                  4096,
+                                  65537,
+                                  (1ull << 32) - 1,
+                                  (1ull << 32) + 5,
+                                  (1ull << 63) - 1,
+                                  1ull << 63,
+                                  (1ull << 63) + 1,
+                                  0xffffffffffffffffull,
+                                  0x9e3779b97f4a7c15ull};
   for (const std::uint64_t count : counts) {
     SCOPED_TRACE(count);
     RandomEngine reference(count), engine(count);
@@ -60,7 +71,8 @@ TEST(RandomTest, UniformIndexSamplerDrawsWhatUniformIndexDraws) {
   // Remainders of values near 2^64 by large counts, where the engine seldom goes.
   for (const std::uint64_t count : counts) {
     if (count < 2) continue;
-    for (const std::uint64_t value : {std::uint64_t{0xffffffffffffffffull}, std::uint64_t{0xfffffffffffffffeull}, count - 1, count, count + 1}) {
+    for (const std::uint64_t value :
+         {std::uint64_t{0xffffffffffffffffull}, std::uint64_t{0xfffffffffffffffeull}, count - 1, count, count + 1}) {
       const std::uint64_t threshold = (0 - count) % count;
       if (value < threshold) continue;
       // An engine whose next draw is `value`: mt19937_64 cannot be steered, so the sampler's remainder

@@ -14,7 +14,6 @@
 namespace slamsweep::evaluator {
 namespace {
 
-
 /// A FLASER line with `beams` readings of `range_m` (the first one `first_range_m`).
 std::string Flaser(std::size_t beams, double first_range_m, double range_m, const std::string& pose,
                    const std::string& odom, double stamp_s) {
@@ -164,7 +163,8 @@ std::string Rlaser(std::size_t beams, double first_range_m, double range_m, cons
 
 TEST(CarmenSequenceTest, FrontLaserIsTheDefaultAndRearLaserIsAnOption) {
   const std::string text = Flaser(181, 1, 1, "0 0 0", "0 0 0", 1.0) + Rlaser(181, 2, 2, "0 0 0", "0 0 0", 1.05) +
-                           Flaser(181, 1, 1, "0.1 0 0", "0.1 0 0", 1.1) + Rlaser(181, 2, 2, "0.1 0 0", "0.1 0 0", 1.15) +
+                           Flaser(181, 1, 1, "0.1 0 0", "0.1 0 0", 1.1) +
+                           Rlaser(181, 2, 2, "0.1 0 0", "0.1 0 0", 1.15) +
                            Rlaser(181, 2, 2, "0.2 0 0", "0.2 0 0", 1.25);
   const Sequence front = FromText(text);
   ASSERT_EQ(front.scans.size(), 2u);
@@ -184,8 +184,9 @@ TEST(CarmenSequenceTest, FrontLaserIsTheDefaultAndRearLaserIsAnOption) {
   EXPECT_NEAR(rear.reference->poses()[2].position.x(), 0.2, 1e-12);
   EXPECT_TRUE(AnyWarningContains(rear, "2 FLASER records ignored")) << ::testing::PrintToString(rear.warnings);
 
-  EXPECT_NE(ErrorOf([&] { FromText(Flaser(181, 1, 1, "0 0 0", "0 0 0", 1.0), rear_options); }).find("no RLASER records"),
-            std::string::npos);
+  EXPECT_NE(
+      ErrorOf([&] { FromText(Flaser(181, 1, 1, "0 0 0", "0 0 0", 1.0), rear_options); }).find("no RLASER records"),
+      std::string::npos);
 }
 
 TEST(CarmenSequenceTest, RearLaserBeamsPointBackwards) {
@@ -194,7 +195,8 @@ TEST(CarmenSequenceTest, RearLaserBeamsPointBackwards) {
   // last one to +270 = -90 deg (right). The robot at (1, 2) heading 90 deg: "back" is world -y.
   CarmenSequenceOptions options;
   options.use_rear_laser = true;
-  const Sequence sequence = FromText(Rlaser(181, 2, 2, "1 2 1.5707963267948966", "1 2 1.5707963267948966", 1.0), options);
+  const Sequence sequence =
+      FromText(Rlaser(181, 2, 2, "1 2 1.5707963267948966", "1 2 1.5707963267948966", 1.0), options);
   ASSERT_EQ(sequence.scans.size(), 1u);
   const LaserScan& scan = sequence.scans[0];
   EXPECT_NEAR(std::abs(scan.sensor_pose_on_robot.Yaw()), std::numbers::pi, 1e-12);

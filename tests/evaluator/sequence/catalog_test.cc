@@ -198,7 +198,8 @@ TEST(CatalogTest, UnknownKeysAndBadValuesNameFileAndLine) {
   EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    stamp_policy: sometimes\n", "c.yaml"); }),
               HasSubstr("c.yaml:7: stamp_policy"));
   EXPECT_THAT(ErrorOf([] {
-                ParseCatalog("sequences:\n  - name: a\n    format: vhs\n    path: x\n    ground_truth: none\n", "c.yaml");
+                ParseCatalog("sequences:\n  - name: a\n    format: vhs\n    path: x\n    ground_truth: none\n",
+                             "c.yaml");
               }),
               HasSubstr("c.yaml:3: format: expected carmen, rawlog, rosbag or simulated, got 'vhs'"));
   EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + std::string(kMinimal).substr(11), "c.yaml"); }),
@@ -206,9 +207,10 @@ TEST(CatalogTest, UnknownKeysAndBadValuesNameFileAndLine) {
   EXPECT_THAT(ErrorOf([] { ParseCatalog("sequences:\n  - name: a\n    format: carmen\n    path: x\n", "c.yaml"); }),
               HasSubstr("c.yaml:2: sequence 'a': no ground_truth"));
   EXPECT_THAT(ErrorOf([] {
-                ParseCatalog("sequences:\n  - name: s\n    format: simulated\n    ground_truth: exact\n"
-                             "    simulation: {noise_sed: 3}\n",
-                             "c.yaml");
+                ParseCatalog(
+                    "sequences:\n  - name: s\n    format: simulated\n    ground_truth: exact\n"
+                    "    simulation: {noise_sed: 3}\n",
+                    "c.yaml");
               }),
               HasSubstr("c.yaml:5: "));
   EXPECT_THAT(ErrorOf([] { ParseCatalog("sequences: [\n", "c.yaml"); }), HasSubstr("c.yaml:"));
@@ -227,9 +229,9 @@ TEST(CatalogTest, MissingFileNamesEntryPathAndWhereToGetIt) {
   EXPECT_THAT(error, HasSubstr("/nowhere/a.log is missing"));
   EXPECT_THAT(error, HasSubstr("get it from: example.org/a"));
   EXPECT_THAT(ErrorOf([&] { LoadCatalogSequence(catalog.entries[0], {}); }), HasSubstr("unknown variable ${ROOT}"));
-  EXPECT_THAT(ErrorOf([&] { FindCatalogEntry(catalog, "b"); }), HasSubstr("no sequence named 'b' in the catalog c.yaml (known: a)"));
+  EXPECT_THAT(ErrorOf([&] { FindCatalogEntry(catalog, "b"); }),
+              HasSubstr("no sequence named 'b' in the catalog c.yaml (known: a)"));
 }
-
 
 TEST(CatalogTest, Fr079HasItsRelationsOnTheLogsClock) {
   SLAMSWEEP_REQUIRE_SHARED(relations, "datasets/fr079/fr079.relations");

@@ -221,7 +221,8 @@ TEST_P(Fr079DirectionTest, BacksUpWhereItsCorrectedLogSays) {
   EXPECT_LE(static_cast<double>(agreement.odometry_backward_instead),
             band.reversed_by_mistake_share * static_cast<double>(agreement.reference_forward));
   bool said = false;
-  for (const std::string& warning : sequence.warnings) said = said || warning.find("without their sign") != std::string::npos;
+  for (const std::string& warning : sequence.warnings)
+    said = said || warning.find("without their sign") != std::string::npos;
   EXPECT_TRUE(said);
 }
 

@@ -26,8 +26,8 @@ constexpr double kTolerance = 1e-6;
 
 // The type itself keeps the truth out: no conversion from a Sequence, no field for a reference.
 static_assert(!std::is_convertible_v<Sequence, RobotLog>);
-static_assert(!std::is_invocable_v<decltype(&WriteRobotLog), const Sequence&, const std::filesystem::path&,
-                                   SequenceWriteFormat>);
+static_assert(
+    !std::is_invocable_v<decltype(&WriteRobotLog), const Sequence&, const std::filesystem::path&, SequenceWriteFormat>);
 
 /// 40 scans whose reference poses are hundreds of metres and about a radian away from the odometry,
 /// with ranges and stamps that cannot coincide with either (so a match can only be a leak).
@@ -130,7 +130,8 @@ TEST(ProgramInputLeakTest, RawlogHoldsNoReferenceBytes) {
   }
   // And the raw bytes of the uncompressed stream: no reference coordinate as a double or a float.
   testing::TempDir raw;
-  const std::string command = "gzip -dc '" + (dir / "input.rawlog").string() + "' > '" + (raw / "stream").string() + "'";
+  const std::string command =
+      "gzip -dc '" + (dir / "input.rawlog").string() + "' > '" + (raw / "stream").string() + "'";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   const std::string bytes = ReadBytes(raw / "stream");
   ASSERT_GT(bytes.size(), 1000u);

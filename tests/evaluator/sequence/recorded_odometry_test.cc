@@ -31,8 +31,8 @@ std::string Odom(double x, double y, double theta, double stamp_s) {
 
 std::string FlaserLine(double x, double y, double theta, double stamp_s) {
   std::ostringstream line;
-  line << "FLASER 3 1 1 1 " << x << ' ' << y << ' ' << theta << ' ' << x << ' ' << y << ' ' << theta << ' '
-       << stamp_s << " pippo " << stamp_s << '\n';
+  line << "FLASER 3 1 1 1 " << x << ' ' << y << ' ' << theta << ' ' << x << ' ' << y << ' ' << theta << ' ' << stamp_s
+       << " pippo " << stamp_s << '\n';
   return line.str();
 }
 
@@ -82,7 +82,8 @@ TEST(RecordedOdometryTest, HandMadeLogGivesTheWheelPathResetsByPoseNotStamp) {
 TEST(RecordedOdometryTest, RecordedModeFeedsTheWheelOdometryAndKeepsTheCorrectedReference) {
   CarmenSequenceOptions options;
   options.odometry = OdometryMode::kRecorded;
-  const Sequence sequence = CarmenLogToSequence(ParseCarmenLog(HandMadeCorrectedLog(), "hand.log"), "hand.log", options);
+  const Sequence sequence =
+      CarmenLogToSequence(ParseCarmenLog(HandMadeCorrectedLog(), "hand.log"), "hand.log", options);
   ASSERT_EQ(sequence.odometry.size(), 2u);
   EXPECT_NEAR(sequence.odometry.poses()[0].position.x(), 1.0, 1e-5);
   EXPECT_NEAR(sequence.odometry.poses()[1].position.x(), 3.0, 1e-5);
@@ -111,7 +112,8 @@ TEST(RecordedOdometryTest, LogWithoutAStreamIsAnErrorNamingTheLine) {
     EXPECT_NE(std::string(error.what()).find("bare.log:1"), std::string::npos) << error.what();
   }
   // An ODOM right after a scan that does not repeat its pose: not a corrected log's reset.
-  const std::string moved = Odom(0, 0, 0, 0.5) + FlaserLine(0, 0, 0, 1.0) + Odom(5, 0, 0, 1.5) + FlaserLine(1, 0, 0, 2.0);
+  const std::string moved =
+      Odom(0, 0, 0, 0.5) + FlaserLine(0, 0, 0, 1.0) + Odom(5, 0, 0, 1.5) + FlaserLine(1, 0, 0, 2.0);
   const CarmenLog moved_log = ParseCarmenLog(moved, "moved.log");
   try {
     RebuildRecordedOdometry(moved_log, Flasers(moved_log), "moved.log", {});

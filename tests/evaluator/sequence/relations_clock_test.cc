@@ -69,15 +69,19 @@ TEST(RelationsClockByScansTest, OdometryThatLagsTheLaserMovesTheOdometryFitButNo
   const double truth = MappedOffsetAt(kOffsetS, kRate, middle);
   const SearchedClockFit by_odometry = FitRelationsClockByOdometry(drive.relations, drive.readings);
   EXPECT_NEAR(MappedOffsetAt(by_odometry.offset_s, by_odometry.rate, middle), truth + 0.15, 0.01);
-  const SearchedClockFit by_scans = FitRelationsClockByScans(drive.relations, drive.scans, drive.readings, truth + 0.15);
+  const SearchedClockFit by_scans =
+      FitRelationsClockByScans(drive.relations, drive.scans, drive.readings, truth + 0.15);
   EXPECT_NEAR(MappedOffsetAt(by_scans.offset_s, by_scans.rate, middle), truth, 0.025);
 }
 
 TEST(RelationsClockByScansTest, TooFewScansOrRelationsAreAnInputError) {
   const Drive drive = WeavingDrive(0.0);
-  EXPECT_THROW(FitRelationsClockByScans(drive.relations, std::vector<LaserScan>(drive.scans.begin(), drive.scans.begin() + 1), drive.readings, 0.0),
-               InputError);
-  EXPECT_THROW(FitRelationsClockByScans(Relations(drive.relations.begin(), drive.relations.begin() + 3), drive.scans, drive.readings, kOffsetS),
+  EXPECT_THROW(
+      FitRelationsClockByScans(drive.relations, std::vector<LaserScan>(drive.scans.begin(), drive.scans.begin() + 1),
+                               drive.readings, 0.0),
+      InputError);
+  EXPECT_THROW(FitRelationsClockByScans(Relations(drive.relations.begin(), drive.relations.begin() + 3), drive.scans,
+                                        drive.readings, kOffsetS),
                InputError);
   // No offset in the window puts a relation inside the scans.
   EXPECT_THROW(FitRelationsClockByScans(drive.relations, drive.scans, drive.readings, kOffsetS + 500.0), InputError);

@@ -184,9 +184,20 @@ void WriteGzip(const std::filesystem::path& path, const std::string& text) {
 
 TEST(CarmenFastReadTest, EveryNumberFormReadsAsStrtodReadsIt) {
   // Forms the fast decimal path takes and forms it leaves to from_chars (exponents, 20 digits, '5.').
-  const std::vector<std::string> forms = {"0",      "-0",     "1.5",  "-2.25",  "0.1",   "81.91", "1e-3",
-                                          "2.5E+1", "5.",     ".5",   "0.12345678901234567890",
-                                          "123456789012345678", "32.767", "1.13486e+09"};
+  const std::vector<std::string> forms = {"0",
+                                          "-0",
+                                          "1.5",
+                                          "-2.25",
+                                          "0.1",
+                                          "81.91",
+                                          "1e-3",
+                                          "2.5E+1",
+                                          "5.",
+                                          ".5",
+                                          "0.12345678901234567890",
+                                          "123456789012345678",
+                                          "32.767",
+                                          "1.13486e+09"};
   std::string line = "FLASER " + std::to_string(forms.size());
   for (const std::string& form : forms) line += ' ' + form;
   line += " 1 2 3 4 5 6 7.25 host 8\n";
@@ -204,7 +215,8 @@ TEST(CarmenFastReadTest, GzipLogsGiveTheLineOfABadFieldAndNameATruncatedFile) {
   for (int i = 0; i < 4000; ++i) text += "FLASER 3 1 2 3 0 0 0 0 0 0 " + std::to_string(2 + i) + " host 0\n";
   text += "FLASER 3 1 x 3 0 0 0 0 0 0 9999 host 0\n";
   WriteGzip(dir / "bad.log.gz", text);
-  const std::string expected_line = ":" + std::to_string(4000 + 4) + ": field 4 (range): expected a finite number, got 'x'";
+  const std::string expected_line =
+      ":" + std::to_string(4000 + 4) + ": field 4 (range): expected a finite number, got 'x'";
   EXPECT_THAT(ErrorOf([&] { ReadCarmenLog(dir / "bad.log.gz"); }), HasSubstr(expected_line));
 
   WriteGzip(dir / "good.log.gz", text.substr(0, text.rfind("FLASER 3 1 x")));

@@ -33,8 +33,8 @@ std::optional<BootstrapInterval> SortingBootstrap(const std::vector<PairedStratu
     }
     if (const std::optional<double> rho = PooledRankCorrelation(resample)) replicates.push_back(*rho);
   }
-  if (replicates.empty() || static_cast<double>(replicates.size()) <
-                                options.min_defined_fraction * static_cast<double>(options.resamples)) {
+  if (replicates.empty() ||
+      static_cast<double>(replicates.size()) < options.min_defined_fraction * static_cast<double>(options.resamples)) {
     return std::nullopt;
   }
   std::sort(replicates.begin(), replicates.end());

@@ -82,8 +82,8 @@ TEST(StratifiedSpearmanTest, ScalesOfOtherStrataDoNotMatter) {
   // Stratum 0: centred ranks (-1.5..1.5)/4 in both; stratum 1: x all 0, y (-1.5..1.5)/4.
   // sum xy = sum xx = 5/16, sum yy = 10/16: rho = (5/16) / sqrt(50/256) = 1/sqrt(2).
   EXPECT_NEAR(*StratifiedSpearmanRho(metric2, error2, sequence2), 1.0 / std::sqrt(2.0), 1e-15);
-  EXPECT_FALSE(StratifiedSpearmanRho(std::vector<double>{1, 2}, std::vector<double>{1, 2},
-                                     std::vector<std::size_t>{0, 1}));
+  EXPECT_FALSE(
+      StratifiedSpearmanRho(std::vector<double>{1, 2}, std::vector<double>{1, 2}, std::vector<std::size_t>{0, 1}));
 }
 
 /// Runs scipy_reference.py on `cases`; null when python3 or scipy is missing.

@@ -119,9 +119,10 @@ nlohmann::json RunReference(const nlohmann::json& cases, std::string& why) {
                               (dir / "err.txt").string() + "'";
   if (std::system(command.c_str()) != 0) {
     std::ifstream err(dir / "err.txt");
-    why = "python3 with scipy and statsmodels (apt-get install python3-scipy python3-statsmodels) could not "
-          "compute the reference: " +
-          std::string(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
+    why =
+        "python3 with scipy and statsmodels (apt-get install python3-scipy python3-statsmodels) could not "
+        "compute the reference: " +
+        std::string(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
     return nullptr;
   }
   std::ifstream in(dir / "out.json");
@@ -158,8 +159,7 @@ TEST(RankTestsTest, AgreeWithScipyAndStatsmodelsOnRandomSamples) {
     const std::size_t n_y = 2 + UniformIndex(engine, c < 30 ? 9 : 30);
     const double shift = 0.3 * static_cast<double>(c % 5);
     auto draw = [&](double offset) {
-      return tied ? static_cast<double>(UniformIndex(engine, 5)) + std::round(offset)
-                  : UniformUnit(engine) + offset;
+      return tied ? static_cast<double>(UniformIndex(engine, 5)) + std::round(offset) : UniformUnit(engine) + offset;
     };
     Case m{{}, {}, alternative};
     for (std::size_t i = 0; i < n_x; ++i) m.x.push_back(draw(0.0));
@@ -167,7 +167,9 @@ TEST(RankTestsTest, AgreeWithScipyAndStatsmodelsOnRandomSamples) {
     std::vector<double> pooled = m.x;
     pooled.insert(pooled.end(), m.y.begin(), m.y.end());
     const bool mw_exact = !HasTies(pooled) && n_x <= kMannWhitneyExactMaxSize && n_y <= kMannWhitneyExactMaxSize;
-    cases["mann_whitney"].push_back({{"x", m.x}, {"y", m.y}, {"alternative", AlternativeName(alternative)},
+    cases["mann_whitney"].push_back({{"x", m.x},
+                                     {"y", m.y},
+                                     {"alternative", AlternativeName(alternative)},
                                      {"method", mw_exact ? "exact" : "asymptotic"}});
     mw.push_back(m);
 
@@ -183,7 +185,9 @@ TEST(RankTestsTest, AgreeWithScipyAndStatsmodelsOnRandomSamples) {
     }
     if (magnitudes.empty()) w.x.push_back(0.0), w.y.push_back(1.0), magnitudes.push_back(1.0);
     const bool wx_exact = !HasTies(magnitudes) && magnitudes.size() <= kWilcoxonExactMaxPairs;
-    cases["wilcoxon"].push_back({{"x", w.x}, {"y", w.y}, {"alternative", AlternativeName(alternative)},
+    cases["wilcoxon"].push_back({{"x", w.x},
+                                 {"y", w.y},
+                                 {"alternative", AlternativeName(alternative)},
                                  {"method", wx_exact ? "exact" : "approx"}});
     wx.push_back(w);
 
@@ -200,10 +204,10 @@ TEST(RankTestsTest, AgreeWithScipyAndStatsmodelsOnRandomSamples) {
   }
   for (std::size_t c = 0; c < mw.size(); ++c) {
     SCOPED_TRACE(c);
-    EXPECT_NEAR(MannWhitneyU(mw[c].x, mw[c].y, mw[c].alternative).p_value,
-                expected["mann_whitney"][c].get<double>(), 1e-12);
-    EXPECT_NEAR(WilcoxonSignedRank(wx[c].x, wx[c].y, wx[c].alternative).p_value,
-                expected["wilcoxon"][c].get<double>(), 1e-12);
+    EXPECT_NEAR(MannWhitneyU(mw[c].x, mw[c].y, mw[c].alternative).p_value, expected["mann_whitney"][c].get<double>(),
+                1e-12);
+    EXPECT_NEAR(WilcoxonSignedRank(wx[c].x, wx[c].y, wx[c].alternative).p_value, expected["wilcoxon"][c].get<double>(),
+                1e-12);
     const std::vector<double> adjusted = HolmAdjusted(holm[c]);
     for (std::size_t i = 0; i < adjusted.size(); ++i) {
       EXPECT_NEAR(adjusted[i], expected["holm"][c][i].get<double>(), 1e-15);

@@ -71,7 +71,6 @@ TEST(InterpolationTest, DecreasingStampsAndEmptyTrajectoriesAreInputErrors) {
   EXPECT_THROW(TrajectoryInterpolator{empty}, InputError);
 }
 
-
 TEST(OdometryInterpolatorTest, ATurnOnTheSpotBetweenKeyframesKeepsTurning) {
   // Keyframes at t = 0 and t = 2, both at the origin facing +x: between them the robot turned a full
   // circle on the spot. Linear interpolation says it never turned; the odometry says at t = 1 it

@@ -190,8 +190,8 @@ TEST(SegmentRpeTest, SegmentsAreChosenOnTheReference) {
   }
   // No motion at all: each segment's error is its whole reference chord, 100 % on a full segment.
   for (std::size_t k = 0; k < bad.lengths[0].pairs.size(); ++k) {
-    EXPECT_NEAR(bad.lengths[0].translation_pct[k], 100.0 * ReferencePathBetween(reference, bad.lengths[0].pairs[k]) / 5.0,
-                1e-9);
+    EXPECT_NEAR(bad.lengths[0].translation_pct[k],
+                100.0 * ReferencePathBetween(reference, bad.lengths[0].pairs[k]) / 5.0, 1e-9);
   }
 }
 

@@ -63,7 +63,8 @@ TEST(MetricValidityTest, BelowEightRunsThereIsNoNumber) {
 TEST(MetricValidityTest, AMetricFallingWithTheErrorIsOpposite) {
   std::vector<ValidityRun> runs;
   for (int i = 0; i < 12; ++i) runs.push_back(MakeRun("floor", "n1", i, 0.1 * (i + 1), 100.0 - 3 * i));
-  const ValidityCorrelation& c = Get(ComputeValidityStudy(runs), "corners.value", "floor", ValidityPooling::kAcrossNoise);
+  const ValidityCorrelation& c =
+      Get(ComputeValidityStudy(runs), "corners.value", "floor", ValidityPooling::kAcrossNoise);
   EXPECT_DOUBLE_EQ(*c.rho, -1.0);
   EXPECT_EQ(c.verdict, ValidityVerdict::kOpposite);
 }
@@ -205,7 +206,7 @@ TEST(MetricValidityTest, DecidedVerdictsAreRedrawnAtTheBonferroniLevel) {
     EXPECT_LE(c.family_interval->low, c.interval->low);
     EXPECT_GE(c.family_interval->high, c.interval->high);
     EXPECT_EQ(c.survives_family, c.verdict == ValidityVerdict::kTracksError ? c.family_interval->low > 0.0
-                                                                             : c.family_interval->high < 0.0);
+                                                                            : c.family_interval->high < 0.0);
     survived += c.survives_family ? 1 : 0;
     if (!c.sequence.empty() && c.pooling == ValidityPooling::kAcrossNoise) {
       // One sequence across noise is one stratum: the family interval is the bootstrap drawn afresh at the

@@ -55,7 +55,9 @@ TEST(ExpandPlaceholdersTest, NamesTheFieldAndWhatIsAccepted) {
     ExpandPlaceholders("{param:missing}", values, "argv[1]");
     FAIL() << "accepted";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("{param:missing} names no parameter of the algorithm (declared: flag, n, x)"), std::string::npos)
+    EXPECT_NE(
+        std::string(error.what()).find("{param:missing} names no parameter of the algorithm (declared: flag, n, x)"),
+        std::string::npos)
         << error.what();
   }
   EXPECT_THROW(ExpandPlaceholders("{input", values, "f"), InputError);
@@ -151,9 +153,10 @@ TEST(MakeAdapterTest, KnowsEveryAdapterAndListsThemOtherwise) {
     MakeAdapter("gfs_nogui");
     FAIL() << "accepted";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("algorithm.adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command, "
-                                             "odometry, gmapping, tinyslam, vinyslam, hector or cartographer, got "
-                                             "'gfs_nogui'"),
+    EXPECT_NE(std::string(error.what())
+                  .find("algorithm.adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command, "
+                        "odometry, gmapping, tinyslam, vinyslam, hector or cartographer, got "
+                        "'gfs_nogui'"),
               std::string::npos)
         << error.what();
   }

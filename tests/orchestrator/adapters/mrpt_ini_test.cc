@@ -69,7 +69,8 @@ TEST(RenderIniTest, LaterSettingsWinAndCommentsStay) {
 }
 
 TEST(IniSettingsFromParametersTest, SplitsAtTheFirstDotAndFormatsScalars) {
-  const nlohmann::json parameters = {{"ICP.maxIterations", 80}, {"ICP.onlyClosestCorrespondences", true},
+  const nlohmann::json parameters = {{"ICP.maxIterations", 80},
+                                     {"ICP.onlyClosestCorrespondences", true},
                                      {"MappingApplication.insertionLinDistance", 0.25},
                                      {"MappingApplication.verbosity_level", "INFO"}};
   const std::vector<IniSetting> settings = IniSettingsFromParameters(parameters);
@@ -104,8 +105,8 @@ TEST(MrptSettingsTest, AdapterControlledKeysWinAndCannotBeParameters) {
   RunSpec spec = testing::SimulatedRun("mrpt-icp-slam");
   spec.algorithm.parameters = {{"ICP.maxIterations", 40}};
   const std::vector<IniSetting> settings = IcpSlamSettings(spec, "x.rawlog");
-  const std::string ini = RenderIni("[MappingApplication]\nrawlog_file=a\nSAVE_3D_SCENE=1\n[ICP]\nmaxIterations=80\n",
-                                    settings);
+  const std::string ini =
+      RenderIni("[MappingApplication]\nrawlog_file=a\nSAVE_3D_SCENE=1\n[ICP]\nmaxIterations=80\n", settings);
   // The program runs in raw/: its input is beside it, its output is where it runs.
   EXPECT_NE(ini.find("rawlog_file=../input/x.rawlog\n"), std::string::npos) << ini;
   EXPECT_NE(ini.find("SAVE_3D_SCENE=0\n"), std::string::npos) << ini;
@@ -140,15 +141,14 @@ TEST(MrptSettingsTest, IcpDefaultsMatchAgainstPointsAndInsertDenselyUnlessAParam
 TEST(MrptSettingsTest, RbpfLogsAboutOneStageMapPerStageAndDefaultsToFiveParticles) {
   RunSpec spec = testing::SimulatedRun("mrpt-rbpf-slam");
   spec.evaluation.stages = 24;
-  const std::string ini = RenderIni("[MappingApplication]\nsampleSize=20\nLOG_FREQUENCY=10\n",
-                                    RbpfSlamSettings(spec, "x.rawlog", 300));
+  const std::string ini =
+      RenderIni("[MappingApplication]\nsampleSize=20\nLOG_FREQUENCY=10\n", RbpfSlamSettings(spec, "x.rawlog", 300));
   // ceil(300 / 24) = 13: maps at steps 0, 13, ..., 299 -> 24 of them.
   EXPECT_NE(ini.find("LOG_FREQUENCY=13\n"), std::string::npos) << ini;
   EXPECT_NE(ini.find("sampleSize=5\n"), std::string::npos) << ini;
 
   spec.algorithm.parameters = {{"MappingApplication.sampleSize", 12}};
-  const std::string tuned = RenderIni("[MappingApplication]\nsampleSize=20\n",
-                                      RbpfSlamSettings(spec, "x.rawlog", 300));
+  const std::string tuned = RenderIni("[MappingApplication]\nsampleSize=20\n", RbpfSlamSettings(spec, "x.rawlog", 300));
   EXPECT_NE(tuned.find("sampleSize=12\n"), std::string::npos) << tuned;
   EXPECT_EQ(tuned.find("sampleSize=5\n"), std::string::npos) << tuned;
 }

@@ -185,7 +185,8 @@ void ExpectSaneFinalMap(const std::filesystem::path& out_dir, double insertion_d
 }
 
 TEST(IcpSlamRunTest, IcpSlamProcessesEveryStepOfAWrittenRawlogAndMapsTheBuilding) {
-  if (!HaveProgram("icp-slam")) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("icp-slam not installed (Debian: mrpt-apps); MRPT run not checked");
+  if (!HaveProgram("icp-slam"))
+    SLAMSWEEP_SKIP_OR_FAIL_IN_CI("icp-slam not installed (Debian: mrpt-apps); MRPT run not checked");
   if (!std::filesystem::exists(kIcpConfig)) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("MRPT example config missing: " << kIcpConfig);
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
 
@@ -266,8 +267,10 @@ TEST(IcpSlamRunTest, IcpSlamProcessesEveryStepOfAWrittenRawlogAndMapsTheBuilding
 }
 
 TEST(IcpSlamRunTest, RbpfSlamProcessesEveryStepOfAWrittenRawlogAndMapsTheBuilding) {
-  if (!HaveProgram("rbpf-slam")) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("rbpf-slam not installed (Debian: mrpt-apps); MRPT run not checked");
-  if (!std::filesystem::exists(kRbpfConfig)) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("MRPT example config missing: " << kRbpfConfig);
+  if (!HaveProgram("rbpf-slam"))
+    SLAMSWEEP_SKIP_OR_FAIL_IN_CI("rbpf-slam not installed (Debian: mrpt-apps); MRPT run not checked");
+  if (!std::filesystem::exists(kRbpfConfig))
+    SLAMSWEEP_SKIP_OR_FAIL_IN_CI("MRPT example config missing: " << kRbpfConfig);
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
 
   const IntelPrefix prefix = FirstIntelScans(log, kRbpfScans);

@@ -182,7 +182,8 @@ TEST(RosterAdapterTest, CartographersLuaFileIsPartOfItsBuildIdentity) {
     EXPECT_THAT(error.what(), HasSubstr("configuration_files missing or empty"));
   }
   // The upstream files slamsweep_2d.lua includes (map_builder.lua, trajectory_builder.lua, ...).
-  const fs::path upstream = dir / "roster" / "prefix" / "cartographer" / "share" / "cartographer" / "configuration_files";
+  const fs::path upstream =
+      dir / "roster" / "prefix" / "cartographer" / "share" / "cartographer" / "configuration_files";
   fs::create_directories(upstream);
   slamsweep::testing::WriteFile(upstream / "trajectory_builder.lua", "TRAJECTORY_BUILDER = {}\n");
   slamsweep::testing::WriteFile(upstream / "map_builder.lua", "MAP_BUILDER = {}\n");

@@ -90,8 +90,8 @@ TEST(PrepareRunInputsTest, TheProgramGetsTheOdometryNeverTheReference) {
   ASSERT_EQ(inputs.robot.odometry.size(), inputs.truth.reference->size());
   double largest_m = 0.0;
   for (std::size_t i = 0; i < inputs.robot.odometry.size(); ++i) {
-    largest_m = std::max(largest_m, (inputs.robot.odometry.poses()[i].position -
-                                     inputs.truth.reference->poses()[i].position).norm());
+    largest_m = std::max(
+        largest_m, (inputs.robot.odometry.poses()[i].position - inputs.truth.reference->poses()[i].position).norm());
   }
   EXPECT_GT(largest_m, 0.01);
   EXPECT_FALSE(inputs.odometry_is_reference);
@@ -112,7 +112,9 @@ TEST(OdometryAdapterTest, TheTrajectoryIsTheOdometryAndTheMapIsRenderedFromIt) {
   EXPECT_DOUBLE_EQ(outputs.map.resolution_m, spec.evaluation.map_resolution_m);
   ASSERT_EQ(outputs.stages.size(), spec.evaluation.stages);
   // The last stage is the final map; an earlier stage has seen fewer scans, so fewer known cells.
-  const auto known = [](const cv::Mat& image) { return image.total() - static_cast<std::size_t>(cv::countNonZero(image == kStageUnknown)); };
+  const auto known = [](const cv::Mat& image) {
+    return image.total() - static_cast<std::size_t>(cv::countNonZero(image == kStageUnknown));
+  };
   EXPECT_LT(known(outputs.stages.front()), known(outputs.stages.back()));
   EXPECT_EQ(outputs.stages.back().rows, outputs.map.height);
 

@@ -99,7 +99,8 @@ TEST(ShippedConfigsTest, TheParameterSweepExampleVariesOneAndTwoParameters) {
   // (4 + 2 x 2 + 1 odometry) groups x 3 iterations, on one sequence and one noise setting.
   EXPECT_EQ(ExpandMatrix(config).size(), 27u);
   ASSERT_EQ(config.noise.size(), 1u);
-  EXPECT_TRUE(config.noise[0].odometry.has_value()) << "intel is corrected: without noise its odometry is the reference";
+  EXPECT_TRUE(config.noise[0].odometry.has_value())
+      << "intel is corrected: without noise its odometry is the reference";
   EXPECT_FALSE(config.evaluation.rpe_segments_m) << "segment lengths from the reference path";
 }
 

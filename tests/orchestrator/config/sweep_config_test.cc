@@ -253,7 +253,8 @@ TEST_F(SweepConfigTest, WrongTypesNameTheFieldAndWhatWasExpected) {
               HasSubstr(Located(6, 13) + "iterations: expected a whole number >= 0, got 'many'"));
   EXPECT_THAT(ErrorOf(std::string(kMinimal) + "iterations: 0\n"),
               HasSubstr(Located(6, 13) + "iterations: expected a whole number from 1 to 1000000, got '0'"));
-  EXPECT_THAT(ErrorOf(std::string(kMinimal) + "seed: -1\n"), HasSubstr(Located(6, 7) + "seed: expected a whole number"));
+  EXPECT_THAT(ErrorOf(std::string(kMinimal) + "seed: -1\n"),
+              HasSubstr(Located(6, 7) + "seed: expected a whole number"));
   EXPECT_THAT(ErrorOf(std::string(kMinimal) + "seed_policy: random\n"),
               HasSubstr(Located(6, 14) + "seed_policy: expected per_iteration, per_run or fixed, got 'random'"));
   EXPECT_THAT(ErrorOf(R"(name: mini
@@ -262,13 +263,15 @@ algorithms:
 sequences: [lab]
 )"),
               HasSubstr(Located(3, 47) + "algorithms[0].timeout_s: expected a finite number, got 'soon'"));
-  EXPECT_THAT(ErrorOf(R"(name: mini
+  EXPECT_THAT(
+      ErrorOf(R"(name: mini
 algorithms:
   - {name: odo, adapter: odometry, parameters: {a: {b: 1}}}
 sequences: [lab]
 )"),
-              HasSubstr(Located(3, 52) + "algorithms[0].parameters.a: expected a number, text or true/false, got a map"));
-  EXPECT_THAT(ErrorOf("name: a/b\nalgorithms: []\n"), HasSubstr(Located(1, 7) + "name: expected a name of [A-Za-z0-9_.-]"));
+      HasSubstr(Located(3, 52) + "algorithms[0].parameters.a: expected a number, text or true/false, got a map"));
+  EXPECT_THAT(ErrorOf("name: a/b\nalgorithms: []\n"),
+              HasSubstr(Located(1, 7) + "name: expected a name of [A-Za-z0-9_.-]"));
   EXPECT_THAT(ErrorOf("name: x\nalgorithms: odo\nsequences: [lab]\n"),
               HasSubstr(Located(2, 13) + "algorithms: expected a non-empty list, got 'odo'"));
   EXPECT_THAT(ErrorOf("- just\n- a list\n"), HasSubstr(":1:1: expected a sweep"));
@@ -297,7 +300,8 @@ TEST_F(SweepConfigTest, MissingFilesAreErrors) {
               HasSubstr(Located(6, 10) + "catalog: expected a dataset catalog file, got no such file " +
                         (dir_.path() / "nowhere.yaml").string()));
   // A catalog sequence whose log is not there: the entry, the file and where to get it.
-  const std::string gone = ErrorOf("name: x\nalgorithms: [{name: odo, adapter: odometry}]\nsequences:\n  - lab\n  - gone\n");
+  const std::string gone =
+      ErrorOf("name: x\nalgorithms: [{name: odo, adapter: odometry}]\nsequences:\n  - lab\n  - gone\n");
   EXPECT_THAT(gone, HasSubstr(Located(5, 5) + "sequences[1]: sequence 'gone': expected its file " +
                               (dir_.path() / "data/gone.log").string()));
   EXPECT_THAT(gone, HasSubstr("get it from: http://example.org/gone.log"));
@@ -371,7 +375,8 @@ algorithms:
 sequences: [lab]
 )"),
               HasSubstr(Located(5, 21) + "algorithms[0].command.argv: expected a non-empty list"));
-  EXPECT_THAT(ErrorOf(R"(name: x
+  EXPECT_THAT(
+      ErrorOf(R"(name: x
 algorithms:
   - name: a
     adapter: command
@@ -380,7 +385,7 @@ algorithms:
       trajectory: {path: t.tum, format: tum}
 sequences: [lab]
 )"),
-              HasSubstr(Located(6, 20) + "algorithms[0].command.argv[1]: unknown placeholder {inptu}; accepted: {input}"));
+      HasSubstr(Located(6, 20) + "algorithms[0].command.argv[1]: unknown placeholder {inptu}; accepted: {input}"));
   EXPECT_THAT(ErrorOf(R"(name: x
 algorithms:
   - name: a
@@ -394,7 +399,8 @@ sequences: [lab]
               HasSubstr(Located(7, 20) +
                         "algorithms[0].command.argv[1]: {param:iterations} names no parameter of the algorithm "
                         "(declared: particles)"));
-  EXPECT_THAT(ErrorOf(R"(name: x
+  EXPECT_THAT(
+      ErrorOf(R"(name: x
 algorithms:
   - name: a
     adapter: command
@@ -403,7 +409,7 @@ algorithms:
       trajectory: {path: t.tum, format: g2o}
 sequences: [lab]
 )"),
-              HasSubstr(Located(7, 41) + "algorithms[0].command.trajectory.format: expected tum, kitti, csv, mrpt or carmen"));
+      HasSubstr(Located(7, 41) + "algorithms[0].command.trajectory.format: expected tum, kitti, csv, mrpt or carmen"));
   EXPECT_THAT(ErrorOf(R"(name: x
 algorithms:
   - name: a
@@ -432,8 +438,7 @@ TEST_F(SweepConfigTest, TheSandboxKeysAreCheckedAndAServerRefusesTheNetworkUnles
   EXPECT_TRUE(algorithm.network);
   EXPECT_EQ(algorithm.disk_limit_mb, 16u);
   EXPECT_EQ(algorithm.process_limit, 32u);
-  EXPECT_EQ(algorithm.command->read_only,
-            (std::vector<std::string>{(dir_ / "tool-config").string(), "/usr/share"}));
+  EXPECT_EQ(algorithm.command->read_only, (std::vector<std::string>{(dir_ / "tool-config").string(), "/usr/share"}));
   config = Parse(kMinimal);
   EXPECT_FALSE(config.algorithms.at(0).network);
   EXPECT_EQ(config.algorithms.at(0).disk_limit_mb, kDefaultDiskLimitMb);
@@ -444,8 +449,10 @@ TEST_F(SweepConfigTest, TheSandboxKeysAreCheckedAndAServerRefusesTheNetworkUnles
                         " does not exist"));
   EXPECT_THAT(ErrorOf(head + command + "      read_only: /usr\n"),
               HasSubstr(Located(9, 18) + "algorithms[0].command.read_only: expected a list of folders and files"));
-  EXPECT_THAT(ErrorOf(head + "    process_limit: 1\n" + command), HasSubstr(Located(6, 20) + "algorithms[0].process_limit: expected"));
-  EXPECT_THAT(ErrorOf(head + "    disk_limit_mb: 0\n" + command), HasSubstr(Located(6, 20) + "algorithms[0].disk_limit_mb: expected"));
+  EXPECT_THAT(ErrorOf(head + "    process_limit: 1\n" + command),
+              HasSubstr(Located(6, 20) + "algorithms[0].process_limit: expected"));
+  EXPECT_THAT(ErrorOf(head + "    disk_limit_mb: 0\n" + command),
+              HasSubstr(Located(6, 20) + "algorithms[0].disk_limit_mb: expected"));
   EXPECT_THAT(ErrorOf(head + "    network: maybe\n" + command), HasSubstr("algorithms[0].network"));
 
   // A submitted sweep: no network without --allow-network, no read_only outside the allowed roots.
@@ -468,16 +475,20 @@ sequences: [lab]
   EXPECT_THAT(ErrorOf("name: x\nalgorithms: [{name: a, adapter: odometry}]\nsequences: [lab, sim, lab]\n"),
               HasSubstr(Located(3, 23) + "sequences[2]: expected a unique name, got 'lab' a second time"));
   // Renaming makes a second use of one catalog entry legal.
-  EXPECT_NO_THROW(Parse("name: x\nalgorithms: [{name: a, adapter: odometry}]\nsequences: [lab, {catalog: lab, name: l2}]\n"));
-  EXPECT_THAT(ErrorOf("name: x\nalgorithms: [{name: a, adapter: odometry}]\nsequences: [lab]\nnoise: [{name: n}, {name: n}]\n"),
-              HasSubstr(Located(4, 27) + "noise[1].name: expected a unique name, got 'n' a second time"));
-  EXPECT_THAT(ErrorOf("name: x\nalgorithms:\n  - {name: a, adapter: odometry, parameters: {p: [1, 2, 1]}}\nsequences: [lab]\n"),
-              HasSubstr(Located(3, 57) + "algorithms[0].parameters.p: value 1 is listed twice"));
+  EXPECT_NO_THROW(
+      Parse("name: x\nalgorithms: [{name: a, adapter: odometry}]\nsequences: [lab, {catalog: lab, name: l2}]\n"));
+  EXPECT_THAT(
+      ErrorOf("name: x\nalgorithms: [{name: a, adapter: odometry}]\nsequences: [lab]\nnoise: [{name: n}, {name: n}]\n"),
+      HasSubstr(Located(4, 27) + "noise[1].name: expected a unique name, got 'n' a second time"));
+  EXPECT_THAT(
+      ErrorOf("name: x\nalgorithms:\n  - {name: a, adapter: odometry, parameters: {p: [1, 2, 1]}}\nsequences: [lab]\n"),
+      HasSubstr(Located(3, 57) + "algorithms[0].parameters.p: value 1 is listed twice"));
 }
 
 TEST_F(SweepConfigTest, IncludeAndExcludeMustNameWhatExists) {
-  const std::string head = "name: x\nalgorithms:\n  - {name: a, adapter: odometry, parameters: {p: [1, 2]}}\n"
-                           "sequences: [lab]\nnoise: [{name: clean}]\n";
+  const std::string head =
+      "name: x\nalgorithms:\n  - {name: a, adapter: odometry, parameters: {p: [1, 2]}}\n"
+      "sequences: [lab]\nnoise: [{name: clean}]\n";
   EXPECT_THAT(ErrorOf(head + "exclude:\n  - {algorithm: b}\n"),
               HasSubstr(Located(7, 17) + "exclude[0].algorithm: expected one of the sweep's names (a), got 'b'"));
   EXPECT_THAT(ErrorOf(head + "exclude:\n  - {sequence: sim}\n"),
@@ -491,7 +502,8 @@ TEST_F(SweepConfigTest, IncludeAndExcludeMustNameWhatExists) {
               HasSubstr(Located(7, 5) + "include[0]: expected at least an algorithm and a sequence"));
   EXPECT_THAT(ErrorOf(head + "include:\n  - {algorithm: a, sequence: lab, colour: red}\n"),
               HasSubstr(Located(7, 35) + "include[0].colour: unknown key"));
-  EXPECT_NO_THROW(Parse(head + "exclude:\n  - {parameters: {p: 2}}\ninclude:\n  - {algorithm: a, sequence: lab, parameters: {p: 3}}\n"));
+  EXPECT_NO_THROW(Parse(
+      head + "exclude:\n  - {parameters: {p: 2}}\ninclude:\n  - {algorithm: a, sequence: lab, parameters: {p: 3}}\n"));
 }
 
 TEST_F(SweepConfigTest, NoiseFieldsAreValidatedByTheEvaluatorRules) {
@@ -502,25 +514,34 @@ TEST_F(SweepConfigTest, NoiseFieldsAreValidatedByTheEvaluatorRules) {
 }
 
 TEST_F(SweepConfigTest, UnknownPathVariablesAreLocated) {
-  EXPECT_THAT(ErrorOf(R"(name: x
+  EXPECT_THAT(
+      ErrorOf(R"(name: x
 algorithms: [{name: odo, adapter: odometry}]
 sequences:
   - {name: mine, format: carmen, path: "${NOPE}/a.log", ground_truth: none}
 )"),
-              HasSubstr(Located(4, 5) + "sequences[0]: sequence 'mine': catalog path '${NOPE}/a.log': unknown variable"));
+      HasSubstr(Located(4, 5) + "sequences[0]: sequence 'mine': catalog path '${NOPE}/a.log': unknown variable"));
 }
 
 // Whatever the text, the reader answers with a SweepConfig or an InputError, never another exception.
 TEST_F(SweepConfigTest, NeverFailsOtherwiseOnMalformedInput) {
   const std::string valid = std::string(kMinimal) + "noise: [{name: n, range: {sigma_m: 0.1}}]\n";
   std::vector<std::string> texts = {
-      "", "~", "42", "[]", "{}", "name: {a: b}", "{[a]: 1}", "name: x\n[: y",
+      "",
+      "~",
+      "42",
+      "[]",
+      "{}",
+      "name: {a: b}",
+      "{[a]: 1}",
+      "name: x\n[: y",
       "name: x\nalgorithms: [[1]]\nsequences: [lab]\n",
       "name: x\nalgorithms: [{name: [a], adapter: {b: c}}]\nsequences: [[lab]]\n",
       "name: x\nalgorithms: [{name: a, adapter: odometry, parameters: [1]}]\nsequences: [lab]\n",
       "name: x\nalgorithms: [{name: a, adapter: odometry}]\nsequences: [{catalog: [x]}]\n",
       "name: x\nalgorithms: [{name: a, adapter: odometry}]\nsequences: [lab]\nexclude: [{parameters: {[k]: 1}}]\n",
-      "name: &a x\nalgorithms: *a\nsequences: [lab]\n", std::string("name: \t\0\x01", 9)};
+      "name: &a x\nalgorithms: *a\nsequences: [lab]\n",
+      std::string("name: \t\0\x01", 9)};
   // Every prefix of a valid file, cut anywhere.
   for (std::size_t cut = 0; cut < valid.size(); cut += 3) texts.push_back(valid.substr(0, cut));
   for (const std::string& text : texts) {
@@ -543,8 +564,9 @@ TEST_F(SweepConfigTest, SegmentLengthsAreAutoAListOrNone) {
   ASSERT_TRUE(none.evaluation.rpe_segments_m);
   EXPECT_TRUE(none.evaluation.rpe_segments_m->empty());
   for (const char* bad : {"[5, 5]", "[0]", "[-1, 4]", "[ten]", "sometimes", "{a: 1}"}) {
-    EXPECT_THAT(ErrorOf(std::string(kMinimal) + "evaluation: {rpe_segments_m: " + bad + "}\n"),
-                HasSubstr(Located(6, 30) + "evaluation.rpe_segments_m: expected auto or a list of distinct segment lengths"))
+    EXPECT_THAT(
+        ErrorOf(std::string(kMinimal) + "evaluation: {rpe_segments_m: " + bad + "}\n"),
+        HasSubstr(Located(6, 30) + "evaluation.rpe_segments_m: expected auto or a list of distinct segment lengths"))
         << bad;
   }
   // Thresholds may name a segment metric by its length.

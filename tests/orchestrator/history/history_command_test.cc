@@ -107,9 +107,10 @@ algorithms: [{name: icp-slam, adapter: odometry}]
 sequences:
   - {name: floor, format: simulated, ground_truth: exact, simulation: {floor_plan: {seed: 3}}}
 regression: {alpha: 0.000001, min_effect: 0.2}
-)").string();
-  const std::vector<std::string> compare = {"compare", Path("noisier"), "--baseline-label", "base", "--history",
-                                            Path("h.sqlite"), "--json", "--config", config};
+)")
+                                 .string();
+  const std::vector<std::string> compare = {"compare",        Path("noisier"), "--baseline-label", "base", "--history",
+                                            Path("h.sqlite"), "--json",        "--config",         config};
   const CommandResult strict = RunHistory(compare);
   EXPECT_EQ(strict.exit_code, 0) << strict.out;
   EXPECT_DOUBLE_EQ(nlohmann::json::parse(strict.out)["alpha"].get<double>(), 1e-6);
@@ -127,9 +128,9 @@ TEST_F(HistoryCommandTest, BadUsageIsAnError) {
   RunHistory({"record", Path("night1"), "--history", Path("h.sqlite"), "--label", "base"});
   // Neither or both of --previous / --baseline-label.
   EXPECT_THROW(RunHistory({"compare", Path("rerun"), "--history", Path("h.sqlite")}), evaluator::InputError);
-  EXPECT_THROW(RunHistory({"compare", Path("rerun"), "--previous", "--baseline-label", "base", "--history",
-                           Path("h.sqlite")}),
-               CLI::ParseError);
+  EXPECT_THROW(
+      RunHistory({"compare", Path("rerun"), "--previous", "--baseline-label", "base", "--history", Path("h.sqlite")}),
+      CLI::ParseError);
   EXPECT_THROW(RunHistory({"compare", Path("rerun"), "--baseline-label", "nope", "--history", Path("h.sqlite")}),
                evaluator::InputError);
   EXPECT_THROW(RunHistory({"compare", Path("rerun"), "--previous", "--history", Path("missing.sqlite")}),

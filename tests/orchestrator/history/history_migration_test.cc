@@ -52,15 +52,18 @@ void WriteVersion1History(const std::filesystem::path& file, const std::vector<O
   int id = 0;
   for (const OldNight& night : nights) {
     ++id;
-    db.Execute(fmt::format("INSERT INTO nights VALUES({}, '{}', '{}', {}, 'nightly', '2026-11-{}T02:00:00Z', "
-                           "'2026-11-{}T05:00:00Z', '')",
-                           id, night.label, night.result_dir, night.sweep_id, 10 + id, 10 + id));
-    db.Execute(fmt::format("INSERT INTO samples VALUES({}, 'icp-slam', 'intel', 'noisy', 'ape_trans', 'rmse', 'm', "
-                           "'{}')",
-                           id, night.values_json));
-    db.Execute(fmt::format("INSERT INTO samples VALUES({}, 'icp-slam', 'intel', 'noisy', 'corners', 'value', "
-                           "'count', '[40, 41]')",
-                           id));
+    db.Execute(
+        fmt::format("INSERT INTO nights VALUES({}, '{}', '{}', {}, 'nightly', '2026-11-{}T02:00:00Z', "
+                    "'2026-11-{}T05:00:00Z', '')",
+                    id, night.label, night.result_dir, night.sweep_id, 10 + id, 10 + id));
+    db.Execute(
+        fmt::format("INSERT INTO samples VALUES({}, 'icp-slam', 'intel', 'noisy', 'ape_trans', 'rmse', 'm', "
+                    "'{}')",
+                    id, night.values_json));
+    db.Execute(
+        fmt::format("INSERT INTO samples VALUES({}, 'icp-slam', 'intel', 'noisy', 'corners', 'value', "
+                    "'count', '[40, 41]')",
+                    id));
     db.Execute(fmt::format("INSERT INTO cells VALUES({}, 'icp-slam', 'intel', 'noisy', 5, 1)", id));
   }
 }
@@ -121,8 +124,8 @@ TEST_F(HistoryMigrationTest, RowsKeepTheirValuesAndGetTheModeTheirResultsSay) {
   ASSERT_EQ(store.Nights().size(), 7u);
 
   const std::vector<std::pair<std::string, std::string>> expected = {
-      {"old", "reference"}, {"old2", "reference"}, {"planned", "recorded"}, {"both", "mixed"},
-      {"later", "recorded"}, {"gone1", "unknown"}, {"gone2", "unknown"}};
+      {"old", "reference"},  {"old2", "reference"}, {"planned", "recorded"}, {"both", "mixed"},
+      {"later", "recorded"}, {"gone1", "unknown"},  {"gone2", "unknown"}};
   for (const auto& [label, mode] : expected) {
     const Night night = LoadNight(store, label);
     ASSERT_EQ(night.series.size(), 2u) << label;

@@ -175,7 +175,8 @@ TEST(OdometrySeriesTest, RegressionWithinOneModeIsStillFound) {
   testing::WriteSyntheticSweep(dir / "after", worse);
   testing::WriteSyntheticSweep(dir / "after", same);
 
-  const Comparison comparison = CompareNights(ReadNight(dir / "before", "before"), ReadNight(dir / "after", "after"), {});
+  const Comparison comparison =
+      CompareNights(ReadNight(dir / "before", "before"), ReadNight(dir / "after", "after"), {});
   EXPECT_EQ(comparison.Count(Verdict::kRegression), 1u) << ComparisonToJson(comparison).dump(2);
   const std::vector<const Finding*> ape = FindingsOf(comparison, "ape_trans");
   ASSERT_EQ(ape.size(), 2u);

@@ -85,7 +85,8 @@ TEST(RegressionTest, AMapScoreThatGrowsIsAnImprovementAndOneThatFallsARegression
     EXPECT_EQ(worse.findings[0].verdict, Verdict::kRegression) << score;
   }
   // An error that grows the same way stays a regression.
-  const Comparison chamfer = CompareNights(NightWith("before", "map_chamfer", low), NightWith("after", "map_chamfer", high), {});
+  const Comparison chamfer =
+      CompareNights(NightWith("before", "map_chamfer", low), NightWith("after", "map_chamfer", high), {});
   EXPECT_EQ(chamfer.findings[0].verdict, Verdict::kRegression);
 }
 

@@ -55,14 +55,14 @@ inline std::string SyntheticParametersText(const nlohmann::json& parameters) {
 
 inline nlohmann::json SyntheticSpec(const SyntheticSweep& sweep, const std::string& run_id, int iteration) {
   nlohmann::json spec = {
-          {"run_id", run_id},
-          {"sweep", sweep.name},
-          {"algorithm", {{"name", sweep.algorithm}, {"adapter", "mrpt-icp-slam"}, {"parameters", sweep.parameters}}},
-          {"sequence", {{"name", sweep.sequence}, {"format", "carmen"}, {"ground_truth", sweep.ground_truth}}},
-          {"noise", {{"name", sweep.noise}, {"odometry", {{"alpha1", sweep.odometry_sigma}}}, {"range", nullptr}}},
-          {"iteration", iteration},
-          {"seed", sweep.seed * 1000 + static_cast<std::uint32_t>(iteration)},
-          {"thresholds", nlohmann::json::array()}};
+      {"run_id", run_id},
+      {"sweep", sweep.name},
+      {"algorithm", {{"name", sweep.algorithm}, {"adapter", "mrpt-icp-slam"}, {"parameters", sweep.parameters}}},
+      {"sequence", {{"name", sweep.sequence}, {"format", "carmen"}, {"ground_truth", sweep.ground_truth}}},
+      {"noise", {{"name", sweep.noise}, {"odometry", {{"alpha1", sweep.odometry_sigma}}}, {"range", nullptr}}},
+      {"iteration", iteration},
+      {"seed", sweep.seed * 1000 + static_cast<std::uint32_t>(iteration)},
+      {"thresholds", nlohmann::json::array()}};
   // A run.json from before the mode existed has a group without "odometry".
   spec["group"] = {{"sequence", sweep.sequence},
                    {"algorithm", sweep.algorithm},
@@ -87,7 +87,8 @@ inline std::vector<double> WriteSyntheticSweep(const std::filesystem::path& dir,
   std::vector<double> ape;
   for (int i = 0; i < sweep.iterations; ++i) {
     const std::string run_id = sweep.algorithm + "-" + sweep.sequence + "-" + sweep.noise + "-" + sweep.odometry +
-                               SyntheticParametersText(sweep.parameters) + "-i" + std::to_string(i) + "-" + std::to_string(sweep.seed);
+                               SyntheticParametersText(sweep.parameters) + "-i" + std::to_string(i) + "-" +
+                               std::to_string(sweep.seed);
     const nlohmann::json spec = SyntheticSpec(sweep, run_id, i);
     nlohmann::json result = {{"run_id", run_id},
                              {"status", "ok"},
@@ -106,8 +107,8 @@ inline std::vector<double> WriteSyntheticSweep(const std::filesystem::path& dir,
                              {"warnings", nlohmann::json::array()}};
     const double rmse_m = sweep.odometry_sigma * 10.0 * std::exp(scatter(random));
     const double corners = 40.0 + std::round(corner_noise(random));
-    const bool failed = std::find(sweep.failed_iterations.begin(), sweep.failed_iterations.end(), i) !=
-                        sweep.failed_iterations.end();
+    const bool failed =
+        std::find(sweep.failed_iterations.begin(), sweep.failed_iterations.end(), i) != sweep.failed_iterations.end();
     if (failed) {
       result["status"] = "failed";
       result["failure_kind"] = "timeout";

@@ -75,10 +75,9 @@ TEST(ExpandMatrixTest, CarriesTheResolvedSettingsIntoEveryRun) {
 
 TEST(ExpandMatrixTest, AThresholdThatNeedsAReferenceHoldsOnlyWhereThereIsOne) {
   SweepConfig config = testing::TwoByTwo();
-  config.thresholds = {Threshold{"ape_trans", "rmse", 1.0, std::nullopt},
-                       Threshold{"relations_trans", "mean", 0.5, std::nullopt},
-                       Threshold{"map_chamfer", "value", 0.2, std::nullopt},
-                       Threshold{"corners", "value", 100.0, std::nullopt}};
+  config.thresholds = {
+      Threshold{"ape_trans", "rmse", 1.0, std::nullopt}, Threshold{"relations_trans", "mean", 0.5, std::nullopt},
+      Threshold{"map_chamfer", "value", 0.2, std::nullopt}, Threshold{"corners", "value", 100.0, std::nullopt}};
   config.sequences[0].entry.ground_truth = evaluator::GroundTruthKind::kCorrectedPoses;
   config.sequences[0].entry.relations_path = "/data/seq1.relations";
   for (const RunSpec& run : ExpandMatrix(config)) {
@@ -162,7 +161,8 @@ TEST(ExpandMatrixTest, PerRunSeedsDifferBetweenCellsAndFollowTheFormula) {
     seeds.insert(run.seed);
     json identity = RunIdentity(run);
     identity.erase("seed");
-    EXPECT_EQ(run.seed, evaluator::DeriveSeed(42 ^ Fnv1a64(identity.dump()), static_cast<std::uint64_t>(run.iteration)));
+    EXPECT_EQ(run.seed,
+              evaluator::DeriveSeed(42 ^ Fnv1a64(identity.dump()), static_cast<std::uint64_t>(run.iteration)));
   }
   EXPECT_EQ(seeds.size(), runs.size());
   // Same config, same seeds.

@@ -8,8 +8,8 @@
 namespace slamsweep::orchestrator {
 namespace {
 
-using ::testing::HasSubstr;
 using nlohmann::json;
+using ::testing::HasSubstr;
 
 // The example of orchestrator/DESIGN.md "run.json", written out by hand.
 const json kDesignExample = json::parse(R"({
@@ -180,8 +180,8 @@ TEST(RunSpecTest, SameEvaluationComparesTheScoringOptions) {
 
 TEST(RunSpecTest, WritesTheDesignDocumentFieldNames) {
   const json out = ToJson(FullSpec());
-  for (const char* key : {"run_id", "sweep", "algorithm", "sequence", "noise", "iteration", "seed", "evaluation",
-                          "thresholds"}) {
+  for (const char* key :
+       {"run_id", "sweep", "algorithm", "sequence", "noise", "iteration", "seed", "evaluation", "thresholds"}) {
     EXPECT_TRUE(out.contains(key)) << key;
   }
   for (const char* key : {"name", "adapter", "parameters", "timeout_s", "memory_limit_mb", "command"}) {

@@ -65,9 +65,9 @@ ProcStat Process(pid_t pid, pid_t parent, pid_t group, std::int64_t threads, std
 TEST(GroupUsageTest, DescendantsThatLeftTheGroupStillCountForTheirLeader) {
   // 100 leads group 100; 101 is its child in the group; 102 left with setsid, 103 is 102's child
   // (a sandbox's process 1 and its program); 200 leads another group; 300 belongs to neither.
-  const std::vector<ProcStat> processes = {Process(100, 1, 100, 1, 10),  Process(101, 100, 100, 2, 20),
+  const std::vector<ProcStat> processes = {Process(100, 1, 100, 1, 10),   Process(101, 100, 100, 2, 20),
                                            Process(102, 100, 102, 1, 30), Process(103, 102, 102, 4, 40),
-                                           Process(200, 1, 200, 1, 50),  Process(201, 200, 200, 1, 60),
+                                           Process(200, 1, 200, 1, 50),   Process(201, 200, 200, 1, 60),
                                            Process(300, 1, 300, 9, 70)};
   const auto usage = GroupUsageOf({100, 200}, processes, 4);
   EXPECT_EQ(usage.at(100).rss_kb, (10 + 20 + 30 + 40) * 4);

@@ -23,11 +23,11 @@ namespace {
 
 using ::slamsweep::testing::TempDir;
 using ::testing::HasSubstr;
-using ::testing::StartsWith;
 using testing::ProcessGone;
 using testing::ReadAll;
 using testing::ReadPidFile;
 using testing::Sh;
+using ::testing::StartsWith;
 
 TEST(RunProcessTest, ExitCodes) {
   const ProcessOutcome failed = RunProcess(Sh("exit 3"));
@@ -194,8 +194,8 @@ TEST(RunProcessTest, SupervisorDescriptorsDoNotLeakIntoTheChild) {
   const int inheritable = ::open("/dev/null", O_RDONLY);  // deliberately without O_CLOEXEC
   ASSERT_GE(inheritable, 3);
   const std::string fd = std::to_string(inheritable);
-  const ProcessOutcome outcome = RunProcess(
-      Sh("if [ -e /proc/$$/fd/" + fd + " ]; then echo leaked; else echo clean; fi", dir / "log.txt"));
+  const ProcessOutcome outcome =
+      RunProcess(Sh("if [ -e /proc/$$/fd/" + fd + " ]; then echo leaked; else echo clean; fi", dir / "log.txt"));
   ::close(inheritable);
   ASSERT_TRUE(outcome.ok()) << outcome.reason;
   EXPECT_EQ(ReadAll(dir / "log.txt"), "clean\n");

@@ -31,7 +31,8 @@ namespace fs = std::filesystem;
 /// -1 unknown, 0 free, 1 occupied: the classes map comparison sees (p >= 0.65 occupied, p <= 0.196 free).
 std::vector<int> Classes(const ev::OccupancyGrid& grid) {
   std::vector<int> classes;
-  for (float p : grid.cells) classes.push_back(ev::OccupancyGrid::IsUnknown(p) ? -1 : p >= 0.65f ? 1 : p <= 0.196f ? 0 : -1);
+  for (float p : grid.cells)
+    classes.push_back(ev::OccupancyGrid::IsUnknown(p) ? -1 : p >= 0.65f ? 1 : p <= 0.196f ? 0 : -1);
   return classes;
 }
 
@@ -121,7 +122,8 @@ TEST_F(ReferenceMapTest, TheRenderedMapLiesOnTheWallsOfTheFloorPlanTheScansWereC
       }
     }
   }
-  std::cout << "[ reference map ] of " << occupied << " occupied cells " << occupied_near_walls << " within a cell of a "
+  std::cout << "[ reference map ] of " << occupied << " occupied cells " << occupied_near_walls
+            << " within a cell of a "
             << "wall, " << occupied_on_walls << " on a wall cell; " << free_inside_walls << " of " << free
             << " free cells inside a wall\n";
   ASSERT_GT(occupied, 200u);

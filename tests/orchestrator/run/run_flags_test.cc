@@ -59,8 +59,7 @@ TEST(RunFlagsTest, ARunsFlagsJoinItsResultFlagsWithTheOdometryBooleans) {
   EXPECT_EQ(RunFlagsOf(planned_reference, json{{"odometry_is_reference", false}}), RunFlags{});
   EXPECT_EQ(RunFlagsOf(planned_reference, nullptr), RunFlags{RunFlag::kOdometryIsReference});
   // A result recorded before the flags field existed.
-  EXPECT_EQ(RunFlagsOf(json::object(), json{{"odometry_is_reference", true}}),
-            RunFlags{RunFlag::kOdometryIsReference});
+  EXPECT_EQ(RunFlagsOf(json::object(), json{{"odometry_is_reference", true}}), RunFlags{RunFlag::kOdometryIsReference});
   EXPECT_EQ(RunFlagsOf(json::object(), json{{"flags", {"stale", "unisolated"}}}),
             (RunFlags{RunFlag::kStale, RunFlag::kUnisolated}));
   EXPECT_THROW(RunFlagsOf(json::object(), json{{"flags", {"stale", 3}}}), evaluator::InputError);

@@ -1,10 +1,10 @@
 // slamsweep-hostile: a SLAM program that tries to cheat and to break out. Started by the worker
 // through the command adapter exactly as a SLAM program is, it prints one line per attempt,
 //   ATTEMPT <name>: refused (<why>)      or      ATTEMPT <name>: SUCCEEDED (<what it got>)
-// (and NOTE lines for attempts the test judges from outside), and then behaves: it writes the odometry it was given as its trajectory, so the run is scored.
-// Modes: "attempts" (everything but the limits), "fork" (a bounded fork storm that holds its
-// processes), "disk" (one file larger than the run's disk limit).
-// Arguments: --mode M --input ODOMETRY.tum --output-dir RAW --reference ABS --reference-dotdot REL
+// (and NOTE lines for attempts the test judges from outside), and then behaves: it writes the odometry it was given as
+// its trajectory, so the run is scored. Modes: "attempts" (everything but the limits), "fork" (a bounded fork storm
+// that holds its processes), "disk" (one file larger than the run's disk limit). Arguments: --mode M --input
+// ODOMETRY.tum --output-dir RAW --reference ABS --reference-dotdot REL
 //            --decoy FILE --host-tmp FILE --port N --marker TEXT --storm N --disk-mb N
 #include <arpa/inet.h>
 #include <dirent.h>
@@ -129,8 +129,9 @@ void Attempts(const std::string& raw_dir) {
     bool ok = false;
     std::string environ = ReadSome("/proc/" + target + "/environ", ok, 1 << 20);
     const bool found = ok && environ.find(Arg("marker")) != std::string::npos;
-    Report("proc_ppid_environ", found,
-           "/proc/" + target + "/environ: " + (ok ? (found ? "holds the worker's secret" : "no secret in it") : Error()));
+    Report(
+        "proc_ppid_environ", found,
+        "/proc/" + target + "/environ: " + (ok ? (found ? "holds the worker's secret" : "no secret in it") : Error()));
   }
   {
     bool ok = false;
@@ -138,7 +139,8 @@ void Attempts(const std::string& raw_dir) {
     for (char& c : cmdline) c = c == '\0' ? ' ' : c;
     const bool found = ok && cmdline.find(" worker ") != std::string::npos;
     Report("proc_ppid_cmdline", found,
-           "/proc/" + target + "/cmdline: " + (ok ? (found ? cmdline.substr(0, 200) : "not the worker's: " + cmdline.substr(0, 80)) : Error()));
+           "/proc/" + target + "/cmdline: " +
+               (ok ? (found ? cmdline.substr(0, 200) : "not the worker's: " + cmdline.substr(0, 80)) : Error()));
   }
   TryRead("proc_ppid_root", "/proc/" + target + "/root" + Arg("reference"));
   {
@@ -156,13 +158,15 @@ void Attempts(const std::string& raw_dir) {
   TryRead("proc_1_environ", "/proc/1/environ");
   {
     const long attached = ::ptrace(PTRACE_ATTACH, parent, nullptr, nullptr);
-    Report("ptrace_parent", attached == 0, "PTRACE_ATTACH " + std::to_string(parent) + ": " + (attached == 0 ? "attached" : Error()));
+    Report("ptrace_parent", attached == 0,
+           "PTRACE_ATTACH " + std::to_string(parent) + ": " + (attached == 0 ? "attached" : Error()));
     if (attached == 0) ::ptrace(PTRACE_DETACH, parent, nullptr, nullptr);
   }
   if (worker != 0) {
     const pid_t group = ::getpgid(worker);
     const bool signalled = group > 0 && ::kill(-group, SIGCONT) == 0;
-    Report("kill_worker_group", signalled, "SIGCONT to the worker's group " + std::to_string(group) + ": " + (signalled ? "delivered" : Error()));
+    Report("kill_worker_group", signalled,
+           "SIGCONT to the worker's group " + std::to_string(group) + ": " + (signalled ? "delivered" : Error()));
   } else {
     Report("kill_worker_group", false, "the worker is not in this PID namespace: no pid to signal");
   }
@@ -188,8 +192,8 @@ void Attempts(const std::string& raw_dir) {
     __user_cap_header_struct header{_LINUX_CAPABILITY_VERSION_3, 0};
     __user_cap_data_struct data[2]{};
     const bool read = ::syscall(SYS_capget, &header, data) == 0;
-    const bool holds = !read || data[0].effective != 0 || data[1].effective != 0 || data[0].permitted != 0 ||
-                       data[1].permitted != 0;
+    const bool holds =
+        !read || data[0].effective != 0 || data[1].effective != 0 || data[0].permitted != 0 || data[1].permitted != 0;
     std::ostringstream caps;
     caps << std::hex << "effective " << data[1].effective << data[0].effective << ", permitted " << data[1].permitted
          << data[0].permitted;
@@ -211,7 +215,9 @@ void Attempts(const std::string& raw_dir) {
     ::waitpid(child, &status, 0);
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     Report("nested_user_namespace", code != 10,
-           code == 10 ? "unshare(CLONE_NEWUSER) refused" : code == 0 ? "made one and mounted a proc in it" : "made one");
+           code == 10  ? "unshare(CLONE_NEWUSER) refused"
+           : code == 0 ? "made one and mounted a proc in it"
+                       : "made one");
     ::mkdir("/tmp/hostile-proc", 0755);
     const int mounted = ::mount("proc", "/tmp/hostile-proc", "proc", 0, nullptr);
     Report("mount_proc", mounted == 0, mounted == 0 ? "mounted a proc" : "mount proc: " + Error());
@@ -221,8 +227,8 @@ void Attempts(const std::string& raw_dir) {
   const std::string out_dir = run_dir.substr(0, run_dir.rfind("/runs/"));
   int unmounted = 0;
   std::string umount_errors;
-  for (const std::string& target : std::vector<std::string>{out_dir, run_dir + "/input", raw_dir, Arg("shared"), "/tmp",
-                                                            "/proc", "/dev", "/usr"}) {
+  for (const std::string& target :
+       std::vector<std::string>{out_dir, run_dir + "/input", raw_dir, Arg("shared"), "/tmp", "/proc", "/dev", "/usr"}) {
     if (::umount2(target.c_str(), MNT_DETACH) == 0) {
       ++unmounted;
       umount_errors += target + " unmounted; ";
@@ -288,7 +294,8 @@ void BigFile(const std::string& raw_dir) {
     if (n <= 0) break;
     written += n;
   }
-  Report("big_file", written >= bytes, "wrote " + std::to_string(written >> 20) + " of " + std::to_string(bytes >> 20) + " MB");
+  Report("big_file", written >= bytes,
+         "wrote " + std::to_string(written >> 20) + " of " + std::to_string(bytes >> 20) + " MB");
   if (fd >= 0) ::close(fd);
 }
 

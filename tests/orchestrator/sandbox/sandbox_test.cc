@@ -25,8 +25,8 @@ namespace slamsweep::orchestrator {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::ReadAll;
 using ::slamsweep::testing::TempDir;
+using testing::ReadAll;
 
 /// The index of `item` in `argv`, or argv.size().
 std::size_t Find(const std::vector<std::string>& argv, const std::vector<std::string>& items) {
@@ -47,14 +47,23 @@ TEST(BwrapCommandTest, IsolatesEverythingAndShowsOnlyWhatItIsGiven) {
   const std::vector<std::string> argv = BwrapCommand(spec, {"/opt/tool/bin/slam", "--in", "x"}, "/data/run/raw", 7);
   EXPECT_EQ(argv.front(), "/usr/bin/bwrap");
   for (const std::vector<std::string>& option :
-       std::vector<std::vector<std::string>>{{"--unshare-user"}, {"--unshare-pid"}, {"--unshare-net"}, {"--unshare-ipc"},
-                                             {"--disable-userns"}, {"--die-with-parent"}, {"--new-session"},
-                                             {"--as-pid-1"}, {"--cap-drop", "ALL"}, {"--proc", "/proc"},
-                                             {"--dev", "/dev"}, {"--size", "8388608", "--tmpfs", "/tmp"},
+       std::vector<std::vector<std::string>>{{"--unshare-user"},
+                                             {"--unshare-pid"},
+                                             {"--unshare-net"},
+                                             {"--unshare-ipc"},
+                                             {"--disable-userns"},
+                                             {"--die-with-parent"},
+                                             {"--new-session"},
+                                             {"--as-pid-1"},
+                                             {"--cap-drop", "ALL"},
+                                             {"--proc", "/proc"},
+                                             {"--dev", "/dev"},
+                                             {"--size", "8388608", "--tmpfs", "/tmp"},
                                              {"--ro-bind", "/data/run/input", "/data/run/input"},
                                              {"--ro-bind", "/opt/tool/bin/slam", "/opt/tool/bin/slam"},
                                              {"--bind", "/data/run/raw", "/data/run/raw"},
-                                             {"--remount-ro", "/"}, {"--chdir", "/data/run/raw"}}) {
+                                             {"--remount-ro", "/"},
+                                             {"--chdir", "/data/run/raw"}}) {
     EXPECT_LT(Find(argv, option), argv.size()) << option.front();
   }
   // Already visible under /usr: not bound again.
@@ -208,11 +217,11 @@ TEST_F(SandboxedProcessTest, TheExactStatusComesBackWhetherSignalledOrExitedWith
 
 TEST_F(SandboxedProcessTest, OnlyTheSystemAndTheGivenFoldersExistInAnOwnNamespaceWithoutNetwork) {
   std::ofstream(dir_ / "secret.txt") << "truth\n";
-  const ProcessOutcome outcome = Run(
-      "ls / | tr '\\n' ' '; echo; for p in " + (dir_ / "secret.txt").string() +
-      " /home /root /var /etc/shadow; do [ -e $p ] && echo VISIBLE $p; done; "
-      "echo pids $(ls /proc | grep -c '^[0-9]'); grep -c : /proc/net/dev; id -u; "
-      "grep CapEff /proc/self/status; echo x > /etc/x 2>/dev/null && echo WROTE-ETC; true");
+  const ProcessOutcome outcome =
+      Run("ls / | tr '\\n' ' '; echo; for p in " + (dir_ / "secret.txt").string() +
+          " /home /root /var /etc/shadow; do [ -e $p ] && echo VISIBLE $p; done; "
+          "echo pids $(ls /proc | grep -c '^[0-9]'); grep -c : /proc/net/dev; id -u; "
+          "grep CapEff /proc/self/status; echo x > /etc/x 2>/dev/null && echo WROTE-ETC; true");
   EXPECT_TRUE(outcome.ok()) << outcome.reason << Log();
   const std::string log = Log();
   EXPECT_EQ(log.find("VISIBLE"), std::string::npos) << log;
@@ -229,7 +238,8 @@ TEST_F(SandboxedProcessTest, NoNestedUserNamespaceWithOrWithoutAProc) {
   // unshare(1) reports the refused system call; threads still start (clone3 refused, the C library falls back).
   const std::string script =
       "unshare -U true 2>&1; echo nested=$?; ls /proc >/dev/null 2>&1; echo proc=$?; "
-      "/usr/bin/python3 -c 'import threading; t = threading.Thread(target=print, args=(\"thread ran\",)); t.start(); t.join()'";
+      "/usr/bin/python3 -c 'import threading; t = threading.Thread(target=print, args=(\"thread ran\",)); t.start(); "
+      "t.join()'";
   for (const bool fresh_proc : {true, false}) {
     sandbox_.fresh_proc = fresh_proc;
     const ProcessOutcome outcome = Run(script);
@@ -242,7 +252,8 @@ TEST_F(SandboxedProcessTest, NoNestedUserNamespaceWithOrWithoutAProc) {
   // Without the filter and without --disable-userns, the same sandbox would allow one: the check can fail.
   sandbox_.fresh_proc = false;
   // Process 1's status line goes to descriptor 2, which it closes for the program: the echo is on stdout.
-  std::vector<std::string> argv = BwrapCommand(sandbox_, {"/bin/sh", "-c", "unshare -U true; echo nested=$?"}, dir_ / "raw", 2);
+  std::vector<std::string> argv =
+      BwrapCommand(sandbox_, {"/bin/sh", "-c", "unshare -U true; echo nested=$?"}, dir_ / "raw", 2);
   argv.erase(std::find(argv.begin(), argv.end(), "--no-user-namespaces"));
   ProcessSpec unfiltered;
   unfiltered.argv = {argv.begin(), argv.end()};
@@ -255,14 +266,14 @@ TEST_F(SandboxedProcessTest, NoNestedUserNamespaceWithOrWithoutAProc) {
 
 TEST_F(SandboxedProcessTest, AForkStormEndsAtTheProcessLimitAndNothingOutlivesTheRun) {
   // Like a fork bomb, it holds what it started and keeps trying.
-  const ProcessOutcome outcome = Run(
-      "(setsid sleep 300 &); exec /usr/bin/python3 -c 'import os, time\n"
-      "for i in range(100):\n"
-      "  try:\n"
-      "    if os.fork() == 0: time.sleep(30); os._exit(0)\n"
-      "  except OSError: pass\n"
-      "time.sleep(30)'",
-      60);
+  const ProcessOutcome outcome =
+      Run("(setsid sleep 300 &); exec /usr/bin/python3 -c 'import os, time\n"
+          "for i in range(100):\n"
+          "  try:\n"
+          "    if os.fork() == 0: time.sleep(30); os._exit(0)\n"
+          "  except OSError: pass\n"
+          "time.sleep(30)'",
+          60);
   EXPECT_EQ(outcome.ending, ProcessEnding::kProcessLimit) << outcome.reason << Log();
   EXPECT_NE(outcome.reason.find("process_limit"), std::string::npos) << outcome.reason;
   EXPECT_LT(outcome.wall_s, 30.0);
@@ -297,8 +308,8 @@ TEST_F(SandboxedProcessTest, AFileOverTheLimitEndsTheWriterWithSigxfsz) {
 }
 
 TEST_F(SandboxedProcessTest, MemoryIsCountedOverEverythingTheProgramStarted) {
-  ProcessSpec spec = testing::Sh("setsid sh -c 'head -c 300000000 /dev/zero | tail -c 300000000 >/dev/null; sleep 30' & wait",
-                                 dir_ / "log.txt");
+  ProcessSpec spec = testing::Sh(
+      "setsid sh -c 'head -c 300000000 /dev/zero | tail -c 300000000 >/dev/null; sleep 30' & wait", dir_ / "log.txt");
   spec.working_dir = dir_ / "raw";
   spec.sandbox = sandbox_;
   spec.memory_limit_mb = 100;

@@ -59,16 +59,17 @@ TEST_F(ServiceApiTest, SubmitWaitEqualsAPlainRunOfTheSameConfig) {
       << ReadAll(dir_ / "run.log");
   Server server(dir_ / "data", {"--jobs", "2"}, dir_ / "serve.log");
   ASSERT_TRUE(server.listening()) << server.Log();
-  const int code = RunToEnd({SLAMSWEEP_BINARY, "submit", config.string(), "--server", server.url(), "--wait", "--poll",
-                             "0.2", "--junit", (dir_ / "got" / "junit.xml").string(), "--report",
-                             (dir_ / "got" / "report").string()},
-                            dir_ / "submit.log", kLong);
+  const int code =
+      RunToEnd({SLAMSWEEP_BINARY, "submit", config.string(), "--server", server.url(), "--wait", "--poll", "0.2",
+                "--junit", (dir_ / "got" / "junit.xml").string(), "--report", (dir_ / "got" / "report").string()},
+               dir_ / "submit.log", kLong);
   const std::string submit_log = ReadAll(dir_ / "submit.log");
   ASSERT_EQ(code, 0) << submit_log << server.Log();
   EXPECT_THAT(submit_log, HasSubstr("[3/3] ok"));
 
   const fs::path result_dir = dir_ / "data" / "sweeps" / "1";
-  for (const char* file : {"results.sqlite", "summary.json", "summary.csv", "runs.csv", "junit.xml", "report/index.html"}) {
+  for (const char* file :
+       {"results.sqlite", "summary.json", "summary.csv", "runs.csv", "junit.xml", "report/index.html"}) {
     EXPECT_TRUE(fs::exists(result_dir / file)) << file;
   }
   const auto plain = RunsById(nlohmann::json::parse(ReadAll(dir_ / "plain" / "summary.json")));
@@ -126,8 +127,9 @@ TEST_F(ServiceApiTest, BadAndHostileRequestsGet4xxAndLeaveNothingBehind) {
                 dir_ / "serve.log");
   ASSERT_TRUE(server.listening()) << server.Log();
   const httplib::Headers auth = {{"Authorization", "Bearer s3cret-token-value"}};
-  const std::string good = "name: fine\nalgorithms:\n  - {name: odometry, adapter: odometry}\n"
-                           "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 20}\n";
+  const std::string good =
+      "name: fine\nalgorithms:\n  - {name: odometry, adapter: odometry}\n"
+      "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 20}\n";
   // 401 without or with a wrong token; the log says why but never shows a token.
   EXPECT_EQ(PostSweep(server, good).first, 401);
   EXPECT_EQ(PostSweep(server, good, "name=a.yaml", {{"Authorization", "Bearer not-the-token-at-all"}}).first, 401);
@@ -147,28 +149,41 @@ TEST_F(ServiceApiTest, BadAndHostileRequestsGet4xxAndLeaveNothingBehind) {
   const std::vector<Case> cases = {
       {"broken YAML", "name: [unclosed\n", "name=x.yaml", 400},
       {"not a map", "- just\n- a list\n", "name=x.yaml", 400},
-      {"huge iterations", "name: big\niterations: 1000000\nalgorithms:\n  - {name: odometry, adapter: odometry}\n"
-                          "sequences: [simulated-floor]\n", "name=x.yaml", 413},
-      {"more runs than the limit", "name: big\niterations: 51\nalgorithms:\n  - {name: odometry, adapter: odometry}\n"
-                                   "sequences: [simulated-floor]\n", "name=x.yaml", 413},
-      {"a number beyond 64 bits", "name: big\nseed: 99999999999999999999999999\nalgorithms:\n"
-                                  "  - {name: odometry, adapter: odometry}\nsequences: [simulated-floor]\n",
+      {"huge iterations",
+       "name: big\niterations: 1000000\nalgorithms:\n  - {name: odometry, adapter: odometry}\n"
+       "sequences: [simulated-floor]\n",
+       "name=x.yaml", 413},
+      {"more runs than the limit",
+       "name: big\niterations: 51\nalgorithms:\n  - {name: odometry, adapter: odometry}\n"
+       "sequences: [simulated-floor]\n",
+       "name=x.yaml", 413},
+      {"a number beyond 64 bits",
+       "name: big\nseed: 99999999999999999999999999\nalgorithms:\n"
+       "  - {name: odometry, adapter: odometry}\nsequences: [simulated-floor]\n",
        "name=x.yaml", 400},
-      {"path escape", "name: escape\nalgorithms:\n  - {name: odometry, adapter: odometry}\nsequences:\n"
-                      "  - {name: x, format: carmen, ground_truth: none, path: ../../../../../../etc/passwd}\n",
+      {"path escape",
+       "name: escape\nalgorithms:\n  - {name: odometry, adapter: odometry}\nsequences:\n"
+       "  - {name: x, format: carmen, ground_truth: none, path: ../../../../../../etc/passwd}\n",
        "name=x.yaml", 403},
-      {"catalog outside the roots", "name: escape\ncatalog: /etc/passwd\nalgorithms:\n"
-                                    "  - {name: odometry, adapter: odometry}\nsequences: [x]\n", "name=x.yaml", 403},
-      {"command adapter", "name: cmd\nalgorithms:\n  - name: c\n    adapter: command\n    command: {argv: [/bin/sh, "
-                          "-c, \"touch /tmp/owned\"], trajectory: {path: t.tum, format: tum}}\n"
-                          "sequences: [simulated-floor]\n", "name=x.yaml", 403},
-      {"network without --allow-network", "name: net\nalgorithms:\n  - {name: odometry, adapter: odometry, network: true}\n"
-                                          "sequences: [simulated-floor]\n", "name=x.yaml", 403},
+      {"catalog outside the roots",
+       "name: escape\ncatalog: /etc/passwd\nalgorithms:\n"
+       "  - {name: odometry, adapter: odometry}\nsequences: [x]\n",
+       "name=x.yaml", 403},
+      {"command adapter",
+       "name: cmd\nalgorithms:\n  - name: c\n    adapter: command\n    command: {argv: [/bin/sh, "
+       "-c, \"touch /tmp/owned\"], trajectory: {path: t.tum, format: tum}}\n"
+       "sequences: [simulated-floor]\n",
+       "name=x.yaml", 403},
+      {"network without --allow-network",
+       "name: net\nalgorithms:\n  - {name: odometry, adapter: odometry, network: true}\n"
+       "sequences: [simulated-floor]\n",
+       "name=x.yaml", 403},
       {"HTML in the sweep name", "name: \"<script>alert(1)</script>\"\n" + good.substr(good.find('\n') + 1),
        "name=x.yaml", 400},
       {"markup and shell in an algorithm name",
        "name: names\nalgorithms:\n  - {name: \"<b>$(reboot)</b>\", adapter: odometry}\n"
-       "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 20}\n", "name=x.yaml", 400},
+       "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 20}\n",
+       "name=x.yaml", 400},
       {"bad priority", good, "name=x.yaml&priority=1e999", 400},
       {"priority out of range", good, "name=x.yaml&priority=101", 400},
       {"relative base", good, "name=x.yaml&base=../..", 400},
@@ -181,8 +196,8 @@ TEST_F(ServiceApiTest, BadAndHostileRequestsGet4xxAndLeaveNothingBehind) {
   }
   EXPECT_EQ(SweepFolders(dir_ / "data"), 0u);
   EXPECT_EQ(GetJson(server, "/api/sweeps").at("sweeps").size(), 0u) << "a refused sweep was queued";
-  EXPECT_FALSE(fs::exists("/tmp/owned") && fs::last_write_time("/tmp/owned") > fs::file_time_type::clock::now() -
-                                                                                  std::chrono::minutes(5));
+  EXPECT_FALSE(fs::exists("/tmp/owned") &&
+               fs::last_write_time("/tmp/owned") > fs::file_time_type::clock::now() - std::chrono::minutes(5));
   // Unknown sweeps and paths are 404 with a JSON message; the server still serves.
   EXPECT_EQ(client.Get("/api/sweeps/999")->status, 404);
   EXPECT_EQ(client.Get("/api/sweeps/99999999999999999999")->status, 404);
@@ -272,9 +287,9 @@ TEST_F(ServiceApiTest, CancelStopsRunningRunsKeepsFinishedOnesAndSubmitWaitExits
                 dir_ / "serve.log");
   ASSERT_TRUE(server.listening()) << server.Log();
   const fs::path config = testing::WriteFile(dir_ / "cancel.yaml", fake.Yaml("cancel-me", {"fast", "slow"}, 2));
-  const pid_t submit = Spawn({SLAMSWEEP_BINARY, "submit", config.string(), "--server", server.url(), "--wait", "--poll",
-                              "0.2"},
-                             dir_ / "submit.log");
+  const pid_t submit =
+      Spawn({SLAMSWEEP_BINARY, "submit", config.string(), "--server", server.url(), "--wait", "--poll", "0.2"},
+            dir_ / "submit.log");
   // Both fast runs end; then a slow one runs (one slot is free for it).
   const auto deadline = Clock::now() + std::chrono::seconds(120);
   while (Clock::now() < deadline && !(fake.Invocations("fast") == 2 && fake.Invocations("slow") >= 1)) {
@@ -331,14 +346,15 @@ TEST_F(ServiceApiTest, Kill9ThenRestartLosesNothingAndRunsNothingTwice) {
 TEST_F(ServiceApiTest, SigtermDrainsRunningRunsAndExits0) {
   FakeProgramSweep fake(dir_.path());
   fake.SetSlow("slow", true);
-  Server server(dir_ / "data", {"--jobs", "1", "--allow-commands", "--allow-root", dir_.path().string(),
-                                "--drain-timeout", "30"},
+  Server server(dir_ / "data",
+                {"--jobs", "1", "--allow-commands", "--allow-root", dir_.path().string(), "--drain-timeout", "30"},
                 dir_ / "serve.log");
   ASSERT_TRUE(server.listening()) << server.Log();
   const auto [status, body] = PostSweep(server, fake.Yaml("drain", {"slow"}, 2));
   ASSERT_EQ(status, 201) << body.dump();
   const auto deadline = Clock::now() + std::chrono::seconds(60);
-  while (Clock::now() < deadline && fake.Invocations("slow") < 1) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  while (Clock::now() < deadline && fake.Invocations("slow") < 1)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
   ASSERT_EQ(fake.Invocations("slow"), 1u);
   kill(server.pid(), SIGTERM);
   std::this_thread::sleep_for(std::chrono::seconds(1));
@@ -363,13 +379,14 @@ TEST_F(ServiceApiTest, SigtermDrainsRunningRunsAndExits0) {
 TEST_F(ServiceApiTest, ARunStillGoingAfterTheDrainGraceIsStoppedAndQueuedAgain) {
   FakeProgramSweep fake(dir_.path());
   fake.SetSlow("slow", true);
-  const std::vector<std::string> args = {"--jobs", "1", "--allow-commands", "--allow-root", dir_.path().string(),
-                                         "--drain-timeout", "1"};
+  const std::vector<std::string> args = {
+      "--jobs", "1", "--allow-commands", "--allow-root", dir_.path().string(), "--drain-timeout", "1"};
   auto server = std::make_unique<Server>(dir_ / "data", args, dir_ / "serve.log");
   ASSERT_TRUE(server->listening()) << server->Log();
   ASSERT_EQ(PostSweep(*server, fake.Yaml("grace", {"slow"}, 1)).first, 201);
   const auto deadline = Clock::now() + std::chrono::seconds(60);
-  while (Clock::now() < deadline && fake.Invocations("slow") < 1) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  while (Clock::now() < deadline && fake.Invocations("slow") < 1)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
   ASSERT_EQ(fake.Invocations("slow"), 1u);
   EXPECT_EQ(server->Signal(SIGTERM, std::chrono::seconds(60)), 0) << server->Log();
   server.reset();

@@ -26,11 +26,12 @@ TEST(ServicePageTest, PagesLoadInChromiumUnderTheReportCspWithoutViolationsAndEs
   testing::TempDir dir;
   Server server(dir / "data", {"--jobs", "2"}, dir / "serve.log");
   ASSERT_TRUE(server.listening()) << server.Log();
-  const std::string yaml = "name: page-test\niterations: 2\nseed: 3\nevaluation: {stages: 4}\n"
-                           "algorithms:\n  - {name: odometry, adapter: odometry}\n"
-                           "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 30}\n";
-  const auto [status, body] = PostSweep(server, yaml, "name=page.yaml",
-                                        {{"X-Slamsweep-Submitter", "<script>alert('x')</script>&co"}});
+  const std::string yaml =
+      "name: page-test\niterations: 2\nseed: 3\nevaluation: {stages: 4}\n"
+      "algorithms:\n  - {name: odometry, adapter: odometry}\n"
+      "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 30}\n";
+  const auto [status, body] =
+      PostSweep(server, yaml, "name=page.yaml", {{"X-Slamsweep-Submitter", "<script>alert('x')</script>&co"}});
   ASSERT_EQ(status, 201) << body.dump();
   ASSERT_EQ(WaitForSweep(server, 1, {"ok"}, std::chrono::seconds(240)).value("report", ""), "ready");
   auto client = server.Client();
@@ -47,10 +48,10 @@ TEST(ServicePageTest, PagesLoadInChromiumUnderTheReportCspWithoutViolationsAndEs
   EXPECT_THAT(index->body, Not(HasSubstr("style=")));
   EXPECT_THAT(index->body, Not(HasSubstr("data:")));
 
-  for (const auto& [name, path, expected] :
-       std::vector<std::tuple<std::string, std::string, std::string>>{{"index", "/", "page-test"},
-                                                                      {"sweep", "/sweeps/1", "odometry-floor-clean-i1"},
-                                                                      {"report", "/sweeps/1/report/index.html", "floor"}}) {
+  for (const auto& [name, path, expected] : std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"index", "/", "page-test"},
+           {"sweep", "/sweeps/1", "odometry-floor-clean-i1"},
+           {"report", "/sweeps/1/report/index.html", "floor"}}) {
     const slamsweep::testing::ChromiumPage page = LoadInHeadlessChromium(server.url() + path, dir.path(), name);
     EXPECT_THAT(page.dom, HasSubstr(expected)) << name << " did not render; log:\n" << page.log;
     EXPECT_EQ(CspViolations(page.log), std::vector<std::string>{}) << name;

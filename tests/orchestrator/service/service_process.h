@@ -67,8 +67,8 @@ class Server {
   Server(const fs::path& data, const std::vector<std::string>& extra_args, const fs::path& log) : log_(log) {
     const fs::path port_file = data.parent_path() / (data.filename().string() + ".port");
     fs::remove(port_file);
-    std::vector<std::string> argv = {SLAMSWEEP_BINARY, "serve", "--data", data.string(), "--listen", "127.0.0.1:0",
-                                     "--port-file", port_file.string()};
+    std::vector<std::string> argv = {SLAMSWEEP_BINARY, "serve",       "--data",      data.string(),
+                                     "--listen",       "127.0.0.1:0", "--port-file", port_file.string()};
     argv.insert(argv.end(), extra_args.begin(), extra_args.end());
     pid_ = Spawn(argv, log);
     const auto deadline = Clock::now() + std::chrono::seconds(60);
@@ -179,9 +179,9 @@ class FakeProgramSweep {
                        "\nseed: 1\nevaluation: {stages: 4}\nalgorithms:\n";
     for (const std::string& algorithm : algorithms) {
       text += "  - name: " + algorithm + "\n    adapter: command\n    timeout_s: 300\n    command:\n      argv: [" +
-              program_.string() + ", \"{input}\", \"{output_dir}\", " + (dir_ / "control").string() + ", " +
-              algorithm + "]\n      input_format: tum\n      trajectory: {path: traj.tum, format: tum}\n" +
-              "      read_only: [" + (dir_ / "control").string() + "]\n";
+              program_.string() + ", \"{input}\", \"{output_dir}\", " + (dir_ / "control").string() + ", " + algorithm +
+              "]\n      input_format: tum\n      trajectory: {path: traj.tum, format: tum}\n" + "      read_only: [" +
+              (dir_ / "control").string() + "]\n";
     }
     return text + "sequences:\n  - {catalog: simulated-floor, name: floor, max_scans: 40}\n";
   }
@@ -231,8 +231,8 @@ class FakeProgramSweep {
     }
     const std::lock_guard<std::mutex> lock(mutex_);
     for (const Found& process : found) {
-      const bool forked_by_script = std::any_of(found.begin(), found.end(),
-                                                [&](const Found& other) { return other.pid == process.parent; });
+      const bool forked_by_script =
+          std::any_of(found.begin(), found.end(), [&](const Found& other) { return other.pid == process.parent; });
       if (!forked_by_script) seen_.emplace(process.pid + "@" + process.start_time, process.algorithm);
     }
   }

@@ -50,7 +50,8 @@ TEST(BearerAuthTest, AcceptsOnlyTheExactToken) {
   EXPECT_EQ(auth.Check(std::nullopt), BearerAuth::Verdict::kMissing);
   EXPECT_EQ(auth.Check(std::string_view("Basic dG9rLTEyMw==")), BearerAuth::Verdict::kMissing);
   EXPECT_EQ(auth.Check(std::string_view("Bearer ")), BearerAuth::Verdict::kMissing);
-  for (const char* wrong : {"Bearer tok-12", "Bearer tok-1234", "Bearer TOK-123", "Bearer xok-123", "Bearer tok-12\x00"}) {
+  for (const char* wrong :
+       {"Bearer tok-12", "Bearer tok-1234", "Bearer TOK-123", "Bearer xok-123", "Bearer tok-12\x00"}) {
     EXPECT_EQ(auth.Check(std::string_view(wrong)), BearerAuth::Verdict::kWrong) << wrong;
   }
   const BearerAuth open(std::nullopt);
@@ -151,7 +152,8 @@ TEST(QueueStoreTest, ARestartQueuesTheRunsLeftRunning) {
   sweep.config_name = "s.yaml";
   sweep.config_text = "name: s";
   sweep.submitter = "me";
-  const QueuedSweep added = queue.AddSweep(sweep, {{{"run_id", "a"}}, {{"run_id", "b"}}, {{"run_id", "c"}}}, dir / "sweeps");
+  const QueuedSweep added =
+      queue.AddSweep(sweep, {{{"run_id", "a"}}, {{"run_id", "b"}}, {{"run_id", "c"}}}, dir / "sweeps");
   EXPECT_EQ(added.id, 1);
   EXPECT_EQ(added.result_dir, dir / "sweeps" / "1");
   queue.SetRunState(1, "a", "ok", true, 2.0);
@@ -183,8 +185,11 @@ TEST(LeftoverSlurmJobsTest, OnlyTheArraysOfThisServersStateFolderAreCancelled) {
   testing::WriteFile(bin / "squeue",
                      "#!/bin/sh\n"
                      "echo \"77|/home/other/job.sh\"\n"
-                     "if ! grep -qx 41 \"" + (dir / "cancelled").string() + "\" 2>/dev/null; then\n"
-                     "  echo \"41|" + state.string() + "/array-9-0.sh\"\nfi\n");
+                     "if ! grep -qx 41 \"" +
+                         (dir / "cancelled").string() +
+                         "\" 2>/dev/null; then\n"
+                         "  echo \"41|" +
+                         state.string() + "/array-9-0.sh\"\nfi\n");
   testing::WriteFile(bin / "scancel", "#!/bin/sh\necho \"$1\" >> \"" + (dir / "cancelled").string() + "\"\n");
   fs::permissions(bin / "squeue", fs::perms::owner_all);
   fs::permissions(bin / "scancel", fs::perms::owner_all);
@@ -240,7 +245,10 @@ bool WaitForSleepingChild(pid_t pid) {
       std::ifstream in("/proc/" + std::to_string(child) + "/cmdline", std::ios::binary);
       std::stringstream bytes;
       bytes << in.rdbuf();
-      if (bytes.str() == std::string("sleep\0" "60\0", 9)) return true;
+      if (bytes.str() == std::string("sleep\0"
+                                     "60\0",
+                                     9))
+        return true;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }

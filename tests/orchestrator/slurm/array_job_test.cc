@@ -121,7 +121,8 @@ class BatchScriptTest : public ::testing::Test {
 TEST_F(BatchScriptTest, TaskNExecsTheWorkerOnLineNPlusOneWithItsOutputInWorkerLog) {
   const CommandOutput second = RunTask(1);
   EXPECT_EQ(second.exit_code, 5) << "the worker's exit code is the task's: " << second.output;
-  EXPECT_EQ(ReadText(dir_ / "runs" / "b c" / "worker.log"), "args: worker | " + (dir_ / "runs" / "b c").string() + "\n");
+  EXPECT_EQ(ReadText(dir_ / "runs" / "b c" / "worker.log"),
+            "args: worker | " + (dir_ / "runs" / "b c").string() + "\n");
   EXPECT_FALSE(fs::exists(dir_ / "runs" / "a" / "worker.log"));
   EXPECT_EQ(RunTask(0).exit_code, 5);
   EXPECT_TRUE(fs::exists(dir_ / "runs" / "a" / "worker.log"));

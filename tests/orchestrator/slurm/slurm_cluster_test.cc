@@ -159,7 +159,8 @@ TEST_F(SlurmClusterTest, AJobArrayGivesTheSameResultsAsTheLocalExecutor) {
 
   // It really went through Slurm: one array script, and the controller knows the finished tasks.
   std::size_t scripts = 0;
-  for (const auto& entry : fs::directory_iterator(work_ / "slurm" / "slurm")) scripts += entry.path().extension() == ".sh";
+  for (const auto& entry : fs::directory_iterator(work_ / "slurm" / "slurm"))
+    scripts += entry.path().extension() == ".sh";
   EXPECT_EQ(scripts, 1u);
   const CommandOutput queue = RunSlurmCommand({"squeue", "-h", "-t", "all", "-r", "-o", "%K %T"});
   ASSERT_TRUE(queue.ok()) << queue.output;

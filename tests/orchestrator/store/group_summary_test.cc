@@ -44,9 +44,12 @@ std::map<std::string, double> AteByGroup(const std::vector<GroupSummary>& groups
 TEST(GroupSummaryTest, AGroupRecordsItsSegmentLengthsAndWhetherItsRunsAgree) {
   slamsweep::testing::TempDir dir;
   ResultsStore store = ResultsStore::Open(dir / "results.sqlite");
-  store.RecordRun(1, MakeSpec("a0", "icp-slam", "intel", 0), WithSegments(MakeOkResult("a0"), {10, 20}, 2.0), "runs/a0");
-  store.RecordRun(1, MakeSpec("a1", "icp-slam", "intel", 1), WithSegments(MakeOkResult("a1"), {10, 20}, 4.0), "runs/a1");
-  store.RecordRun(1, MakeSpec("b0", "icp-slam", "fr079", 0), WithSegments(MakeOkResult("b0"), {10, 20}, 1.0), "runs/b0");
+  store.RecordRun(1, MakeSpec("a0", "icp-slam", "intel", 0), WithSegments(MakeOkResult("a0"), {10, 20}, 2.0),
+                  "runs/a0");
+  store.RecordRun(1, MakeSpec("a1", "icp-slam", "intel", 1), WithSegments(MakeOkResult("a1"), {10, 20}, 4.0),
+                  "runs/a1");
+  store.RecordRun(1, MakeSpec("b0", "icp-slam", "fr079", 0), WithSegments(MakeOkResult("b0"), {10, 20}, 1.0),
+                  "runs/b0");
   // Scored at other lengths (a --reuse-stale rerun): never pooled into the 10 m aggregate of the others.
   store.RecordRun(1, MakeSpec("b1", "icp-slam", "fr079", 1), WithSegments(MakeOkResult("b1"), {15}, 9.0), "runs/b1");
   const std::vector<GroupSummary> groups = SummarizeGroups(store.Runs());
@@ -95,7 +98,10 @@ TEST(GroupSummaryTest, RunsOnRecordedAndOnReferenceOdometryAreNeverPooled) {
   slamsweep::testing::TempDir dir;
   ResultsStore store = ResultsStore::Open(dir / "results.sqlite");
   json recorded = MakeSpec("r0", "icp-slam", "intel", 0);
-  recorded["group"] = {{"sequence", "intel"}, {"algorithm", "icp-slam"}, {"parameters", "ICP.maxIterations=80"}, {"noise", "clean"},
+  recorded["group"] = {{"sequence", "intel"},
+                       {"algorithm", "icp-slam"},
+                       {"parameters", "ICP.maxIterations=80"},
+                       {"noise", "clean"},
                        {"odometry", "recorded"}};
   json reference = MakeSpec("f0", "icp-slam", "intel", 0);
   reference["group"] = recorded["group"];

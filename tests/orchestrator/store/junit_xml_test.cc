@@ -16,10 +16,10 @@ namespace {
 
 using nlohmann::json;
 using ::testing::HasSubstr;
-using ::testing::Not;
 using testing::MakeFailedResult;
 using testing::MakeOkResult;
 using testing::MakeSpec;
+using ::testing::Not;
 
 // An independent XML parser (Python's ElementTree) reads the file back and reports its structure as JSON.
 constexpr const char* kReadBack = R"py(

@@ -48,15 +48,18 @@ TEST(ResultsStoreTest, CreatesSchemaAndReopens) {
     store.FinishSweep(sweep, "ok", 1);
   }
   EXPECT_EQ(QueryInt(file, "PRAGMA user_version"), kResultsSchemaVersion);
-  EXPECT_EQ(QueryInt(file, "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name IN "
-                           "('sweeps', 'runs', 'documents', 'metric_names', 'metric_values', 'metric_spec_refs')"),
+  EXPECT_EQ(QueryInt(file,
+                     "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name IN "
+                     "('sweeps', 'runs', 'documents', 'metric_names', 'metric_values', 'metric_spec_refs')"),
             6);
   // The queries of the tables of schema versions 1-3 still work, as views.
-  EXPECT_EQ(QueryInt(file, "SELECT count(*) FROM sqlite_master WHERE type = 'view' AND name IN "
-                           "('metrics', 'metric_specs')"),
+  EXPECT_EQ(QueryInt(file,
+                     "SELECT count(*) FROM sqlite_master WHERE type = 'view' AND name IN "
+                     "('metrics', 'metric_specs')"),
             2);
-  EXPECT_EQ(QueryInt(file, "SELECT count(*) FROM sqlite_master WHERE type = 'index' AND sql LIKE "
-                           "'%(algorithm, sequence)%'"),
+  EXPECT_EQ(QueryInt(file,
+                     "SELECT count(*) FROM sqlite_master WHERE type = 'index' AND sql LIKE "
+                     "'%(algorithm, sequence)%'"),
             1);
   {
     SqliteDb db = SqliteDb::Open(file, false);

@@ -9,15 +9,15 @@ namespace slamsweep::orchestrator::testing {
 /// A run.json as DESIGN.md shows it, reduced to what the store reads.
 inline nlohmann::json MakeSpec(const std::string& run_id, const std::string& algorithm = "icp-slam",
                                const std::string& sequence = "intel", int iteration = 0) {
-  return {{"run_id", run_id},
-          {"sweep", "test"},
-          {"algorithm",
-           {{"name", algorithm}, {"adapter", "mrpt-icp-slam"}, {"parameters", {{"ICP.maxIterations", 80}}}}},
-          {"sequence", {{"name", sequence}, {"format", "carmen"}, {"ground_truth", "relations"}}},
-          {"noise", {{"name", "clean"}, {"odometry", nullptr}, {"range", nullptr}}},
-          {"iteration", iteration},
-          {"seed", 123456789},
-          {"thresholds", nlohmann::json::array()}};
+  return {
+      {"run_id", run_id},
+      {"sweep", "test"},
+      {"algorithm", {{"name", algorithm}, {"adapter", "mrpt-icp-slam"}, {"parameters", {{"ICP.maxIterations", 80}}}}},
+      {"sequence", {{"name", sequence}, {"format", "carmen"}, {"ground_truth", "relations"}}},
+      {"noise", {{"name", "clean"}, {"odometry", nullptr}, {"range", nullptr}}},
+      {"iteration", iteration},
+      {"seed", 123456789},
+      {"thresholds", nlohmann::json::array()}};
 }
 
 /// An ok result.json with two APE statistics and one paper-map metric.
@@ -45,12 +45,21 @@ inline nlohmann::json MakeOkResult(const std::string& run_id, double wall_s = 3.
 
 /// A failed result.json (the program was killed).
 inline nlohmann::json MakeFailedResult(const std::string& run_id, const std::string& reason = "killed by SIGSEGV") {
-  return {{"run_id", run_id},        {"status", "failed"},   {"failure_kind", "signal"},
-          {"reason", reason},        {"exit_code", nullptr}, {"signal", 11},
-          {"wall_s", 1.5},           {"cpu_s", 1.0},         {"peak_rss_kb", 1000},
-          {"started_at", "2026-11-22T05:00:00Z"},            {"finished_at", "2026-11-22T05:00:02Z"},
-          {"outputs", {{"log", "log.txt"}}},                 {"metrics", nlohmann::json::array()},
-          {"metric_details", nlohmann::json::object()},      {"warnings", nlohmann::json::array()}};
+  return {{"run_id", run_id},
+          {"status", "failed"},
+          {"failure_kind", "signal"},
+          {"reason", reason},
+          {"exit_code", nullptr},
+          {"signal", 11},
+          {"wall_s", 1.5},
+          {"cpu_s", 1.0},
+          {"peak_rss_kb", 1000},
+          {"started_at", "2026-11-22T05:00:00Z"},
+          {"finished_at", "2026-11-22T05:00:02Z"},
+          {"outputs", {{"log", "log.txt"}}},
+          {"metrics", nlohmann::json::array()},
+          {"metric_details", nlohmann::json::object()},
+          {"warnings", nlohmann::json::array()}};
 }
 
 }  // namespace slamsweep::orchestrator::testing

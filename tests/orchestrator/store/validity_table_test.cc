@@ -67,7 +67,8 @@ TEST(ValidityTableTest, SummaryJsonAndValidityCsvCarryTheSameTable) {
   std::istringstream csv(ReadWholeFile(dir / "validity.csv"));
   std::string line;
   std::getline(csv, line);
-  EXPECT_EQ(line, "candidate,target,sequence,pooling,runs,strata,spearman_rho,ci_low,ci_high,resamples_defined,verdict");
+  EXPECT_EQ(line,
+            "candidate,target,sequence,pooling,runs,strata,spearman_rho,ci_low,ci_high,resamples_defined,verdict");
   std::size_t rows = 0;
   for (const json& c : validity.at("correlations")) {
     ASSERT_TRUE(std::getline(csv, line));

@@ -37,9 +37,12 @@ class FakeExecutor final : public Executor {
         continue;
       }
       if (what == "ok" || what == "failed") {
-        nlohmann::json result = {{"run_id", pending.run.run_id}, {"status", what}, {"wall_s", 1.5},
-                                 {"metrics", nlohmann::json::array({{{"metric", "corners"}, {"statistic", "value"},
-                                                                     {"value", 12.0}, {"unit", "count"}}})}};
+        nlohmann::json result = {
+            {"run_id", pending.run.run_id},
+            {"status", what},
+            {"wall_s", 1.5},
+            {"metrics", nlohmann::json::array(
+                            {{{"metric", "corners"}, {"statistic", "value"}, {"value", 12.0}, {"unit", "count"}}})}};
         if (what == "failed") {
           result["failure_kind"] = "exit_code";
           result["reason"] = "exit code 3";

@@ -16,9 +16,9 @@
 namespace slamsweep::orchestrator {
 namespace {
 
+using fakes::FakeExecutor;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
-using fakes::FakeExecutor;
 
 std::vector<RunSpec> Matrix(int count) {
   std::vector<RunSpec> runs;
@@ -45,7 +45,9 @@ class RecordingStatus final : public Status {
   void Finished(const FinishedRun& run) override { finished.push_back(run); }
   void Message(const std::string& text) override { lines.push_back(text); }
   void Done() override {}
-  static std::string fmt(std::size_t a, std::size_t b) { return std::to_string(a) + " to run, " + std::to_string(b) + " done"; }
+  static std::string fmt(std::size_t a, std::size_t b) {
+    return std::to_string(a) + " to run, " + std::to_string(b) + " done";
+  }
   std::vector<std::string> lines;
   std::vector<FinishedRun> finished;
 };

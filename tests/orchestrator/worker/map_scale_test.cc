@@ -55,7 +55,8 @@ TEST(MapScaleTest, TheSameFloorWrittenAtFiveAndTenCentimetresScoresTheSame) {
     const RunMetrics at_fine = ComputeRunMetrics(evaluation, fine_inputs);
     const RunMetrics at_coarse = ComputeRunMetrics(evaluation, coarse_inputs);
     const double corners_fine = Metric(at_fine, "corners"), corners_coarse = Metric(at_coarse, "corners");
-    const double enclosed_fine = Metric(at_fine, "enclosed_areas"), enclosed_coarse = Metric(at_coarse, "enclosed_areas");
+    const double enclosed_fine = Metric(at_fine, "enclosed_areas"),
+                 enclosed_coarse = Metric(at_coarse, "enclosed_areas");
     std::cout << "[ scale ] floor " << seed << ": corners " << corners_fine << " / " << corners_coarse
               << ", enclosed areas " << enclosed_fine << " / " << enclosed_coarse << "\n";
     EXPECT_LE(std::abs(corners_fine - corners_coarse), std::max(2.0, 0.05 * corners_coarse)) << "floor " << seed;

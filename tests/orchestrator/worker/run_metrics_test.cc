@@ -123,7 +123,7 @@ TEST(RunMetricsTest, SegmentRpeAtTenToFiftyPercentOfTheReferencePath) {
     if (!metric.metric.starts_with("segment_") || metric.statistic == "n") continue;
     EXPECT_EQ(metric.unit, metric.metric.starts_with("segment_drift") ? "%"
                            : metric.metric.starts_with("segment_rot") ? "deg/m"
-                                                                       : "m")
+                                                                      : "m")
         << metric.metric;
   }
   const nlohmann::json& specification = metrics.details.at("segment_rpe").at("specification");

@@ -65,7 +65,8 @@ nlohmann::json RunMrpt(const std::string& adapter, const fs::path& run_dir) {
   const RunInputs inputs = PrepareRunInputs(spec);
   ev::ApeOptions options;
   options.alignment.mode = ev::AlignmentMode::kSe2;
-  const double odometry_ate_m = ev::Ape(options).Compute(*inputs.truth.reference, inputs.robot.odometry).statistics.rmse;
+  const double odometry_ate_m =
+      ev::Ape(options).Compute(*inputs.truth.reference, inputs.robot.odometry).statistics.rmse;
   const double ate_m = Metric(result, "ape_trans", "rmse");
   std::cout << "[ mrpt ] " << adapter << " ATE " << ate_m << " m, its odometry " << odometry_ate_m << " m\n";
   EXPECT_LT(ate_m, odometry_ate_m) << result["metric_details"]["ape_trans"].dump();

@@ -72,8 +72,9 @@ class WorkerTest : public ::testing::Test {
   /// the run's program; the tools folder with its canned outputs is what it declares it reads.
   void UseProgram(const std::string& body) {
     CommandDeclaration declaration;
-    declaration.argv = {WriteScript(tools_ / "program.sh", "cd '" + tools_.path().string() + "' || exit 9\n" + body).string(),
-                        "{output_dir}"};
+    declaration.argv = {
+        WriteScript(tools_ / "program.sh", "cd '" + tools_.path().string() + "' || exit 9\n" + body).string(),
+        "{output_dir}"};
     declaration.read_only = {tools_.path().string()};
     declaration.trajectory = DeclaredOutput{"trajectory.tum", "tum"};
     declaration.map = DeclaredOutput{"map.yaml", "map_server"};
@@ -99,8 +100,9 @@ class WorkerTest : public ::testing::Test {
 TEST_F(WorkerTest, ATrajectoryThatStopsHalfWayFailsTheRunWithItsCoverage) {
   // The first 30 lines of the 60-pose TUM file (a header line, then 29 poses): 28 of the reference's
   // 59 scan intervals, 0.1 s each.
-  UseProgram("head -n 30 estimate.tum > \"$1/trajectory.tum\" && cp room.yaml room.pgm \"$1/\" && "
-             "mv \"$1/room.yaml\" \"$1/map.yaml\"");
+  UseProgram(
+      "head -n 30 estimate.tum > \"$1/trajectory.tum\" && cp room.yaml room.pgm \"$1/\" && "
+      "mv \"$1/room.yaml\" \"$1/map.yaml\"");
   const nlohmann::json result = Run();
   EXPECT_EQ(result["status"], "failed") << result.dump(2);
   EXPECT_EQ(result["failure_kind"], "incomplete_trajectory");
@@ -152,7 +154,8 @@ TEST_F(WorkerTest, AProgramThatWritesItsOutputsGivesAnOkRunWithMetrics) {
   for (const char* file : {"map.yaml", "map.png", "stages.png", "trajectory.tum", "reference.tum", "command.txt"}) {
     EXPECT_TRUE(fs::exists(run_dir_ / file)) << file;
   }
-  EXPECT_EQ(ReadText(run_dir_ / "command.txt"), (tools_ / "program.sh").string() + "\n" + (run_dir_ / "raw").string() + "\n");
+  EXPECT_EQ(ReadText(run_dir_ / "command.txt"),
+            (tools_ / "program.sh").string() + "\n" + (run_dir_ / "raw").string() + "\n");
   EXPECT_EQ(ev::ReadMapServer(run_dir_ / "map.yaml").width, kMapSide);
   EXPECT_FALSE(fs::exists(run_dir_ / "result.json.tmp"));
 
@@ -169,8 +172,9 @@ TEST_F(WorkerTest, AProgramThatWritesItsOutputsGivesAnOkRunWithMetrics) {
 }
 
 TEST_F(WorkerTest, WithoutADeclaredMapTheMapIsRenderedAndStageMapsComeFromTheGlob) {
-  UseProgram("cp estimate.tum \"$1/trajectory.tum\" && mkdir \"$1/stages\" && cp room.pgm \"$1/stages/b.pgm\" && "
-             "cp room.pgm \"$1/stages/a.pgm\" && cp room.pgm \"$1/stages/a.txt\"");
+  UseProgram(
+      "cp estimate.tum \"$1/trajectory.tum\" && mkdir \"$1/stages\" && cp room.pgm \"$1/stages/b.pgm\" && "
+      "cp room.pgm \"$1/stages/a.pgm\" && cp room.pgm \"$1/stages/a.txt\"");
   spec_.algorithm.command->map.reset();
   spec_.algorithm.command->stage_maps_glob = "stages/*.pgm";
   const nlohmann::json result = Run();
@@ -228,8 +232,9 @@ TEST_F(WorkerTest, AGarbageMapImageIsCorruptOutputNamingTheFile) {
   slamsweep::testing::WriteFile(tools_ / "bad.yaml",
                                 "image: map.png\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\n"
                                 "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
-  UseProgram("cp estimate.tum \"$1/trajectory.tum\" && cp bad.yaml \"$1/map.yaml\" && "
-             "head -c 3000 /dev/urandom > \"$1/map.png\"");
+  UseProgram(
+      "cp estimate.tum \"$1/trajectory.tum\" && cp bad.yaml \"$1/map.yaml\" && "
+      "head -c 3000 /dev/urandom > \"$1/map.png\"");
   const nlohmann::json result = Run();
   EXPECT_EQ(result["failure_kind"], "corrupt_output") << result.dump(2);
   const std::string reason = result["reason"];
@@ -341,10 +346,13 @@ TEST_F(WorkerTest, EveryRunWithAReferenceIsScoredAgainstTheReferenceMap) {
 // pointed at (input/, raw/, its environment), nor already be rendered into the sweep folder.
 // The program records what it can see; the map it is later scored against must not be in there.
 TEST_F(WorkerTest, TheReferenceMapIsOutOfTheProgramsReachUntilItHasExited) {
-  UseProgram("{ ls -la \"$1/../input\" \"$1\" \"$1/..\"; env; "
-             "[ -e '" + (dir_ / "reference_maps").string() + "' ] && echo CACHE-EXISTS; "
-             "cat \"$1\"/../input/* \"$1\"/* 2>/dev/null | cksum; } > \"$1/seen.txt\" 2>&1; " +
-             std::string(kWriteOutputs));
+  UseProgram(
+      "{ ls -la \"$1/../input\" \"$1\" \"$1/..\"; env; "
+      "[ -e '" +
+      (dir_ / "reference_maps").string() +
+      "' ] && echo CACHE-EXISTS; "
+      "cat \"$1\"/../input/* \"$1\"/* 2>/dev/null | cksum; } > \"$1/seen.txt\" 2>&1; " +
+      std::string(kWriteOutputs));
   const nlohmann::json result = Run();
   ASSERT_EQ(result["status"], "ok") << result.dump(2);
   EXPECT_FALSE(std::isnan(Metric(result, "map_chamfer", "value"))) << result["warnings"];
@@ -389,11 +397,15 @@ TEST_F(WorkerTest, TheProgramSeesWhatItDeclaresAndItsInputButNoResultsAndNoRefer
 
   const std::string out = dir_.path().string();
   std::string probes;
-  const std::vector<std::string> hidden_files = {"\"$1/../run.json\"", "\"$1/../command.txt\"",
-                                                 "\"$1/../../r0/reference.tum\"", "'" + out + "/runs/r0/reference.tum'",
-                                                 "'" + out + "/results.sqlite'", "'" + (datasets / "room.yaml").string() + "'",
+  const std::vector<std::string> hidden_files = {"\"$1/../run.json\"",
+                                                 "\"$1/../command.txt\"",
+                                                 "\"$1/../../r0/reference.tum\"",
+                                                 "'" + out + "/runs/r0/reference.tum'",
+                                                 "'" + out + "/results.sqlite'",
+                                                 "'" + (datasets / "room.yaml").string() + "'",
                                                  "'" + (private_dir / "queue.sqlite").string() + "'",
-                                                 "'" + (elsewhere / "notes.txt").string() + "'", "/etc/shadow"};
+                                                 "'" + (elsewhere / "notes.txt").string() + "'",
+                                                 "/etc/shadow"};
   for (const std::string& file : hidden_files) {
     probes += "cat " + file + " >/dev/null 2>&1 && echo \"READ " + file + "\"\n";
   }
@@ -476,8 +488,10 @@ TEST_F(WorkerTest, AReferenceUnderTheSystemFoldersIsCoveredWhileTheRestOfThemSta
 
 TEST_F(WorkerTest, AProgramThatLeavesALinkOutOfRawIsNotFollowed) {
   // A "trajectory" that is a link to the run's own reference, written after the program exits.
-  UseProgram("cp room.yaml room.pgm \"$1/\" && mv \"$1/room.yaml\" \"$1/map.yaml\" && "
-             "ln -s " + (tools_ / "estimate.tum").string() + " \"$1/trajectory.tum\"");
+  UseProgram(
+      "cp room.yaml room.pgm \"$1/\" && mv \"$1/room.yaml\" \"$1/map.yaml\" && "
+      "ln -s " +
+      (tools_ / "estimate.tum").string() + " \"$1/trajectory.tum\"");
   const nlohmann::json result = Run();
   EXPECT_EQ(result["failure_kind"], "missing_output") << result.dump(2);
   bool noted = false;
@@ -490,8 +504,10 @@ TEST_F(WorkerTest, AProgramThatLeavesALinkOutOfRawIsNotFollowed) {
 TEST_F(WorkerTest, ProcessAndDiskLimitsEndTheRunNamingThem) {
   spec_.algorithm.process_limit = 8;
   // A fork bomb holds what it started and keeps trying.
-  UseProgram("/usr/bin/python3 -c 'import os, time\nfor i in range(12):\n  try:\n    if os.fork() == 0: "
-             "time.sleep(10); os._exit(0)\n  except OSError: pass\ntime.sleep(10)'; " + std::string(kWriteOutputs));
+  UseProgram(
+      "/usr/bin/python3 -c 'import os, time\nfor i in range(12):\n  try:\n    if os.fork() == 0: "
+      "time.sleep(10); os._exit(0)\n  except OSError: pass\ntime.sleep(10)'; " +
+      std::string(kWriteOutputs));
   nlohmann::json result = Run();
   EXPECT_EQ(result["failure_kind"], "process_limit") << result.dump(2);
   EXPECT_NE(result["reason"].get<std::string>().find("process_limit"), std::string::npos) << result["reason"];

@@ -103,10 +103,11 @@ TEST_F(HistoryReportTest, PagesRenderAndLinksResolve) {
   EXPECT_NE(index.find("1 regressions, 0 improvements"), std::string::npos) << index;
   EXPECT_NE(index.find("<caption>Regressions</caption>"), std::string::npos);
 
-  const fs::path ape_page = report / (HistoryPageStem({"icp-slam", "intel", "noisy", "recorded", "ape_trans", "rmse", "m"}) + ".html");
+  const fs::path ape_page =
+      report / (HistoryPageStem({"icp-slam", "intel", "noisy", "recorded", "ape_trans", "rmse", "m"}) + ".html");
   ASSERT_TRUE(fs::is_regular_file(ape_page)) << ape_page;
-  EXPECT_TRUE(fs::is_regular_file(report / (HistoryPageStem({"icp-slam", "intel", "noisy", "recorded", "corners", "value", ""}) +
-                                            ".html")));
+  EXPECT_TRUE(fs::is_regular_file(
+      report / (HistoryPageStem({"icp-slam", "intel", "noisy", "recorded", "corners", "value", ""}) + ".html")));
   const std::string page = testing::ReadAll(ape_page);
   // monday's report exists: linked relatively; tuesday's does not: named only; tonight's: this report.
   EXPECT_NE(page.find("href=\"../../../night1/report/index.html\">monday</a>"), std::string::npos) << page;
@@ -116,7 +117,8 @@ TEST_F(HistoryReportTest, PagesRenderAndLinksResolve) {
   EXPECT_NE(page.find("<tr class=\"failures\">"), std::string::npos);
   // Only the compared statistic gets a page: no page for ape_trans mean.
   std::size_t history_pages = 0;
-  for (const auto& entry : fs::directory_iterator(report / "history")) history_pages += entry.path().extension() == ".html";
+  for (const auto& entry : fs::directory_iterator(report / "history"))
+    history_pages += entry.path().extension() == ".html";
   EXPECT_EQ(history_pages, 2u);
 
   if (gnuplot) {
@@ -136,7 +138,8 @@ TEST_F(HistoryReportTest, WithoutComparisonOrEarlierNight) {
   const std::string index = testing::ReadAll(dir_ / "night3/report/index.html");
   EXPECT_EQ(index.find("Compared with night"), std::string::npos);
   const std::string page = testing::ReadAll(
-      dir_ / "night3/report" / (HistoryPageStem({"icp-slam", "intel", "noisy", "recorded", "ape_trans", "rmse", "m"}) + ".html"));
+      dir_ / "night3/report" /
+      (HistoryPageStem({"icp-slam", "intel", "noisy", "recorded", "ape_trans", "rmse", "m"}) + ".html"));
   EXPECT_NE(page.find("No plot: images were not requested"), std::string::npos);
 
   // A history with nothing before tonight: the comparison is a note, not an error.
@@ -215,7 +218,8 @@ TEST(HistoryOdometryPagesTest, APagePerModeAndNoComparisonAcrossModes) {
   EXPECT_NE(reference.find("<td>tuesday</td>"), std::string::npos) << reference;
   EXPECT_NE(reference.find("(not recorded)"), std::string::npos);
   std::size_t history_pages = 0;
-  for (const auto& entry : fs::directory_iterator(report / "history")) history_pages += entry.path().extension() == ".html";
+  for (const auto& entry : fs::directory_iterator(report / "history"))
+    history_pages += entry.path().extension() == ".html";
   EXPECT_EQ(history_pages, 4u);  // ape_trans and corners, in each mode
 
   // Compared with tuesday (the previous night): the reference series regressed; monday's recorded series has no

@@ -110,9 +110,12 @@ std::array<double, 3> Seen(std::uint32_t rgb, const Matrix& m) {
 TEST(AlgorithmPaletteTest, ColoursStayApartForColourBlindReaders) {
   const std::pair<const char*, Matrix> visions[] = {
       {"normal", {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}},
-      {"protanopia", {{{0.152286, 1.052583, -0.204868}, {0.114503, 0.786281, 0.099216}, {-0.003882, -0.048116, 1.051998}}}},
-      {"deuteranopia", {{{0.367322, 0.860646, -0.227968}, {0.280085, 0.672501, 0.047413}, {-0.011820, 0.042940, 0.968881}}}},
-      {"tritanopia", {{{1.255528, -0.076749, -0.178779}, {-0.078411, 0.930809, 0.147602}, {0.004733, 0.691367, 0.303900}}}},
+      {"protanopia",
+       {{{0.152286, 1.052583, -0.204868}, {0.114503, 0.786281, 0.099216}, {-0.003882, -0.048116, 1.051998}}}},
+      {"deuteranopia",
+       {{{0.367322, 0.860646, -0.227968}, {0.280085, 0.672501, 0.047413}, {-0.011820, 0.042940, 0.968881}}}},
+      {"tritanopia",
+       {{{1.255528, -0.076749, -0.178779}, {-0.078411, 0.930809, 0.147602}, {0.004733, 0.691367, 0.303900}}}},
   };
   for (const auto& [vision, matrix] : visions) {
     for (std::size_t a = 0; a < kPaletteColours; ++a) {
@@ -120,7 +123,8 @@ TEST(AlgorithmPaletteTest, ColoursStayApartForColourBlindReaders) {
         const auto la = Lab(Seen(StyleOfSlot(a).rgb, matrix));
         const auto lb = Lab(Seen(StyleOfSlot(b).rgb, matrix));
         const double delta_e = std::hypot(la[0] - lb[0], la[1] - lb[1], la[2] - lb[2]);
-        EXPECT_GE(delta_e, 15.0) << vision << ": " << StyleOfSlot(a).colour_name << " vs " << StyleOfSlot(b).colour_name;
+        EXPECT_GE(delta_e, 15.0) << vision << ": " << StyleOfSlot(a).colour_name << " vs "
+                                 << StyleOfSlot(b).colour_name;
       }
     }
   }

@@ -31,7 +31,8 @@ MetricPlot TwoAlgorithms() {
   plot.title = "ATE rmse (se2), telecom";
   plot.y_label = "m";
   // Each series in its algorithm's style (AlgorithmPalette): blue circles and vermillion squares.
-  plot.series = {{"icp-slam", {0.12, 0.15, 0.11, 0.2}, {0x0072B2, 7, 0}}, {"rbpf-slam", {0.4, 0.35, 0.5}, {0xD55E00, 5, 0}}};
+  plot.series = {{"icp-slam", {0.12, 0.15, 0.11, 0.2}, {0x0072B2, 7, 0}},
+                 {"rbpf-slam", {0.4, 0.35, 0.5}, {0xD55E00, 5, 0}}};
   return plot;
 }
 

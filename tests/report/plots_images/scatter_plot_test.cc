@@ -20,9 +20,9 @@ namespace slamsweep::report {
 namespace {
 
 namespace fs = std::filesystem;
+using slamsweep::testing::CountColour;
 using ::testing::HasSubstr;
 using ::testing::Not;
-using slamsweep::testing::CountColour;
 
 double Luminance(std::uint32_t rgb) {
   return 0.2126 * ((rgb >> 16) & 0xFF) + 0.7152 * ((rgb >> 8) & 0xFF) + 0.0722 * (rgb & 0xFF);
@@ -64,10 +64,12 @@ TEST(ScatterPlotTest, ScriptDrawsEachSeriesInItsColourAndMarkerUnderTheKeyTitle)
   EXPECT_THAT(script, HasSubstr("print 'SLAMSWEEP_PLOT 3'"));
   EXPECT_THAT(script, HasSubstr("set key title 'colour: noise setting, marker: algorithm'"));
   EXPECT_THAT(script, HasSubstr("set key below"));
-  EXPECT_THAT(script, HasSubstr(fmt::format("pointtype 15 pointsize 0.9 linecolor rgb '#{:06X}' title 'odo-1 · icp-slam'",
-                                            GradedColour(0, 3))));
-  EXPECT_THAT(script, HasSubstr(fmt::format("pointtype 15 pointsize 0.9 linecolor rgb '#{:06X}' title 'odo-3 · icp-slam'",
-                                            GradedColour(2, 3))));
+  EXPECT_THAT(script,
+              HasSubstr(fmt::format("pointtype 15 pointsize 0.9 linecolor rgb '#{:06X}' title 'odo-1 · icp-slam'",
+                                    GradedColour(0, 3))));
+  EXPECT_THAT(script,
+              HasSubstr(fmt::format("pointtype 15 pointsize 0.9 linecolor rgb '#{:06X}' title 'odo-3 · icp-slam'",
+                                    GradedColour(2, 3))));
   EXPECT_THAT(script, HasSubstr("pointtype 7 pointsize 0.9"));
   EXPECT_THAT(script, HasSubstr("intel (16 runs)"));
   // Corners span 10-34 (a factor below 10): linear; the ATE spans 0.1-0.34: linear too.

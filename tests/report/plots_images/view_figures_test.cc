@@ -42,12 +42,12 @@ BoxplotFigure ThreeRowsBoxplot() {
   figure.x_label = "segment length";
   figure.y_label = "translation error (m)";
   figure.categories = {"12 m", "25 m", "37 m", "49 m", "62 m"};
-  const std::pair<const char*, SeriesStyle> rows[] = {{"gmapping", {0x0072B2, 7, 0}},
-                                                      {"hector", {0x009E73, 9, 0}},
-                                                      {"hector [x=2]", {0x009E73, 9, 1}}};
+  const std::pair<const char*, SeriesStyle> rows[] = {
+      {"gmapping", {0x0072B2, 7, 0}}, {"hector", {0x009E73, 9, 0}}, {"hector [x=2]", {0x009E73, 9, 1}}};
   for (const auto& [label, style] : rows) {
     BoxSeries series{label, style, {}};
-    for (int k = 0; k < 5; ++k) series.boxes.push_back(Box(0.2 * (k + 1) * (style.rgb == 0x0072B2 ? 1.0 : 2.0), k == 4 ? 3 : 0));
+    for (int k = 0; k < 5; ++k)
+      series.boxes.push_back(Box(0.2 * (k + 1) * (style.rgb == 0x0072B2 ? 1.0 : 2.0), k == 4 ? 3 : 0));
     figure.series.push_back(series);
   }
   figure.series[2].boxes[1].reset();  // a length without segments
@@ -78,7 +78,8 @@ TEST(ViewFigureScriptsTest, HeatmapColoursRunFromLightToDarkAndTextStaysReadable
 }
 
 TEST(ViewFigureScriptsTest, EmptyFiguresStillMakeAValidScript) {
-  for (const ViewFigure& figure : {ViewFigure(BoxplotFigure{}), ViewFigure(LineFigure{}), ViewFigure(HeatmapFigure{})}) {
+  for (const ViewFigure& figure :
+       {ViewFigure(BoxplotFigure{}), ViewFigure(LineFigure{}), ViewFigure(HeatmapFigure{})}) {
     const std::string script = FigureScript({figure, "/tmp/e.png"}, 0);
     EXPECT_THAT(script, HasSubstr("plot $empty_0"));
     EXPECT_THAT(script, HasSubstr("unset output"));
@@ -103,7 +104,8 @@ TEST(ViewFiguresTest, DrawsLinesWithWhiskersAndRingsTheBest) {
   figure.x_label = "ICP.maxIterations";
   figure.y_label = "ATE translation RMSE (m), mean ± std";
   figure.log_x = true;
-  figure.series.push_back({"icp-slam", {0xCC79A7, 13, 0}, {{5, 0.4, 0.05, 3}, {20, 0.2, 0.02, 3}, {80, 0.25, std::nullopt, 1}}});
+  figure.series.push_back(
+      {"icp-slam", {0xCC79A7, 13, 0}, {{5, 0.4, 0.05, 3}, {20, 0.2, 0.02, 3}, {80, 0.25, std::nullopt, 1}}});
   figure.highlight = LineFigure::Highlight{0, 1, "lowest mean: ICP.maxIterations=20"};
   LineFigure categorical = figure;
   categorical.log_x = false;

@@ -24,8 +24,8 @@ std::string ErrorOf(std::vector<const char*> arguments) {
 }
 
 TEST(DriverArgsTest, ReadsEveryPartOfTheContract) {
-  const DriverArgs args = Parse({"--input", "in.log", "--output-dir", "out", "--seed", "18446744073709551615", "--stages",
-                                 "4", "particles=30", "srr=0.1", "empty="});
+  const DriverArgs args = Parse({"--input", "in.log", "--output-dir", "out", "--seed", "18446744073709551615",
+                                 "--stages", "4", "particles=30", "srr=0.1", "empty="});
   EXPECT_EQ(args.input, "in.log");
   EXPECT_EQ(args.output_dir, "out");
   ASSERT_TRUE(args.seed.has_value());
@@ -47,9 +47,11 @@ TEST(DriverArgsTest, NamesWhatIsWrong) {
   EXPECT_THAT(ErrorOf({"--output-dir", "b"}), HasSubstr("--input FILE is required"));
   EXPECT_THAT(ErrorOf({"--input", "a"}), HasSubstr("--output-dir DIR is required"));
   EXPECT_THAT(ErrorOf({"--input"}), HasSubstr("--input: expected a value"));
-  EXPECT_THAT(ErrorOf({"--input", "a", "--output-dir", "b", "--seed", "-3"}), HasSubstr("--seed: expected a non-negative integer, got '-3'"));
+  EXPECT_THAT(ErrorOf({"--input", "a", "--output-dir", "b", "--seed", "-3"}),
+              HasSubstr("--seed: expected a non-negative integer, got '-3'"));
   EXPECT_THAT(ErrorOf({"--input", "a", "--output-dir", "b", "--verbose"}), HasSubstr("unknown option '--verbose'"));
-  EXPECT_THAT(ErrorOf({"--input", "a", "--output-dir", "b", "particles"}), HasSubstr("'particles': expected a parameter as key=value"));
+  EXPECT_THAT(ErrorOf({"--input", "a", "--output-dir", "b", "particles"}),
+              HasSubstr("'particles': expected a parameter as key=value"));
   EXPECT_THAT(ErrorOf({"--input", "a", "--output-dir", "b", "=3"}), HasSubstr("expected a parameter as key=value"));
   EXPECT_THAT(ErrorOf({"--input", "a", "--output-dir", "b", "k=1", "k=2"}), HasSubstr("parameter 'k' given twice"));
 }

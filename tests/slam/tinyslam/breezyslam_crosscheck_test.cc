@@ -40,8 +40,9 @@ namespace fs = std::filesystem;
 /// reference (stated: the catalog's default on corrected logs is the robot's recorded odometry).
 fs::path IntelInput(const fs::path& dir, const std::string& noise, int seed) {
   const fs::path full = dir / ("intel-" + noise + "-" + std::to_string(seed) + ".log");
-  std::vector<std::string> args = {"data", "convert", "intel", "--to", "carmen", "--odometry", "reference", "-o",
-                                   full.string(), "--seed", std::to_string(seed)};
+  std::vector<std::string> args = {
+      "data",   "convert",           "intel", "--to", "carmen", "--odometry", "reference", "-o", full.string(),
+      "--seed", std::to_string(seed)};
   if (noise != "clean") args.insert(args.end(), {"--odometry-noise", noise});
   const auto convert = testing::RunCli(args);
   EXPECT_EQ(convert.exit_code, 0) << convert.err;
@@ -155,7 +156,8 @@ TEST(TinySlamCrossCheckTest, SlamConstructorAndBreezySlamAgainstTheOdometryOnInt
   std::ifstream list(std::string(SLAMSWEEP_SOURCE_DIR) + "/tests/slam/roster_expected_failures.json");
   const nlohmann::json expected_failures = nlohmann::json::parse(list);
   bool listed = false;
-  for (const auto& entry : expected_failures.at("expected_failures")) listed = listed || entry.at("algorithm") == "tinyslam";
+  for (const auto& entry : expected_failures.at("expected_failures"))
+    listed = listed || entry.at("algorithm") == "tinyslam";
   if (listed) {
     EXPECT_GT(tiny_test.p_value, 0.05) << "slam-constructor's tinySLAM now beats the odometry here: take it off "
                                           "tests/slam/roster_expected_failures.json if the roster test agrees";

@@ -176,7 +176,8 @@ TEST(CompactPngTest, AFigureOfFewColoursReadsBackAsTheSamePixelsFromAPalettePng)
 
 TEST(CompactPngTest, MoreThan256ColoursAreNotAPalettePng) {
   cv::Mat ramp(1, 257, CV_8UC3);
-  for (int col = 0; col < 257; ++col) ramp.at<cv::Vec3b>(0, col) = cv::Vec3b(static_cast<std::uint8_t>(col % 256), col / 256, 0);
+  for (int col = 0; col < 257; ++col)
+    ramp.at<cv::Vec3b>(0, col) = cv::Vec3b(static_cast<std::uint8_t>(col % 256), col / 256, 0);
   EXPECT_FALSE(EncodePalettePng(ramp).has_value());
   EXPECT_TRUE(EncodePalettePng(ramp.colRange(0, 256)).has_value());
   EXPECT_THROW(EncodePalettePng(cv::Mat(3, 3, CV_8UC1)), InputError);

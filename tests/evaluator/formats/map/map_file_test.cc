@@ -17,7 +17,6 @@ namespace {
 using map_test::InputErrorOf;
 using ::testing::HasSubstr;
 
-
 TEST(MapFileTest, DispatchesOnNameAndSiblingLimits) {
   testing::TempDir dir;
   map_test::WriteImage(dir / "bare.png", cv::Mat(1, 1, CV_8UC1, cv::Scalar(0)));

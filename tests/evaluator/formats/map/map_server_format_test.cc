@@ -16,7 +16,6 @@ using map_test::InputErrorOf;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-
 /// A map_server YAML for `image` with round thresholds (free 0.2, occupied 0.7) so that expected
 /// cell values can be worked out by hand.
 std::string Yaml(const std::string& image, const std::string& extra = "", const std::string& negate = "0") {
@@ -37,13 +36,15 @@ const std::vector<std::uint8_t> kGreys = {0, 76, 102, 153, 205, 230, 255};
 TEST(MapServerFormatTest, TrinaryUsesStrictThresholds) {
   testing::TempDir dir;
   testing::WriteFile(dir / "g.pgm", map_test::Pgm(7, 1, kGreys));
-  EXPECT_THAT(ReadRow(dir, Yaml("g.pgm")), ::testing::ElementsAre(1.0f, 1.0f, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, 0.0f, 0.0f, 0.0f));
+  EXPECT_THAT(ReadRow(dir, Yaml("g.pgm")),
+              ::testing::ElementsAre(1.0f, 1.0f, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, 0.0f, 0.0f, 0.0f));
   // occ == occupied_thresh is not occupied and occ == free_thresh is not free: 102 -> occ 0.6, 153 -> occ 0.4.
   testing::WriteFile(dir / "e.pgm", map_test::Pgm(4, 1, {101, 102, 153, 154}));
   testing::WriteFile(dir / "m.yaml",
                      "image: e.pgm\nresolution: 1\norigin: [0, 0, 0]\nnegate: 0\n"
                      "occupied_thresh: 0.6\nfree_thresh: 0.4\n");
-  EXPECT_THAT(ReadMapServer(dir / "m.yaml").cells, ::testing::ElementsAre(1.0f, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, 0.0f));
+  EXPECT_THAT(ReadMapServer(dir / "m.yaml").cells,
+              ::testing::ElementsAre(1.0f, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, 0.0f));
 }
 
 TEST(MapServerFormatTest, GeometryComesFromTheYaml) {
@@ -65,7 +66,8 @@ TEST(MapServerFormatTest, NegateSwapsBlackAndWhite) {
   // negate: average = 255 - v, so occ = v / 255: 0 -> free, 76 -> 0.298, 102 -> 0.4, 153 -> 0.6 (unknown),
   // 205 -> 0.804 and above -> occupied.
   EXPECT_THAT(ReadRow(dir, Yaml("g.pgm", "", "1")),
-              ::testing::ElementsAre(0.0f, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, 1.0f, 1.0f, 1.0f));
+              ::testing::ElementsAre(0.0f, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown,
+                                     1.0f, 1.0f, 1.0f));
 }
 
 TEST(MapServerFormatTest, ScaleModeGivesNinetyNineTimesTheRatio) {
@@ -80,7 +82,8 @@ TEST(MapServerFormatTest, ScaleModeGivesNinetyNineTimesTheRatio) {
 TEST(MapServerFormatTest, RawModeKeepsValuesAndRejectsMeaninglessOnes) {
   testing::TempDir dir;
   testing::WriteFile(dir / "r.pgm", map_test::Pgm(5, 1, {0, 37, 100, 255, 1}));
-  EXPECT_THAT(ReadRow(dir, Yaml("r.pgm", "mode: raw\n")), ::testing::ElementsAre(0.0f, 0.37f, 1.0f, OccupancyGrid::kUnknown, 0.01f));
+  EXPECT_THAT(ReadRow(dir, Yaml("r.pgm", "mode: raw\n")),
+              ::testing::ElementsAre(0.0f, 0.37f, 1.0f, OccupancyGrid::kUnknown, 0.01f));
   // negate applies before raw: 255 - 218 = 37.
   testing::WriteFile(dir / "n.pgm", map_test::Pgm(2, 1, {218, 0}));
   EXPECT_THAT(ReadRow(dir, Yaml("n.pgm", "mode: raw\n", "1")), ::testing::ElementsAre(0.37f, OccupancyGrid::kUnknown));
@@ -111,11 +114,13 @@ TEST(MapServerFormatTest, AlphaMarksUnknownInScaleModeAndIsAveragedInTrinary) {
                                                          cv::Vec4b(255, 255, 255, 0), cv::Vec4b(0, 0, 0, 0)}));
   // Scale: alpha left out of the average; a transparent in-between pixel is unknown, a
   // transparent free or occupied pixel keeps its value.
-  EXPECT_THAT(ReadRow(dir, Yaml("a.png", "mode: scale\n")), ::testing::ElementsAre(OccupancyGrid::kUnknown, 0.39f, 0.0f, 1.0f));
+  EXPECT_THAT(ReadRow(dir, Yaml("a.png", "mode: scale\n")),
+              ::testing::ElementsAre(OccupancyGrid::kUnknown, 0.39f, 0.0f, 1.0f));
   // Trinary: alpha is averaged in. (153*3 + 0) / 4 = 114.75 -> occ 0.55 -> unknown;
   // (153*3 + 255) / 4 = 178.5 -> occ 0.3 -> unknown; (255*3 + 0) / 4 = 191.25 -> occ 0.25 -> unknown;
   // 0 -> occupied.
-  EXPECT_THAT(ReadRow(dir, Yaml("a.png")), ::testing::ElementsAre(OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, 1.0f));
+  EXPECT_THAT(ReadRow(dir, Yaml("a.png")),
+              ::testing::ElementsAre(OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, OccupancyGrid::kUnknown, 1.0f));
 }
 
 TEST(MapServerFormatTest, RgbScaleModeTakesAlphaFromBlueLikeMapServer) {

@@ -13,7 +13,6 @@ using map_test::InputErrorOf;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-
 /// The limits file as MRPT's CMatrixF::saveToTextFile(MATRIX_FORMAT_FIXED) writes it.
 constexpr const char* kLimits =
     "% Grid limits: [x_min x_max y_min y_max]\n"
@@ -45,7 +44,8 @@ TEST(MrptGridmapFormatTest, ReadsCellsExtentAndOrientation) {
   // the largest y, centre y_min + (height - 0.5) * resolution = 2.75.
   EXPECT_DOUBLE_EQ(grid.CellCenterYM(0), 2.75);
   EXPECT_DOUBLE_EQ(grid.CellCenterXM(0), -0.75);
-  EXPECT_THAT(grid.cells, ::testing::ElementsAre(1.0f, OccupancyGrid::kUnknown, 0.0f, 204.0f / 255.0f, 51.0f / 255.0f, OccupancyGrid::kUnknown));
+  EXPECT_THAT(grid.cells, ::testing::ElementsAre(1.0f, OccupancyGrid::kUnknown, 0.0f, 204.0f / 255.0f, 51.0f / 255.0f,
+                                                 OccupancyGrid::kUnknown));
 }
 
 TEST(MrptGridmapFormatTest, UnknownValueCanBeOverridden) {

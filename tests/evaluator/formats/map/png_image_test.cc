@@ -184,8 +184,11 @@ TEST(PngImageTest, GreyPaletteDecodesToTheSameGreyLevelsAtTheSmallestDepth) {
   // Two, three (a trinary stage map), four, sixteen and 200 levels; odd widths end rows mid-byte,
   // and 803 columns take the sixty-four-pixel steps of the two-bit packer and its tail.
   const std::vector<std::vector<std::uint8_t>> level_sets = {
-      {0, 254}, {0, 205, 254}, {1, 2, 205, 254},
-      {0, 17, 34, 51, 68, 85, 102, 119, 136, 153, 170, 187, 204, 221, 238, 255}, {}};
+      {0, 254},
+      {0, 205, 254},
+      {1, 2, 205, 254},
+      {0, 17, 34, 51, 68, 85, 102, 119, 136, 153, 170, 187, 204, 221, 238, 255},
+      {}};
   const std::vector<int> expected_depths = {1, 2, 2, 4, 8};
   for (std::size_t set = 0; set < level_sets.size(); ++set) {
     for (const cv::Size size : {cv::Size(1, 1), cv::Size(37, 19), cv::Size(803, 5)}) {
@@ -193,8 +196,8 @@ TEST(PngImageTest, GreyPaletteDecodesToTheSameGreyLevelsAtTheSmallestDepth) {
       for (int row = 0; row < grey.rows; ++row) {
         for (int col = 0; col < grey.cols; ++col) {
           const std::vector<std::uint8_t>& levels = level_sets[set];
-          grey.at<std::uint8_t>(row, col) = levels.empty() ? static_cast<std::uint8_t>(random() % 200)
-                                                           : levels[random() % levels.size()];
+          grey.at<std::uint8_t>(row, col) =
+              levels.empty() ? static_cast<std::uint8_t>(random() % 200) : levels[random() % levels.size()];
         }
       }
       const std::string bytes = EncodeGreyPalettePng(grey);

@@ -164,7 +164,8 @@ TEST(RawlogTest, IntelCarmenLogRoundTrips) {
 }
 
 TEST(RawlogTest, ReadsMrptsSampleRawlog) {
-  if (!std::filesystem::exists(kMrptSample)) SLAMSWEEP_SKIP_OR_FAIL_IN_CI("MRPT sample rawlog not installed (Debian: mrpt-common)");
+  if (!std::filesystem::exists(kMrptSample))
+    SLAMSWEEP_SKIP_OR_FAIL_IN_CI("MRPT sample rawlog not installed (Debian: mrpt-common)");
   // Count with MRPT's own CRawlog: every CSensoryFrame holds one 2D scan in this file.
   mrpt::obs::CRawlog rawlog;
   ASSERT_TRUE(rawlog.loadFromRawLogFile(kMrptSample));
@@ -264,7 +265,8 @@ TEST(RawlogTest, WriterRejectsWhatARawlogCannotHold) {
   const testing::TempDir dir;
   Sequence one_beam = SyntheticSequence(2, 181, 1);
   one_beam.scans[1].ranges_m.resize(1);
-  EXPECT_NE(ErrorOf([&] { WriteRawlog(RobotLogOf(one_beam), dir / "a.rawlog"); }).find("scan 1 has 1 beam(s)"), std::string::npos);
+  EXPECT_NE(ErrorOf([&] { WriteRawlog(RobotLogOf(one_beam), dir / "a.rawlog"); }).find("scan 1 has 1 beam(s)"),
+            std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "a.rawlog"));
 
   Sequence tilted = SyntheticSequence(2, 181, 1);
@@ -276,7 +278,8 @@ TEST(RawlogTest, WriterRejectsWhatARawlogCannotHold) {
 
   Sequence backwards = SyntheticSequence(2, 181, 1);
   backwards.scans[1].stamp_s = backwards.scans[0].stamp_s;
-  EXPECT_NE(ErrorOf([&] { WriteRawlog(RobotLogOf(backwards), dir / "c.rawlog"); }).find("does not come after"), std::string::npos);
+  EXPECT_NE(ErrorOf([&] { WriteRawlog(RobotLogOf(backwards), dir / "c.rawlog"); }).find("does not come after"),
+            std::string::npos);
 
   EXPECT_NE(ErrorOf([&] {
               WriteRawlog(RobotLogOf(SyntheticSequence(2, 181, 1)), dir / "no" / "such" / "d.rawlog");
@@ -285,12 +288,15 @@ TEST(RawlogTest, WriterRejectsWhatARawlogCannotHold) {
 
   RawlogWriteOptions options;
   options.compression_level = 10;
-  EXPECT_NE(
-      ErrorOf([&] { WriteRawlog(RobotLogOf(SyntheticSequence(2, 181, 1)), dir / "e.rawlog", options); }).find("compression_level"),
-      std::string::npos);
+  EXPECT_NE(ErrorOf([&] {
+              WriteRawlog(RobotLogOf(SyntheticSequence(2, 181, 1)), dir / "e.rawlog", options);
+            }).find("compression_level"),
+            std::string::npos);
   options = {};
   options.range_std_m = 0.0;
-  EXPECT_NE(ErrorOf([&] { WriteRawlog(RobotLogOf(SyntheticSequence(2, 181, 1)), dir / "e.rawlog", options); }).find("range_std_m"),
+  EXPECT_NE(ErrorOf([&] {
+              WriteRawlog(RobotLogOf(SyntheticSequence(2, 181, 1)), dir / "e.rawlog", options);
+            }).find("range_std_m"),
             std::string::npos);
 }
 

@@ -21,7 +21,6 @@ using ::testing::AllOf;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
-
 /// The bags, written once for all tests; or why they could not be.
 struct PythonBags {
   testing::TempDir dir;

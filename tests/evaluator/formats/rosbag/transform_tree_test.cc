@@ -8,7 +8,6 @@
 namespace slamsweep::evaluator {
 namespace {
 
-
 void ExpectPlanar(const std::optional<Pose>& pose, double x_m, double y_m, double yaw_rad) {
   ASSERT_TRUE(pose.has_value());
   EXPECT_NEAR(pose->position.x(), x_m, 1e-12);

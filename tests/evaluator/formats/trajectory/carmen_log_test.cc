@@ -123,8 +123,9 @@ TEST(CarmenLogTest, WrongBeamCountNamesFileAndLine) {
 TEST(CarmenLogTest, BadRearLaserRecordsNameTheMessage) {
   ExpectInputError([] { ParseCarmenLog("RLASER 3 1 2 1 2 0.5 1 2 0.5 13.25 pippo 13.3\n", "rear.log"); },
                    {"rear.log:1", "RLASER with num_readings = 3", "RLASER n r1..rn"});
-  ExpectInputError([] { ParseCarmenLog("ODOM 0 0 0 0 0 0 1 h 1\nRLASER 2 1 x 1 2 0.5 1 2 0.5 13.25 pippo 13.3\n", "rear.log"); },
-                   {"rear.log:2", "range"});
+  ExpectInputError(
+      [] { ParseCarmenLog("ODOM 0 0 0 0 0 0 1 h 1\nRLASER 2 1 x 1 2 0.5 1 2 0.5 13.25 pippo 13.3\n", "rear.log"); },
+      {"rear.log:2", "range"});
 }
 
 TEST(CarmenLogTest, BadFieldsNameFileAndLine) {

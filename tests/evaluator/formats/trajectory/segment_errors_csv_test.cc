@@ -18,7 +18,8 @@ TEST(SegmentErrorsCsvTest, RoundTripsEveryNumberExactly) {
                                                    {20, 0, 1e9, 0, 0, 0}};
   std::ostringstream out;
   WriteSegmentErrorsCsv(records, out);
-  EXPECT_THAT(out.str(), ::testing::StartsWith(std::string(kSegmentErrorsHeader) + "\n10,100.25,131.5,0.30000000000000004,"));
+  EXPECT_THAT(out.str(),
+              ::testing::StartsWith(std::string(kSegmentErrorsHeader) + "\n10,100.25,131.5,0.30000000000000004,"));
   const std::vector<SegmentErrorRecord> read = ParseSegmentErrorsCsv(out.str(), "rpe_segments.csv");
   ASSERT_EQ(read.size(), 2u);
   EXPECT_EQ(read[0].translation_m, 0.1 + 0.2);
@@ -32,7 +33,8 @@ TEST(SegmentErrorsCsvTest, AHeaderAloneIsNoSegments) {
 }
 
 TEST(SegmentErrorsCsvTest, BadInputNamesFileAndLine) {
-  EXPECT_THAT([] { ParseSegmentErrorsCsv("", "x.csv"); }, ThrowsMessage<InputError>(HasSubstr("x.csv: expected the header")));
+  EXPECT_THAT([] { ParseSegmentErrorsCsv("", "x.csv"); },
+              ThrowsMessage<InputError>(HasSubstr("x.csv: expected the header")));
   EXPECT_THAT([] { ParseSegmentErrorsCsv("a,b\n", "x.csv"); }, ThrowsMessage<InputError>(HasSubstr("x.csv:1")));
   const std::string header(kSegmentErrorsHeader);
   EXPECT_THAT([&] { ParseSegmentErrorsCsv(header + "\n1,2,3\n", "x.csv"); },
