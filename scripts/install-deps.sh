@@ -55,7 +55,8 @@ packages=(
   # independent reference for the Spearman rank correlation of the metric validity study and the
   # rank tests; python3-statsmodels for the Holm correction (tests/evaluator/statistics); python3-pil reads
   # the stage animations back (tests/evaluator/formats/map)
-  libgtest-dev libgmock-dev libbenchmark-dev shellcheck ccache hyperfine python3-scipy python3-statsmodels python3-pil
+  # clang-format checks the source layout (tests/architecture)
+  libgtest-dev libgmock-dev libbenchmark-dev shellcheck clang-format ccache hyperfine python3-scipy python3-statsmodels python3-pil
   # the service tests: /metrics parsed by the Prometheus project's own parser; wrk drives bench/service/load_test.sh
   python3-prometheus-client wrk
   # the Slurm executor's test: a real one-node cluster on localhost (jobs/slurm/local-cluster.sh)
