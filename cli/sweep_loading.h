@@ -9,7 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "orchestrator/config/sweep_config.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 
 namespace slamsweep::cli {
 

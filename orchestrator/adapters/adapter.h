@@ -13,7 +13,7 @@
 #include "evaluator/core/trajectory.h"
 #include "evaluator/sequence/robot_log.h"
 #include "orchestrator/adapters/run_paths.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 
 namespace slamsweep::orchestrator {
 

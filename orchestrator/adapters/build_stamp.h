@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 
 namespace slamsweep::orchestrator {
 

@@ -11,7 +11,7 @@
 #include "evaluator/sequence/robot_log_file.h"
 #include "orchestrator/adapters/output_files.h"
 #include "orchestrator/adapters/rendered_map.h"
-#include "orchestrator/adapters/run_failure.h"
+#include "orchestrator/run/run_failure.h"
 #include "orchestrator/adapters/stage_image.h"
 #include "orchestrator/config/program_path.h"
 #include "orchestrator/matrix/seed_fold.h"

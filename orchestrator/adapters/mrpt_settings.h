@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "orchestrator/adapters/mrpt_ini.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 
 namespace slamsweep::orchestrator {
 

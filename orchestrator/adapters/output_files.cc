@@ -9,7 +9,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/map/map_file.h"
-#include "orchestrator/adapters/run_failure.h"
+#include "orchestrator/run/run_failure.h"
 
 namespace slamsweep::orchestrator {
 

@@ -10,7 +10,7 @@
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/core/trajectory.h"
 #include "evaluator/mapping/occupancy_mapper_options.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 
 namespace slamsweep::orchestrator {
 

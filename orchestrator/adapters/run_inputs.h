@@ -12,7 +12,7 @@
 #include "evaluator/core/trajectory.h"
 #include "evaluator/sequence/robot_log.h"
 #include "evaluator/sequence/sequence.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 
 namespace slamsweep::orchestrator {
 

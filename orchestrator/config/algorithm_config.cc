@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "evaluator/core/input_error.h"
-#include "orchestrator/config/option_checks.h"
+#include "orchestrator/run/spec_checks.h"
 #include "orchestrator/config/placeholders.h"
 #include "orchestrator/config/program_path.h"
 #include "orchestrator/config/yaml_fields.h"

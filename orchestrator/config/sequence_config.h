@@ -7,7 +7,7 @@
 
 #include "evaluator/sequence/catalog.h"
 #include "orchestrator/config/input_policy.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 
 namespace slamsweep::orchestrator {
 

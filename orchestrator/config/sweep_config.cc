@@ -11,7 +11,7 @@
 #include "orchestrator/config/algorithm_config.h"
 #include "orchestrator/config/cell_filter.h"
 #include "orchestrator/config/sequence_config.h"
-#include "orchestrator/config/option_checks.h"
+#include "orchestrator/run/spec_checks.h"
 #include "orchestrator/config/yaml_fields.h"
 
 namespace slamsweep::orchestrator {

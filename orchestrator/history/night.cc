@@ -9,7 +9,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "orchestrator/history/series_odometry.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_json.h"
 #include "orchestrator/store/results_store.h"
 
 namespace slamsweep::orchestrator {
@@ -64,7 +64,7 @@ Night ReadNight(const std::filesystem::path& result_dir, const std::string& labe
     cell.sequence = run.sequence;
     cell.noise = run.noise;
     cell.odometry = odometry;
-    if (run.status != "ok") {
+    if (run.status != RunStatus::kOk) {
       ++cell.failed_runs;
       continue;
     }

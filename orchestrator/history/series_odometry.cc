@@ -3,7 +3,7 @@
 #include <set>
 
 #include "evaluator/sequence/odometry_mode.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_json.h"
 #include "orchestrator/store/results_store.h"
 
 namespace slamsweep::orchestrator {

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <tuple>
 
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_json.h"
 
 namespace slamsweep::orchestrator {
 

@@ -9,6 +9,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/noise/random.h"
 #include "orchestrator/matrix/run_id.h"
+#include "orchestrator/run/run_json.h"
 
 namespace slamsweep::orchestrator {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "orchestrator/config/sweep_config.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 
 namespace slamsweep::orchestrator {
 

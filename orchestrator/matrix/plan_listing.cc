@@ -1,4 +1,5 @@
 #include "orchestrator/matrix/plan_listing.h"
+#include "orchestrator/run/run_json.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

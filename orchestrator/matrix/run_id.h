@@ -4,13 +4,10 @@
 #include <string>
 #include <string_view>
 
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
+#include "orchestrator/run/stable_hash.h"
 
 namespace slamsweep::orchestrator {
-
-/// 64-bit FNV-1a of `bytes`: simple, specified bit for bit, and the same on every machine, which
-/// std::hash is not. Names runs and picks shards, so it must never change.
-std::uint64_t Fnv1a64(std::string_view bytes);
 
 /// A readable part of a run id: every character outside [A-Za-z0-9_.-] becomes '_', leading dots
 /// are dropped (no hidden folders, no "..") and at most 32 characters are kept; "_" when nothing is left.

@@ -4,7 +4,7 @@
 #include <string_view>
 #include <vector>
 
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 
 namespace slamsweep::orchestrator {
 

@@ -13,7 +13,7 @@ std::optional<nlohmann::json> ReusableResult(const RunSpec& run, const std::file
   if (spec->value("run_id", "") != run.run_id) return std::nullopt;
   SweepSettings strict;  // no --rerun failed, no --reuse-stale: only an ok run of the same build counts
   bool stale = false;
-  if (!RecordedRunIsReusable(run, stored.result->value("status", "failed"), *spec, strict, stale)) return std::nullopt;
+  if (!RecordedRunIsReusable(run, StatusOfResultJson(*stored.result), *spec, strict, stale)) return std::nullopt;
   if (stored.result->value("status", "") != "ok") return std::nullopt;
   const auto evaluation = spec->find("evaluation");
   if (evaluation == spec->end() || *evaluation != ToJson(run).at("evaluation")) return std::nullopt;

@@ -495,7 +495,10 @@ void Scheduler::Finish(SweepEntry& entry, const std::string& state, const std::s
   try {
     const std::size_t failed = WriteSweepOutputs(*entry.store, matrix_ids, entry.sweep.result_dir);
     if (final_state != "cancelled") final_state = failed > 0 ? "failed" : "ok";
-    entry.store->FinishSweep(entry.store_sweep_id, final_state == "cancelled" ? "interrupted" : final_state,
+    entry.store->FinishSweep(entry.store_sweep_id,
+                             final_state == "cancelled" ? SweepStatus::kInterrupted
+                             : failed > 0               ? SweepStatus::kFailed
+                                                        : SweepStatus::kOk,
                              static_cast<std::int64_t>(ran));
   } catch (const std::exception& error) {
     entry.store.reset();

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 #include "orchestrator/service/queue_store.h"
 #include "orchestrator/service/service_metrics.h"
 #include "orchestrator/store/results_store.h"

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "orchestrator/config/input_policy.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 
 namespace slamsweep::orchestrator::service {
 

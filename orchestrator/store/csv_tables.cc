@@ -124,7 +124,7 @@ std::string RunsCsv(const std::vector<StoredRun>& runs) {
                                        run.noise,
                                        std::to_string(run.iteration),
                                        JsonScalar(Field(run.spec, "seed")),
-                                       run.status,
+                                       std::string(RunStatusName(run.status)),
                                        JsonScalar(Field(run.result, "failure_kind")),
                                        JsonScalar(Field(run.result, "reason")),
                                        run.odometry_is_reference ? "true" : "false",

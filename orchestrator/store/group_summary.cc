@@ -60,7 +60,7 @@ std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs) {
     ++summary.runs;
     summary.odometry_is_reference = summary.odometry_is_reference || run.odometry_is_reference;
     summary.flags |= run.flags;
-    if (run.status != "ok") {
+    if (run.status != RunStatus::kOk) {
       ++summary.failed;
       continue;
     }

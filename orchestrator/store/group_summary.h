@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evaluator/core/sample_summary.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_json.h"
 #include "orchestrator/store/results_store.h"
 
 namespace slamsweep::orchestrator {

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "orchestrator/files/atomic_file.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 #include "orchestrator/store/json_lookup.h"
 
 namespace slamsweep::orchestrator {
@@ -91,11 +91,11 @@ Testcase RenderTestcase(const StoredRun& run) {
   testcase.time_s = run.wall_s.value_or(0.0);
   std::string body;
   std::vector<std::string> notes;
-  if (run.status != "ok") {
+  if (run.status != RunStatus::kOk) {
     testcase.failed = true;
     const std::string reason = Text(FieldOrNull(run.result, "reason"));
     std::string kind = Text(FieldOrNull(run.result, "failure_kind"));
-    if (kind.empty()) kind = "failed";
+    if (kind.empty()) kind = RunStatusName(RunStatus::kFailed);
     body +=
         fmt::format("      <failure message=\"{0}\" type=\"{1}\">{0}</failure>\n", XmlEscape(reason), XmlEscape(kind));
   } else {

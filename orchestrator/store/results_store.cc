@@ -8,7 +8,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "orchestrator/matrix/run_id.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_json.h"
 #include "orchestrator/store/store_schema.h"
 #include "orchestrator/store/json_lookup.h"
 
@@ -25,8 +25,15 @@ std::string NullableText(const SqliteStatement& row, int column) { return row.Is
 
 struct RunColumns {
   std::string run_id;
-  std::string status;
+  RunStatus status = RunStatus::kFailed;
 };
+
+// A runs.status as RecordRun wrote it; anything else is a damaged database.
+RunStatus StoredRunStatus(const std::filesystem::path& file, const std::string& run_id, const std::string& text) {
+  const std::optional<RunStatus> status = RecordedRunStatus(text);
+  if (!status) throw InputError(fmt::format("{}: runs.status of run {}: found \"{}\"", file.string(), run_id, text));
+  return *status;
+}
 
 // Checks what the store cannot do without; other fields are stored as they are (null when absent).
 RunColumns ValidateRun(const json& run_spec, const json& result) {
@@ -43,11 +50,15 @@ RunColumns ValidateRun(const json& run_spec, const json& result) {
         fmt::format("{}: run_id: expected \"{}\" (the run.json's), found {}", where, columns.run_id, Dump(*result_id)));
   }
   const json* status = FindField(result, "status");
-  if (status == nullptr || !status->is_string() || (*status != "ok" && *status != "failed")) {
-    throw InputError(fmt::format("{}: status: expected \"ok\" or \"failed\", found {}", where,
+  const std::optional<RunStatus> recorded = status != nullptr && status->is_string()
+                                                ? RecordedRunStatus(status->get_ref<const std::string&>())
+                                                : std::nullopt;
+  if (!recorded) {
+    throw InputError(fmt::format("{}: status: expected \"{}\" or \"{}\", found {}", where,
+                                 RunStatusName(RunStatus::kOk), RunStatusName(RunStatus::kFailed),
                                  status == nullptr ? "nothing" : Dump(*status)));
   }
-  columns.status = status->get<std::string>();
+  columns.status = *recorded;
   if (const json* metrics = FindField(result, "metrics"); metrics != nullptr && !metrics->is_null()) {
     if (!metrics->is_array()) throw InputError(fmt::format("{}: metrics: expected an array", where));
     for (std::size_t i = 0; i < metrics->size(); ++i) {
@@ -237,20 +248,21 @@ std::int64_t ResultsStore::BeginSweep(const SweepInfo& info) {
   SqliteTransaction transaction(db_);
   auto insert = db_.Prepare(
       "INSERT INTO sweeps(name, config_path, config_sha, started_at, status, host, slamsweep_version, run_count, "
-      "command_line) VALUES(?, ?, ?, ?, 'running', ?, ?, 0, ?)");
+      "command_line) VALUES(?, ?, ?, ?, ?, ?, ?, 0, ?)");
   insert.Bind(1, info.name).Bind(2, info.config_path).Bind(3, info.config_sha);
   insert.Bind(4, info.started_at.empty() ? UtcNowIso8601() : info.started_at);
-  insert.Bind(5, info.host).Bind(6, info.slamsweep_version).Bind(7, info.command_line);
+  insert.Bind(5, SweepStatusName(SweepStatus::kRunning));
+  insert.Bind(6, info.host).Bind(7, info.slamsweep_version).Bind(8, info.command_line);
   insert.Run();
   const std::int64_t id = db_.LastInsertRowId();
   transaction.Commit();
   return id;
 }
 
-void ResultsStore::FinishSweep(std::int64_t sweep_id, const std::string& status, std::int64_t run_count) {
+void ResultsStore::FinishSweep(std::int64_t sweep_id, SweepStatus status, std::int64_t run_count) {
   SqliteTransaction transaction(db_);
   auto update = db_.Prepare("UPDATE sweeps SET finished_at = ?, status = ?, run_count = ? WHERE id = ?");
-  update.Bind(1, UtcNowIso8601()).Bind(2, status).Bind(3, run_count).Bind(4, sweep_id);
+  update.Bind(1, UtcNowIso8601()).Bind(2, SweepStatusName(status)).Bind(3, run_count).Bind(4, sweep_id);
   update.Run();
   transaction.Commit();
 }
@@ -268,7 +280,14 @@ std::vector<StoredSweep> ResultsStore::Sweeps() const {
     s.info.config_sha = NullableText(select, 3);
     s.info.started_at = NullableText(select, 4);
     s.finished_at = NullableText(select, 5);
-    s.status = NullableText(select, 6);
+    const std::string status = NullableText(select, 6);
+    const std::optional<SweepStatus> known = SweepStatusFromName(status);
+    if (!known) {
+      throw InputError(
+          fmt::format("{}: sweeps.status of sweep {}: expected running, ok, failed or interrupted, found \"{}\"",
+                      db_.file().string(), s.id, status));
+    }
+    s.status = *known;
     s.info.host = NullableText(select, 7);
     s.info.slamsweep_version = NullableText(select, 8);
     s.run_count = select.Int64(9);
@@ -293,7 +312,7 @@ std::int64_t ResultsStore::ImportSweep(const StoredSweep& sweep) {
       "INSERT INTO sweeps(name, config_path, config_sha, started_at, finished_at, status, host, slamsweep_version, "
       "run_count, command_line) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   insert.Bind(1, sweep.info.name).Bind(2, sweep.info.config_path).Bind(3, sweep.info.config_sha);
-  insert.Bind(4, sweep.info.started_at).Bind(5, sweep.finished_at).Bind(6, sweep.status);
+  insert.Bind(4, sweep.info.started_at).Bind(5, sweep.finished_at).Bind(6, SweepStatusName(sweep.status));
   insert.Bind(7, sweep.info.host).Bind(8, sweep.info.slamsweep_version).Bind(9, sweep.run_count);
   insert.Bind(10, sweep.info.command_line);
   insert.Run();
@@ -423,7 +442,7 @@ void ResultsStore::WriteRun(std::int64_t sweep_id, const json& run_spec, const j
     }
     insert.BindJson(6, Nested(run_spec, "sequence", "name")).BindJson(7, Nested(run_spec, "noise", "name"));
     insert.BindJson(8, FieldOrNull(run_spec, "iteration")).BindJson(9, FieldOrNull(run_spec, "seed"));
-    insert.Bind(10, columns.status);
+    insert.Bind(10, RunStatusName(columns.status));
     int index = 11;
     for (const char* key : kResultColumns) insert.BindJson(index++, FieldOrNull(result, key));
     insert.Bind(20, run_dir_relative);
@@ -479,11 +498,11 @@ void ResultsStore::WriteRun(std::int64_t sweep_id, const json& run_spec, const j
   }
 }
 
-std::optional<std::string> ResultsStore::RunStatus(const std::string& run_id) const {
+std::optional<RunStatus> ResultsStore::StatusOf(const std::string& run_id) const {
   auto select = db_.Prepare("SELECT status FROM runs WHERE run_id = ?");
   select.Bind(1, run_id);
   if (!select.Step()) return std::nullopt;
-  return select.Text(0);
+  return StoredRunStatus(db_.file(), run_id, select.Text(0));
 }
 
 std::optional<StoredRun> ResultsStore::FindRun(const std::string& run_id) const {
@@ -544,7 +563,7 @@ std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const s
       const std::int64_t id = select.Int64(0);
       run.run_id = select.Text(1);
       run.sweep_id = select.Int64(2);
-      run.status = select.Text(3);
+      run.status = StoredRunStatus(db_.file(), run.run_id, select.Text(3));
       run.run_dir = NullableText(select, 4);
       run.algorithm = NullableText(select, 5);
       run.sequence = NullableText(select, 6);
@@ -561,7 +580,7 @@ std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const s
       run.result = document(select.Text(17), run.run_id, "result.json");
       run.result_digest = static_cast<std::uint64_t>(select.Int64(18));
       run.result["run_id"] = run.run_id;
-      run.result["status"] = run.status;
+      run.result["status"] = std::string(RunStatusName(run.status));
       for (int i = 0; i < static_cast<int>(std::size(kResultColumns)); ++i) {
         run.result[kResultColumns[i]] = select.Json(kResultColumnIndex[i]);
       }

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "orchestrator/run/run_flags.h"
+#include "orchestrator/run/run_status.h"
 #include "orchestrator/store/sqlite_db.h"
 #include "orchestrator/store/store_schema.h"
 
@@ -37,8 +38,8 @@ struct StoredSweep {
   std::int64_t id = 0;
   SweepInfo info;
   std::string finished_at;
-  /// "running" until FinishSweep, then what the orchestrator reported ("ok", "failed", "interrupted").
-  std::string status;
+  /// kRunning until FinishSweep, then what the orchestrator reported.
+  SweepStatus status = SweepStatus::kRunning;
   std::int64_t run_count = 0;
 };
 
@@ -65,8 +66,8 @@ struct StoredRun {
   /// FNV-1a 64 of the whole result.json as recorded, flags left out: two recordings of a run agree when
   /// their digests and flags do (merge).
   std::uint64_t result_digest = 0;
-  /// "ok" or "failed".
-  std::string status;
+  /// kOk or kFailed.
+  RunStatus status = RunStatus::kFailed;
   /// Relative to the output directory ("runs/<run-id>").
   std::string run_dir;
   std::string algorithm;
@@ -103,7 +104,7 @@ class ResultsStore {
 
   /// Inserts a sweep with status "running"; returns its id.
   std::int64_t BeginSweep(const SweepInfo& info);
-  void FinishSweep(std::int64_t sweep_id, const std::string& status, std::int64_t run_count);
+  void FinishSweep(std::int64_t sweep_id, SweepStatus status, std::int64_t run_count);
   std::vector<StoredSweep> Sweeps() const;
   /// The id of a sweep equal to `sweep` (same name, config digest, start time, host), adding it when there is
   /// none; used by merge so that merging the same shard twice does not duplicate its sweep.
@@ -111,7 +112,7 @@ class ResultsStore {
 
   /// Records (or replaces) one run: its row, its metrics and metric specifications, in one transaction.
   /// `run_spec` is run.json, `result` is result.json (DESIGN.md). Throws InputError naming the field when
-  /// either lacks what the store needs (run_id, status "ok"/"failed", well-formed metrics).
+  /// either lacks what the store needs (run_id, a recorded status (RecordedRunStatus), well-formed metrics).
   void RecordRun(std::int64_t sweep_id, const nlohmann::json& run_spec, const nlohmann::json& result,
                  const std::string& run_dir_relative);
 
@@ -133,8 +134,8 @@ class ResultsStore {
   };
   std::map<std::string, RecordedIdentity> RecordedIdentities() const;
 
-  /// "ok" / "failed", or empty when the run was never recorded.
-  std::optional<std::string> RunStatus(const std::string& run_id) const;
+  /// kOk or kFailed, or empty when the run was never recorded.
+  std::optional<RunStatus> StatusOf(const std::string& run_id) const;
   std::optional<StoredRun> FindRun(const std::string& run_id) const;
   /// Adds `flags` to a recorded run (its flags column, which `result`'s flags mirror); false when the run
   /// was never recorded. The sweep marks a run it reuses under another build or evaluation "stale" this way.

@@ -49,7 +49,7 @@ json SummarizeRun(const StoredRun& run) {
       {"seeded", run.seeding == "seeded" || run.seeding == "deterministic"},
       {"odometry_is_reference", run.odometry_is_reference},
       {"flags", ToJson(run.flags)},
-      {"status", run.status},
+      {"status", RunStatusName(run.status)},
       {"failure_kind", FieldOrNull(result, "failure_kind")},
       {"reason", FieldOrNull(result, "reason")},
       {"exit_code", FieldOrNull(result, "exit_code")},
@@ -74,14 +74,17 @@ json BuildSummaryJson(const std::vector<StoredRun>& runs, const evaluator::Valid
   std::size_t ok = 0;
   for (const StoredRun& run : runs) {
     listed.push_back(SummarizeRun(run));
-    if (run.status == "ok") ++ok;
+    if (run.status == RunStatus::kOk) ++ok;
   }
   json groups = json::array();
   for (const GroupSummary& group : SummarizeGroups(runs)) groups.push_back(ToJson(group));
   json summary{{"generated_at", generated_at},
                {"groups", std::move(groups)},
                {"runs", std::move(listed)},
-               {"counts", {{"total", runs.size()}, {"ok", ok}, {"failed", runs.size() - ok}}}};
+               {"counts",
+                {{"total", runs.size()},
+                 {RunStatusName(RunStatus::kOk), ok},
+                 {RunStatusName(RunStatus::kFailed), runs.size() - ok}}}};
   // Which ground-truth-free metrics track real error (evaluator/validity); only with reference data.
   if (!study.empty()) summary["validity"] = ToJson(study);
   return summary;

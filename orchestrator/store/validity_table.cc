@@ -8,7 +8,7 @@ evaluator::ValidityRun ToValidityRun(const StoredRun& run) {
   out.sequence = run.sequence;
   out.noise = run.noise;
   out.algorithm = run.algorithm;
-  out.ok = run.status == "ok";
+  out.ok = run.status == RunStatus::kOk;
   out.odometry_is_reference = run.odometry_is_reference;
   for (const StoredMetric& metric : run.metrics) {
     if (metric.value) out.values[metric.metric + "." + metric.statistic] = *metric.value;

@@ -5,6 +5,8 @@
 
 #include "evaluator/core/input_error.h"
 #include "orchestrator/files/atomic_file.h"
+#include "orchestrator/run/run_failure.h"
+#include "orchestrator/run/run_status.h"
 
 namespace slamsweep::orchestrator {
 
@@ -61,8 +63,8 @@ std::optional<nlohmann::json> ReadRunSpecJson(const std::filesystem::path& run_d
 
 nlohmann::json MissingResult(const RunSpec& run, const std::string& reason, bool interrupted) {
   return {{"run_id", run.run_id},
-          {"status", "failed"},
-          {"failure_kind", interrupted ? "interrupted" : "internal"},
+          {"status", RunStatusName(RunStatus::kFailed)},
+          {"failure_kind", FailureKindName(interrupted ? FailureKind::kInterrupted : FailureKind::kInternal)},
           {"reason", reason},
           {"exit_code", nullptr},
           {"signal", nullptr},

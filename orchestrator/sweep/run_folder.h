@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 
 namespace slamsweep::orchestrator {
 

@@ -20,8 +20,8 @@ namespace {
 
 std::string ExpectationKey(const RunSpec& run) { return run.algorithm.name + "\t" + run.sequence.entry.name; }
 
-bool IsDone(const std::string& status, bool rerun_failed) {
-  return status == "ok" || (status == "failed" && !rerun_failed);
+bool IsDone(std::optional<RunStatus> status, bool rerun_failed) {
+  return status == RunStatus::kOk || (status == RunStatus::kFailed && !rerun_failed);
 }
 
 /// The supervising loop's state for one sweep.
@@ -112,8 +112,8 @@ class SweepLoop {
 
 }  // namespace
 
-bool RecordedRunIsReusable(const RunSpec& run, const std::string& recorded_status, const nlohmann::json& recorded_spec,
-                           const SweepSettings& settings, bool& stale) {
+bool RecordedRunIsReusable(const RunSpec& run, std::optional<RunStatus> recorded_status,
+                           const nlohmann::json& recorded_spec, const SweepSettings& settings, bool& stale) {
   stale = false;
   if (!IsDone(recorded_status, settings.rerun_failed)) return false;
   const auto build = recorded_spec.find("build");
@@ -174,7 +174,10 @@ SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& set
   phase.emplace("summary");
   const std::size_t failed_in_store = WriteSweepOutputs(store, matrix_ids, settings.output_dir);
   outcome.failed = std::max(outcome.failed, failed_in_store);
-  store.FinishSweep(sweep_id, outcome.interrupted ? "interrupted" : (outcome.ExitCode() == 0 ? "ok" : "failed"),
+  store.FinishSweep(sweep_id,
+                    outcome.interrupted       ? SweepStatus::kInterrupted
+                    : outcome.ExitCode() == 0 ? SweepStatus::kOk
+                                              : SweepStatus::kFailed,
                     static_cast<std::int64_t>(outcome.ok + outcome.failed));
   phase.reset();
   FlushPhaseTimes("sweep");

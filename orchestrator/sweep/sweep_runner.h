@@ -6,9 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_json.h"
 #include "orchestrator/sweep/executor.h"
 #include "orchestrator/sweep/status.h"
+#include "orchestrator/run/run_status.h"
 
 namespace slamsweep::orchestrator {
 
@@ -66,8 +67,8 @@ SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& set
 /// "failed" unless rerun_failed) and was computed under the same build identity and scored under
 /// the same evaluation options (SameEvaluation), or reuse_stale. `stale` is set when only the build
 /// identity or the evaluation options stood in the way (or were waived by reuse_stale).
-bool RecordedRunIsReusable(const RunSpec& run, const std::string& recorded_status, const nlohmann::json& recorded_spec,
-                           const SweepSettings& settings, bool& stale);
+bool RecordedRunIsReusable(const RunSpec& run, std::optional<RunStatus> recorded_status,
+                           const nlohmann::json& recorded_spec, const SweepSettings& settings, bool& stale);
 
 /// Order in which runs start: longest expected first (durations recorded by earlier sweeps,
 /// keyed "<algorithm>\t<sequence>"), so that a long run does not start last and stretch the

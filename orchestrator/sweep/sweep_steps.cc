@@ -4,6 +4,7 @@
 
 #include "orchestrator/store/result_files.h"
 #include "orchestrator/sweep/run_folder.h"
+#include "orchestrator/run/run_json.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -54,7 +55,7 @@ std::vector<const RunSpec*> RunsStillToDo(const std::vector<RunSpec>& runs, cons
       StoredResult stored = ReadRunResult(run_dir);
       std::optional<nlohmann::json> stored_spec = stored.result ? ReadRunSpecJson(run_dir) : std::nullopt;
       if (stored.result && stored_spec && stored.result->value("run_id", "") == run.run_id &&
-          RecordedRunIsReusable(run, stored.result->value("status", "failed"), *stored_spec, settings, stale)) {
+          RecordedRunIsReusable(run, StatusOfResultJson(*stored.result), *stored_spec, settings, stale)) {
         outcome.stale += stale ? 1 : 0;
         store.RecordRun(sweep_id, *stored_spec, *stored.result, std::filesystem::path("runs") / run.run_id);
         if (stale) MarkStale(settings.output_dir, run.run_id, store);
@@ -92,9 +93,10 @@ std::optional<FinishedRun> RecordWorkerEnding(const RunSpec& run, const WorkerEn
   store.RecordRun(sweep_id, ToJson(run), result, std::filesystem::path("runs") / run.run_id);
   FinishedRun finished;
   finished.run_id = run.run_id;
-  finished.ok = result.value("status", "failed") == "ok";
+  finished.ok = StatusOfResultJson(result) == RunStatus::kOk;
   if (!finished.ok) {
-    finished.reason = result.value("failure_kind", std::string("failed")) + ": " + result.value("reason", "");
+    finished.reason = result.value("failure_kind", std::string(RunStatusName(RunStatus::kFailed))) + ": " +
+                      result.value("reason", "");
   }
   if (result.contains("wall_s") && result["wall_s"].is_number()) finished.wall_s = result["wall_s"].get<double>();
   return finished;
@@ -107,7 +109,7 @@ std::size_t WriteSweepOutputs(const ResultsStore& store, const std::set<std::str
     if (matrix_ids.count(stored.run_id) > 0) stored_runs.push_back(std::move(stored));
   }
   std::size_t failed = 0;
-  for (const StoredRun& stored : stored_runs) failed += stored.status == "ok" ? 0 : 1;
+  for (const StoredRun& stored : stored_runs) failed += stored.status == RunStatus::kOk ? 0 : 1;
   WriteResultFiles(stored_runs, output_dir);
   return failed;
 }

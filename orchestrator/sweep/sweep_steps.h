@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 #include "orchestrator/store/results_store.h"
 #include "orchestrator/sweep/executor.h"
 #include "orchestrator/sweep/status.h"

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "orchestrator/adapters/run_paths.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 #include "orchestrator/sandbox/sandbox_availability.h"
 #include "orchestrator/sandbox/sandbox_spec.h"
 

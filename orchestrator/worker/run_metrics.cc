@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "evaluator/core/input_error.h"
-#include "orchestrator/adapters/run_failure.h"
+#include "orchestrator/run/run_failure.h"
 #include "evaluator/map/paper_metrics.h"
 #include "evaluator/map_compare/map_compare.h"
 #include "evaluator/map_compare/map_resample.h"
@@ -138,10 +138,6 @@ void RequireCoverage(const EvaluationOptions& evaluation, const RunMetrics& metr
                                "{:.1f} to {:.1f} s), below evaluation.min_coverage {:.0f} %",
                                100.0 * c.fraction, c.estimate_start_s, c.estimate_end_s, c.reference_start_s,
                                c.reference_end_s, 100.0 * evaluation.min_coverage));
-}
-
-nlohmann::json ToJson(const FlatMetric& metric) {
-  return {{"metric", metric.metric}, {"statistic", metric.statistic}, {"value", metric.value}, {"unit", metric.unit}};
 }
 
 RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricInputs& inputs) {

@@ -12,17 +12,10 @@
 #include "evaluator/core/trajectory.h"
 #include "evaluator/formats/trajectory/segment_errors_csv.h"
 #include "evaluator/trajectory/coverage.h"
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/flat_metric.h"
+#include "orchestrator/run/run_spec.h"
 
 namespace slamsweep::orchestrator {
-
-/// One number of result.json's flat `metrics` list (orchestrator/DESIGN.md).
-struct FlatMetric {
-  std::string metric;     ///< "ape_trans", "rpe_rot", "relations_trans", "corners", ...
-  std::string statistic;  ///< "rmse", "mean", ..., "n", or "value" for the map metrics
-  double value = 0.0;
-  std::string unit;  ///< "m", "deg", "ratio", "count"
-};
 
 /// Every metric of a run with its full specification.
 struct RunMetrics {
@@ -85,8 +78,5 @@ std::string SegmentRpeMetricName(std::string_view kind, double length_m);
 /// Throws RunFailure (incomplete_trajectory) when the trajectory spans less of the reference's time
 /// span than evaluation.min_coverage: its errors would be measured on the part it chose to keep.
 void RequireCoverage(const EvaluationOptions& evaluation, const RunMetrics& metrics);
-
-/// {"metric", "statistic", "value", "unit"}.
-nlohmann::json ToJson(const FlatMetric& metric);
 
 }  // namespace slamsweep::orchestrator

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "orchestrator/files/atomic_file.h"
+#include "orchestrator/run/run_status.h"
 
 namespace slamsweep::orchestrator {
 
@@ -18,7 +19,7 @@ void RunResult::Fail(FailureKind kind, std::string why) {
 nlohmann::json ToJson(const RunResult& result) {
   nlohmann::json json;
   json["run_id"] = result.run_id;
-  json["status"] = result.ok() ? "ok" : "failed";
+  json["status"] = RunStatusName(result.ok() ? RunStatus::kOk : RunStatus::kFailed);
   json["failure_kind"] =
       result.failure_kind ? nlohmann::json(std::string(FailureKindName(*result.failure_kind))) : nlohmann::json();
   json["reason"] = result.reason;

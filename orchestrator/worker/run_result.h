@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "orchestrator/adapters/run_failure.h"
+#include "orchestrator/run/run_failure.h"
 #include "orchestrator/run/run_flags.h"
 #include "orchestrator/worker/run_metrics.h"
 

@@ -159,14 +159,13 @@ std::vector<FlatMetric> FlatMetrics(const json& array, const std::string& name, 
 void ReadResult(const std::filesystem::path& file, RunRecord& run) {
   const json result = ReadJsonFile(file);
   if (!result.is_object()) throw InputError(file.string() + ": expected a JSON object");
-  const std::string status = OptionalString(result, "status", file);
-  if (status == "ok") {
-    run.status = RunStatus::kOk;
-  } else if (status == "failed") {
-    run.status = RunStatus::kFailed;
-  } else {
-    FieldError(file, "status", "\"ok\" or \"failed\"");
+  const std::optional<RunStatus> status = orchestrator::RecordedRunStatus(OptionalString(result, "status", file));
+  if (!status) {
+    FieldError(file, "status",
+               "\"" + std::string(RunStatusName(RunStatus::kOk)) + "\" or \"" +
+                   std::string(RunStatusName(RunStatus::kFailed)) + "\"");
   }
+  run.status = *status;
   run.failure_kind = OptionalString(result, "failure_kind", file);
   run.reason = OptionalString(result, "reason", file);
   run.exit_code = OptionalInteger(result, "exit_code", file);

@@ -2,20 +2,6 @@
 
 namespace slamsweep::report {
 
-std::string_view RunStatusName(RunStatus status) {
-  switch (status) {
-    case RunStatus::kOk:
-      return "ok";
-    case RunStatus::kFailed:
-      return "failed";
-    case RunStatus::kUnfinished:
-      return "unfinished";
-    case RunStatus::kUnreadable:
-      return "unreadable";
-  }
-  return "unknown";
-}
-
 std::optional<double> RunRecord::Metric(std::string_view metric_name, std::string_view statistic) const {
   for (const FlatMetric& m : metrics) {
     if (m.metric == metric_name && m.statistic == statistic) return m.value;

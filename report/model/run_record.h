@@ -6,28 +6,15 @@
 #include <string>
 #include <vector>
 
+#include "orchestrator/run/flat_metric.h"
 #include "orchestrator/run/run_flags.h"
+#include "orchestrator/run/run_status.h"
 
 namespace slamsweep::report {
 
-/// What became of a run, as far as its folder tells.
-enum class RunStatus {
-  kOk,          ///< result.json says "ok"
-  kFailed,      ///< result.json says "failed" (the reason is in `reason`)
-  kUnfinished,  ///< run.json but no result.json: interrupted or still running
-  kUnreadable,  ///< run.json or result.json could not be read (the error is in `reason`)
-};
-
-/// "ok", "failed", "unfinished", "unreadable".
-std::string_view RunStatusName(RunStatus status);
-
-/// One flat metric of result.json, e.g. {"ape_trans", "rmse", 0.12, "m"}.
-struct FlatMetric {
-  std::string metric;
-  std::string statistic;
-  double value = 0.0;
-  std::string unit;
-};
+using orchestrator::FlatMetric;
+using orchestrator::RunStatus;
+using orchestrator::RunStatusName;
 
 /// File names from result.json's `outputs`, relative to the run folder; empty when absent.
 struct RunOutputs {

@@ -6,7 +6,7 @@
 #include <set>
 #include <tuple>
 
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_json.h"
 
 #include "report/model/validity_runs.h"
 #include "report/model/validity_support.h"

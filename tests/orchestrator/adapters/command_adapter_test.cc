@@ -6,7 +6,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "orchestrator/adapters/mrpt_adapters.h"
-#include "orchestrator/adapters/run_failure.h"
+#include "orchestrator/run/run_failure.h"
 #include "orchestrator/adapters/run_inputs.h"
 #include "orchestrator/process/process_set.h"
 #include "tests/orchestrator/worker/run_spec_fixture.h"

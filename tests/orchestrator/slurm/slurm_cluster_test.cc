@@ -20,7 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_spec.h"
 #include "orchestrator/process/interruption.h"
 #include "orchestrator/slurm/slurm_command.h"
 #include "orchestrator/slurm/slurm_executor.h"

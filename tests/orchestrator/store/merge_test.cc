@@ -52,14 +52,14 @@ void MakeShards(Shards& shards) {
   const std::int64_t sa = a.BeginSweep(info);
   AddRun(shards.a, a, sa, MakeOkResult("r1"));
   AddRun(shards.a, a, sa, MakeOkResult("r2", 3.0, 0.12, "2026-11-22T05:00:03Z"));
-  a.FinishSweep(sa, "ok", 2);
+  a.FinishSweep(sa, SweepStatus::kOk, 2);
   ResultsStore b = ResultsStore::Open(shards.b / "results.sqlite");
   info.name = "shard-b";
   const std::int64_t sb = b.BeginSweep(info);
   AddRun(shards.b, b, sb, MakeOkResult("r1"));
   AddRun(shards.b, b, sb, MakeOkResult("r2", 5.0, 0.99, "2026-11-22T06:00:00Z"));
   AddRun(shards.b, b, sb, MakeOkResult("r3"));
-  b.FinishSweep(sb, "ok", 3);
+  b.FinishSweep(sb, SweepStatus::kOk, 3);
 }
 
 TEST(MergeTest, CombinesShardsKeepsDuplicatesOnceAndTheNewerConflict) {

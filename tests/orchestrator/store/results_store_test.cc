@@ -45,7 +45,7 @@ TEST(ResultsStoreTest, CreatesSchemaAndReopens) {
     info.host = "node1";
     const std::int64_t sweep = store.BeginSweep(info);
     store.RecordRun(sweep, MakeSpec("r1"), MakeOkResult("r1"), "runs/r1");
-    store.FinishSweep(sweep, "ok", 1);
+    store.FinishSweep(sweep, SweepStatus::kOk, 1);
   }
   EXPECT_EQ(QueryInt(file, "PRAGMA user_version"), kResultsSchemaVersion);
   EXPECT_EQ(QueryInt(file,
@@ -68,12 +68,12 @@ TEST(ResultsStoreTest, CreatesSchemaAndReopens) {
     EXPECT_EQ(mode.Text(0), "wal");
   }
   ResultsStore reopened = ResultsStore::Open(file);
-  EXPECT_EQ(reopened.RunStatus("r1"), "ok");
-  EXPECT_EQ(reopened.RunStatus("nope"), std::nullopt);
+  EXPECT_EQ(reopened.StatusOf("r1"), RunStatus::kOk);
+  EXPECT_EQ(reopened.StatusOf("nope"), std::nullopt);
   const auto sweeps = reopened.Sweeps();
   ASSERT_EQ(sweeps.size(), 1u);
   EXPECT_EQ(sweeps[0].info.name, "quick");
-  EXPECT_EQ(sweeps[0].status, "ok");
+  EXPECT_EQ(sweeps[0].status, SweepStatus::kOk);
   EXPECT_EQ(sweeps[0].run_count, 1);
   EXPECT_FALSE(sweeps[0].info.started_at.empty());
   EXPECT_FALSE(sweeps[0].finished_at.empty());
@@ -90,7 +90,7 @@ TEST(ResultsStoreTest, RunsCarryColumnsSpecResultAndMetrics) {
   ASSERT_EQ(runs.size(), 2u);
   // Ordered by sequence first: fr079 < intel.
   EXPECT_EQ(runs[0].run_id, "r2");
-  EXPECT_EQ(runs[0].status, "failed");
+  EXPECT_EQ(runs[0].status, RunStatus::kFailed);
   EXPECT_TRUE(runs[0].metrics.empty());
   const StoredRun& r1 = runs[1];
   EXPECT_EQ(r1.sweep_id, 7);
@@ -201,7 +201,7 @@ TEST(ResultsStoreTest, RecordRunReplacesTheRunAndAllItsMetrics) {
   EXPECT_EQ(QueryInt(dir / "results.sqlite", "SELECT count(*) FROM metric_spec_refs"), 0);
   // A failed re-run leaves no metrics of the earlier ok run behind.
   store.RecordRun(1, MakeSpec("r1"), MakeFailedResult("r1"), "runs/r1");
-  EXPECT_EQ(store.RunStatus("r1"), "failed");
+  EXPECT_EQ(store.StatusOf("r1"), RunStatus::kFailed);
   EXPECT_TRUE(store.FindRun("r1")->metrics.empty());
 }
 
@@ -337,7 +337,7 @@ TEST(ResultsStoreTest, ImportSweepReusesAnIdenticalSweep) {
   sweep.info.config_sha = "x";
   sweep.info.started_at = "2026-01-01T00:00:00Z";
   sweep.finished_at = "2026-01-01T01:00:00Z";
-  sweep.status = "ok";
+  sweep.status = SweepStatus::kOk;
   sweep.run_count = 3;
   const std::int64_t first = store.ImportSweep(sweep);
   EXPECT_EQ(store.ImportSweep(sweep), first);

@@ -49,7 +49,7 @@ TEST(RunFolderTest, MissingOrBrokenFilesNameTheFile) {
   const std::string error = ErrorOf([&] { RecordRunFolder(store, 1, dir.path(), "runs/r1"); });
   EXPECT_THAT(error, HasSubstr(folder.string()));
   EXPECT_THAT(error, HasSubstr("status: expected \"ok\" or \"failed\""));
-  EXPECT_FALSE(store.RunStatus("r1").has_value());
+  EXPECT_FALSE(store.StatusOf("r1").has_value());
 }
 
 TEST(ResultsStoreOpenTest, MissingFolderSaysWhatToCheck) {

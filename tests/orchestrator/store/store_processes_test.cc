@@ -83,7 +83,7 @@ TEST(ResultsStoreProcessesTest, ProcessKilledBeforeItsFirstRecordLeavesNoHalfRun
   });
   ASSERT_EQ(Wait(child), 128 + SIGKILL);
   ResultsStore store = ResultsStore::Open(file);
-  EXPECT_EQ(store.RunStatus("new"), std::nullopt);
+  EXPECT_EQ(store.StatusOf("new"), std::nullopt);
   SqliteDb db = SqliteDb::Open(file, false);
   auto count = db.Prepare("SELECT count(*) FROM metrics");
   ASSERT_TRUE(count.Step());
@@ -123,9 +123,9 @@ TEST(ResultsStoreProcessesTest, TwoProcessesRecordingAtOnceLoseNothing) {
         const std::string id = prefix + "-" + std::to_string(i);
         store.RecordRun(sweep, MakeSpec(id, prefix, "intel", i), MakeOkResult(id, 1.0 + i), "runs/" + id);
         // Readers interleave with writers in a real sweep (skip checks); they must not disturb them.
-        if (!store.RunStatus(id).has_value()) return 4;
+        if (!store.StatusOf(id).has_value()) return 4;
       }
-      store.FinishSweep(sweep, "ok", kRunsPerProcess);
+      store.FinishSweep(sweep, SweepStatus::kOk, kRunsPerProcess);
       return 0;
     };
   };

@@ -86,7 +86,7 @@ TEST(SummaryJsonTest, EmptyStoreAndGarbledTextStillGiveValidJson) {
 
   StoredRun run;
   run.run_id = "r";
-  run.status = "failed";
+  run.status = RunStatus::kFailed;
   run.result = {{"reason", std::string("bad byte \xff here")}};
   WriteSummaryJson({run}, ValidityStudyOf({run}), dir / "summary.json");
   const json back = ReadJson(dir / "summary.json");

@@ -29,7 +29,7 @@ std::vector<StoredRun> Runs(bool with_ate) {
     const std::string id = "icp-slam-intel-clean-i" + std::to_string(i);
     StoredRun run;
     run.run_id = id;
-    run.status = "ok";
+    run.status = RunStatus::kOk;
     run.algorithm = "icp-slam";
     run.sequence = "intel";
     run.noise = "clean";

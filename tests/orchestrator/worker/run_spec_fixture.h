@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_json.h"
 
 namespace slamsweep::orchestrator::testing {
 

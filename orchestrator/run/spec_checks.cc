@@ -1,4 +1,4 @@
-#include "orchestrator/config/option_checks.h"
+#include "orchestrator/run/spec_checks.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_json.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

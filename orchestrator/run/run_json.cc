@@ -1,4 +1,4 @@
-#include "orchestrator/matrix/run_spec.h"
+#include "orchestrator/run/run_json.h"
 
 #include <fmt/format.h>
 
@@ -14,8 +14,8 @@
 #include "evaluator/sequence/odometry_mode.h"
 #include "evaluator/sequence/scan_stamps.h"
 #include "evaluator/simulation/simulated_sequence.h"
-#include "orchestrator/config/option_checks.h"
-#include "orchestrator/matrix/run_id.h"
+#include "orchestrator/run/spec_checks.h"
+#include "orchestrator/run/stable_hash.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -294,16 +294,6 @@ json ToJson(const evaluator::CatalogEntry& entry) {
   return out;
 }
 
-bool ThresholdApplies(const Threshold& threshold, const evaluator::CatalogEntry& entry) {
-  const bool has_trajectory = entry.ground_truth == evaluator::GroundTruthKind::kCorrectedPoses ||
-                              entry.ground_truth == evaluator::GroundTruthKind::kExact;
-  const std::string& metric = threshold.metric;
-  if (metric.starts_with("ape_") || metric.starts_with("rpe_") || metric.starts_with("segment_")) return has_trajectory;
-  if (metric.starts_with("relations_")) return !entry.relations_path.empty();
-  if (metric.starts_with("map_")) return has_trajectory || !entry.reference_map_path.empty();
-  return true;
-}
-
 bool SameEvaluation(const json& recorded_evaluation, const EvaluationOptions& current) {
   try {
     return EvaluationFromJson(recorded_evaluation, "evaluation") == current;
@@ -379,56 +369,6 @@ evaluator::CatalogEntry CatalogEntryFromJson(const json& value, const std::strin
     throw InputError(Join(path, "path") + ": expected the sequence's file");
   }
   return entry;
-}
-
-std::string_view SeedingName(Seeding seeding) {
-  switch (seeding) {
-    case Seeding::kSeeded:
-      return "seeded";
-    case Seeding::kDeterministic:
-      return "deterministic";
-    case Seeding::kUnseeded:
-      return "unseeded";
-  }
-  return "unseeded";
-}
-
-std::string ParametersText(const json& parameters) {
-  std::string text;
-  if (!parameters.is_object()) return text;
-  for (const auto& [name, value] : parameters.items()) {
-    if (!text.empty()) text += ';';
-    text += name + "=" + (value.is_string() ? value.get<std::string>() : value.dump());
-  }
-  return text;
-}
-
-std::string AlgorithmLabel(const std::string& algorithm, const std::string& parameters_text) {
-  return parameters_text.empty() ? algorithm : fmt::format("{} [{}]", algorithm, parameters_text);
-}
-
-ComparisonGroup ComparisonGroupOf(const RunSpec& spec) {
-  return ComparisonGroup{spec.sequence.entry.name, spec.algorithm.name, ParametersText(spec.algorithm.parameters),
-                         spec.noise.name, OdometryModeOf(spec.sequence)};
-}
-
-std::string OdometryModeOf(const SequenceSpec& sequence) {
-  return std::string(evaluator::OdometryModeName(evaluator::EffectiveOdometryMode(sequence.entry)));
-}
-
-std::string BuildSignature(const BuildIdentity& build) {
-  std::vector<std::string> digests;
-  for (const auto& [path, digest] : build.program_files) digests.push_back(digest);
-  std::sort(digests.begin(), digests.end());
-  std::string text = build.slamsweep_revision;
-  for (const std::string& digest : digests) text += "\n" + digest;
-  return fmt::format("b{:012x}", Fnv1a64(text) >> 16);
-}
-
-bool PlannedOdometryIsReference(const evaluator::CatalogEntry& entry, const NoiseSpec& noise) {
-  return evaluator::OdometryModeApplies(entry) &&
-         evaluator::EffectiveOdometryMode(entry) == evaluator::OdometryMode::kReference &&
-         (!noise.odometry || *noise.odometry == evaluator::OdometryNoise{});
 }
 
 namespace {
@@ -623,6 +563,13 @@ std::string BuildDescriptionOfRunJson(const json& run_json) {
   } catch (const InputError&) {
     return "unreadable";
   }
+}
+
+std::optional<RunStatus> StatusOfResultJson(const json& result) {
+  if (!result.is_object()) return std::nullopt;
+  const auto status = result.find("status");
+  if (status == result.end()) return RunStatus::kFailed;
+  return status->is_string() ? RecordedRunStatus(status->get_ref<const std::string&>()) : std::nullopt;
 }
 
 }  // namespace slamsweep::orchestrator

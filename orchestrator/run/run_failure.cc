@@ -1,4 +1,4 @@
-#include "orchestrator/adapters/run_failure.h"
+#include "orchestrator/run/run_failure.h"
 
 namespace slamsweep::orchestrator {
 

@@ -1,0 +1,9 @@
+#include "orchestrator/run/flat_metric.h"
+
+namespace slamsweep::orchestrator {
+
+nlohmann::json ToJson(const FlatMetric& metric) {
+  return {{"metric", metric.metric}, {"statistic", metric.statistic}, {"value", metric.value}, {"unit", metric.unit}};
+}
+
+}  // namespace slamsweep::orchestrator

@@ -1,0 +1,20 @@
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace slamsweep::orchestrator {
+
+/// One number of result.json's flat `metrics` list (orchestrator/DESIGN.md), e.g. {"ape_trans", "rmse", 0.12, "m"}.
+struct FlatMetric {
+  std::string metric;     ///< "ape_trans", "rpe_rot", "relations_trans", "corners", ...
+  std::string statistic;  ///< "rmse", "mean", ..., "n", or "value" for the map metrics
+  double value = 0.0;
+  std::string unit;  ///< "m", "deg", "ratio", "count"
+};
+
+/// {"metric", "statistic", "value", "unit"}.
+nlohmann::json ToJson(const FlatMetric& metric);
+
+}  // namespace slamsweep::orchestrator
