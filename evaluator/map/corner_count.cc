@@ -20,16 +20,12 @@
 #include "evaluator/map/run_components.h"
 #include "evaluator/map/zero_scan.h"
 
-// Which reading of the spec this is, and why.
-//
-// The spec leaves the image types open. Everything here is 32-bit float: the remapped
-// image, the Gaussian blur, the Laplacian (CV_32F) and the structure threshold, compared in
-// float as cv::compare does; blobs are 8-connected components of the mask and their size is
-// their number of cells (as connectedComponentsWithStats' CC_STAT_AREA), not the area of a
-// contour polygon. Float is the natural choice because goodFeaturesToTrack only accepts 8-bit
-// or float images, so a float pipeline never converts. This combination reproduces the
-// reference counts exactly (fastslam_thirdparty 1051, telecom_icp 2681, telecom_rbpf 1125);
-// measuring blobs by contour area gave 1035 and 1093 instead.
+// The spec leaves the image types open. Everything here is 32-bit float: the remapped image,
+// the Gaussian blur, the Laplacian (CV_32F) and the structure threshold, compared in float as
+// cv::compare does; goodFeaturesToTrack accepts only 8-bit or float images, so a float pipeline
+// never converts. Blobs are 8-connected components of the mask, sized by their number of cells
+// (as connectedComponentsWithStats' CC_STAT_AREA), not by contour area: only this reproduces the
+// reference counts exactly (fastslam_thirdparty 1051, telecom_icp 2681, telecom_rbpf 1125).
 
 namespace slamsweep::evaluator {
 namespace {

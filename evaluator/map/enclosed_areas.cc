@@ -11,26 +11,20 @@
 #include "evaluator/map/level_runs.h"
 #include "evaluator/map/otsu.h"
 
-// Which reading of the spec this is, and why.
-//
-// The spec fixes the image, the sweep of u and Otsu's threshold, but leaves open how the
-// regions are delimited and measured. The reference values (reference/maps/
-// expected_paper_metrics.json, an independent Python + OpenCV 4.6 implementation) are
-// reproduced exactly, on all three maps, by exactly one of the combinations we tried:
-//   * a region is an 8-connected component of free cells (value > threshold). Suzuki-Abe
-//     border following traces exactly one outer border per such component, so counting
-//     outer borders (findContours with RETR_CCOMP / RETR_TREE, top-level contours) counts
-//     components. RETR_EXTERNAL is not it: it skips free regions nested inside a hole of
-//     another free region (a room seen inside a building outline) and gives 96, 1555 and 514;
-//   * its area is its number of cells, the natural meaning of "at least 4 cells". The area of
-//     the border polygon (contourArea) is 0 for a one-cell-wide region and gives 8, 449 and
-//     172; counting border points gives 155, 4054 and 1394;
+// The spec fixes the image, the sweep of u and Otsu's threshold; how regions are delimited and
+// measured is read as follows, the one reading that reproduces the reference values
+// (reference/maps/expected_paper_metrics.json, an independent Python + OpenCV implementation)
+// exactly on all three maps:
+//   * a region is an 8-connected component of free cells (value > threshold), i.e. one outer
+//     border of Suzuki-Abe border following (findContours RETR_CCOMP / RETR_TREE, top-level).
+//     Not RETR_EXTERNAL, which skips a free region nested in a hole of another (a room seen
+//     inside a building outline);
+//   * its area is its number of cells ("at least 4 cells"), not the area of its border polygon,
+//     which is 0 for a one-cell-wide region;
 //   * it touches the border when one of its cells lies in the first or last row or column.
-// Result: fastslam_thirdparty 103 at u = 0, telecom_icp 2921 at u = 175, telecom_rbpf 1062 at
-// u = 225, as expected. The regions are labelled from runs with a union-find
-// (free_region_sweep.h), which finds the same regions as border following at a fraction of
-// the cost; a test checks every step of the sweep against cv::threshold and cv::findContours
-// on the reference maps.
+// Regions are labelled from runs with a union-find (free_region_sweep.h): the same regions as
+// border following at a fraction of the cost. A test checks every step of the sweep against
+// cv::threshold and cv::findContours on the reference maps.
 
 namespace slamsweep::evaluator {
 

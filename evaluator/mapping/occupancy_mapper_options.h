@@ -18,11 +18,10 @@ namespace slamsweep::evaluator {
 /// Why free space goes down to p = 0.01 (min_log_odds -4.6), as in MRPT's and GMapping's grids
 /// where well-seen free space is close to 0: the paper's occupied proportion calls a cell
 /// occupied when its p is above the map's mean p (unknown = 0), which is a few percent on a map
-/// that is mostly unknown and free. Free space clamped at the textbook 0.12 sat above that mean,
-/// so every known cell counted as occupied and a map rendered from the true path scored worse
-/// than icp-slam's own (intel's first 300 scans: occupied / all = 0.362, exactly the known
-/// share; 0.139 with 0.01, against icp-slam's 0.150). A free cell still turns occupied after six
-/// hits (a door that closed).
+/// that is mostly unknown and free. A clamp at the textbook 0.12 lies above that mean, so every
+/// known cell would count as occupied and a map rendered from the true path would score worse than
+/// a SLAM program's (intel's first 300 scans: occupied / all 0.362 with 0.12, 0.139 with 0.01,
+/// icp-slam's own map 0.150). A free cell still turns occupied after six hits (a door that closed).
 struct OccupancyMapperOptions {
   double resolution_m = 0.05;
   double hit_log_odds = 0.85;

@@ -8,9 +8,9 @@ namespace slamsweep::evaluator {
 
 /// The MRPT rawlog / ROS1 bag module, loaded (dlopen) on the first call and kept for the rest of
 /// the process. Throws InputError located at `file` (the file being read or written) when this
-/// build has no such module ("... support not built ...", as before the modules existed), when
-/// the module is not found (naming the folders searched), cannot be loaded (the loader's reason,
-/// e.g. a missing MRPT library) or comes from another build.
+/// build has no such module ("... support not built ..."), when the module is not found (naming
+/// the folders searched), cannot be loaded (the loader's reason, e.g. a missing MRPT library) or
+/// comes from another build.
 const RawlogModule& LoadRawlogModule(const std::filesystem::path& file);
 const RosbagModule& LoadRosbagModule(const std::filesystem::path& file);
 

@@ -365,7 +365,7 @@ ValidityStudy ValidityStudyFromJson(const nlohmann::json& json) {
       }
     }
     if (!known) throw InputError(at + ".verdict: unknown verdict \"" + verdict + "\"");
-    // The Bonferroni interval of a decided verdict (absent from studies written before it existed).
+    // The Bonferroni interval of a decided verdict; optional, so that studies written without it still read.
     if (entry.contains("ci_low_bonferroni")) {
       BootstrapInterval family;
       family.low = FieldAs<double>(entry, "ci_low_bonferroni", at);

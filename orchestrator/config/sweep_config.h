@@ -1,71 +1,6 @@
 #pragma once
 
-// A sweep file, e.g. configs/quickstart.yaml:
-//
-//   name: quickstart                 # required; [A-Za-z0-9_.-]+
-//   output: ../out/quickstart        # default output dir; relative paths are relative to the config file's folder
-//                                    #   (default: out/<name> beside the config file)
-//   catalog: datasets.yaml           # optional; default: the repository's configs/datasets.yaml (from the caller)
-//   iterations: 3                    # >= 1 (default 1)
-//   seed: 42                         # base seed (uint64, default 0)
-//   seed_policy: per_iteration       # per_iteration (default): DeriveSeed(seed, iteration), so every algorithm
-//                                    #   sees the same noisy input in iteration k (a fair comparison);
-//                                    # per_run: DeriveSeed(seed ^ Fnv1a64(identity without seed), iteration);
-//                                    # fixed: seed for every run
-//   workers: 2                       # default --jobs (0 = number of cores)
-//   failure_budget: 0                # stop starting new runs after this many failures; 0 = never stop
-//   evaluation: {align: se2, rpe_delta_m: 1.0, t_max_diff_s: 0.01, stages: 24, map_resolution_m: 0.05}
-//                                    # min_coverage: 0.95 (a run whose trajectory spans less of the reference's
-//                                    #   time span fails); map_resolution_m is also the cell size the paper's
-//                                    #   map metrics score every map on
-//                                    # rpe_segments_m: auto (default: 10-50 % of the reference path, rounded to 1 m,
-//                                    #   as KITTI/rpg) or a list such as [5, 10, 20]; [] = no segment RPE
-//   validity_study: ../out/validity/summary.json  # optional: the metric validity study of another sweep (its
-//                                    #   summary.json), which lets a ground-truth-free map metric be marked best on
-//                                    #   sequences without a reference when this sweep's own runs study none
-//   regression: {alpha: 0.05, min_effect: 0.2}   # `slamsweep history compare --config`: Mann-Whitney U
-//                                    #   significance level in (0, 1) and minimum |Cliff's delta| in [0, 1]
-//   thresholds:                      # JUnit failures
-//     - {metric: ape_trans, statistic: rmse, max: 1.0}
-//   algorithms:
-//     - name: icp-slam
-//       adapter: mrpt-icp-slam       # mrpt-icp-slam | mrpt-rbpf-slam | command | odometry
-//       timeout_s: 120               # default 600
-//       memory_limit_mb: 2048        # default 0 = none
-//       disk_limit_mb: 4096          # largest file, raw/ in total, private /tmp (default 4096)
-//       process_limit: 1024          # processes + threads in the sandbox at once (default 1024)
-//       network: false               # true: the host's network (`serve` needs --allow-network)
-//       parameters:                  # scalars; a LIST sweeps the parameter (cartesian product over lists)
-//         ICP.maxIterations: [40, 80]
-//     - name: my-slam                # configs/examples/command-adapter.yaml runs a real one
-//       adapter: command             # placeholders: {input} {input_dir} {output_dir} {seed} {seed32} {iteration}
-//       {param:NAME} command:
-//         argv: [my-slam, --log, "{input}", --out, "{output_dir}", --particles, "{param:particles}"]
-//         input_format: carmen       # carmen | rawlog (scans + odometry) | tum (the odometry alone)
-//         trajectory: {path: trajectory.tum, format: tum}   # tum | kitti | csv | mrpt | carmen
-//         map: {path: map.yaml, format: map_server}     # map_server | mrpt | pgm
-//         stage_maps: "stages/*.pgm"
-//         stage_unknown_value: 205
-//         read_only: [/opt/my-slam/config]  # what else it reads: its sandbox shows these, nothing more
-//       parameters: {particles: [30, 60]}
-//   sequences:
-//     - mrpt-telecom                 # a catalog name
-//     - {catalog: intel, name: intel-300, max_scans: 300}   # a catalog entry, renamed and cut
-//     - name: floor                  # inline entry: the keys of configs/datasets.yaml entries, plus max_scans
-//       format: simulated
-//       ground_truth: exact
-//       simulation: {...}
-//   noise:                           # default: [{name: clean}]
-//     - name: clean
-//     - name: noisy
-//       odometry: {alpha1: 0.01, alpha3: 0.01}     # evaluator OdometryNoiseFromJson fields
-//       range: {sigma_m: 0.02}                     # evaluator RangeNoiseFromJson fields
-//   exclude:                         # drop cells matching ALL given keys (algorithm, sequence, noise, parameters)
-//     - {algorithm: rbpf-slam, sequence: intel-300}
-//   include:                         # add cells (algorithm + sequence [+ noise, parameters]) not in the product;
-//     - {algorithm: odometry, sequence: fr079, noise: clean}   # no noise = every noise setting
-//
-// Placeholders of a command's argv: {input}, {output_dir}, {run_dir}, {seed}, {iteration}, {param:NAME}.
+// The sweep file format (every key, its default and meaning) is documented in configs/README.md.
 
 #include <cstddef>
 #include <cstdint>
@@ -167,7 +102,7 @@ struct SweepConfigContext {
   InputPolicy policy;
 };
 
-/// Reads and validates a sweep file (format above). Everything is checked before anything runs:
+/// Reads and validates a sweep file (format: configs/README.md). Everything is checked before anything runs:
 /// unknown keys at every level, wrong types, missing catalog or sequence files (naming the entry, the
 /// file and its download hint), unknown adapters, command argv placeholders, include/exclude names,
 /// duplicate names. Errors are InputError "FILE:LINE:COLUMN: field.path: expected ..., got ...".
