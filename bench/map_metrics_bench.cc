@@ -36,10 +36,10 @@
 #include <string>
 
 #include "evaluator/core/occupancy_grid.h"
-#include "evaluator/map/corner_count.h"
-#include "evaluator/map/enclosed_areas.h"
-#include "evaluator/map/occupied_proportion.h"
-#include "evaluator/map/paper_metrics.h"
+#include "evaluator/map_metrics/corner_count.h"
+#include "evaluator/map_metrics/enclosed_areas.h"
+#include "evaluator/map_metrics/occupied_proportion.h"
+#include "evaluator/map_metrics/paper_metrics.h"
 
 namespace {
 

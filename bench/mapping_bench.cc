@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "evaluator/core/input_error.h"
-#include "evaluator/mapping/occupancy_mapper.h"
+#include "evaluator/occupancy_mapping/occupancy_mapper.h"
 #include "evaluator/sequence/carmen_sequence.h"
-#include "evaluator/mapping/scan_beams.h"
+#include "evaluator/occupancy_mapping/scan_beams.h"
 #include "evaluator/simulation/floor_plan.h"
 #include "evaluator/simulation/laser_simulator.h"
 #include "evaluator/simulation/path_generator.h"

@@ -17,7 +17,7 @@
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/formats/trajectory/output_file.h"
 #include "evaluator/formats/trajectory/tum_format.h"
-#include "evaluator/mapping/occupancy_mapper.h"
+#include "evaluator/occupancy_mapping/occupancy_mapper.h"
 #include "evaluator/noise/odometry_noise.h"
 #include "evaluator/noise/random.h"
 #include "evaluator/noise/range_noise.h"
@@ -27,8 +27,8 @@
 #include "evaluator/sequence/odometry_mode.h"
 #include "evaluator/sequence/recorded_odometry.h"
 #include "evaluator/sequence/relations_clock.h"
-#include "evaluator/sequence/sequence_file.h"
-#include "evaluator/sequence/robot_log_file.h"
+#include "evaluator/sequence_io/sequence_file.h"
+#include "evaluator/sequence_io/robot_log_file.h"
 #include "evaluator/simulation/simulated_sequence.h"
 
 namespace slamsweep::cli {

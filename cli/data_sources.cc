@@ -5,7 +5,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/installation.h"
-#include "evaluator/sequence/sequence_file.h"
+#include "evaluator/sequence_io/sequence_file.h"
 
 namespace slamsweep::cli {
 

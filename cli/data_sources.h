@@ -4,9 +4,9 @@
 #include <optional>
 #include <string>
 
-#include "evaluator/sequence/catalog.h"
+#include "evaluator/catalog/catalog.h"
 #include "evaluator/sequence/sequence.h"
-#include "evaluator/sequence/sequence_file.h"
+#include "evaluator/sequence_io/sequence_file.h"
 
 namespace slamsweep::cli {
 

@@ -8,7 +8,7 @@
 #include "cli/command.h"
 #include "cli/text_table.h"
 #include "evaluator/formats/map/map_file.h"
-#include "evaluator/map/paper_metrics.h"
+#include "evaluator/map_metrics/paper_metrics.h"
 #include "evaluator/map_compare/map_resample.h"
 
 namespace slamsweep::cli {

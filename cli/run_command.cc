@@ -20,6 +20,7 @@
 #include "orchestrator/sweep/local_executor.h"
 #include "orchestrator/sweep/sweep_runner.h"
 #include "orchestrator/worker/program_sandbox.h"
+#include "orchestrator/run/run_status.h"
 
 namespace slamsweep::cli {
 namespace {
@@ -74,7 +75,7 @@ int Run(const RunOptions& options, const Streams& streams, const std::string& co
   settings.output_dir = options.output.empty() ? sweep.config.output_dir : std::filesystem::path(options.output);
   settings.jobs = options.jobs > 0 ? options.jobs : DefaultJobs(sweep.config.workers);
   settings.failure_budget = options.keep_going ? 0 : sweep.config.failure_budget;
-  settings.rerun_failed = options.rerun == "failed";
+  settings.rerun_failed = options.rerun == orchestrator::RunStatusName(orchestrator::RunStatus::kFailed);
   settings.reuse_stale = options.reuse_stale;
   settings.config_path = std::filesystem::absolute(options.config).string();
   settings.config_sha = sweep.config_hash;
@@ -124,7 +125,7 @@ void RegisterRunCommand(CLI::App& app, const Streams& streams, int& exit_code) {
       ->check(CLI::PositiveNumber);
   AddMatrixSelectionOptions(*command, options->selection);
   command->add_option("--rerun", options->rerun, "run again the runs an earlier sweep recorded as failed")
-      ->check(CLI::IsMember({"failed"}));
+      ->check(CLI::IsMember({std::string(orchestrator::RunStatusName(orchestrator::RunStatus::kFailed))}));
   command->add_option("-o,--output", options->output, "output directory (default: the config's output)");
   command->add_flag("-k,--keep-going", options->keep_going, "ignore the config's failure budget");
   command->add_flag("--reuse-stale", options->reuse_stale,

@@ -7,7 +7,7 @@
 #include "evaluator/formats/map/image8.h"
 #include "evaluator/formats/map/image_file.h"
 #include "evaluator/formats/trajectory/trajectory_format.h"
-#include "evaluator/sequence/robot_log_file.h"
+#include "evaluator/sequence_io/robot_log_file.h"
 #include "orchestrator/adapters/mrpt_ini.h"
 #include "orchestrator/adapters/output_files.h"
 #include "orchestrator/adapters/rendered_map.h"

@@ -8,7 +8,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/map/mrpt_gridmap_format.h"
-#include "evaluator/sequence/robot_log_file.h"
+#include "evaluator/sequence_io/robot_log_file.h"
 #include "orchestrator/adapters/output_files.h"
 #include "orchestrator/adapters/rendered_map.h"
 #include "orchestrator/run/run_failure.h"

@@ -1,7 +1,7 @@
 #include "orchestrator/adapters/rendered_map.h"
 
-#include "evaluator/mapping/occupancy_mapper.h"
-#include "evaluator/mapping/scan_placement.h"
+#include "evaluator/occupancy_mapping/occupancy_mapper.h"
+#include "evaluator/occupancy_mapping/scan_placement.h"
 #include "orchestrator/adapters/stage_image.h"
 
 namespace slamsweep::orchestrator {

@@ -9,7 +9,7 @@
 #include "evaluator/core/laser_scan.h"
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/core/trajectory.h"
-#include "evaluator/mapping/occupancy_mapper_options.h"
+#include "evaluator/occupancy_mapping/occupancy_mapper_options.h"
 #include "orchestrator/run/run_spec.h"
 
 namespace slamsweep::orchestrator {

@@ -1,7 +1,7 @@
 #include "orchestrator/adapters/roster_adapter.h"
 
 #include "evaluator/core/input_error.h"
-#include "evaluator/sequence/robot_log_file.h"
+#include "evaluator/sequence_io/robot_log_file.h"
 #include "orchestrator/adapters/output_files.h"
 #include "orchestrator/adapters/stage_image.h"
 

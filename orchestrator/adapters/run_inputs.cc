@@ -9,7 +9,7 @@
 #include "evaluator/noise/odometry_noise.h"
 #include "evaluator/noise/random.h"
 #include "evaluator/noise/range_noise.h"
-#include "evaluator/sequence/catalog.h"
+#include "evaluator/catalog/catalog.h"
 
 namespace slamsweep::orchestrator {
 

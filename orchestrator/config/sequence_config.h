@@ -5,7 +5,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "evaluator/sequence/catalog.h"
+#include "evaluator/catalog/catalog.h"
 #include "orchestrator/config/input_policy.h"
 #include "orchestrator/run/run_spec.h"
 

@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "evaluator/sequence/catalog.h"
+#include "evaluator/catalog/catalog.h"
 #include "orchestrator/config/input_policy.h"
 #include "orchestrator/run/run_spec.h"
 

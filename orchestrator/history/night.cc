@@ -54,11 +54,11 @@ Night ReadNight(const std::filesystem::path& result_dir, const std::string& labe
   std::map<SeriesOrder, SampleSeries> series;
   std::map<CellKey, CellCounts> cells;
   // Runs() is ordered by iteration within a cell, so samples keep the iteration order.
-  for (const StoredRun& run : store.Runs()) {
+  for (const RunRecord& run : store.Runs()) {
     // Runs with other parameter values are another series: never pooled into one sample.
     const std::string algorithm = AlgorithmLabel(run.algorithm, run.parameters);
     // Nor are runs on the recorded odometry pooled with runs handed the reference.
-    const std::string odometry = OdometryModeOfRunJson(run.spec);
+    const std::string odometry = OdometryModeOfRunJson(run.run_spec);
     CellCounts& cell = cells[{algorithm, run.sequence, run.noise, odometry}];
     cell.algorithm = algorithm;
     cell.sequence = run.sequence;
@@ -69,7 +69,7 @@ Night ReadNight(const std::filesystem::path& result_dir, const std::string& labe
       continue;
     }
     ++cell.ok_runs;
-    for (const StoredMetric& metric : run.metrics) {
+    for (const FlatMetric& metric : run.metrics) {
       SampleSeries& s = series[{algorithm, run.sequence, run.noise, odometry, metric.metric, metric.statistic}];
       if (s.metric.empty()) {
         s.algorithm = algorithm;

@@ -20,11 +20,11 @@ std::map<NightCell, std::string> OdometryModesOfResultDir(const std::filesystem:
     const std::filesystem::path database = result_dir / "results.sqlite";
     if (!std::filesystem::exists(database)) return {};
     const ResultsStore store = ResultsStore::OpenExisting(database);
-    for (const StoredRun& run : store.Runs()) {
+    for (const RunRecord& run : store.Runs()) {
       // Runs a later sweep added to the directory were not part of the night.
       if (run.sweep_id > last_sweep_id) continue;
       seen[{AlgorithmLabel(run.algorithm, run.parameters), run.sequence, run.noise}].insert(
-          OdometryModeOfRunJson(run.spec));
+          OdometryModeOfRunJson(run.run_spec));
     }
   } catch (const std::exception&) {
     return {};  // gone or unreadable: the night's series cannot say their mode

@@ -9,12 +9,13 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/map/map_file.h"
 #include "evaluator/map_compare/map_resample.h"
-#include "evaluator/mapping/occupancy_mapper.h"
-#include "evaluator/sequence/catalog.h"
+#include "evaluator/occupancy_mapping/occupancy_mapper.h"
+#include "evaluator/catalog/catalog.h"
 #include "orchestrator/adapters/rendered_map.h"
 #include "orchestrator/adapters/run_inputs.h"
 #include "orchestrator/matrix/run_id.h"
 #include "orchestrator/reference_map/reference_map_cache.h"
+#include "orchestrator/run/run_json.h"
 
 namespace slamsweep::orchestrator {
 namespace {

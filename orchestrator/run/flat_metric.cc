@@ -3,7 +3,10 @@
 namespace slamsweep::orchestrator {
 
 nlohmann::json ToJson(const FlatMetric& metric) {
-  return {{"metric", metric.metric}, {"statistic", metric.statistic}, {"value", metric.value}, {"unit", metric.unit}};
+  return {{"metric", metric.metric},
+          {"statistic", metric.statistic},
+          {"value", metric.value ? nlohmann::json(*metric.value) : nlohmann::json(nullptr)},
+          {"unit", metric.unit}};
 }
 
 }  // namespace slamsweep::orchestrator

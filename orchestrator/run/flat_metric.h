@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -10,11 +11,12 @@ namespace slamsweep::orchestrator {
 struct FlatMetric {
   std::string metric;     ///< "ape_trans", "rpe_rot", "relations_trans", "corners", ...
   std::string statistic;  ///< "rmse", "mean", ..., "n", or "value" for the map metrics
-  double value = 0.0;
+  /// Empty: the worker wrote null (a statistic that is not a number).
+  std::optional<double> value;
   std::string unit;  ///< "m", "deg", "ratio", "count"
 };
 
-/// {"metric", "statistic", "value", "unit"}.
+/// {"metric", "statistic", "value", "unit"}; a missing value is null.
 nlohmann::json ToJson(const FlatMetric& metric);
 
 }  // namespace slamsweep::orchestrator

@@ -10,7 +10,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/noise/json_fields.h"
-#include "evaluator/sequence/catalog.h"
+#include "evaluator/catalog/catalog.h"
 #include "evaluator/sequence/odometry_mode.h"
 #include "evaluator/sequence/scan_stamps.h"
 #include "evaluator/simulation/simulated_sequence.h"

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "evaluator/sequence/catalog.h"
+#include "evaluator/catalog/catalog.h"
 #include "orchestrator/run/run_spec.h"
 #include "orchestrator/run/run_status.h"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "evaluator/sequence/catalog.h"
+#include "evaluator/catalog/catalog.h"
 #include "evaluator/sequence/odometry_mode.h"
 #include "orchestrator/run/stable_hash.h"
 

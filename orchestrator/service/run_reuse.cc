@@ -1,6 +1,6 @@
 #include "orchestrator/service/run_reuse.h"
 
-#include "orchestrator/sweep/run_folder.h"
+#include "orchestrator/run/run_folder.h"
 #include "orchestrator/sweep/sweep_runner.h"
 
 namespace slamsweep::orchestrator::service {

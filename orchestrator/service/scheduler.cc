@@ -10,7 +10,7 @@
 #include "orchestrator/matrix/run_id.h"
 #include "orchestrator/process/wake_up.h"
 #include "orchestrator/service/run_reuse.h"
-#include "orchestrator/sweep/run_folder.h"
+#include "orchestrator/run/run_folder.h"
 #include "orchestrator/sweep/status.h"
 #include "orchestrator/sweep/sweep_steps.h"
 
@@ -246,8 +246,8 @@ bool Scheduler::Activate(SweepEntry& entry) {
         entry.pending.push_back(i);
         continue;
       }
-      const std::optional<StoredRun> stored = entry.store->FindRun(run.view.run_id);
-      const std::string state = stored && stored->status == "ok" ? "ok" : "failed";
+      const std::optional<RunRecord> stored = entry.store->FindRun(run.view.run_id);
+      const std::string state = stored && stored->status == RunStatus::kOk ? "ok" : "failed";
       SetRunState(entry, i, state, false, stored ? stored->wall_s : std::nullopt,
                   stored ? stored->result.value("reason", "") : "");
     }

@@ -91,10 +91,10 @@ std::string GroupsCsv(const std::vector<GroupSummary>& groups) {
   return out;
 }
 
-std::string RunsCsv(const std::vector<StoredRun>& runs) {
+std::string RunsCsv(const std::vector<RunRecord>& runs) {
   std::set<std::pair<std::string, std::string>> names;
-  for (const StoredRun& run : runs) {
-    for (const StoredMetric& metric : run.metrics) names.emplace(metric.metric, metric.statistic);
+  for (const RunRecord& run : runs) {
+    for (const FlatMetric& metric : run.metrics) names.emplace(metric.metric, metric.statistic);
   }
   std::vector<std::string> header = {"run_id",
                                      "sequence",
@@ -114,16 +114,16 @@ std::string RunsCsv(const std::vector<StoredRun>& runs) {
                                      "peak_rss_kb"};
   for (const auto& [metric, statistic] : names) header.push_back(fmt::format("{}.{}", metric, statistic));
   std::string out = Row(header);
-  for (const StoredRun& run : runs) {
+  for (const RunRecord& run : runs) {
     std::map<std::pair<std::string, std::string>, std::optional<double>> values;
-    for (const StoredMetric& metric : run.metrics) values[{metric.metric, metric.statistic}] = metric.value;
+    for (const FlatMetric& metric : run.metrics) values[{metric.metric, metric.statistic}] = metric.value;
     std::vector<std::string> fields = {run.run_id,
                                        run.sequence,
                                        run.algorithm,
                                        run.parameters,
                                        run.noise,
                                        std::to_string(run.iteration),
-                                       JsonScalar(Field(run.spec, "seed")),
+                                       JsonScalar(Field(run.run_spec, "seed")),
                                        std::string(RunStatusName(run.status)),
                                        JsonScalar(Field(run.result, "failure_kind")),
                                        JsonScalar(Field(run.result, "reason")),
@@ -156,7 +156,7 @@ std::string ValidityCsv(const evaluator::ValidityStudy& study) {
   return out;
 }
 
-void WriteCsvTables(const std::vector<StoredRun>& runs, const evaluator::ValidityStudy& study,
+void WriteCsvTables(const std::vector<RunRecord>& runs, const evaluator::ValidityStudy& study,
                     const std::filesystem::path& output_dir) {
   WriteFileAtomically(output_dir / "summary.csv", GroupsCsv(SummarizeGroups(runs)));
   WriteFileAtomically(output_dir / "runs.csv", RunsCsv(runs));

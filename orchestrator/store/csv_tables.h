@@ -22,7 +22,7 @@ std::string GroupsCsv(const std::vector<GroupSummary>& groups);
 /// runs.csv: one row per run: identity (run_id, sequence, algorithm, parameters, noise, iteration,
 /// seed), status, failure_kind, reason, odometry_is_reference, seeding, wall_s, cpu_s, peak_rss_kb,
 /// then one column per flat metric "<metric>.<statistic>" that any run has.
-std::string RunsCsv(const std::vector<StoredRun>& runs);
+std::string RunsCsv(const std::vector<RunRecord>& runs);
 
 /// validity.csv: summary.json's "validity" table, one row per correlation: candidate, target,
 /// sequence (empty = all sequences), pooling, runs, strata, spearman_rho, ci_low, ci_high,
@@ -31,7 +31,7 @@ std::string ValidityCsv(const evaluator::ValidityStudy& study);
 
 /// Writes OUTPUT_DIR/summary.csv, OUTPUT_DIR/runs.csv and, unless `study` (ValidityStudyOf(runs)) is
 /// empty, OUTPUT_DIR/validity.csv atomically.
-void WriteCsvTables(const std::vector<StoredRun>& runs, const evaluator::ValidityStudy& study,
+void WriteCsvTables(const std::vector<RunRecord>& runs, const evaluator::ValidityStudy& study,
                     const std::filesystem::path& output_dir);
 
 }  // namespace slamsweep::orchestrator

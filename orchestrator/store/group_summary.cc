@@ -31,7 +31,7 @@ void NoteSegmentLengths(GroupSummary& summary, const std::vector<double>& length
 
 }  // namespace
 
-std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs) {
+std::vector<GroupSummary> SummarizeGroups(const std::vector<RunRecord>& runs) {
   struct Collected {
     GroupSummary summary;
     std::map<std::pair<std::string, std::string>, std::pair<std::string, std::vector<double>>> values;
@@ -43,16 +43,16 @@ std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs) {
   std::map<GroupKey, Collected> groups;
   std::map<std::tuple<std::string, std::string, std::string, std::string, std::string>, std::set<std::string>>
       builds_of;
-  for (const StoredRun& run : runs) {
-    const std::string build = BuildSignatureOfRunJson(run.spec);
-    const std::string odometry = OdometryModeOfRunJson(run.spec);
+  for (const RunRecord& run : runs) {
+    const std::string build = BuildSignatureOfRunJson(run.run_spec);
+    const std::string odometry = OdometryModeOfRunJson(run.run_spec);
     builds_of[{run.sequence, run.noise, run.algorithm, run.parameters, odometry}].insert(build);
     Collected& collected = groups[{run.sequence, run.noise, run.algorithm, run.parameters, odometry, build}];
     GroupSummary& summary = collected.summary;
     if (summary.runs == 0) {
       summary.group = ComparisonGroup{run.sequence, run.algorithm, run.parameters, run.noise, odometry};
       summary.build = build;
-      summary.build_description = BuildDescriptionOfRunJson(run.spec);
+      summary.build_description = BuildDescriptionOfRunJson(run.run_spec);
       summary.seeding = run.seeding;
     } else if (summary.seeding != run.seeding) {
       summary.seeding = "mixed";
@@ -69,7 +69,7 @@ std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs) {
       NoteSegmentLengths(summary, *lengths, !collected.has_segments);
       collected.has_segments = true;
     }
-    for (const StoredMetric& metric : run.metrics) {
+    for (const FlatMetric& metric : run.metrics) {
       if (!metric.value) continue;
       auto& [unit, values] = collected.values[{metric.metric, metric.statistic}];
       if (unit.empty()) unit = metric.unit;

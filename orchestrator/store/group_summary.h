@@ -52,7 +52,7 @@ struct GroupSummary {
 
 /// The groups of `runs`, sorted by sequence, noise, algorithm, parameters, odometry mode
 /// (OdometryModeOfRunJson), build.
-std::vector<GroupSummary> SummarizeGroups(const std::vector<StoredRun>& runs);
+std::vector<GroupSummary> SummarizeGroups(const std::vector<RunRecord>& runs);
 
 /// {"sequence", "algorithm", "parameters", "noise", "odometry", "build", "build_split", "build_description", "n_runs",
 /// "n_ok", "n_failed", "odometry_is_reference",

@@ -86,7 +86,7 @@ struct Testcase {
   double time_s = 0.0;
 };
 
-Testcase RenderTestcase(const StoredRun& run) {
+Testcase RenderTestcase(const RunRecord& run) {
   Testcase testcase;
   testcase.time_s = run.wall_s.value_or(0.0);
   std::string body;
@@ -142,9 +142,9 @@ struct Suite {
 
 }  // namespace
 
-ThresholdCheck CheckThresholds(const StoredRun& run) {
+ThresholdCheck CheckThresholds(const RunRecord& run) {
   ThresholdCheck check;
-  const json& thresholds = FieldOrNull(run.spec, "thresholds");
+  const json& thresholds = FieldOrNull(run.run_spec, "thresholds");
   if (thresholds.is_null()) return check;
   if (!thresholds.is_array()) {
     check.exceeded.push_back("run.json: thresholds: expected an array; no threshold could be checked");
@@ -168,8 +168,8 @@ ThresholdCheck CheckThresholds(const StoredRun& run) {
     const std::string name = metric.get<std::string>();
     const std::string statistic = statistic_field.is_string() ? statistic_field.get<std::string>() : "rmse";
     const std::string label = name + "." + statistic;
-    const StoredMetric* found = nullptr;
-    for (const StoredMetric& m : run.metrics) {
+    const FlatMetric* found = nullptr;
+    for (const FlatMetric& m : run.metrics) {
       if (m.metric == name && m.statistic == statistic) found = &m;
     }
     if (found == nullptr) {
@@ -232,11 +232,11 @@ std::string XmlEscape(std::string_view text) {
   return out;
 }
 
-std::string RenderJUnit(const std::vector<StoredRun>& runs) {
+std::string RenderJUnit(const std::vector<RunRecord>& runs) {
   std::map<std::string, Suite> suites;  // sorted by sequence: a stable file for diffs between sweeps
   std::size_t failures = 0;
   double time_s = 0.0;
-  for (const StoredRun& run : runs) {
+  for (const RunRecord& run : runs) {
     const Testcase testcase = RenderTestcase(run);
     Suite& suite = suites[run.sequence];
     suite.testcases += testcase.xml;
@@ -262,7 +262,7 @@ std::string RenderJUnit(const std::vector<StoredRun>& runs) {
   return xml;
 }
 
-void WriteJUnit(const std::vector<StoredRun>& runs, const std::filesystem::path& file) {
+void WriteJUnit(const std::vector<RunRecord>& runs, const std::filesystem::path& file) {
   WriteFileAtomically(file, RenderJUnit(runs));
 }
 

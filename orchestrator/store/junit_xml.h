@@ -17,7 +17,7 @@ struct ThresholdCheck {
   std::vector<std::string> exceeded;
 };
 
-ThresholdCheck CheckThresholds(const StoredRun& run);
+ThresholdCheck CheckThresholds(const RunRecord& run);
 
 /// Text made safe for XML 1.0 content and attribute values: & < > " ' escaped, tab/newline/CR kept (as
 /// character references, so attributes keep them), other control characters and non-characters dropped,
@@ -28,9 +28,9 @@ std::string XmlEscape(std::string_view text);
 /// name="<algorithm> [<parameters>] i<iteration> (<run_id>)" time="<wall_s>"> per run (no brackets without
 /// parameters); a failed run has <failure type="<failure_kind>" message="<reason>">, a run past a
 /// threshold (or lacking a thresholded metric) <failure type="threshold">.
-std::string RenderJUnit(const std::vector<StoredRun>& runs);
+std::string RenderJUnit(const std::vector<RunRecord>& runs);
 
 /// Writes RenderJUnit(runs) to `file` atomically.
-void WriteJUnit(const std::vector<StoredRun>& runs, const std::filesystem::path& file);
+void WriteJUnit(const std::vector<RunRecord>& runs, const std::filesystem::path& file);
 
 }  // namespace slamsweep::orchestrator

@@ -96,13 +96,13 @@ class Merger {
     for (const StoredSweep& sweep : in.Sweeps()) sweep_ids[sweep.id] = store_.ImportSweep(sweep);
     // One commit per input: every run folder is in place before the index that lists it is committed.
     store_.BeginBatch();
-    for (const StoredRun& run : in.Runs()) MergeRun(input, run, sweep_ids[run.sweep_id]);
+    for (const RunRecord& run : in.Runs()) MergeRun(input, run, sweep_ids[run.sweep_id]);
     store_.CommitBatch();
   }
 
   void WriteReports() {
     const PhaseTimer phase("summary");
-    const std::vector<StoredRun> runs = store_.Runs();
+    const std::vector<RunRecord> runs = store_.Runs();
     // Shards built apart, or a rerun under a new build: their runs must never share a mean.
     std::set<std::string> split;
     for (const GroupSummary& group : SummarizeGroups(runs)) {
@@ -121,7 +121,7 @@ class Merger {
   }
 
  private:
-  void MergeRun(const fs::path& input, const StoredRun& run, std::int64_t sweep_id) {
+  void MergeRun(const fs::path& input, const RunRecord& run, std::int64_t sweep_id) {
     if (!IsSafeRunId(run.run_id)) {
       report_.warnings.push_back(fmt::format("{}: run id \"{}\" is not a slamsweep run id; skipped",
                                              (input / kStoreName).string(), run.run_id));
@@ -159,7 +159,7 @@ class Merger {
         run.finished_at.empty() ? "unknown" : run.finished_at, incoming_newer ? input.string() : kept_from));
   }
 
-  void Take(const fs::path& input, const StoredRun& run, const std::string& run_dir, std::int64_t sweep_id) {
+  void Take(const fs::path& input, const RunRecord& run, const std::string& run_dir, std::int64_t sweep_id) {
     if (fs::exists(input / run_dir)) {
       PlaceRunFolder(input / run_dir, out_ / run_dir);
     } else {

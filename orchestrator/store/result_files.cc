@@ -10,7 +10,7 @@
 
 namespace slamsweep::orchestrator {
 
-void WriteResultFiles(const std::vector<StoredRun>& runs, const std::filesystem::path& output_dir) {
+void WriteResultFiles(const std::vector<RunRecord>& runs, const std::filesystem::path& output_dir) {
   std::optional<PhaseTimer> phase(std::in_place, "validity");
   const evaluator::ValidityStudy study = ValidityStudyOf(runs);
   phase.emplace("summary_json");

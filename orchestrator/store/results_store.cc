@@ -35,6 +35,42 @@ RunStatus StoredRunStatus(const std::filesystem::path& file, const std::string& 
   return *status;
 }
 
+// The record's fields from the result.json the store keeps (its columns and shared members); a value of another
+// type than result.json writes is left empty.
+void FillResultFields(RunRecord& run) {
+  const json& result = run.result;
+  const auto text = [&](const char* key) {
+    const auto found = result.find(key);
+    return found != result.end() && found->is_string() ? found->get<std::string>() : std::string();
+  };
+  const auto number = [&](const char* key) -> std::optional<double> {
+    const auto found = result.find(key);
+    return found != result.end() && found->is_number() ? std::optional<double>(found->get<double>()) : std::nullopt;
+  };
+  const auto integer = [&](const char* key) -> std::optional<int> {
+    const auto found = result.find(key);
+    return found != result.end() && found->is_number_integer() ? std::optional<int>(found->get<int>()) : std::nullopt;
+  };
+  const auto strings = [&](const char* key) {
+    std::vector<std::string> out;
+    const auto found = result.find(key);
+    if (found == result.end() || !found->is_array()) return out;
+    for (const json& item : *found) {
+      if (item.is_string()) out.push_back(item.get<std::string>());
+    }
+    return out;
+  };
+  run.failure_kind = text("failure_kind");
+  run.reason = text("reason");
+  run.exit_code = integer("exit_code");
+  run.signal = integer("signal");
+  run.cpu_s = number("cpu_s");
+  run.peak_rss_kb = number("peak_rss_kb");
+  run.started_at = text("started_at");
+  run.command = strings("command");
+  run.warnings = strings("warnings");
+}
+
 // Checks what the store cannot do without; other fields are stored as they are (null when absent).
 RunColumns ValidateRun(const json& run_spec, const json& result) {
   if (!run_spec.is_object()) throw InputError("run.json: expected a JSON object");
@@ -392,8 +428,9 @@ std::map<std::string, ResultsStore::RecordedIdentity> ResultsStore::RecordedIden
   return identities;
 }
 
-void ResultsStore::ImportRun(std::int64_t sweep_id, const StoredRun& run, const std::string& run_dir_relative) {
-  WriteInTransaction([&] { WriteRun(sweep_id, run.spec, run.result, run_dir_relative, run.flags, run.result_digest); });
+void ResultsStore::ImportRun(std::int64_t sweep_id, const RunRecord& run, const std::string& run_dir_relative) {
+  WriteInTransaction(
+      [&] { WriteRun(sweep_id, run.run_spec, run.result, run_dir_relative, run.flags, run.result_digest); });
 }
 
 void ResultsStore::WriteRun(std::int64_t sweep_id, const json& run_spec, const json& result,
@@ -505,13 +542,13 @@ std::optional<RunStatus> ResultsStore::StatusOf(const std::string& run_id) const
   return StoredRunStatus(db_.file(), run_id, select.Text(0));
 }
 
-std::optional<StoredRun> ResultsStore::FindRun(const std::string& run_id) const {
-  std::vector<StoredRun> runs = QueryRuns("WHERE run_id = ?1", run_id);
+std::optional<RunRecord> ResultsStore::FindRun(const std::string& run_id) const {
+  std::vector<RunRecord> runs = QueryRuns("WHERE run_id = ?1", run_id);
   if (runs.empty()) return std::nullopt;
   return std::move(runs.front());
 }
 
-std::vector<StoredRun> ResultsStore::Runs() const { return QueryRuns("", ""); }
+std::vector<RunRecord> ResultsStore::Runs() const { return QueryRuns("", ""); }
 
 bool ResultsStore::AddRunFlags(const std::string& run_id, const RunFlags& added) {
   SqliteTransaction transaction(db_);
@@ -527,8 +564,8 @@ bool ResultsStore::AddRunFlags(const std::string& run_id, const RunFlags& added)
   return true;
 }
 
-std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const std::string& run_id) const {
-  std::vector<StoredRun> runs;
+std::vector<RunRecord> ResultsStore::QueryRuns(const std::string& where, const std::string& run_id) const {
+  std::vector<RunRecord> runs;
   std::unordered_map<std::int64_t, std::size_t> index_of;
   // Both reads see one snapshot, so a concurrent RecordRun cannot pair a run with another version's metrics.
   SqliteStatement begin = db_.Prepare("BEGIN");
@@ -559,7 +596,7 @@ std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const s
                                 kRunColumns, where));
     if (!where.empty()) select.Bind(1, run_id);
     while (select.Step()) {
-      StoredRun run;
+      RunRecord run;
       const std::int64_t id = select.Int64(0);
       run.run_id = select.Text(1);
       run.sweep_id = select.Int64(2);
@@ -568,15 +605,15 @@ std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const s
       run.algorithm = NullableText(select, 5);
       run.sequence = NullableText(select, 6);
       run.noise = NullableText(select, 7);
-      run.iteration = select.Int64(8);
+      run.iteration = static_cast<int>(select.Int64(8));
       run.wall_s = select.OptionalDouble(9);
       run.finished_at = NullableText(select, 10);
       run.parameters = NullableText(select, 11);
       run.odometry_is_reference = !select.IsNull(12) && select.Int64(12) != 0;
       run.seeding = NullableText(select, 13);
       run.flags = RunFlagsFromText(NullableText(select, 14), db_.file().string() + ": runs.flags");
-      run.spec = document(select.Text(16), run.run_id, "run.json");
-      run.spec.update(ParseDocument(db_.file(), run.run_id, "run.json", select.Text(15)));
+      run.run_spec = document(select.Text(16), run.run_id, "run.json");
+      run.run_spec.update(ParseDocument(db_.file(), run.run_id, "run.json", select.Text(15)));
       run.result = document(select.Text(17), run.run_id, "result.json");
       run.result_digest = static_cast<std::uint64_t>(select.Int64(18));
       run.result["run_id"] = run.run_id;
@@ -585,6 +622,7 @@ std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const s
         run.result[kResultColumns[i]] = select.Json(kResultColumnIndex[i]);
       }
       run.result["flags"] = ToJson(run.flags);
+      FillResultFields(run);
       run.result["metrics"] = json::array();
       run.result["metric_details"] = json::object();
       index_of.emplace(id, runs.size());
@@ -601,8 +639,8 @@ std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const s
   while (metrics.Step()) {
     const auto it = index_of.find(metrics.Int64(0));
     if (it == index_of.end()) continue;
-    StoredRun& run = runs[it->second];
-    StoredMetric metric{metrics.Text(1), metrics.Text(2), metrics.OptionalDouble(3), metrics.Text(4)};
+    RunRecord& run = runs[it->second];
+    FlatMetric metric{metrics.Text(1), metrics.Text(2), metrics.OptionalDouble(3), metrics.Text(4)};
     run.result["metrics"].push_back({{"metric", metric.metric},
                                      {"statistic", metric.statistic},
                                      {"value", metric.value ? json(*metric.value) : json(nullptr)},
@@ -617,14 +655,15 @@ std::vector<StoredRun> ResultsStore::QueryRuns(const std::string& where, const s
   while (specs.Step()) {
     const auto it = index_of.find(specs.Int64(0));
     if (it == index_of.end()) continue;
-    StoredRun& run = runs[it->second];
+    RunRecord& run = runs[it->second];
     run.result["metric_details"][specs.Text(1)] = document(specs.Text(2), run.run_id, "metric specification");
   }
   return runs;
 }
 
 std::map<std::string, double> ResultsStore::TypicalWallSeconds() const {
-  auto select = db_.Prepare("SELECT algorithm, sequence, wall_s FROM runs WHERE status = 'ok' AND wall_s IS NOT NULL");
+  auto select = db_.Prepare("SELECT algorithm, sequence, wall_s FROM runs WHERE status = ? AND wall_s IS NOT NULL");
+  select.Bind(1, RunStatusName(RunStatus::kOk));
   std::map<std::string, std::vector<double>> walls;
   while (select.Step()) {
     walls[TypicalWallKey(NullableText(select, 0), NullableText(select, 1))].push_back(select.Double(2));

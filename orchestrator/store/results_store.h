@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "orchestrator/run/run_flags.h"
+#include "orchestrator/run/run_record.h"
 #include "orchestrator/run/run_status.h"
 #include "orchestrator/store/sqlite_db.h"
 #include "orchestrator/store/store_schema.h"
@@ -41,51 +42,6 @@ struct StoredSweep {
   /// kRunning until FinishSweep, then what the orchestrator reported.
   SweepStatus status = SweepStatus::kRunning;
   std::int64_t run_count = 0;
-};
-
-/// One flat metric of a run (a row of the metrics table).
-struct StoredMetric {
-  std::string metric;
-  std::string statistic;
-  /// Empty when the worker wrote null (a statistic that is not a number).
-  std::optional<double> value;
-  std::string unit;
-};
-
-/// Everything the summary, JUnit and report writers need about one run.
-struct StoredRun {
-  std::string run_id;
-  std::int64_t sweep_id = 0;
-  /// run.json as recorded (the whole of it).
-  nlohmann::json spec;
-  /// What the store keeps of result.json: run_id, status, failure_kind, reason, exit_code, signal, wall_s,
-  /// cpu_s, peak_rss_kb, started_at, finished_at, command, outputs, warnings, odometry_is_reference, flags,
-  /// metrics, and per metric_details entry its "specification"/"parameters". The run folder's result.json
-  /// has the rest (alignments, per-length statistics, map details).
-  nlohmann::json result;
-  /// FNV-1a 64 of the whole result.json as recorded, flags left out: two recordings of a run agree when
-  /// their digests and flags do (merge).
-  std::uint64_t result_digest = 0;
-  /// kOk or kFailed.
-  RunStatus status = RunStatus::kFailed;
-  /// Relative to the output directory ("runs/<run-id>").
-  std::string run_dir;
-  std::string algorithm;
-  std::string sequence;
-  std::string noise;
-  /// The parameters as ParametersText ("k=v;..."): with sequence, algorithm and noise, the run's comparison group.
-  std::string parameters;
-  /// The program's odometry was the reference (measured by the worker, else planned).
-  bool odometry_is_reference = false;
-  /// "seeded", "deterministic" or "unseeded" (run.json's seeding; "" for runs recorded before it existed).
-  std::string seeding;
-  /// The run's marks (RunFlagsOf its run.json and result.json): any one keeps it out of "best".
-  RunFlags flags;
-  std::int64_t iteration = 0;
-  std::optional<double> wall_s;
-  std::string finished_at;
-  /// In the order the worker listed them.
-  std::vector<StoredMetric> metrics;
 };
 
 /// results.sqlite: the index of an output directory (result.json in each run folder is the commit point of a run,
@@ -118,7 +74,7 @@ class ResultsStore {
 
   /// Records (or replaces) a run read from another store (merge): its row as that store keeps it, digest and
   /// flags included.
-  void ImportRun(std::int64_t sweep_id, const StoredRun& run, const std::string& run_dir_relative);
+  void ImportRun(std::int64_t sweep_id, const RunRecord& run, const std::string& run_dir_relative);
 
   /// Between BeginBatch and CommitBatch, RecordRun and ImportRun write in one transaction (merge: a
   /// thousand runs in one commit instead of a thousand). A batch not committed is rolled back.
@@ -136,12 +92,12 @@ class ResultsStore {
 
   /// kOk or kFailed, or empty when the run was never recorded.
   std::optional<RunStatus> StatusOf(const std::string& run_id) const;
-  std::optional<StoredRun> FindRun(const std::string& run_id) const;
+  std::optional<RunRecord> FindRun(const std::string& run_id) const;
   /// Adds `flags` to a recorded run (its flags column, which `result`'s flags mirror); false when the run
   /// was never recorded. The sweep marks a run it reuses under another build or evaluation "stale" this way.
   bool AddRunFlags(const std::string& run_id, const RunFlags& flags);
   /// Every run, ordered by sequence, algorithm, noise, iteration, run id.
-  std::vector<StoredRun> Runs() const;
+  std::vector<RunRecord> Runs() const;
 
   /// Median wall_s of the ok runs per "<algorithm>\t<sequence>", to start the longest runs first.
   std::map<std::string, double> TypicalWallSeconds() const;
@@ -158,7 +114,7 @@ class ResultsStore {
   void WriteRun(std::int64_t sweep_id, const nlohmann::json& run_spec, const nlohmann::json& result,
                 const std::string& run_dir_relative, const RunFlags& flags,
                 std::optional<std::uint64_t> result_digest = std::nullopt);
-  std::vector<StoredRun> QueryRuns(const std::string& where, const std::string& run_id) const;
+  std::vector<RunRecord> QueryRuns(const std::string& where, const std::string& run_id) const;
 
   /// Runs `write` in the open batch, else in a transaction of its own; a failure forgets the cached ids.
   void WriteInTransaction(const std::function<void()>& write);

@@ -23,12 +23,12 @@ std::string ReferenceMeaning(const json& ground_truth) {
 
 }  // namespace
 
-json SummarizeRun(const StoredRun& run) {
-  const json& spec = run.spec;
+json SummarizeRun(const RunRecord& run) {
+  const json& spec = run.run_spec;
   const json& result = run.result;
   json metrics = json::object();
   json units = json::object();
-  for (const StoredMetric& m : run.metrics) {
+  for (const FlatMetric& m : run.metrics) {
     // JSON has no NaN: a statistic that is not a number stays null, as the worker wrote it.
     metrics[m.metric][m.statistic] = m.value.has_value() ? json(*m.value) : json(nullptr);
     if (!m.unit.empty()) units[m.metric] = m.unit;
@@ -68,11 +68,11 @@ json SummarizeRun(const StoredRun& run) {
   };
 }
 
-json BuildSummaryJson(const std::vector<StoredRun>& runs, const evaluator::ValidityStudy& study,
+json BuildSummaryJson(const std::vector<RunRecord>& runs, const evaluator::ValidityStudy& study,
                       const std::string& generated_at) {
   json listed = json::array();
   std::size_t ok = 0;
-  for (const StoredRun& run : runs) {
+  for (const RunRecord& run : runs) {
     listed.push_back(SummarizeRun(run));
     if (run.status == RunStatus::kOk) ++ok;
   }
@@ -90,7 +90,7 @@ json BuildSummaryJson(const std::vector<StoredRun>& runs, const evaluator::Valid
   return summary;
 }
 
-void WriteSummaryJson(const std::vector<StoredRun>& runs, const evaluator::ValidityStudy& study,
+void WriteSummaryJson(const std::vector<RunRecord>& runs, const evaluator::ValidityStudy& study,
                       const std::filesystem::path& file) {
   // Replacement of invalid UTF-8 (a reason quoting a program's garbled output) keeps the file writable.
   // Compact: indentation was 40 % of a large sweep's file (jq or a browser shows it indented).

@@ -2,7 +2,7 @@
 
 namespace slamsweep::orchestrator {
 
-evaluator::ValidityRun ToValidityRun(const StoredRun& run) {
+evaluator::ValidityRun ToValidityRun(const RunRecord& run) {
   evaluator::ValidityRun out;
   out.run_id = run.run_id;
   out.sequence = run.sequence;
@@ -10,25 +10,27 @@ evaluator::ValidityRun ToValidityRun(const StoredRun& run) {
   out.algorithm = run.algorithm;
   out.ok = run.status == RunStatus::kOk;
   out.odometry_is_reference = run.odometry_is_reference;
-  for (const StoredMetric& metric : run.metrics) {
+  for (const FlatMetric& metric : run.metrics) {
     if (metric.value) out.values[metric.metric + "." + metric.statistic] = *metric.value;
   }
-  const auto command = run.result.find("command");
-  const bool ran_a_program = command != run.result.end() && command->is_array() && !command->empty();
-  if (ran_a_program) {
-    for (const char* resource : {"wall_s", "cpu_s", "peak_rss_kb"}) {
-      const auto value = run.result.find(resource);
-      if (value != run.result.end() && value->is_number()) out.values[resource] = value->get<double>();
+  if (!run.command.empty()) {
+    for (const auto& [key, value] :
+         {std::pair{"wall_s", run.wall_s}, {"cpu_s", run.cpu_s}, {"peak_rss_kb", run.peak_rss_kb}}) {
+      if (value) out.values[key] = *value;
     }
   }
   return out;
 }
 
-evaluator::ValidityStudy ValidityStudyOf(const std::vector<StoredRun>& runs) {
+std::vector<evaluator::ValidityRun> ToValidityRuns(const std::vector<RunRecord>& runs) {
   std::vector<evaluator::ValidityRun> converted;
   converted.reserve(runs.size());
-  for (const StoredRun& run : runs) converted.push_back(ToValidityRun(run));
-  return evaluator::ComputeValidityStudy(std::move(converted));
+  for (const RunRecord& run : runs) converted.push_back(ToValidityRun(run));
+  return converted;
+}
+
+evaluator::ValidityStudy ValidityStudyOf(const std::vector<RunRecord>& runs) {
+  return evaluator::ComputeValidityStudy(ToValidityRuns(runs));
 }
 
 }  // namespace slamsweep::orchestrator

@@ -11,7 +11,7 @@
 #include "orchestrator/phase_times/phase_times.h"
 #include "orchestrator/store/results_store.h"
 #include "orchestrator/sweep/output_lock.h"
-#include "orchestrator/sweep/run_folder.h"
+#include "orchestrator/run/run_folder.h"
 #include "orchestrator/sweep/shared_run_files.h"
 #include "orchestrator/sweep/sweep_steps.h"
 

@@ -3,7 +3,7 @@
 #include <unistd.h>
 
 #include "orchestrator/store/result_files.h"
-#include "orchestrator/sweep/run_folder.h"
+#include "orchestrator/run/run_folder.h"
 #include "orchestrator/run/run_json.h"
 
 namespace slamsweep::orchestrator {
@@ -39,9 +39,9 @@ std::vector<const RunSpec*> RunsStillToDo(const std::vector<RunSpec>& runs, cons
   std::vector<const RunSpec*> to_run;
   for (const RunSpec& run : runs) {
     bool stale = false;
-    const std::optional<StoredRun> recorded = store.FindRun(run.run_id);
+    const std::optional<RunRecord> recorded = store.FindRun(run.run_id);
     if (recorded) {
-      const bool reusable = RecordedRunIsReusable(run, recorded->status, recorded->spec, settings, stale);
+      const bool reusable = RecordedRunIsReusable(run, recorded->status, recorded->run_spec, settings, stale);
       outcome.stale += stale ? 1 : 0;
       if (reusable) {
         if (stale) MarkStale(settings.output_dir, run.run_id, store);
@@ -104,12 +104,12 @@ std::optional<FinishedRun> RecordWorkerEnding(const RunSpec& run, const WorkerEn
 
 std::size_t WriteSweepOutputs(const ResultsStore& store, const std::set<std::string>& matrix_ids,
                               const std::filesystem::path& output_dir) {
-  std::vector<StoredRun> stored_runs;
-  for (StoredRun& stored : store.Runs()) {
+  std::vector<RunRecord> stored_runs;
+  for (RunRecord& stored : store.Runs()) {
     if (matrix_ids.count(stored.run_id) > 0) stored_runs.push_back(std::move(stored));
   }
   std::size_t failed = 0;
-  for (const StoredRun& stored : stored_runs) failed += stored.status == RunStatus::kOk ? 0 : 1;
+  for (const RunRecord& stored : stored_runs) failed += stored.status == RunStatus::kOk ? 0 : 1;
   WriteResultFiles(stored_runs, output_dir);
   return failed;
 }

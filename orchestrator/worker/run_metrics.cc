@@ -8,7 +8,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "orchestrator/run/run_failure.h"
-#include "evaluator/map/paper_metrics.h"
+#include "evaluator/map_metrics/paper_metrics.h"
 #include "evaluator/map_compare/map_compare.h"
 #include "evaluator/map_compare/map_resample.h"
 #include "evaluator/trajectory/ape.h"

@@ -324,6 +324,7 @@ Html MetricsTable(const RunRecord& record) {
   std::map<std::pair<std::string, std::string>, const FlatMetric*> values;
   std::map<std::string, std::string> units;
   for (const FlatMetric& metric : record.metrics) {
+    if (!metric.value) continue;
     if (std::find(metrics.begin(), metrics.end(), metric.metric) == metrics.end()) metrics.push_back(metric.metric);
     if (std::find(statistics.begin(), statistics.end(), metric.statistic) == statistics.end()) {
       statistics.push_back(metric.statistic);
@@ -346,7 +347,7 @@ Html MetricsTable(const RunRecord& record) {
       }
       const FlatMetric& value = *found->second;
       const bool other_unit = value.unit != units[metric] && !(statistic == "n" && value.unit == "count");
-      cells += Element("td", "", E(FormatNumber(value.value) + (other_unit ? " " + value.unit : "")));
+      cells += Element("td", "", E(FormatNumber(*value.value) + (other_unit ? " " + value.unit : "")));
     }
     cells += Element("td", "spec", E(MetricSpecLabel(record, metric)));
     rows += Element("tr", "", cells);

@@ -11,7 +11,7 @@
 
 #include "report/html/number_format.h"
 #include "report/html/safe_name.h"
-#include "report/model/validity_runs.h"
+#include "orchestrator/store/validity_table.h"
 
 namespace slamsweep::report {
 namespace {
@@ -167,7 +167,7 @@ std::string KeyTitle(const std::vector<ev::ValidityPoint>& points) {
 ValiditySite PlanValidity(const SweepModel& model, const AlgorithmPalette& palette, const fs::path& out_dir,
                           std::vector<ScatterPlotJob>& jobs) {
   ValiditySite site;
-  const std::vector<ev::ValidityRun> runs = ToValidityRuns(model.runs);
+  const std::vector<ev::ValidityRun> runs = orchestrator::ToValidityRuns(model.runs);
   site.study = model.validity;  // computed once, with the model whose best marks rest on it
   if (site.study.empty()) return site;
   std::error_code error;

@@ -8,7 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "evaluator/core/input_error.h"
-#include "evaluator/map/canvas_crop.h"
+#include "evaluator/map_metrics/canvas_crop.h"
 #include "evaluator/map_compare/map_resample.h"
 
 namespace slamsweep::report {

@@ -4,9 +4,15 @@
 #include <string>
 #include <vector>
 
-#include "report/model/run_record.h"
+#include "orchestrator/run/run_record.h"
 
 namespace slamsweep::report {
+
+using orchestrator::FlatMetric;
+using orchestrator::RunOutputs;
+using orchestrator::RunRecord;
+using orchestrator::RunStatus;
+using orchestrator::RunStatusName;
 
 /// Reads runs/<id>/run.json and result.json. Never throws for a bad run: a missing result.json
 /// gives kUnfinished, a malformed file gives kUnreadable with `reason` naming the file and field,

@@ -8,7 +8,7 @@
 
 #include "orchestrator/run/run_json.h"
 
-#include "report/model/validity_runs.h"
+#include "orchestrator/store/validity_table.h"
 #include "report/model/validity_support.h"
 
 namespace slamsweep::report {
@@ -223,7 +223,9 @@ std::optional<AlgorithmRow> ReferenceFloorRow(const std::vector<RunRecord>& runs
     for (const MetricColumn& column : sequence.trajectory_columns) {
       MetricCell cell;
       for (const FlatMetric& metric : run.reference_floor) {
-        if (metric.metric == column.metric && metric.statistic == column.statistic) cell.values.push_back(metric.value);
+        if (metric.metric == column.metric && metric.statistic == column.statistic && metric.value) {
+          cell.values.push_back(*metric.value);
+        }
       }
       cell.summary = ComputeMeanStd(cell.values);
       row.trajectory_cells.push_back(std::move(cell));
@@ -334,7 +336,7 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions&
   SweepModel model;
   std::sort(runs.begin(), runs.end(), [](const RunRecord& a, const RunRecord& b) { return a.run_id < b.run_id; });
   model.runs = std::move(runs);
-  model.validity = evaluator::ComputeValidityStudy(ToValidityRuns(model.runs));
+  model.validity = evaluator::ComputeValidityStudy(orchestrator::ToValidityRuns(model.runs));
   // Table (sequence, noise) -> row (algorithm name, parameters) -> runs.
   using RowKey =
       std::tuple<std::string, std::string, std::string, std::string>;  // algorithm, parameters, odometry, build

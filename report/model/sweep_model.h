@@ -8,9 +8,15 @@
 #include "evaluator/validity/metric_validity.h"
 #include "report/model/mean_std.h"
 #include "report/model/published_figures.h"
-#include "report/model/run_record.h"
+#include "orchestrator/run/run_record.h"
 
 namespace slamsweep::report {
+
+using orchestrator::FlatMetric;
+using orchestrator::RunOutputs;
+using orchestrator::RunRecord;
+using orchestrator::RunStatus;
+using orchestrator::RunStatusName;
 
 struct AlgorithmRow;
 struct MetricColumn;

@@ -5,7 +5,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/formats/trajectory/tum_format.h"
-#include "evaluator/sequence/sequence_file.h"
+#include "evaluator/sequence_io/sequence_file.h"
 
 namespace slamsweep::slam {
 

@@ -8,7 +8,7 @@
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/formats/trajectory/tum_format.h"
-#include "evaluator/sequence/sequence_file.h"
+#include "evaluator/sequence_io/sequence_file.h"
 #include "tests/cli/run_cli.h"
 #include "tests/support/shared_data.h"
 

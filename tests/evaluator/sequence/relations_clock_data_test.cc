@@ -6,7 +6,7 @@
 
 #include "evaluator/formats/trajectory/relations_format.h"
 #include "evaluator/sequence/carmen_sequence.h"
-#include "evaluator/sequence/catalog.h"
+#include "evaluator/catalog/catalog.h"
 #include "evaluator/sequence/relations_clock.h"
 #include "evaluator/trajectory/relations_metric.h"
 #include "tests/support/shared_data.h"

@@ -21,7 +21,7 @@
 #include "evaluator/formats/map/map_file.h"
 #include "evaluator/formats/rawlog/rawlog_writer.h"
 #include "evaluator/formats/trajectory/mrpt_path_format.h"
-#include "evaluator/map/paper_metrics.h"
+#include "evaluator/map_metrics/paper_metrics.h"
 #include "evaluator/noise/odometry_noise.h"
 #include "evaluator/sequence/carmen_sequence.h"
 #include "evaluator/trajectory/ape.h"

@@ -125,8 +125,9 @@ inline std::vector<double> WriteSyntheticSweep(const std::filesystem::path& dir,
     slamsweep::testing::WriteFile(run_dir / "result.json", result.dump(2));
     store.RecordRun(sweep_id, spec, result, "runs/" + run_id);
   }
-  store.FinishSweep(sweep_id, sweep.failed_iterations.empty() ? SweepStatus::kOk : SweepStatus::kFailed, sweep.iterations);
-  const std::vector<StoredRun> runs = store.Runs();
+  store.FinishSweep(sweep_id, sweep.failed_iterations.empty() ? SweepStatus::kOk : SweepStatus::kFailed,
+                    sweep.iterations);
+  const std::vector<RunRecord> runs = store.Runs();
   WriteSummaryJson(runs, ValidityStudyOf(runs), dir / "summary.json");
   return ape;
 }

@@ -14,8 +14,8 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/map/map_server_format.h"
-#include "evaluator/mapping/occupancy_mapper.h"
-#include "evaluator/sequence/catalog.h"
+#include "evaluator/occupancy_mapping/occupancy_mapper.h"
+#include "evaluator/catalog/catalog.h"
 #include "evaluator/simulation/floor_plan.h"
 #include "evaluator/simulation/simulated_sequence.h"
 #include "orchestrator/adapters/run_inputs.h"

@@ -47,10 +47,10 @@ json ParseWithPython(const slamsweep::testing::TempDir& dir, const std::filesyst
   return json::parse(output, nullptr, false);
 }
 
-StoredRun MakeRun(const json& spec, const json& result, std::vector<StoredMetric> metrics = {}) {
-  StoredRun run;
+RunRecord MakeRun(const json& spec, const json& result, std::vector<FlatMetric> metrics = {}) {
+  RunRecord run;
   run.run_id = spec.at("run_id");
-  run.spec = spec;
+  run.run_spec = spec;
   run.result = result;
   run.status = result.at("status");
   run.algorithm = spec.at("algorithm").at("name");
@@ -61,8 +61,8 @@ StoredRun MakeRun(const json& spec, const json& result, std::vector<StoredMetric
   return run;
 }
 
-std::vector<StoredMetric> MetricsOf(const json& result) {
-  std::vector<StoredMetric> metrics;
+std::vector<FlatMetric> MetricsOf(const json& result) {
+  std::vector<FlatMetric> metrics;
   for (const json& m : result.at("metrics")) {
     metrics.push_back({m.at("metric"), m.at("statistic"), m.at("value").get<double>(), m.at("unit")});
   }
@@ -79,7 +79,7 @@ TEST(JUnitXmlTest, OneSuitePerSequenceOneCasePerRunWithFailuresAndThresholds) {
   const auto past = MakeOkResult("past", 2.0, 0.7);
   const auto fine = MakeOkResult("fine", 1.25, 0.2);
   const auto crashed = MakeFailedResult("crashed", "killed by SIGSEGV");
-  const std::vector<StoredRun> runs = {
+  const std::vector<RunRecord> runs = {
       MakeRun(past_spec, past, MetricsOf(past)),
       MakeRun(MakeSpec("fine", "icp-slam", "intel"), fine, MetricsOf(fine)),
       MakeRun(MakeSpec("crashed", "rbpf", "fr079"), crashed),
@@ -194,7 +194,7 @@ TEST(JUnitXmlTest, NullMetricFailsItsThreshold) {
   auto spec = MakeSpec("r");
   spec["thresholds"] = {{{"metric", "ape_trans"}, {"statistic", "rmse"}, {"max", 1.0}}};
   const ThresholdCheck check =
-      CheckThresholds(MakeRun(spec, MakeOkResult("r"), {StoredMetric{"ape_trans", "rmse", std::nullopt, "m"}}));
+      CheckThresholds(MakeRun(spec, MakeOkResult("r"), {FlatMetric{"ape_trans", "rmse", std::nullopt, "m"}}));
   ASSERT_EQ(check.exceeded.size(), 1u);
   EXPECT_THAT(check.exceeded[0], HasSubstr("ape_trans.rmse = null"));
 }
@@ -210,7 +210,7 @@ TEST(JUnitXmlTest, EmptyRunListIsAValidDocument) {
 
 TEST(JUnitXmlTest, AFlaggedRunCarriesEachFlagAsAPropertyAndItsMeaningInItsOutput) {
   const auto result = MakeOkResult("r");
-  StoredRun run = MakeRun(MakeSpec("r"), result, MetricsOf(result));
+  RunRecord run = MakeRun(MakeSpec("r"), result, MetricsOf(result));
   run.flags = RunFlags{RunFlag::kStale, RunFlag::kUnisolated};
   const std::string xml = RenderJUnit({run});
   EXPECT_THAT(xml, HasSubstr("<property name=\"flag\" value=\"stale\"/>"));

@@ -92,9 +92,9 @@ TEST(ResultsStoreTest, RunsCarryColumnsSpecResultAndMetrics) {
   EXPECT_EQ(runs[0].run_id, "r2");
   EXPECT_EQ(runs[0].status, RunStatus::kFailed);
   EXPECT_TRUE(runs[0].metrics.empty());
-  const StoredRun& r1 = runs[1];
+  const RunRecord& r1 = runs[1];
   EXPECT_EQ(r1.sweep_id, 7);
-  EXPECT_EQ(r1.spec, spec);
+  EXPECT_EQ(r1.run_spec, spec);
   // result.json's columns, command, outputs and warnings come back; of metric_details only how each metric
   // was specified (the run folder keeps the rest).
   for (const char* key : {"run_id", "status", "failure_kind", "reason", "exit_code", "signal", "wall_s", "cpu_s",
@@ -150,9 +150,9 @@ TEST(ResultsStoreTest, WhatRunsShareIsKeptOnceAndTheMetricSpecificationWithoutTh
   ASSERT_TRUE(spec.Step());
   EXPECT_EQ(nlohmann::json::parse(spec.Text(0)),
             (nlohmann::json{{"specification", {{"alignment", "se2"}, {"t_max_diff_s", 0.01}}}}));
-  const std::optional<StoredRun> r7 = store.FindRun("r7");
+  const std::optional<RunRecord> r7 = store.FindRun("r7");
   ASSERT_TRUE(r7.has_value());
-  EXPECT_EQ(r7->spec, MakeSpec("r7", "icp-slam", "intel", 7));
+  EXPECT_EQ(r7->run_spec, MakeSpec("r7", "icp-slam", "intel", 7));
   EXPECT_EQ(r7->result.at("metric_details").at("paper_map"),
             (nlohmann::json{{"parameters", {{"occupied_threshold", 0.65}}}}));
 }
@@ -173,10 +173,10 @@ TEST(ResultsStoreTest, ResultDigestTellsRecordingsApartButNotTheirFlags) {
   EXPECT_NE(store.FindRun("a")->result_digest, a);
   // A run imported into another store keeps its digest and flags.
   ResultsStore other = ResultsStore::Open(dir / "other.sqlite");
-  const StoredRun b = *store.FindRun("b");
+  const RunRecord b = *store.FindRun("b");
   other.ImportRun(1, b, "runs/b");
   EXPECT_EQ(other.FindRun("b")->result_digest, b.result_digest);
-  EXPECT_EQ(other.FindRun("b")->spec, b.spec);
+  EXPECT_EQ(other.FindRun("b")->run_spec, b.run_spec);
   EXPECT_EQ(other.FindRun("b")->metrics.size(), b.metrics.size());
 }
 
@@ -216,7 +216,7 @@ TEST(ResultsStoreTest, NullMetricValuesAndHugeSeedsSurvive) {
   const auto run = store.FindRun("r1");
   ASSERT_EQ(run->metrics.size(), 1u);
   EXPECT_FALSE(run->metrics[0].value.has_value());
-  EXPECT_EQ(run->spec.at("seed").get<std::uint64_t>(), 18446744073709551615ull);
+  EXPECT_EQ(run->run_spec.at("seed").get<std::uint64_t>(), 18446744073709551615ull);
   SqliteDb db = SqliteDb::Open(dir / "results.sqlite", false);
   auto seed = db.Prepare("SELECT seed FROM runs");
   ASSERT_TRUE(seed.Step());
@@ -363,7 +363,7 @@ TEST(ResultsStoreTest, RunFlagsAreRecordedAddedAndReadBack) {
 
   EXPECT_TRUE(store.AddRunFlags("r2", RunFlags{RunFlag::kStale}));
   EXPECT_FALSE(store.AddRunFlags("nope", RunFlags{RunFlag::kStale}));
-  const std::optional<StoredRun> stale = store.FindRun("r2");
+  const std::optional<RunRecord> stale = store.FindRun("r2");
   EXPECT_EQ(stale->flags, RunFlags{RunFlag::kStale});
   EXPECT_EQ(stale->result.at("flags"), nlohmann::json::array({"stale"}));
   SqliteDb db = SqliteDb::Open(file, false);
@@ -409,7 +409,7 @@ TEST(ResultsStoreTest, AVersion2StoreIsConvertedAndDerivesFlagsFromItsRuns) {
   WriteVersion2Store(file);
   ResultsStore reopened = ResultsStore::Open(file);
   EXPECT_EQ(QueryInt(file, "PRAGMA user_version"), kResultsSchemaVersion);
-  const std::optional<StoredRun> old = reopened.FindRun("old");
+  const std::optional<RunRecord> old = reopened.FindRun("old");
   ASSERT_TRUE(old.has_value());
   EXPECT_EQ(old->sweep_id, 3);
   EXPECT_EQ(old->flags, RunFlags{RunFlag::kOdometryIsReference});

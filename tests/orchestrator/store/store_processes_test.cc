@@ -138,7 +138,7 @@ TEST(ResultsStoreProcessesTest, TwoProcessesRecordingAtOnceLoseNothing) {
   const auto runs = store.Runs();
   EXPECT_EQ(runs.size(), 2u * kRunsPerProcess);
   std::size_t metrics = 0;
-  for (const StoredRun& run : runs) metrics += run.metrics.size();
+  for (const RunRecord& run : runs) metrics += run.metrics.size();
   EXPECT_EQ(metrics, 3u * 2u * kRunsPerProcess);
   EXPECT_EQ(store.Sweeps().size(), 2u);
   // wall_s of process a: 1..200; the median of an even count is the mean of the middle two, (100 + 101) / 2.

@@ -84,7 +84,7 @@ TEST(SummaryJsonTest, EmptyStoreAndGarbledTextStillGiveValidJson) {
   WriteSummaryJson({}, {}, dir / "summary.json");
   EXPECT_EQ(ReadJson(dir / "summary.json").at("counts").at("total"), 0);
 
-  StoredRun run;
+  RunRecord run;
   run.run_id = "r";
   run.status = RunStatus::kFailed;
   run.result = {{"reason", std::string("bad byte \xff here")}};

@@ -23,17 +23,17 @@ std::string ReadWholeFile(const std::filesystem::path& file) {
 }
 
 /// Ten runs on intel whose corner count rises with the ATE (0.1 m per iteration).
-std::vector<StoredRun> Runs(bool with_ate) {
-  std::vector<StoredRun> runs;
+std::vector<RunRecord> Runs(bool with_ate) {
+  std::vector<RunRecord> runs;
   for (int i = 0; i < 10; ++i) {
     const std::string id = "icp-slam-intel-clean-i" + std::to_string(i);
-    StoredRun run;
+    RunRecord run;
     run.run_id = id;
     run.status = RunStatus::kOk;
     run.algorithm = "icp-slam";
     run.sequence = "intel";
     run.noise = "clean";
-    run.spec = testing::MakeSpec(id, "icp-slam", "intel", i);
+    run.run_spec = testing::MakeSpec(id, "icp-slam", "intel", i);
     run.result = testing::MakeOkResult(id, 3.0 + i, 0.1 * (i + 1));
     run.result["command"] = {"icp-slam", "input/icp-slam.ini"};
     if (with_ate) run.metrics.push_back({"ape_trans", "rmse", 0.1 * (i + 1), "m"});
@@ -45,7 +45,7 @@ std::vector<StoredRun> Runs(bool with_ate) {
 
 TEST(ValidityTableTest, SummaryJsonAndValidityCsvCarryTheSameTable) {
   slamsweep::testing::TempDir dir;
-  const std::vector<StoredRun> runs = Runs(true);
+  const std::vector<RunRecord> runs = Runs(true);
   WriteResultFiles(runs, dir.path());
   const json validity = json::parse(ReadWholeFile(dir / "summary.json")).at("validity");
   EXPECT_EQ(validity.at("sequences"), json::array({"intel"}));
@@ -96,7 +96,7 @@ TEST(ValidityTableTest, SummaryJsonAndValidityCsvCarryTheSameTable) {
 }
 
 TEST(ValidityTableTest, ResourcesCountOnlyForRunsThatRanAProgram) {
-  std::vector<StoredRun> runs = Runs(true);
+  std::vector<RunRecord> runs = Runs(true);
   const evaluator::ValidityRun with_program = ToValidityRun(runs[2]);
   EXPECT_EQ(with_program.values.at("wall_s"), 5.0);
   EXPECT_EQ(with_program.values.at("peak_rss_kb"), 81234.0);
@@ -108,7 +108,7 @@ TEST(ValidityTableTest, ResourcesCountOnlyForRunsThatRanAProgram) {
 TEST(ValidityTableTest, WithoutReferenceDataThereIsNoTable) {
   slamsweep::testing::TempDir dir;
   slamsweep::testing::WriteFile(dir / "validity.csv", "stale\n");
-  const std::vector<StoredRun> runs = Runs(false);
+  const std::vector<RunRecord> runs = Runs(false);
   WriteResultFiles(runs, dir.path());
   EXPECT_FALSE(json::parse(ReadWholeFile(dir / "summary.json")).contains("validity"));
   EXPECT_FALSE(std::filesystem::exists(dir / "validity.csv"));

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "orchestrator/sweep/executor.h"
-#include "orchestrator/sweep/run_folder.h"
+#include "orchestrator/run/run_folder.h"
 
 namespace slamsweep::orchestrator::fakes {
 

@@ -8,7 +8,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "orchestrator/store/results_store.h"
-#include "orchestrator/store/run_folder.h"
+#include "orchestrator/run/run_folder.h"
 #include "orchestrator/sweep/output_lock.h"
 #include "tests/orchestrator/sweep/fake_executor.h"
 #include "tests/support/shared_data.h"

@@ -9,9 +9,9 @@
 #include <iostream>
 #include <string>
 
-#include "evaluator/map/paper_metrics.h"
+#include "evaluator/map_metrics/paper_metrics.h"
 #include "evaluator/map_compare/map_resample.h"
-#include "evaluator/mapping/occupancy_mapper.h"
+#include "evaluator/occupancy_mapping/occupancy_mapper.h"
 #include "evaluator/simulation/simulated_sequence.h"
 #include "orchestrator/worker/run_metrics.h"
 

@@ -12,7 +12,7 @@
 
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/formats/trajectory/tum_format.h"
-#include "evaluator/sequence/sequence_file.h"
+#include "evaluator/sequence_io/sequence_file.h"
 #include "evaluator/trajectory/ape.h"
 #include "orchestrator/adapters/run_inputs.h"
 #include "orchestrator/worker/worker.h"

@@ -9,7 +9,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/formats/trajectory/trajectory_file.h"
-#include "evaluator/sequence/robot_log_file.h"
+#include "evaluator/sequence_io/robot_log_file.h"
 #include "tests/support/shared_data.h"
 
 namespace slamsweep::slam {

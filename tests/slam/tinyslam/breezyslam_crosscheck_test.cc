@@ -25,7 +25,7 @@
 
 #include "evaluator/formats/trajectory/trajectory_file.h"
 #include "evaluator/sequence/robot_log.h"
-#include "evaluator/sequence/sequence_file.h"
+#include "evaluator/sequence_io/sequence_file.h"
 #include "evaluator/statistics/sign_test.h"
 #include "evaluator/trajectory/ape.h"
 #include "tests/cli/run_cli.h"

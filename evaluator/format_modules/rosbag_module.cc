@@ -1,0 +1,19 @@
+// slamsweep-rosbag.so: the ROS1 bag reader as a module that slamsweep loads only when it reads a
+// bag (evaluator/format_modules/format_module.h says why).
+#include "evaluator/formats/rosbag/rosbag_reader.h"
+#include "evaluator/format_modules/format_module.h"
+
+namespace slamsweep::evaluator {
+namespace {
+
+ModuleOutcome Read(const std::filesystem::path& path, const RosbagReadOptions& options, Sequence& sequence) {
+  return RunGuarded([&] { sequence = ReadRosbag(path, options); });
+}
+
+}  // namespace
+}  // namespace slamsweep::evaluator
+
+extern "C" __attribute__((visibility("default"))) const slamsweep::evaluator::RosbagModule* slamsweep_rosbag_module() {
+  static const slamsweep::evaluator::RosbagModule module{.read = &slamsweep::evaluator::Read};
+  return &module;
+}
