@@ -181,7 +181,7 @@ SpawnResult SpawnChild(const ProcessSpec& spec, const ChildStreams& streams) {
       args.assign(command.begin() + 1, command.end());
     }
     std::error_code ec;
-    // vfork: the supervisor links OpenCV and MRPT, and copying its page tables for every fork was the
+    // vfork: the supervisor links OpenCV and MRPT, and copying its page tables for every fork is the
     // largest part of the per-run overhead (bench/sweep_bench). ChildSetup writes no shared memory.
     std::optional<SandboxSpec::User> user;
     const char* cgroup_procs = nullptr;
