@@ -3,18 +3,16 @@
 #include <signal.h>
 #include <sys/types.h>
 
-#include <chrono>
 #include <cstddef>
 #include <cstdint>
-#include <map>
-#include <optional>
 #include <utility>
 #include <vector>
 
-#include "orchestrator/process/capped_log.h"
+#include "orchestrator/process/child_limits.h"
 #include "orchestrator/process/interruption.h"
 #include "orchestrator/process/process_outcome.h"
 #include "orchestrator/process/process_spec.h"
+#include "orchestrator/process/running_child.h"
 
 namespace slamsweep::orchestrator {
 
@@ -61,49 +59,15 @@ class ProcessSet {
   std::size_t running() const { return children_.size() + pending_.size(); }
 
  private:
-  enum class StopCause { kNone, kTimeout, kMemory, kProcesses, kInterrupt };
-  using Clock = std::chrono::steady_clock;
-
-  struct Child {
-    explicit Child(const ProcessSpec& spec) : log(spec.log_cap_bytes) {}
-    pid_t pid = -1;
-    int output_fd = -1;
-    CappedLog log;
-    Clock::time_point started;
-    Clock::time_point first_usage_check;
-    std::optional<Clock::time_point> timeout_at;
-    double timeout_s = 0;
-    double grace_s = 0;
-    std::uint64_t memory_limit_mb = 0;
-    /// Sandboxed children only: the status pipe of slamsweep-sandbox-init and what came through it.
-    bool sandboxed = false;
-    int status_fd = -1;
-    std::uint64_t process_limit = 0;
-    /// The end of the output, for the message of a sandbox that could not be set up.
-    std::string output_tail;
-    StopCause stop_cause = StopCause::kNone;
-    std::optional<Clock::time_point> kill_at;  // set once SIGTERM went to the group
-    bool sent_kill = false;
-    std::int64_t over_limit_rss_kb = 0;
-    int interrupt_signal = 0;
-  };
-
-  void ReadOutput(Child& child, std::size_t max_bytes);
+  /// Waits for output, a signal, or `until` (capped), and reads what arrived.
+  void Poll(ChildClock::time_point until);
   /// Collects every child that has ended (non-blocking).
   void ReapEnded(std::vector<std::pair<Id, ProcessOutcome>>& ended);
-  ProcessOutcome Reap(Child& child);
-  /// A sandboxed child's outcome from its status lines, when nothing stopped it.
-  static void ReadSandboxStatus(Child& child, int monitor_status, ProcessOutcome& outcome);
-  /// Timeouts, grace expiry and memory limits; returns when it next needs to run.
-  Clock::time_point EnforceLimits(Clock::time_point now);
-  void Terminate(Child& child, StopCause cause, Clock::time_point now);
-  /// Waits for output, a signal, or `until` (capped), and reads what arrived.
-  void Poll(Clock::time_point until);
 
-  std::map<Id, Child> children_;
+  RunningChildren children_;
   std::vector<std::pair<Id, ProcessOutcome>> pending_;
   Id next_id_ = 1;
-  Clock::time_point next_memory_poll_;
+  LimitEnforcer limits_;
   sigset_t previous_mask_;
 };
 

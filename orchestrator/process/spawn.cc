@@ -81,6 +81,31 @@ struct ChildSetup : bp::extend::handler {
   }
 };
 
+/// ChildStreams' replacements of the standard streams. Given after Boost's stream handlers, so its
+/// dup2 calls come last.
+struct StreamRedirection : bp::extend::handler {
+  int stdin_fd = -1;
+  int stdout_fd = -1;
+  int stderr_fd = -1;
+
+  template <typename Executor>
+  void on_exec_setup(Executor&) const {
+    Redirect(stdin_fd, STDIN_FILENO);
+    Redirect(stdout_fd, STDOUT_FILENO);
+    Redirect(stderr_fd, STDERR_FILENO);
+  }
+
+  static void Redirect(int from, int to) {
+    if (from < 0) return;
+    // dup2 onto itself would keep the close-on-exec flag that ChildSetup set.
+    if (from == to) {
+      ::fcntl(to, F_SETFD, 0);
+    } else {
+      ::dup2(from, to);
+    }
+  }
+};
+
 std::string ResolveProgram(const std::string& program, std::string& error) {
   if (program.find('/') != std::string::npos) {
     if (::access(program.c_str(), F_OK) != 0) error = std::strerror(errno);
@@ -93,7 +118,7 @@ std::string ResolveProgram(const std::string& program, std::string& error) {
 
 }  // namespace
 
-SpawnResult SpawnChild(const ProcessSpec& spec) {
+SpawnResult SpawnChild(const ProcessSpec& spec, const ChildStreams& streams) {
   SpawnResult result;
   if (spec.argv.empty() || spec.argv.front().empty()) {
     result.error = "empty command";
@@ -109,9 +134,18 @@ SpawnResult SpawnChild(const ProcessSpec& spec) {
     }
   }
 
+  int null_output = -1;
+  if (streams.discard_stdout) {
+    null_output = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (null_output < 0) {
+      result.error = std::strerror(errno);
+      return result;
+    }
+  }
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) {
     result.error = std::string("pipe: ") + std::strerror(errno);
+    if (null_output >= 0) ::close(null_output);
     return result;
   }
   int status_write = -1;
@@ -147,7 +181,7 @@ SpawnResult SpawnChild(const ProcessSpec& spec) {
       args.assign(command.begin() + 1, command.end());
     }
     std::error_code ec;
-    // vfork: the supervisor links OpenCV and MRPT, and copying its page tables for every fork was the
+    // vfork: the supervisor links OpenCV and MRPT, and copying its page tables for every fork is the
     // largest part of the per-run overhead (bench/sweep_bench). ChildSetup writes no shared memory.
     std::optional<SandboxSpec::User> user;
     const char* cgroup_procs = nullptr;
@@ -157,7 +191,8 @@ SpawnResult SpawnChild(const ProcessSpec& spec) {
     }
     bp::child child(ChildSetup{{}, ::getpid(), status_write, user, cgroup_procs}, bp::posix::use_vfork,
                     bp::exe = executable, bp::args = args, bp::std_in<bp::null, (bp::std_out & bp::std_err)> pipe,
-                    bp::start_dir = working_dir, environment, ec);
+                    bp::start_dir = working_dir, environment,
+                    StreamRedirection{{}, streams.stdin_fd, null_output, streams.stderr_fd}, ec);
     if (status_write >= 0) ::close(status_write);
     status_write = -1;
     if (ec || !child.valid()) {
@@ -166,14 +201,17 @@ SpawnResult SpawnChild(const ProcessSpec& spec) {
       // We reap with wait4() ourselves (rusage) and send TERM before KILL; Boost must not touch it.
       child.detach();
       result.pid = child.id();
-      result.output_fd = pipe.native_source();
-      pipe.assign_source(-1);
-      ::fcntl(result.output_fd, F_SETFL, ::fcntl(result.output_fd, F_GETFL) | O_NONBLOCK);
+      if (!streams.OutputElsewhere()) {  // else `pipe` closes both ends: nothing writes to it
+        result.output_fd = pipe.native_source();
+        pipe.assign_source(-1);
+        ::fcntl(result.output_fd, F_SETFL, ::fcntl(result.output_fd, F_GETFL) | O_NONBLOCK);
+      }
     }
   } catch (const std::exception& error) {
     result.error = error.what();
   }
   if (status_write >= 0) ::close(status_write);
+  if (null_output >= 0) ::close(null_output);
   if (!result.error.empty() && result.status_fd >= 0) {
     ::close(result.status_fd);
     result.status_fd = -1;

@@ -1,17 +1,16 @@
 #include "report/plots/gnuplot_process.h"
 
 #include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
-extern char** environ;
+#include "orchestrator/process/run_to_exit.h"
 
 namespace slamsweep::report {
 namespace {
@@ -79,30 +78,23 @@ GnuplotOutcome RunGnuplot(std::string_view script, const std::filesystem::path& 
     throw std::runtime_error("cannot rewind the gnuplot script file: " + ErrnoText(errno));
   }
 
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, input.get(), STDIN_FILENO);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_adddup2(&actions, errors.get(), STDERR_FILENO);
-
   const std::string program_text = program.string();
-  std::string arg0 = "gnuplot";
-  std::string arg1 = "-d";
-  char* argv[] = {arg0.data(), arg1.data(), nullptr};
-  pid_t pid = 0;
-  const int spawn_error = ::posix_spawn(&pid, program_text.c_str(), &actions, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawn_error != 0) {
-    throw std::runtime_error("cannot start gnuplot (" + program_text + "): " + ErrnoText(spawn_error) +
+  orchestrator::ChildStreams streams;
+  streams.stdin_fd = input.get();
+  streams.stderr_fd = errors.get();
+  streams.discard_stdout = true;
+  orchestrator::ExitStatus exit;
+  try {
+    exit = orchestrator::RunToExit({program_text, "-d"}, streams);
+  } catch (const std::system_error& error) {
+    throw std::runtime_error("cannot wait for gnuplot: " + ErrnoText(error.code().value()));
+  }
+  if (!exit.start_error.empty()) {
+    throw std::runtime_error("cannot start gnuplot (" + program_text + "): " + exit.start_error +
                              "; install gnuplot-nox");
   }
-
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) throw std::runtime_error("cannot wait for gnuplot: " + ErrnoText(errno));
-  }
   GnuplotOutcome outcome;
-  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  outcome.exit_code = exit.exit_code;
   outcome.stderr_text = ReadAll(errors.get());
   return outcome;
 }

@@ -15,7 +15,8 @@ struct GnuplotOutcome {
 };
 
 /// Runs `gnuplot -d` (no init files, so a user's ~/.gnuplot cannot change the plots) as a child
-/// process, without a shell, with `script` as its standard input; waits for it to end.
+/// process (orchestrator::RunToExit: no shell, no timeout) with `script` as its standard input and
+/// stdout discarded; waits for it to end.
 /// The script and stderr go through unlinked temporary files rather than pipes: no deadlock when
 /// gnuplot writes much to stderr, and no SIGPIPE in this process when gnuplot stops early.
 /// Throws std::runtime_error when the program cannot be started (naming it) or a temporary file
