@@ -4,7 +4,7 @@
 #include <string>
 
 #include "report/html/artwork.h"
-#include "report/html/run_folder.h"
+#include "report/html/run_downloads.h"
 #include "report/html/safe_name.h"
 #include "report/html/trajectory_figures.h"
 #include "report/html/vector_map_download.h"

@@ -13,7 +13,7 @@
 #include "report/html/metric_spec_page.h"
 #include "report/html/paper_files.h"
 #include "report/html/report_layout.h"
-#include "report/html/run_folder.h"
+#include "report/html/run_downloads.h"
 #include "report/html/run_images.h"
 #include "report/html/safe_name.h"
 #include "report/html/site_data.h"

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "report/html/site_data.h"
-#include "report/model/run_record.h"
+#include "orchestrator/run/run_record.h"
 
 namespace slamsweep::report {
 

@@ -1,4 +1,4 @@
-#include "report/html/run_folder.h"
+#include "report/html/run_downloads.h"
 
 #include <algorithm>
 #include <fstream>
