@@ -1,4 +1,4 @@
-// Speed target of `slamsweep report` (issue 5): the report of 1,000 runs in under 30 s on 2 cores.
+// Speed target of `slamsweep report`: the report of 1,000 runs in under 30 s on 2 cores.
 // The sweep is synthetic (tests/report/fixture_sweep): 10 algorithms x 10 sequences x 10
 // iterations, each run with a 40 x 30 map, 3 stage maps and trajectories; images are made by the
 // standard artwork (gnuplot, giflib) with 2 jobs.

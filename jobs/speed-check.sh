@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The nightly job's speed stage: issue 17's whole-process targets (start-up, eval ape/rpe/map, the worker)
+# The nightly job's speed stage: the whole-process targets of bench/cli (start-up, eval ape/rpe/map, the worker)
 # measured on this agent by bench/cli/cli_bench.sh --check with the built program, so that a change that
 # makes slamsweep slower or fatter than its targets turns the night UNSTABLE.
 # Usage: jobs/speed-check.sh [OUTPUT_DIR]   (default out/speed: table.md, summary.json, hyperfine JSON)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Whole-process speed and memory of the slamsweep program (issue 17's targets): start to exit,
+# Whole-process speed and memory of the slamsweep program (its targets are in the table below): start to exit,
 # measured by hyperfine (median of --runs runs after 3 warm-up runs) and peak RSS by GNU time
 # (median of --runs runs). Inputs are synthetic (bench/cli/make_inputs.py, no ../shared); the
 # worker case needs ../shared/datasets/intel and is skipped without it.
@@ -44,7 +44,7 @@ mkdir -p "$out"
 shared=${SLAMSWEEP_SHARED:-$root/../shared}
 
 # name | target ms ("half:B": at most half the first program's with two programs, else half of B, the
-# median of the build of 3f81ea1 before issue 17, measured with this script) | target MB | arguments (run in $inputs;
+# median of the build of 3f81ea1, measured with this script) | target MB | arguments (run in $inputs;
 # {root} is the repository)
 cases=(
   "version|10|15|--version"

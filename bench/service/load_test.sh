@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Bounded load test of `slamsweep serve` on 127.0.0.1 (issue: 20 sweeps submitted at once, 200 status
+# Bounded load test of `slamsweep serve` on 127.0.0.1 (target: 20 sweeps submitted at once, 200 status
 # reads per second for 20 s): nothing may be lost, and it reports the read latency (p50/p99) and the
 # scheduler's overhead per run.
 #

@@ -17,7 +17,7 @@ inline constexpr const char* kRbpfSlamTemplate = "/usr/share/mrpt/config_files/r
 
 /// icp-slam's defaults on top of kIcpSlamTemplate, for laser logs like intel's (scans about 1 m and up to
 /// 30 deg apart). The template was tuned for MRPT's dense demo log; on intel it diverges (11.6 m APE on
-/// 300 scans) for two reasons, both measured (issue 3):
+/// 300 scans) for two measured reasons:
 /// - icp-slam inserts a scan only after an accepted ICP match (goodness > minICPgoodnessToAccept), and
 ///   the template inserts only every 2 m / 45 deg. Between insertions a sparse log's scans see mostly
 ///   unmapped space, ICP is refused, the map stops growing and the robot never relocalises

@@ -477,10 +477,9 @@ RunSpec RunSpecFromJson(const json& value) {
 }
 
 int AdapterRevision(const std::string& adapter) {
-  // Raise an adapter's revision whenever its built-in settings change what its runs compute.
-  // mrpt-icp-slam 2: points-map matching and denser insertion on top of MRPT's template (issue 3).
-  // odometry 2: its map is rendered with free space clamped at p = 0.01 instead of 0.12.
-  // mrpt-rbpf-slam 2: seeded through RANDOM_SEED (it seeded itself from the clock before).
+  // A revision names the built-in settings an adapter's runs are computed with; raise it when they change.
+  // Revision 2: mrpt-icp-slam matches against a points map and inserts densely (mrpt_settings.h), odometry
+  // renders free space at p = 0.01, mrpt-rbpf-slam is seeded through RANDOM_SEED.
   if (adapter == "mrpt-icp-slam" || adapter == "odometry" || adapter == "mrpt-rbpf-slam") return 2;
   return 1;
 }
