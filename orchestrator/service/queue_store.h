@@ -12,11 +12,6 @@
 
 namespace slamsweep::orchestrator::service {
 
-/// A run's place in the service's queue. "queued" and "running" are unfinished; "ok" and "failed"
-/// were run for this sweep; "reused" took another sweep's identical ok run (or this sweep's own
-/// result directory's); "cancelled" never ran because its sweep was cancelled.
-inline constexpr const char* kRunStates[] = {"queued", "running", "ok", "failed", "reused", "cancelled"};
-
 /// A sweep as submitted and as it stands. States: "queued" (nothing started yet), "running",
 /// "ok" / "failed" (every run finished; failed when one failed), "cancelled".
 struct QueuedSweep {
