@@ -8,6 +8,9 @@
 #include <vector>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/service/queue_store.h"
+#include "orchestrator/store/sqlite_db.h"
+#include "tests/support/shared_data.h"
 
 namespace slamsweep::orchestrator::service {
 namespace {
@@ -58,6 +61,30 @@ TEST(QueueStatesTest, AnUnknownNameIsAnErrorNamingIt) {
   } catch (const evaluator::InputError& error) {
     EXPECT_THAT(error.what(), HasSubstr("'cancelling'"));
   }
+}
+
+TEST(QueueStatesTest, TheQueueFileHoldsTheNames) {
+  testing::TempDir dir;
+  {
+    QueueStore queue = QueueStore::Open(dir / "queue.sqlite");
+    QueuedSweep sweep;
+    sweep.name = "s";
+    sweep.config_name = "s.yaml";
+    sweep.config_text = "name: s";
+    sweep.submitter = "me";
+    queue.AddSweep(sweep, {{{"run_id", "a"}}, {{"run_id", "b"}}, {{"run_id", "c"}}}, dir / "sweeps");
+    queue.AddSweep(sweep, {}, dir / "sweeps");
+    queue.SetRunState(1, "a", QueuedRunState::kReused, false, std::nullopt, "", 7);
+    queue.SetRunState(1, "b", QueuedRunState::kCancelled);
+    queue.SetSweepState(1, QueuedSweepState::kCancelled, "m");
+  }
+  SqliteDb db = SqliteDb::Open(dir / "queue.sqlite", false);
+  std::vector<std::string> texts;
+  auto runs = db.Prepare("SELECT state FROM runs ORDER BY position");
+  while (runs.Step()) texts.push_back(runs.Text(0));
+  auto sweeps = db.Prepare("SELECT state, started_at <> '', finished_at <> '' FROM sweeps ORDER BY id");
+  while (sweeps.Step()) texts.push_back(sweeps.Text(0) + " " + sweeps.Text(1) + " " + sweeps.Text(2));
+  EXPECT_EQ(texts, (std::vector<std::string>{"reused", "cancelled", "queued", "cancelled 1 1", "queued 0 0"}));
 }
 
 }  // namespace
