@@ -20,6 +20,7 @@
 #include "orchestrator/process/interruption.h"
 #include "orchestrator/process/wake_up.h"
 #include "orchestrator/service/auth.h"
+#include "orchestrator/service/queue_states.h"
 #include "orchestrator/store/results_store.h"
 
 // Last: its <resolv.h> defines `_res`, which breaks Eigen headers included after it.
@@ -27,6 +28,10 @@
 
 namespace slamsweep::cli {
 namespace {
+
+using orchestrator::service::QueuedRunState;
+using orchestrator::service::QueuedSweepState;
+using orchestrator::service::ReportState;
 
 struct SubmitOptions {
   std::string config;
@@ -136,26 +141,45 @@ std::size_t DownloadReport(Api& api, std::int64_t id, const std::filesystem::pat
   return count;
 }
 
+/// The state a run or sweep of the API's JSON is in; nullopt when it names none (this client
+/// tolerates states it does not know, as it tolerates a missing field).
+std::optional<QueuedRunState> RunState(const nlohmann::json& run) {
+  return orchestrator::service::FindRunState(run.value("state", ""));
+}
+std::optional<QueuedSweepState> SweepState(const nlohmann::json& sweep) {
+  return orchestrator::service::FindSweepState(sweep.value("state", ""));
+}
+std::optional<ReportState> SweepReportState(const nlohmann::json& sweep) {
+  return orchestrator::service::FindReportState(sweep.value("report", ""));
+}
+
+/// The number of runs in `state` from a sweep's "counts".
+int CountOf(const nlohmann::json& counts, QueuedRunState state) {
+  return counts.value(std::string(orchestrator::service::ToString(state)), 0);
+}
+
 /// A line per run that ended since the last call, numbered like `slamsweep run`'s Jenkins lines.
 void PrintFinishedRuns(const nlohmann::json& runs, std::set<std::string>& reported, std::ostream& out) {
   std::size_t total = runs.size(), finished = 0;
   for (const auto& run : runs) {
-    const std::string state = run.value("state", "");
-    if (state == "ok" || state == "failed" || state == "reused") ++finished;
+    const std::optional<QueuedRunState> state = RunState(run);
+    if (state && orchestrator::service::HasResult(*state)) ++finished;
   }
   for (const auto& run : runs) {
-    const std::string state = run.value("state", "");
+    const std::optional<QueuedRunState> state = RunState(run);
     const std::string run_id = run.value("run_id", "");
-    if ((state != "ok" && state != "failed" && state != "reused") || !reported.insert(run_id).second) continue;
+    if (!state || !orchestrator::service::HasResult(*state) || !reported.insert(run_id).second) continue;
     std::string detail;
-    if (state == "failed") detail = run.value("reason", "");
-    if (state == "reused") detail = fmt::format("reused from sweep {}", run["reused_from"].dump());
-    if (state == "ok" && run["wall_s"].is_number()) detail = fmt::format("{:.1f} s", run["wall_s"].get<double>());
-    out << fmt::format("{} [{}/{}] {} {} ({})\n", orchestrator::UtcNowIso8601(), finished, total,
-                       state == "failed" ? "FAILED"
-                       : state == "ok"   ? "ok    "
-                                         : "reused",
-                       run_id, detail)
+    if (state == QueuedRunState::kFailed) detail = run.value("reason", "");
+    if (state == QueuedRunState::kReused) detail = fmt::format("reused from sweep {}", run["reused_from"].dump());
+    if (state == QueuedRunState::kOk && run["wall_s"].is_number()) {
+      detail = fmt::format("{:.1f} s", run["wall_s"].get<double>());
+    }
+    // The state's name padded to one width; a failure in capitals.
+    const std::string label = state == QueuedRunState::kFailed
+                                  ? std::string("FAILED")
+                                  : fmt::format("{:<6}", orchestrator::service::ToString(*state));
+    out << fmt::format("{} [{}/{}] {} {} ({})\n", orchestrator::UtcNowIso8601(), finished, total, label, run_id, detail)
         << std::flush;
   }
 }
@@ -192,9 +216,9 @@ int Submit(const SubmitOptions& options, const Streams& streams) {
     PrintFinishedRuns(runs.at("runs"), reported, streams.out);
     sweep = GetJson(api, fmt::format("/api/sweeps/{}", id));
     if (sweep.is_null()) break;
-    const std::string state = sweep.value("state", "");
-    const bool finished = state == "ok" || state == "failed" || state == "cancelled";
-    if (finished && sweep.value("report", "") != "writing") break;
+    const std::optional<QueuedSweepState> state = SweepState(sweep);
+    const bool finished = state && orchestrator::service::IsFinished(*state);
+    if (finished && SweepReportState(sweep) != ReportState::kWriting) break;
     orchestrator::SleepUnlessWoken(options.poll_s);
     orchestrator::TakeWakeUpRequest();
   }
@@ -205,24 +229,27 @@ int Submit(const SubmitOptions& options, const Streams& streams) {
   }
   const nlohmann::json& counts = sweep.at("counts");
   streams.out << fmt::format("sweep {} {}: {} ok, {} failed, {} reused, {} cancelled{}\n", id, sweep.value("state", ""),
-                             counts.value("ok", 0), counts.value("failed", 0), counts.value("reused", 0),
-                             counts.value("cancelled", 0),
+                             CountOf(counts, QueuedRunState::kOk), CountOf(counts, QueuedRunState::kFailed),
+                             CountOf(counts, QueuedRunState::kReused), CountOf(counts, QueuedRunState::kCancelled),
                              sweep.value("message", "").empty() ? "" : " (" + sweep.value("message", "") + ")");
   if (!options.junit.empty()) {
     Download(api, fmt::format("/api/sweeps/{}/junit.xml", id), options.junit);
     streams.out << "junit: " << options.junit << "\n";
   }
   if (!options.report_dir.empty()) {
-    if (sweep.value("report", "") == "ready") {
+    if (SweepReportState(sweep) == ReportState::kReady) {
       const std::size_t files = DownloadReport(api, id, options.report_dir);
       streams.out << fmt::format("report: {}/index.html ({} files)\n", options.report_dir, files);
     } else {
       streams.err << "slamsweep submit: no report to download (the report is " << sweep.value("report", "") << ")\n";
     }
   }
-  const std::string state = sweep.value("state", "");
-  if (state == "cancelled") return 130;
-  return state == "ok" && counts.value("failed", 0) == 0 && counts.value("cancelled", 0) == 0 ? 0 : 1;
+  const std::optional<QueuedSweepState> state = SweepState(sweep);
+  if (state == QueuedSweepState::kCancelled) return 130;
+  return state == QueuedSweepState::kOk && CountOf(counts, QueuedRunState::kFailed) == 0 &&
+                 CountOf(counts, QueuedRunState::kCancelled) == 0
+             ? 0
+             : 1;
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 
 namespace slamsweep::orchestrator {
 
-// kOdometryUnknown (orchestrator/matrix/run_spec.h) also marks a history series whose night was recorded before
+// kOdometryUnknown (orchestrator/run/run_json.h) also marks a history series whose night was recorded before
 // the history kept the mode and whose results are gone: never compared with anything.
 
 /// The mode of an old series whose night had runs of both modes in one cell: its samples were pooled before

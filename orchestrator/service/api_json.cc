@@ -7,11 +7,10 @@ namespace slamsweep::orchestrator::service {
 nlohmann::json SweepJson(const SweepView& view) {
   const QueuedSweep& sweep = view.sweep;
   const std::string base = "/api/sweeps/" + std::to_string(sweep.id);
-  const bool finished = sweep.state == "ok" || sweep.state == "failed" || sweep.state == "cancelled";
   nlohmann::json json = {{"id", sweep.id},
                          {"name", sweep.name},
                          {"config", sweep.config_name},
-                         {"state", sweep.state},
+                         {"state", std::string(ToString(sweep.state))},
                          {"cancel_requested", sweep.cancel_requested},
                          {"priority", sweep.priority},
                          {"submitter", sweep.submitter},
@@ -22,26 +21,26 @@ nlohmann::json SweepJson(const SweepView& view) {
                          {"message", sweep.message},
                          {"counts",
                           {{"total", view.counts.total},
-                           {"queued", view.counts.queued},
-                           {"running", view.counts.running},
-                           {"ok", view.counts.ok},
-                           {"failed", view.counts.failed},
-                           {"reused", view.counts.reused},
-                           {"cancelled", view.counts.cancelled},
+                           {std::string(ToString(QueuedRunState::kQueued)), view.counts.queued},
+                           {std::string(ToString(QueuedRunState::kRunning)), view.counts.running},
+                           {std::string(ToString(QueuedRunState::kOk)), view.counts.ok},
+                           {std::string(ToString(QueuedRunState::kFailed)), view.counts.failed},
+                           {std::string(ToString(QueuedRunState::kReused)), view.counts.reused},
+                           {std::string(ToString(QueuedRunState::kCancelled)), view.counts.cancelled},
                            {"finished", view.counts.finished()}}},
                          {"eta", view.eta},
-                         {"report", view.report},
+                         {"report", std::string(ToString(view.report))},
                          {"links",
                           {{"self", base},
                            {"runs", base + "/runs"},
                            {"cancel", base + "/cancel"},
                            {"page", "/sweeps/" + std::to_string(sweep.id)}}}};
-  if (finished) {
+  if (IsFinished(sweep.state)) {
     json["links"]["junit"] = base + "/junit.xml";
     json["links"]["summary_json"] = base + "/summary.json";
     json["links"]["summary_csv"] = base + "/summary.csv";
   }
-  if (view.report == "ready") {
+  if (view.report == ReportState::kReady) {
     json["links"]["report"] = "/sweeps/" + std::to_string(sweep.id) + "/report/index.html";
     json["links"]["report_files"] = base + "/report";
   }
@@ -50,7 +49,7 @@ nlohmann::json SweepJson(const SweepView& view) {
 
 nlohmann::json RunJson(const RunView& run) {
   return {{"run_id", run.run_id},
-          {"state", run.state},
+          {"state", std::string(ToString(run.state))},
           {"attempt", run.attempt},
           {"reused_from", run.reused_from ? nlohmann::json(*run.reused_from) : nlohmann::json(nullptr)},
           {"wall_s", run.wall_s ? nlohmann::json(*run.wall_s) : nlohmann::json(nullptr)},

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "orchestrator/service/scheduler.h"
+#include "orchestrator/service/sweep_views.h"
 
 namespace slamsweep::orchestrator::service {
 

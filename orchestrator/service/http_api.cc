@@ -154,10 +154,10 @@ void RegisterReads(httplib::Server& server, ApiContext& context) {
                const auto view = id ? scheduler.Sweep(*id) : std::nullopt;
                if (!view) return SendError(response, 404, "no such sweep");
                const std::string name = request.matches[2].str();
-               const std::string& state = view->sweep.state;
-               if (state != "ok" && state != "failed" && state != "cancelled") {
-                 return SendError(response, 409,
-                                  fmt::format("sweep {} is {}: {} is written when it ends", *id, state, name));
+               if (!IsFinished(view->sweep.state)) {
+                 return SendError(
+                     response, 409,
+                     fmt::format("sweep {} is {}: {} is written when it ends", *id, ToString(view->sweep.state), name));
                }
                const fs::path file = view->sweep.result_dir / name;
                if (!fs::is_regular_file(file))
@@ -170,7 +170,9 @@ void RegisterReads(httplib::Server& server, ApiContext& context) {
                const auto id = SweepId(request);
                const auto view = id ? scheduler.Sweep(*id) : std::nullopt;
                if (!view) return SendError(response, 404, "no such sweep");
-               if (view->report != "ready") return SendError(response, 409, "the report is " + view->report);
+               if (view->report != ReportState::kReady) {
+                 return SendError(response, 409, fmt::format("the report is {}", ToString(view->report)));
+               }
                const fs::path root = view->sweep.result_dir / "report";
                nlohmann::json files = nlohmann::json::array();
                std::error_code error;
@@ -192,13 +194,14 @@ void RegisterWrites(httplib::Server& server, ApiContext& context) {
   server.Post(
       R"(/api/sweeps/(\d{1,18})/cancel)", [&context](const httplib::Request& request, httplib::Response& response) {
         const auto id = SweepId(request);
-        std::string state;
-        if (!id || !context.scheduler.Cancel(*id, state)) return SendError(response, 404, "no such sweep");
-        if (state != "cancelling") {
+        const CancelOutcome outcome = id ? context.scheduler.Cancel(*id) : CancelOutcome{};
+        if (!outcome.known) return SendError(response, 404, "no such sweep");
+        if (outcome.finished_as) {
+          const std::string state(ToString(*outcome.finished_as));
           return SendJson(response, 409,
                           {{"error", fmt::format("sweep {} already ended ({})", *id, state)}, {"state", state}});
         }
-        SendJson(response, 202, {{"id", *id}, {"state", state}});
+        SendJson(response, 202, {{"id", *id}, {"state", std::string(CancellingStateName())}});
       });
 }
 

@@ -46,7 +46,7 @@ QueuedSweep SweepFromRow(const SqliteStatement& row) {
   sweep.config_text = row.Text(3);
   sweep.submitter = row.Text(4);
   sweep.priority = static_cast<int>(row.Int64(5));
-  sweep.state = row.Text(6);
+  sweep.state = ParseSweepState(row.Text(6));
   sweep.result_dir = row.Text(7);
   sweep.submitted_at = row.Text(8);
   sweep.started_at = row.Text(9);
@@ -83,29 +83,30 @@ QueuedSweep QueueStore::AddSweep(QueuedSweep sweep, const std::vector<nlohmann::
     sweep.id = next.Int64(0);
   }
   sweep.result_dir = sweeps_root / std::to_string(sweep.id);
-  sweep.state = "queued";
+  sweep.state = QueuedSweepState::kQueued;
   sweep.submitted_at = UtcNowIso8601();
   auto insert = db_.Prepare(
       "INSERT INTO sweeps (id, name, config_name, config_text, submitter, priority, state, result_dir, submitted_at) "
-      "VALUES (?, ?, ?, ?, ?, ?, 'queued', ?, ?)");
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
   insert.Bind(1, sweep.id)
       .Bind(2, std::string_view(sweep.name))
       .Bind(3, std::string_view(sweep.config_name))
       .Bind(4, std::string_view(sweep.config_text))
       .Bind(5, std::string_view(sweep.submitter))
       .Bind(6, static_cast<std::int64_t>(sweep.priority))
-      .Bind(7, std::string_view(sweep.result_dir.string()))
-      .Bind(8, std::string_view(sweep.submitted_at));
+      .Bind(7, ToString(sweep.state))
+      .Bind(8, std::string_view(sweep.result_dir.string()))
+      .Bind(9, std::string_view(sweep.submitted_at));
   insert.Run();
-  auto add_run =
-      db_.Prepare("INSERT INTO runs (sweep_id, run_id, position, state, spec) VALUES (?, ?, ?, 'queued', ?)");
+  auto add_run = db_.Prepare("INSERT INTO runs (sweep_id, run_id, position, state, spec) VALUES (?, ?, ?, ?, ?)");
   std::int64_t position = 0;
   for (const nlohmann::json& run : runs) {
     add_run.Reset();
     add_run.Bind(1, sweep.id)
         .Bind(2, std::string_view(run.at("run_id").get_ref<const std::string&>()))
         .Bind(3, position++)
-        .Bind(4, std::string_view(run.dump()));
+        .Bind(4, ToString(QueuedRunState::kQueued))
+        .Bind(5, std::string_view(run.dump()));
     add_run.Run();
   }
   transaction.Commit();
@@ -137,7 +138,7 @@ std::vector<QueuedRun> QueueStore::Runs(std::int64_t sweep_id) const {
     run.sweep_id = query.Int64(0);
     run.run_id = query.Text(1);
     run.position = query.Int64(2);
-    run.state = query.Text(3);
+    run.state = ParseRunState(query.Text(3));
     run.attempt = static_cast<int>(query.Int64(4));
     if (!query.IsNull(5)) run.reused_from = query.Int64(5);
     run.wall_s = query.OptionalDouble(6);
@@ -148,19 +149,19 @@ std::vector<QueuedRun> QueueStore::Runs(std::int64_t sweep_id) const {
   return runs;
 }
 
-void QueueStore::SetSweepState(std::int64_t id, const std::string& state, const std::string& message) {
+void QueueStore::SetSweepState(std::int64_t id, QueuedSweepState state, const std::string& message) {
   SqliteTransaction transaction(db_);
-  // started_at and finished_at are set once, when the state first gets there.
+  // started_at is set once, when the sweep first leaves the queued state; finished_at whenever it finishes.
   auto update = db_.Prepare(
       "UPDATE sweeps SET state = ?, message = ?, "
-      "started_at = CASE WHEN started_at = '' AND ? <> 'queued' THEN ? ELSE started_at END, "
-      "finished_at = CASE WHEN ? IN ('ok', 'failed', 'cancelled') THEN ? ELSE finished_at END WHERE id = ?");
+      "started_at = CASE WHEN started_at = '' AND ? THEN ? ELSE started_at END, "
+      "finished_at = CASE WHEN ? THEN ? ELSE finished_at END WHERE id = ?");
   const std::string now = UtcNowIso8601();
-  update.Bind(1, std::string_view(state))
+  update.Bind(1, ToString(state))
       .Bind(2, std::string_view(message))
-      .Bind(3, std::string_view(state))
+      .Bind(3, static_cast<std::int64_t>(state != QueuedSweepState::kQueued ? 1 : 0))
       .Bind(4, std::string_view(now))
-      .Bind(5, std::string_view(state))
+      .Bind(5, static_cast<std::int64_t>(IsFinished(state) ? 1 : 0))
       .Bind(6, std::string_view(now))
       .Bind(7, id);
   update.Run();
@@ -175,14 +176,14 @@ void QueueStore::RequestCancel(std::int64_t id) {
   transaction.Commit();
 }
 
-void QueueStore::SetRunState(std::int64_t sweep_id, const std::string& run_id, const std::string& state,
+void QueueStore::SetRunState(std::int64_t sweep_id, const std::string& run_id, QueuedRunState state,
                              bool attempt_started, std::optional<double> wall_s, const std::string& reason,
                              std::optional<std::int64_t> reused_from) {
   SqliteTransaction transaction(db_);
   auto update = db_.Prepare(
       "UPDATE runs SET state = ?, attempt = attempt + ?, wall_s = ?, reason = ?, reused_from = ? "
       "WHERE sweep_id = ? AND run_id = ?");
-  update.Bind(1, std::string_view(state)).Bind(2, static_cast<std::int64_t>(attempt_started ? 1 : 0));
+  update.Bind(1, ToString(state)).Bind(2, static_cast<std::int64_t>(attempt_started ? 1 : 0));
   if (wall_s) {
     update.Bind(3, *wall_s);
   } else {
@@ -201,10 +202,13 @@ void QueueStore::SetRunState(std::int64_t sweep_id, const std::string& run_id, c
 
 std::size_t QueueStore::RequeueRunning() {
   SqliteTransaction transaction(db_);
-  auto count = db_.Prepare("SELECT COUNT(*) FROM runs WHERE state = 'running'");
+  auto count = db_.Prepare("SELECT COUNT(*) FROM runs WHERE state = ?");
+  count.Bind(1, ToString(QueuedRunState::kRunning));
   count.Step();
   const auto requeued = static_cast<std::size_t>(count.Int64(0));
-  db_.Execute("UPDATE runs SET state = 'queued' WHERE state = 'running'");
+  auto requeue = db_.Prepare("UPDATE runs SET state = ? WHERE state = ?");
+  requeue.Bind(1, ToString(QueuedRunState::kQueued)).Bind(2, ToString(QueuedRunState::kRunning));
+  requeue.Run();
   transaction.Commit();
   return requeued;
 }
@@ -212,9 +216,11 @@ std::size_t QueueStore::RequeueRunning() {
 std::vector<std::int64_t> QueueStore::SweepsWithOkRun(const std::string& run_id, std::int64_t except_sweep) const {
   std::vector<std::int64_t> sweeps;
   auto query = db_.Prepare(
-      "SELECT sweep_id FROM runs WHERE run_id = ? AND state IN ('ok', 'reused') AND sweep_id <> ? "
-      "ORDER BY sweep_id DESC");
-  query.Bind(1, std::string_view(run_id)).Bind(2, except_sweep);
+      "SELECT sweep_id FROM runs WHERE run_id = ? AND state IN (?, ?) AND sweep_id <> ? ORDER BY sweep_id DESC");
+  query.Bind(1, std::string_view(run_id))
+      .Bind(2, ToString(QueuedRunState::kOk))
+      .Bind(3, ToString(QueuedRunState::kReused))
+      .Bind(4, except_sweep);
   while (query.Step()) sweeps.push_back(query.Int64(0));
   return sweeps;
 }

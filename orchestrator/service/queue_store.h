@@ -8,17 +8,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "orchestrator/service/queue_states.h"
 #include "orchestrator/store/sqlite_db.h"
 
 namespace slamsweep::orchestrator::service {
 
-/// A run's place in the service's queue. "queued" and "running" are unfinished; "ok" and "failed"
-/// were run for this sweep; "reused" took another sweep's identical ok run (or this sweep's own
-/// result directory's); "cancelled" never ran because its sweep was cancelled.
-inline constexpr const char* kRunStates[] = {"queued", "running", "ok", "failed", "reused", "cancelled"};
-
-/// A sweep as submitted and as it stands. States: "queued" (nothing started yet), "running",
-/// "ok" / "failed" (every run finished; failed when one failed), "cancelled".
+/// A sweep as submitted and as it stands.
 struct QueuedSweep {
   std::int64_t id = 0;
   std::string name;
@@ -27,7 +22,7 @@ struct QueuedSweep {
   std::string config_text;
   std::string submitter;
   int priority = 0;
-  std::string state = "queued";
+  QueuedSweepState state = QueuedSweepState::kQueued;
   /// The sweep's result directory (the layout of `slamsweep run`'s output directory).
   std::filesystem::path result_dir;
   std::string submitted_at, started_at, finished_at;
@@ -42,7 +37,7 @@ struct QueuedRun {
   std::string run_id;
   /// Position in the sweep's start order.
   std::int64_t position = 0;
-  std::string state = "queued";
+  QueuedRunState state = QueuedRunState::kQueued;
   /// How many times a worker was started for it.
   int attempt = 0;
   /// The sweep whose identical ok run this one reuses (reused runs only).
@@ -55,8 +50,9 @@ struct QueuedRun {
 
 /// DATA/queue.sqlite: every submitted sweep (its YAML text, submitter, priority, state) and every run
 /// (state, attempt). The durable half of the service: after a kill -9 the server rebuilds its queue
-/// from here (runs found "running" are queued again). WAL journal, one immediate transaction per
-/// change, so a kill at any moment leaves the old or the new state. Not thread-safe: one user at a time.
+/// from here (runs found running are queued again). A state name it cannot read is an InputError. WAL journal, one
+/// immediate transaction per change, so a kill at any moment leaves the old or the new state. Not thread-safe: one user
+/// at a time.
 class QueueStore {
  public:
   static QueueStore Open(const std::filesystem::path& file);
@@ -70,15 +66,15 @@ class QueueStore {
   std::optional<QueuedSweep> Sweep(std::int64_t id) const;
   std::vector<QueuedRun> Runs(std::int64_t sweep_id) const;
 
-  void SetSweepState(std::int64_t id, const std::string& state, const std::string& message = {});
+  void SetSweepState(std::int64_t id, QueuedSweepState state, const std::string& message = {});
   void RequestCancel(std::int64_t id);
 
   /// Records a run's new state; `attempt_started` counts one more attempt (a worker was started).
-  void SetRunState(std::int64_t sweep_id, const std::string& run_id, const std::string& state,
-                   bool attempt_started = false, std::optional<double> wall_s = std::nullopt,
-                   const std::string& reason = {}, std::optional<std::int64_t> reused_from = std::nullopt);
+  void SetRunState(std::int64_t sweep_id, const std::string& run_id, QueuedRunState state, bool attempt_started = false,
+                   std::optional<double> wall_s = std::nullopt, const std::string& reason = {},
+                   std::optional<std::int64_t> reused_from = std::nullopt);
 
-  /// After a restart: every run left "running" by a server that died is queued again. Returns how many.
+  /// After a restart: every run left running by a server that died is queued again. Returns how many.
   std::size_t RequeueRunning();
 
   /// Sweeps (other than `except_sweep`) holding `run_id` as ok or reused, newest first.

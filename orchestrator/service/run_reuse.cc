@@ -1,5 +1,7 @@
 #include "orchestrator/service/run_reuse.h"
 
+#include <spdlog/spdlog.h>
+
 #include "orchestrator/run/run_folder.h"
 #include "orchestrator/sweep/sweep_runner.h"
 
@@ -14,7 +16,7 @@ std::optional<nlohmann::json> ReusableResult(const RunSpec& run, const std::file
   SweepSettings strict;  // no --rerun failed, no --reuse-stale: only an ok run of the same build counts
   bool stale = false;
   if (!RecordedRunIsReusable(run, StatusOfResultJson(*stored.result), *spec, strict, stale)) return std::nullopt;
-  if (stored.result->value("status", "") != "ok") return std::nullopt;
+  if (StatusOfResultJson(*stored.result) != RunStatus::kOk || !stored.result->contains("status")) return std::nullopt;
   const auto evaluation = spec->find("evaluation");
   if (evaluation == spec->end() || *evaluation != ToJson(run).at("evaluation")) return std::nullopt;
   return std::move(stored.result);
@@ -46,6 +48,31 @@ void LinkRunFolder(const RunSpec& run, const std::filesystem::path& source_resul
     RemovePartialRun(to);
     throw;
   }
+}
+
+bool ReuseIdenticalRun(SweepTable& sweeps, SweepEntry& entry, std::size_t index, ServiceMetrics& metrics) {
+  RunEntry& run = entry.runs[index];
+  for (const std::int64_t source_id : sweeps.SweepsWithOkRun(run.view.run_id, entry.sweep.id)) {
+    const std::optional<std::filesystem::path> source_dir = sweeps.ResultDir(source_id);
+    if (!source_dir) continue;
+    try {
+      const std::optional<nlohmann::json> result = ReusableResult(run.spec, *source_dir);
+      if (!result) continue;
+      LinkRunFolder(run.spec, *source_dir, entry.sweep.result_dir);
+      entry.store->RecordRun(entry.store_sweep_id, ToJson(run.spec), *result,
+                             std::filesystem::path("runs") / run.view.run_id);
+      std::optional<double> wall_s;
+      if (result->contains("wall_s") && (*result)["wall_s"].is_number()) wall_s = (*result)["wall_s"].get<double>();
+      sweeps.SetRunState(entry, index, QueuedRunState::kReused, false, wall_s, "", source_id);
+      metrics.RunFinished(QueuedRunState::kReused, 0.0, false);
+      spdlog::info("sweep {}: {} reused from sweep {}", entry.sweep.id, run.view.run_id, source_id);
+      return true;
+    } catch (const std::exception& error) {
+      spdlog::warn("sweep {}: {} not reused from sweep {}: {}", entry.sweep.id, run.view.run_id, source_id,
+                   error.what());
+    }
+  }
+  return false;
 }
 
 }  // namespace slamsweep::orchestrator::service

@@ -1,11 +1,15 @@
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 
 #include <nlohmann/json.hpp>
 
 #include "orchestrator/run/run_spec.h"
+#include "orchestrator/service/service_metrics.h"
+#include "orchestrator/service/sweep_entry.h"
+#include "orchestrator/service/sweep_table.h"
 
 namespace slamsweep::orchestrator::service {
 
@@ -21,5 +25,11 @@ std::optional<nlohmann::json> ReusableResult(const RunSpec& run, const std::file
 /// in place, so the two sweeps' folders stay independent. A partial copy is removed on failure.
 void LinkRunFolder(const RunSpec& run, const std::filesystem::path& source_result_dir,
                    const std::filesystem::path& target_result_dir);
+
+/// Stands in for run `index` of the active sweep `entry` with an identical ok run of another sweep, the
+/// newest first: its folder linked (LinkRunFolder), the run recorded in the sweep's results store, shown
+/// reused in `sweeps` and counted in `metrics`. False when no other sweep's run can stand for it; a
+/// source that fails on the way is logged and the next one tried.
+bool ReuseIdenticalRun(SweepTable& sweeps, SweepEntry& entry, std::size_t index, ServiceMetrics& metrics);
 
 }  // namespace slamsweep::orchestrator::service

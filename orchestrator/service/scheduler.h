@@ -3,23 +3,22 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
-#include <deque>
 #include <filesystem>
-#include <functional>
 #include <map>
-#include <memory>
 #include <mutex>
 #include <optional>
-#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "orchestrator/run/run_spec.h"
+#include "orchestrator/service/fair_share.h"
 #include "orchestrator/service/queue_store.h"
 #include "orchestrator/service/service_metrics.h"
-#include "orchestrator/store/results_store.h"
+#include "orchestrator/service/sweep_entry.h"
+#include "orchestrator/service/sweep_table.h"
+#include "orchestrator/service/sweep_views.h"
 #include "orchestrator/sweep/executor.h"
-#include "orchestrator/sweep/output_lock.h"
 
 namespace slamsweep::orchestrator::service {
 
@@ -33,42 +32,11 @@ struct SchedulerOptions {
   int max_attempts = 3;
 };
 
-/// A run as the API shows it.
-struct RunView {
-  std::string run_id;
-  std::string state;
-  int attempt = 0;
-  std::optional<std::int64_t> reused_from;
-  std::optional<double> wall_s;
-  std::string reason;
-};
-
-/// Counts of a sweep's runs by state.
-struct RunCounts {
-  std::size_t total = 0, queued = 0, running = 0, ok = 0, failed = 0, reused = 0, cancelled = 0;
-  std::size_t finished() const { return ok + failed + reused; }
-};
-
-/// A sweep as the API and the page show it.
-struct SweepView {
-  QueuedSweep sweep;
-  RunCounts counts;
-  /// Remaining time at the sweep's throughput so far ("1m20s"); empty before its first run ended.
-  std::string eta;
-  /// "none" until the sweep finished, then "writing", "ready" or "failed".
-  std::string report = "none";
-};
-
-/// The service's one worker pool, shared by every sweep: the queue held in DATA/queue.sqlite, runs
-/// started through one Executor (the same local or Slurm executor as `slamsweep run`), each sweep's
-/// results written into its own result directory with the same steps as `slamsweep run`
-/// (orchestrator/sweep/sweep_steps.h), so report, merge and history read them as they read a run's.
-///
-/// Order: among sweeps with a run ready to start, the highest priority first; between equal
-/// priorities, the sweep with the fewest runs running, then the one that waited longest since it last
-/// started a run (fair shares of the pool). A run whose identical twin (same run id, build identity
-/// and evaluation) has an ok result in another sweep is linked from there, not run; while its twin
-/// is running it waits for it.
+/// The service's one worker pool, shared by every sweep: the queue held in DATA/queue.sqlite
+/// (SweepTable), runs started through one Executor (the same local or Slurm executor as `slamsweep
+/// run`), each sweep's results written into its own result directory (sweep_lifecycle.h). Which run
+/// starts next is the fair share's choice (fair_share.h); a run whose identical twin has an ok result
+/// in another sweep is linked from there, not run (run_reuse.h), and while its twin is running it waits.
 ///
 /// Threads: Run() is the scheduler's own loop and must be called from the thread that owns the
 /// executor (its children's parent-death signal follows that thread); every other member may be called
@@ -79,7 +47,7 @@ class Scheduler {
             ServiceMetrics& metrics);
   ~Scheduler();
 
-  /// Loads the queue after a (re)start: runs left "running" are queued again, and unfinished sweeps are
+  /// Loads the queue after a (re)start: runs left running are queued again, and unfinished sweeps are
   /// resumed. Call before Run().
   void Recover();
 
@@ -90,80 +58,44 @@ class Scheduler {
 
   /// Adds a planned, validated sweep: it is queued durably before this returns.
   QueuedSweep Submit(QueuedSweep sweep, const std::vector<RunSpec>& runs);
-  /// Cancels a sweep: queued runs are dropped, running ones stopped, finished results kept. False when
-  /// the sweep is unknown; the state in `state_after` ("cancelled", or a finished sweep's own state).
-  bool Cancel(std::int64_t sweep_id, std::string& state_after);
+  /// Cancels a sweep: queued runs are dropped, running ones stopped, finished results kept.
+  CancelOutcome Cancel(std::int64_t sweep_id);
   /// Stops accepting work and drains (as SIGTERM does).
   void Drain();
   bool Draining() const { return draining_.load(); }
 
-  std::vector<SweepView> Sweeps() const;
-  std::optional<SweepView> Sweep(std::int64_t id) const;
-  std::optional<std::vector<RunView>> Runs(std::int64_t sweep_id) const;
+  std::vector<SweepView> Sweeps() const { return sweeps_.Sweeps(); }
+  std::optional<SweepView> Sweep(std::int64_t id) const { return sweeps_.Sweep(id); }
+  std::optional<std::vector<RunView>> Runs(std::int64_t sweep_id) const { return sweeps_.Runs(sweep_id); }
   /// Sweeps not finished (queued or running): what the queued-sweeps limit counts.
-  std::size_t UnfinishedSweeps() const;
+  std::size_t UnfinishedSweeps() const { return sweeps_.UnfinishedSweeps(); }
 
   /// Sweeps whose report is to be written, oldest first; the report thread takes them one at a time.
-  std::optional<QueuedSweep> TakeReportJob();
-  void ReportWritten(std::int64_t sweep_id, bool ok);
+  std::optional<QueuedSweep> TakeReportJob() { return sweeps_.TakeReportJob(); }
+  void ReportWritten(std::int64_t sweep_id, bool ok) { sweeps_.ReportWritten(sweep_id, ok); }
 
  private:
-  struct RunEntry {
-    RunSpec spec;
-    RunView view;
-    bool stop_sent = false;
-  };
-  struct SweepEntry {
-    QueuedSweep sweep;
-    std::vector<RunEntry> runs;
-    std::map<std::string, std::size_t> by_run_id;
-    std::string report = "none";
-    // Scheduler thread only: the open result directory while the sweep is active.
-    bool active = false;
-    std::unique_ptr<OutputLock> lock;
-    std::optional<ResultsStore> store;
-    std::int64_t store_sweep_id = 0;
-    std::deque<std::size_t> pending;
-    std::size_t running = 0;
-    std::uint64_t last_start_tick = 0;
-    std::chrono::steady_clock::time_point activated_at;
-    std::size_t finished_here = 0;
-  };
-
-  // All of these run on the scheduler thread, taking mutex_ only to change what readers see.
+  // The loop's steps, all on the scheduler thread.
   void ActivateWaitingSweeps();
-  bool Activate(SweepEntry& entry);
   void HandleCancels(Executor& executor);
   void StartRuns(Executor& executor);
-  bool TryReuse(SweepEntry& entry, std::size_t index);
   void StartRun(Executor& executor, SweepEntry& entry, std::size_t index);
+  void RecordStartFailure(SweepEntry& entry, std::size_t index, const std::exception& error);
   void RecordEnding(const WorkerEnding& ending);
   void FinishSweeps();
-  void Finish(SweepEntry& entry, const std::string& state, const std::string& message = {});
-  void Fail(SweepEntry& entry, const std::string& message);
-  void SetRunState(SweepEntry& entry, std::size_t index, const std::string& state, bool attempt_started,
-                   std::optional<double> wall_s, const std::string& reason,
-                   std::optional<std::int64_t> reused_from = std::nullopt);
-  SweepView ViewOf(const SweepEntry& entry) const;
-  SweepEntry* PickSweep();
   void WaitForWork(Executor& executor);
-  void Notify();
 
-  QueueStore& queue_;
-  std::mutex& queue_mutex_;
   std::filesystem::path data_dir_;
   SchedulerOptions options_;
   ServiceMetrics& metrics_;
-
-  mutable std::mutex mutex_;  // guards sweeps_ and the views inside
-  std::map<std::int64_t, std::unique_ptr<SweepEntry>> sweeps_;
-  std::deque<std::int64_t> report_jobs_;
+  SweepTable sweeps_;
   std::atomic<bool> draining_ = false;
 
   // Scheduler thread only.
-  std::map<std::string, std::int64_t> running_;  // run id -> sweep id
+  RunningRuns running_;
   std::uint64_t tick_ = 0;
   std::optional<std::chrono::steady_clock::time_point> drain_deadline_;
+  /// Slots freed by ended runs and not yet taken, each with when it was freed (scheduling latency).
   std::vector<std::pair<std::string, std::chrono::steady_clock::time_point>> slot_freed_;
 };
 

@@ -47,7 +47,7 @@ ServiceMetrics::ServiceMetrics()
       scheduling_seconds_({0.001, 0.002, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 1}),
       http_seconds_({0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.5, 1}) {}
 
-void ServiceMetrics::RunFinished(const std::string& status, double wall_s, bool has_wall) {
+void ServiceMetrics::RunFinished(QueuedRunState status, double wall_s, bool has_wall) {
   const std::lock_guard lock(mutex_);
   ++runs_finished_[status];
   if (has_wall) run_seconds_.Observe(wall_s);
@@ -76,16 +76,16 @@ std::string ServiceMetrics::Render(const QueueGauges& gauges) const {
   Header(out, "slamsweep_draining", "gauge", "1 while the server drains after SIGTERM: no new runs start.");
   out += fmt::format("slamsweep_draining {}\n", gauges.draining ? 1 : 0);
   Header(out, "slamsweep_sweeps", "gauge", "Sweeps known to the server, by state.");
-  for (const char* state : {"queued", "running", "ok", "failed", "cancelled"}) {
+  for (const QueuedSweepState state : kSweepStates) {
     const auto found = gauges.sweeps_by_state.find(state);
-    out += fmt::format("slamsweep_sweeps{{state=\"{}\"}} {}\n", state,
+    out += fmt::format("slamsweep_sweeps{{state=\"{}\"}} {}\n", ToString(state),
                        found == gauges.sweeps_by_state.end() ? 0 : found->second);
   }
   Header(out, "slamsweep_runs_finished_total", "counter",
          "Runs finished since the server started, by status (reused: linked from an identical ok run).");
-  for (const char* status : {"ok", "failed", "reused"}) {
+  for (const QueuedRunState status : {QueuedRunState::kOk, QueuedRunState::kFailed, QueuedRunState::kReused}) {
     const auto found = runs_finished_.find(status);
-    out += fmt::format("slamsweep_runs_finished_total{{status=\"{}\"}} {}\n", status,
+    out += fmt::format("slamsweep_runs_finished_total{{status=\"{}\"}} {}\n", ToString(status),
                        found == runs_finished_.end() ? 0 : found->second);
   }
   Header(out, "slamsweep_run_duration_seconds", "histogram", "Wall time of the SLAM program of each run that ran.");

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "orchestrator/service/queue_states.h"
+
 namespace slamsweep::orchestrator::service {
 
 /// A Prometheus histogram: cumulative bucket counts, sum and count.
@@ -27,7 +29,7 @@ class Histogram {
 struct QueueGauges {
   std::size_t runs_queued = 0;
   std::size_t runs_running = 0;
-  std::map<std::string, std::size_t> sweeps_by_state;  // queued, running, ok, failed, cancelled
+  std::map<QueuedSweepState, std::size_t> sweeps_by_state;
   std::size_t slots = 0;
   bool draining = false;
 };
@@ -37,8 +39,8 @@ struct QueueGauges {
 class ServiceMetrics {
  public:
   ServiceMetrics();
-  /// A run recorded: status "ok", "failed" or "reused"; its program's wall time when it ran.
-  void RunFinished(const std::string& status, double wall_s, bool has_wall);
+  /// A run recorded with `status` ok, failed or reused; its program's wall time when it ran.
+  void RunFinished(QueuedRunState status, double wall_s, bool has_wall);
   /// Scheduler time spent on one run: from its slot freeing (or its sweep arriving) to its worker's
   /// start, plus recording its end (store row, queue row).
   void SchedulingOverhead(double seconds);
@@ -48,7 +50,7 @@ class ServiceMetrics {
 
  private:
   mutable std::mutex mutex_;
-  std::map<std::string, std::uint64_t> runs_finished_;
+  std::map<QueuedRunState, std::uint64_t> runs_finished_;
   std::map<int, std::uint64_t> http_requests_;
   Histogram run_seconds_;
   Histogram scheduling_seconds_;

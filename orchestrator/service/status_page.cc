@@ -24,16 +24,15 @@ std::string Progress(const RunCounts& counts) {
 std::string Links(const SweepView& view) {
   const std::string id = std::to_string(view.sweep.id);
   std::vector<std::string> links;
-  if (view.report == "ready") {
+  if (view.report == ReportState::kReady) {
     links.push_back("<a href=\"/sweeps/" + id + "/report/index.html\">report</a>");
     if (std::filesystem::exists(view.sweep.result_dir / "report" / "history")) {
       links.push_back("<a href=\"/sweeps/" + id + "/report/history/index.html\">history</a>");
     }
-  } else if (view.report == "writing") {
+  } else if (view.report == ReportState::kWriting) {
     links.push_back("report being written");
   }
-  const bool finished = view.sweep.state == "ok" || view.sweep.state == "failed" || view.sweep.state == "cancelled";
-  if (finished) {
+  if (IsFinished(view.sweep.state)) {
     links.push_back("<a href=\"/api/sweeps/" + id + "/junit.xml\">junit.xml</a>");
     links.push_back("<a href=\"/api/sweeps/" + id + "/summary.json\">summary.json</a>");
     links.push_back("<a href=\"/api/sweeps/" + id + "/summary.csv\">summary.csv</a>");
@@ -43,7 +42,7 @@ std::string Links(const SweepView& view) {
   return joined;
 }
 
-std::string StateCell(const std::string& state) {
+std::string StateCell(std::string_view state) {
   return fmt::format("<td class=\"state state-{}\">{}</td>", HtmlEscape(state), HtmlEscape(state));
 }
 
@@ -99,7 +98,9 @@ std::string RenderIndexPage(const std::vector<SweepView>& sweeps, const QueueGau
           "<tr><td><a href=\"/sweeps/{}\">{}</a></td><td>{}</td><td>{}</td><td class=\"number\">{}</td>{}"
           "<td>{}</td><td class=\"number\">{}</td><td class=\"number\">{}</td><td>{}</td><td>{}</td></tr>\n",
           id, id, HtmlEscape(view->sweep.name), HtmlEscape(view->sweep.submitter), view->sweep.priority,
-          StateCell(view->sweep.cancel_requested && view->sweep.state == "running" ? "cancelling" : view->sweep.state),
+          StateCell(view->sweep.cancel_requested && view->sweep.state == QueuedSweepState::kRunning
+                        ? CancellingStateName()
+                        : ToString(view->sweep.state)),
           Progress(view->counts), view->counts.failed, view->counts.reused, HtmlEscape(view->eta), Links(*view));
     }
     html += "</tbody>\n</table>\n";
@@ -113,15 +114,17 @@ std::string RenderIndexPage(const std::vector<SweepView>& sweeps, const QueueGau
 
 std::string RenderSweepPage(const SweepView& view, const std::vector<RunView>& runs) {
   const QueuedSweep& sweep = view.sweep;
-  const bool finished = sweep.state == "ok" || sweep.state == "failed" || sweep.state == "cancelled";
-  std::string html = Head(fmt::format("sweep {} {}", sweep.id, sweep.name), !finished || view.report == "writing");
+  const bool finished = IsFinished(sweep.state);
+  std::string html =
+      Head(fmt::format("sweep {} {}", sweep.id, sweep.name), !finished || view.report == ReportState::kWriting);
   html += fmt::format("<header><nav><a href=\"/\">all sweeps</a></nav><h1>sweep {}: {}</h1>\n", sweep.id,
                       HtmlEscape(sweep.name));
   html += "<dl>\n";
   const auto item = [&](std::string_view term, const std::string& value) {
     html += fmt::format("<dt>{}</dt><dd>{}</dd>\n", term, value);
   };
-  item("state", HtmlEscape(sweep.state) + (sweep.cancel_requested && !finished ? " (cancelling)" : ""));
+  item("state", HtmlEscape(ToString(sweep.state)) +
+                    (sweep.cancel_requested && !finished ? fmt::format(" ({})", CancellingStateName()) : ""));
   item("config", HtmlEscape(sweep.config_name));
   item("submitted by", HtmlEscape(sweep.submitter));
   item("priority", std::to_string(sweep.priority));
@@ -138,7 +141,7 @@ std::string RenderSweepPage(const SweepView& view, const std::vector<RunView>& r
       "</dl>\n</header>\n<main>\n<table>\n<thead><tr><th>run</th><th>state</th><th>attempts</th>"
       "<th>wall s</th><th>reason</th></tr></thead>\n<tbody>\n";
   for (const RunView& run : runs) {
-    std::string state = run.state;
+    std::string state(ToString(run.state));
     if (run.reused_from) state += " from sweep " + std::to_string(*run.reused_from);
     html += fmt::format("<tr><td>{}</td>{}<td class=\"number\">{}</td><td class=\"number\">{}</td><td>{}</td></tr>\n",
                         HtmlEscape(run.run_id), StateCell(state), run.attempt,

@@ -4,8 +4,8 @@
 #include <string_view>
 #include <vector>
 
-#include "orchestrator/service/scheduler.h"
 #include "orchestrator/service/service_metrics.h"
+#include "orchestrator/service/sweep_views.h"
 
 namespace slamsweep::orchestrator::service {
 

@@ -144,7 +144,7 @@ SubmissionAnswer Submit(ApiContext& context, const httplib::Request& request) {
   return {201,
           {{"id", sweep.id},
            {"name", sweep.name},
-           {"state", sweep.state},
+           {"state", std::string(ToString(sweep.state))},
            {"priority", sweep.priority},
            {"runs", run_ids},
            {"links", {{"self", location}, {"page", "/sweeps/" + std::to_string(sweep.id)}}}},

@@ -90,9 +90,10 @@ TEST(StatusPageTest, SubmittedTextIsEscapedEverywhere) {
   view.sweep.submitter = "\"><img src=x>";
   view.sweep.config_name = "<c>.yaml";
   view.sweep.message = "<m>";
-  view.sweep.state = "running";
+  view.sweep.state = QueuedSweepState::kRunning;
   const std::string index = RenderIndexPage({view}, QueueGauges{});
-  const std::string page = RenderSweepPage(view, {RunView{"r<1>", "failed", 1, std::nullopt, 1.5, "<reason>"}});
+  const std::string page =
+      RenderSweepPage(view, {RunView{"r<1>", QueuedRunState::kFailed, 1, std::nullopt, 1.5, "<reason>"}});
   for (const std::string& html : {index, page}) {
     EXPECT_EQ(html.find("<i>"), std::string::npos);
     EXPECT_EQ(html.find("<img"), std::string::npos);
@@ -106,10 +107,10 @@ TEST(StatusPageTest, SubmittedTextIsEscapedEverywhere) {
 
 TEST(ServiceMetricsTest, TheTextIsValidPrometheusExpositionFormat) {
   ServiceMetrics metrics;
-  metrics.RunFinished("ok", 3.0, true);
-  metrics.RunFinished("ok", 90.0, true);
-  metrics.RunFinished("failed", 0.5, true);
-  metrics.RunFinished("reused", 0.0, false);
+  metrics.RunFinished(QueuedRunState::kOk, 3.0, true);
+  metrics.RunFinished(QueuedRunState::kOk, 90.0, true);
+  metrics.RunFinished(QueuedRunState::kFailed, 0.5, true);
+  metrics.RunFinished(QueuedRunState::kReused, 0.0, false);
   metrics.SchedulingOverhead(0.004);
   metrics.HttpRequest(200, 0.0007);
   metrics.HttpRequest(429, 0.0002);
@@ -117,7 +118,7 @@ TEST(ServiceMetricsTest, TheTextIsValidPrometheusExpositionFormat) {
   gauges.runs_queued = 12;
   gauges.runs_running = 2;
   gauges.slots = 2;
-  gauges.sweeps_by_state = {{"running", 1}, {"ok", 3}};
+  gauges.sweeps_by_state = {{QueuedSweepState::kRunning, 1}, {QueuedSweepState::kOk, 3}};
   testing::TempDir dir;
   testing::WriteFile(dir / "metrics.txt", metrics.Render(gauges));
   // The official client library's parser, an independent reader of the format.
@@ -156,13 +157,13 @@ TEST(QueueStoreTest, ARestartQueuesTheRunsLeftRunning) {
       queue.AddSweep(sweep, {{{"run_id", "a"}}, {{"run_id", "b"}}, {{"run_id", "c"}}}, dir / "sweeps");
   EXPECT_EQ(added.id, 1);
   EXPECT_EQ(added.result_dir, dir / "sweeps" / "1");
-  queue.SetRunState(1, "a", "ok", true, 2.0);
-  queue.SetRunState(1, "b", "running", true);
+  queue.SetRunState(1, "a", QueuedRunState::kOk, true, 2.0);
+  queue.SetRunState(1, "b", QueuedRunState::kRunning, true);
   EXPECT_EQ(queue.RequeueRunning(), 1u);
   const std::vector<QueuedRun> runs = queue.Runs(1);
   ASSERT_EQ(runs.size(), 3u);
-  EXPECT_EQ(runs[0].state, "ok");
-  EXPECT_EQ(runs[1].state, "queued");
+  EXPECT_EQ(runs[0].state, QueuedRunState::kOk);
+  EXPECT_EQ(runs[1].state, QueuedRunState::kQueued);
   EXPECT_EQ(runs[1].attempt, 1);
   EXPECT_EQ(queue.SweepsWithOkRun("a", 2), std::vector<std::int64_t>{1});
   EXPECT_TRUE(queue.SweepsWithOkRun("a", 1).empty());
