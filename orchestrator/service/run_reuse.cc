@@ -16,7 +16,7 @@ std::optional<nlohmann::json> ReusableResult(const RunSpec& run, const std::file
   SweepSettings strict;  // no --rerun failed, no --reuse-stale: only an ok run of the same build counts
   bool stale = false;
   if (!RecordedRunIsReusable(run, StatusOfResultJson(*stored.result), *spec, strict, stale)) return std::nullopt;
-  if (StatusOfResultJson(*stored.result) != RunStatus::kOk || !stored.result->contains("status")) return std::nullopt;
+  if (StatusOfResultJson(*stored.result) != RunStatus::kOk) return std::nullopt;
   const auto evaluation = spec->find("evaluation");
   if (evaluation == spec->end() || *evaluation != ToJson(run).at("evaluation")) return std::nullopt;
   return std::move(stored.result);
