@@ -6,6 +6,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "orchestrator/store/results_store.h"
+#include "orchestrator/run/run_json.h"
 
 namespace slamsweep::orchestrator::service {
 
