@@ -18,7 +18,7 @@
 #include "orchestrator/service/sweep_entry.h"
 #include "orchestrator/service/sweep_table.h"
 #include "orchestrator/service/sweep_views.h"
-#include "orchestrator/sweep/executor.h"
+#include "orchestrator/supervisor/executor.h"
 
 namespace slamsweep::orchestrator::service {
 

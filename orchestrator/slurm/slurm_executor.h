@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "orchestrator/sweep/executor.h"
+#include "orchestrator/supervisor/executor.h"
 
 namespace slamsweep::orchestrator {
 

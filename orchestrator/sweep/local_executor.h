@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "orchestrator/process/process_set.h"
-#include "orchestrator/sweep/executor.h"
+#include "orchestrator/supervisor/executor.h"
 
 namespace slamsweep::orchestrator {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "orchestrator/run/run_json.h"
-#include "orchestrator/sweep/executor.h"
+#include "orchestrator/supervisor/executor.h"
 #include "orchestrator/sweep/status.h"
 #include "orchestrator/run/run_status.h"
 

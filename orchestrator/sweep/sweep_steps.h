@@ -9,7 +9,7 @@
 
 #include "orchestrator/run/run_spec.h"
 #include "orchestrator/store/results_store.h"
-#include "orchestrator/sweep/executor.h"
+#include "orchestrator/supervisor/executor.h"
 #include "orchestrator/sweep/status.h"
 #include "orchestrator/sweep/sweep_runner.h"
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "orchestrator/sweep/executor.h"
+#include "orchestrator/supervisor/executor.h"
 #include "orchestrator/run/run_folder.h"
 
 namespace slamsweep::orchestrator::fakes {

@@ -18,9 +18,9 @@ struct WorkerEnding {
   std::string reason;
 };
 
-/// Where runs are executed: this machine's worker processes, or (later) a Slurm job array.
-/// The sweep loop calls Start while it may start more, then Wait; the executor never decides
-/// what to run (ninja's CommandRunner).
+/// Where runs are executed: this machine's worker processes, or a Slurm job array.
+/// The Supervisor (supervisor.h) calls Start while it may start more, then Wait; the executor never
+/// decides what to run (ninja's CommandRunner).
 class Executor {
  public:
   virtual ~Executor() = default;
