@@ -1,18 +1,15 @@
 #include "orchestrator/sweep/sweep_runner.h"
 
 #include <algorithm>
-#include <deque>
 #include <optional>
 #include <set>
 
-#include <fmt/format.h>
-
-#include "orchestrator/store/named_study.h"
 #include "orchestrator/phase_times/phase_times.h"
+#include "orchestrator/store/named_study.h"
 #include "orchestrator/store/results_store.h"
+#include "orchestrator/supervisor/supervisor.h"
 #include "orchestrator/sweep/output_lock.h"
-#include "orchestrator/run/run_folder.h"
-#include "orchestrator/sweep/shared_run_files.h"
+#include "orchestrator/sweep/sweep_run_source.h"
 #include "orchestrator/sweep/sweep_steps.h"
 
 namespace slamsweep::orchestrator {
@@ -23,92 +20,6 @@ std::string ExpectationKey(const RunSpec& run) { return run.algorithm.name + "\t
 bool IsDone(std::optional<RunStatus> status, bool rerun_failed) {
   return status == RunStatus::kOk || (status == RunStatus::kFailed && !rerun_failed);
 }
-
-/// The supervising loop's state for one sweep.
-class SweepLoop {
- public:
-  SweepLoop(const SweepSettings& settings, Executor& executor, Status& status, ResultsStore& store,
-            std::int64_t sweep_id)
-      : settings_(settings), executor_(executor), status_(status), store_(store), sweep_id_(sweep_id) {}
-
-  void Add(const RunSpec* run) {
-    queue_.push_back(run);
-    by_id_[run->run_id] = run;
-  }
-
-  void Run(SweepOutcome& outcome) {
-    while (!queue_.empty() || executor_.Running() > 0) {
-      if (executor_.Interrupted()) break;
-      StartWhileAllowed();
-      if (executor_.Running() == 0) break;  // failure budget exhausted and nothing left running
-      std::vector<WorkerEnding> endings;
-      {
-        const PhaseTimer phase("wait");
-        endings = executor_.Wait();
-      }
-      for (const WorkerEnding& ending : endings) Finish(ending, outcome);
-    }
-    if (executor_.Interrupted()) {
-      outcome.interrupted = true;
-      status_.Message("interrupted: stopping running runs; finished results are kept");
-      for (const WorkerEnding& ending : executor_.TerminateAll()) Finish(ending, outcome);
-    }
-    outcome.not_started += queue_.size();
-    if (!queue_.empty() && !outcome.interrupted) {
-      status_.Message(
-          fmt::format("failure budget of {} exhausted: {} runs not started", settings_.failure_budget, queue_.size()));
-    }
-  }
-
- private:
-  bool BudgetExhausted() const { return settings_.failure_budget > 0 && failures_ >= settings_.failure_budget; }
-
-  void StartWhileAllowed() {
-    while (!queue_.empty() && executor_.Running() < settings_.jobs && !BudgetExhausted() && !executor_.Interrupted()) {
-      const RunSpec& run = *queue_.front();
-      queue_.pop_front();
-      std::optional<PhaseTimer> phase(std::in_place, "run_folder");
-      const std::filesystem::path run_dir = PrepareRunFolder(settings_.output_dir, run);
-      phase.emplace("start");
-      executor_.Start(run, run_dir);
-      phase.emplace("status");
-      status_.Started(run.run_id);
-    }
-  }
-
-  void Finish(const WorkerEnding& ending, SweepOutcome& outcome) {
-    const auto found = by_id_.find(ending.run_id);
-    if (found == by_id_.end()) return;
-    std::optional<FinishedRun> finished;
-    {
-      const PhaseTimer phase("record");
-      finished = RecordWorkerEnding(*found->second, ending, settings_.output_dir, store_, sweep_id_);
-    }
-    const PhaseTimer phase("status");
-    if (!finished) {
-      ++outcome.not_started;
-      return;
-    }
-    shared_files_.Share(RunFolder(settings_.output_dir, ending.run_id) / "reference.tum");
-    if (finished->ok) {
-      ++outcome.ok;
-    } else {
-      ++outcome.failed;
-      ++failures_;
-    }
-    status_.Finished(*finished);
-  }
-
-  const SweepSettings& settings_;
-  Executor& executor_;
-  Status& status_;
-  ResultsStore& store_;
-  std::int64_t sweep_id_;
-  std::deque<const RunSpec*> queue_;
-  std::map<std::string, const RunSpec*> by_id_;
-  std::size_t failures_ = 0;
-  SharedRunFiles shared_files_;
-};
 
 }  // namespace
 
@@ -163,9 +74,10 @@ SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& set
   phase.reset();
   status.Planned(to_run.size(), outcome.already_done);
 
-  SweepLoop loop(settings, executor, status, store, sweep_id);
-  for (const RunSpec* run : LongestExpectedFirst(to_run, store.TypicalWallSeconds())) loop.Add(run);
-  loop.Run(outcome);
+  SweepRunSource source(settings, status, store, sweep_id, outcome);
+  for (const RunSpec* run : LongestExpectedFirst(to_run, store.TypicalWallSeconds())) source.Add(run);
+  Supervisor(executor, {.jobs = settings.jobs, .drain_grace_s = 0.0, .time_phases = true}).Run(source);
+  source.CountNotStarted();
   status.Done();
 
   // The whole matrix, including runs finished by earlier sweeps, decides the summary and the exit code.
