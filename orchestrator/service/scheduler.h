@@ -1,18 +1,13 @@
 #pragma once
 
 #include <atomic>
-#include <chrono>
 #include <cstdint>
 #include <filesystem>
-#include <map>
 #include <mutex>
 #include <optional>
-#include <string>
-#include <utility>
 #include <vector>
 
 #include "orchestrator/run/run_spec.h"
-#include "orchestrator/service/fair_share.h"
 #include "orchestrator/service/queue_store.h"
 #include "orchestrator/service/service_metrics.h"
 #include "orchestrator/service/sweep_entry.h"
@@ -37,6 +32,8 @@ struct SchedulerOptions {
 /// run`), each sweep's results written into its own result directory (sweep_lifecycle.h). Which run
 /// starts next is the fair share's choice (fair_share.h); a run whose identical twin has an ok result
 /// in another sweep is linked from there, not run (run_reuse.h), and while its twin is running it waits.
+///
+/// The loop itself is the Supervisor's (supervisor/supervisor.h), fed by a ServiceRunSource.
 ///
 /// Threads: Run() is the scheduler's own loop and must be called from the thread that owns the
 /// executor (its children's parent-death signal follows that thread); every other member may be called
@@ -75,28 +72,11 @@ class Scheduler {
   void ReportWritten(std::int64_t sweep_id, bool ok) { sweeps_.ReportWritten(sweep_id, ok); }
 
  private:
-  // The loop's steps, all on the scheduler thread.
-  void ActivateWaitingSweeps();
-  void HandleCancels(Executor& executor);
-  void StartRuns(Executor& executor);
-  void StartRun(Executor& executor, SweepEntry& entry, std::size_t index);
-  void RecordStartFailure(SweepEntry& entry, std::size_t index, const std::exception& error);
-  void RecordEnding(const WorkerEnding& ending);
-  void FinishSweeps();
-  void WaitForWork(Executor& executor);
-
   std::filesystem::path data_dir_;
   SchedulerOptions options_;
   ServiceMetrics& metrics_;
   SweepTable sweeps_;
   std::atomic<bool> draining_ = false;
-
-  // Scheduler thread only.
-  RunningRuns running_;
-  std::uint64_t tick_ = 0;
-  std::optional<std::chrono::steady_clock::time_point> drain_deadline_;
-  /// Slots freed by ended runs and not yet taken, each with when it was freed (scheduling latency).
-  std::vector<std::pair<std::string, std::chrono::steady_clock::time_point>> slot_freed_;
 };
 
 }  // namespace slamsweep::orchestrator::service
