@@ -1,7 +1,6 @@
 #include "orchestrator/store/results_store.h"
 
 #include <algorithm>
-#include <ctime>
 #include <unordered_map>
 
 #include <fmt/format.h>
@@ -203,15 +202,6 @@ std::string TypicalWallKey(const std::string& algorithm, const std::string& sequ
   return algorithm + "\t" + sequence;
 }
 
-std::string UtcNowIso8601() {
-  const std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof(text), "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
-}
-
 ResultsStore ResultsStore::Open(const std::filesystem::path& file) { return OpenImpl(file, true); }
 
 ResultsStore ResultsStore::OpenExisting(const std::filesystem::path& file) { return OpenImpl(file, false); }
@@ -278,83 +268,6 @@ void ResultsStore::InitializeSchema() {
     WriteRun(run.sweep_id, run.spec, run.result, run.run_dir, flags);
   });
   transaction.Commit();
-}
-
-std::int64_t ResultsStore::BeginSweep(const SweepInfo& info) {
-  SqliteTransaction transaction(db_);
-  auto insert = db_.Prepare(
-      "INSERT INTO sweeps(name, config_path, config_sha, started_at, status, host, slamsweep_version, run_count, "
-      "command_line) VALUES(?, ?, ?, ?, ?, ?, ?, 0, ?)");
-  insert.Bind(1, info.name).Bind(2, info.config_path).Bind(3, info.config_sha);
-  insert.Bind(4, info.started_at.empty() ? UtcNowIso8601() : info.started_at);
-  insert.Bind(5, SweepStatusName(SweepStatus::kRunning));
-  insert.Bind(6, info.host).Bind(7, info.slamsweep_version).Bind(8, info.command_line);
-  insert.Run();
-  const std::int64_t id = db_.LastInsertRowId();
-  transaction.Commit();
-  return id;
-}
-
-void ResultsStore::FinishSweep(std::int64_t sweep_id, SweepStatus status, std::int64_t run_count) {
-  SqliteTransaction transaction(db_);
-  auto update = db_.Prepare("UPDATE sweeps SET finished_at = ?, status = ?, run_count = ? WHERE id = ?");
-  update.Bind(1, UtcNowIso8601()).Bind(2, SweepStatusName(status)).Bind(3, run_count).Bind(4, sweep_id);
-  update.Run();
-  transaction.Commit();
-}
-
-std::vector<StoredSweep> ResultsStore::Sweeps() const {
-  auto select = db_.Prepare(
-      "SELECT id, name, config_path, config_sha, started_at, finished_at, status, host, slamsweep_version, "
-      "run_count, command_line FROM sweeps ORDER BY id");
-  std::vector<StoredSweep> sweeps;
-  while (select.Step()) {
-    StoredSweep s;
-    s.id = select.Int64(0);
-    s.info.name = NullableText(select, 1);
-    s.info.config_path = NullableText(select, 2);
-    s.info.config_sha = NullableText(select, 3);
-    s.info.started_at = NullableText(select, 4);
-    s.finished_at = NullableText(select, 5);
-    const std::string status = NullableText(select, 6);
-    const std::optional<SweepStatus> known = SweepStatusFromName(status);
-    if (!known) {
-      throw InputError(
-          fmt::format("{}: sweeps.status of sweep {}: expected running, ok, failed or interrupted, found \"{}\"",
-                      db_.file().string(), s.id, status));
-    }
-    s.status = *known;
-    s.info.host = NullableText(select, 7);
-    s.info.slamsweep_version = NullableText(select, 8);
-    s.run_count = select.Int64(9);
-    s.info.command_line = NullableText(select, 10);
-    sweeps.push_back(std::move(s));
-  }
-  return sweeps;
-}
-
-std::int64_t ResultsStore::ImportSweep(const StoredSweep& sweep) {
-  SqliteTransaction transaction(db_);
-  auto find = db_.Prepare(
-      "SELECT id FROM sweeps WHERE name IS ? AND config_sha IS ? AND started_at IS ? AND host IS ? LIMIT 1");
-  find.Bind(1, sweep.info.name).Bind(2, sweep.info.config_sha).Bind(3, sweep.info.started_at);
-  find.Bind(4, sweep.info.host);
-  if (find.Step()) {
-    const std::int64_t id = find.Int64(0);
-    transaction.Commit();
-    return id;
-  }
-  auto insert = db_.Prepare(
-      "INSERT INTO sweeps(name, config_path, config_sha, started_at, finished_at, status, host, slamsweep_version, "
-      "run_count, command_line) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-  insert.Bind(1, sweep.info.name).Bind(2, sweep.info.config_path).Bind(3, sweep.info.config_sha);
-  insert.Bind(4, sweep.info.started_at).Bind(5, sweep.finished_at).Bind(6, SweepStatusName(sweep.status));
-  insert.Bind(7, sweep.info.host).Bind(8, sweep.info.slamsweep_version).Bind(9, sweep.run_count);
-  insert.Bind(10, sweep.info.command_line);
-  insert.Run();
-  const std::int64_t id = db_.LastInsertRowId();
-  transaction.Commit();
-  return id;
 }
 
 void ResultsStore::RecordRun(std::int64_t sweep_id, const json& run_spec, const json& result,

@@ -18,31 +18,10 @@
 #include "orchestrator/run/run_status.h"
 #include "orchestrator/store/sqlite_db.h"
 #include "orchestrator/store/store_schema.h"
+#include "orchestrator/store/sweeps_table.h"
+#include "orchestrator/store/utc_now.h"
 
 namespace slamsweep::orchestrator {
-
-/// What is known about a sweep when it starts.
-struct SweepInfo {
-  std::string name;
-  std::string config_path;
-  /// SHA-256 (or any stable digest) of the config file's bytes, to tell edited configs apart.
-  std::string config_sha;
-  /// ISO 8601 UTC; empty = now.
-  std::string started_at;
-  std::string host;
-  std::string slamsweep_version;
-  std::string command_line;
-};
-
-/// A row of the sweeps table.
-struct StoredSweep {
-  std::int64_t id = 0;
-  SweepInfo info;
-  std::string finished_at;
-  /// kRunning until FinishSweep, then what the orchestrator reported.
-  SweepStatus status = SweepStatus::kRunning;
-  std::int64_t run_count = 0;
-};
 
 /// results.sqlite: the index of an output directory (result.json in each run folder is the commit point of a run,
 /// the store indexes what the folders hold). Safe for several processes at once: WAL journal,
@@ -59,12 +38,14 @@ class ResultsStore {
   const std::filesystem::path& file() const { return db_.file(); }
 
   /// Inserts a sweep with status "running"; returns its id.
-  std::int64_t BeginSweep(const SweepInfo& info);
-  void FinishSweep(std::int64_t sweep_id, SweepStatus status, std::int64_t run_count);
-  std::vector<StoredSweep> Sweeps() const;
+  std::int64_t BeginSweep(const SweepInfo& info) { return InsertSweep(db_, info); }
+  void FinishSweep(std::int64_t sweep_id, SweepStatus status, std::int64_t run_count) {
+    MarkSweepFinished(db_, sweep_id, status, run_count);
+  }
+  std::vector<StoredSweep> Sweeps() const { return ReadSweeps(db_); }
   /// The id of a sweep equal to `sweep` (same name, config digest, start time, host), adding it when there is
   /// none; used by merge so that merging the same shard twice does not duplicate its sweep.
-  std::int64_t ImportSweep(const StoredSweep& sweep);
+  std::int64_t ImportSweep(const StoredSweep& sweep) { return FindOrInsertSweep(db_, sweep); }
 
   /// Records (or replaces) one run: its row, its metrics and metric specifications, in one transaction.
   /// `run_spec` is run.json, `result` is result.json (DESIGN.md). Throws InputError naming the field when
@@ -136,8 +117,5 @@ class ResultsStore {
 
 /// "<algorithm>\t<sequence>", the key of TypicalWallSeconds().
 std::string TypicalWallKey(const std::string& algorithm, const std::string& sequence);
-
-/// Now as ISO 8601 UTC with seconds ("2026-11-22T05:00:00Z").
-std::string UtcNowIso8601();
 
 }  // namespace slamsweep::orchestrator
