@@ -17,42 +17,6 @@ namespace {
 
 using nlohmann::json;
 
-// The record's fields from the result.json the store keeps (its columns and shared members); a value of another
-// type than result.json writes is left empty.
-void FillResultFields(RunRecord& run) {
-  const json& result = run.result;
-  const auto text = [&](const char* key) {
-    const auto found = result.find(key);
-    return found != result.end() && found->is_string() ? found->get<std::string>() : std::string();
-  };
-  const auto number = [&](const char* key) -> std::optional<double> {
-    const auto found = result.find(key);
-    return found != result.end() && found->is_number() ? std::optional<double>(found->get<double>()) : std::nullopt;
-  };
-  const auto integer = [&](const char* key) -> std::optional<int> {
-    const auto found = result.find(key);
-    return found != result.end() && found->is_number_integer() ? std::optional<int>(found->get<int>()) : std::nullopt;
-  };
-  const auto strings = [&](const char* key) {
-    std::vector<std::string> out;
-    const auto found = result.find(key);
-    if (found == result.end() || !found->is_array()) return out;
-    for (const json& item : *found) {
-      if (item.is_string()) out.push_back(item.get<std::string>());
-    }
-    return out;
-  };
-  run.failure_kind = text("failure_kind");
-  run.reason = text("reason");
-  run.exit_code = integer("exit_code");
-  run.signal = integer("signal");
-  run.cpu_s = number("cpu_s");
-  run.peak_rss_kb = number("peak_rss_kb");
-  run.started_at = text("started_at");
-  run.command = strings("command");
-  run.warnings = strings("warnings");
-}
-
 // Documents are shared by many runs: each is parsed once.
 class ParsedDocuments {
  public:
@@ -97,7 +61,7 @@ RunRecord RunFromRow(const SqliteStatement& select, const std::filesystem::path&
     run.result[kResultColumns[i]] = select.Json(kResultColumnIndex[i]);
   }
   run.result["flags"] = ToJson(run.flags);
-  FillResultFields(run);
+  ReadResultFields(run.result, run);
   run.result["metrics"] = json::array();
   run.result["metric_details"] = json::object();
   return run;
