@@ -16,4 +16,40 @@ std::string RunRecord::MetricUnit(std::string_view metric_name, std::string_view
   return {};
 }
 
+void ReadResultFields(const nlohmann::json& result, RunRecord& run) {
+  using nlohmann::json;
+  const auto text = [&](const char* key) {
+    const auto found = result.find(key);
+    return found != result.end() && found->is_string() ? found->get<std::string>() : std::string();
+  };
+  const auto number = [&](const char* key) -> std::optional<double> {
+    const auto found = result.find(key);
+    return found != result.end() && found->is_number() ? std::optional<double>(found->get<double>()) : std::nullopt;
+  };
+  const auto integer = [&](const char* key) -> std::optional<int> {
+    const auto found = result.find(key);
+    return found != result.end() && found->is_number_integer() ? std::optional<int>(found->get<int>()) : std::nullopt;
+  };
+  const auto strings = [&](const char* key) {
+    std::vector<std::string> out;
+    const auto found = result.find(key);
+    if (found == result.end() || !found->is_array()) return out;
+    for (const json& item : *found) {
+      if (item.is_string()) out.push_back(item.get<std::string>());
+    }
+    return out;
+  };
+  run.failure_kind = text("failure_kind");
+  run.reason = text("reason");
+  run.exit_code = integer("exit_code");
+  run.signal = integer("signal");
+  run.wall_s = number("wall_s");
+  run.cpu_s = number("cpu_s");
+  run.peak_rss_kb = number("peak_rss_kb");
+  run.started_at = text("started_at");
+  run.finished_at = text("finished_at");
+  run.command = strings("command");
+  run.warnings = strings("warnings");
+}
+
 }  // namespace slamsweep::orchestrator

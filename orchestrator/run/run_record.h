@@ -92,4 +92,9 @@ struct RunRecord {
   std::string MetricUnit(std::string_view metric, std::string_view statistic) const;
 };
 
+/// The record's fields that result.json holds as plain values (failure_kind, reason, exit_code, signal, wall_s,
+/// cpu_s, peak_rss_kb, started_at, finished_at, command, warnings), read leniently: a missing value, or one of another type than the
+/// worker writes, is left empty. The store reads its records' result.json this way.
+void ReadResultFields(const nlohmann::json& result, RunRecord& run);
+
 }  // namespace slamsweep::orchestrator

@@ -124,6 +124,8 @@ std::string SqliteStatement::Text(int column) const {
   return std::string(text, static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column)));
 }
 
+std::string SqliteStatement::TextOrEmpty(int column) const { return IsNull(column) ? "" : Text(column); }
+
 std::optional<double> SqliteStatement::OptionalDouble(int column) const {
   if (IsNull(column)) return std::nullopt;
   return Double(column);

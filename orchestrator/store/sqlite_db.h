@@ -41,6 +41,8 @@ class SqliteStatement {
   std::int64_t Int64(int column) const;
   double Double(int column) const;
   std::string Text(int column) const;
+  /// The column's text, empty when it is NULL.
+  std::string TextOrEmpty(int column) const;
   std::optional<double> OptionalDouble(int column) const;
   /// The column as JSON: NULL -> null, INTEGER -> number, REAL -> number, TEXT -> string.
   nlohmann::json Json(int column) const;

@@ -52,11 +52,11 @@ RunRecord MakeRun(const json& spec, const json& result, std::vector<FlatMetric> 
   run.run_id = spec.at("run_id");
   run.run_spec = spec;
   run.result = result;
-  run.status = result.at("status");
+  run.status = RecordedRunStatus(result.at("status").get<std::string>()).value();
   run.algorithm = spec.at("algorithm").at("name");
   run.sequence = spec.at("sequence").at("name");
   run.noise = "clean";
-  run.wall_s = result.at("wall_s").get<double>();
+  ReadResultFields(result, run);
   run.metrics = std::move(metrics);
   return run;
 }

@@ -27,7 +27,7 @@ TEST(RunFolderTest, RecordsRunJsonAndResultJson) {
   const auto run = store.FindRun("r1");
   ASSERT_TRUE(run.has_value());
   EXPECT_EQ(run->run_dir, "runs/r1");
-  EXPECT_EQ(run->spec, MakeSpec("r1"));
+  EXPECT_EQ(run->run_spec, MakeSpec("r1"));
   EXPECT_EQ(run->result.at("status"), "ok");
   EXPECT_EQ(run->result.at("wall_s"), 3.0);
   EXPECT_EQ(run->result.at("outputs"), MakeOkResult("r1").at("outputs"));

@@ -36,6 +36,7 @@ std::vector<RunRecord> Runs(bool with_ate) {
     run.run_spec = testing::MakeSpec(id, "icp-slam", "intel", i);
     run.result = testing::MakeOkResult(id, 3.0 + i, 0.1 * (i + 1));
     run.result["command"] = {"icp-slam", "input/icp-slam.ini"};
+    ReadResultFields(run.result, run);
     if (with_ate) run.metrics.push_back({"ape_trans", "rmse", 0.1 * (i + 1), "m"});
     run.metrics.push_back({"corners", "value", 10.0 + i, "count"});
     runs.push_back(run);
@@ -102,6 +103,7 @@ TEST(ValidityTableTest, ResourcesCountOnlyForRunsThatRanAProgram) {
   EXPECT_EQ(with_program.values.at("peak_rss_kb"), 81234.0);
   EXPECT_EQ(with_program.values.at("corners.value"), 12.0);
   runs[2].result["command"] = json::array();  // the odometry baseline
+  ReadResultFields(runs[2].result, runs[2]);
   EXPECT_EQ(ToValidityRun(runs[2]).values.count("wall_s"), 0u);
 }
 

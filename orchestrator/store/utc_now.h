@@ -1,0 +1,10 @@
+#pragma once
+
+#include <string>
+
+namespace slamsweep::orchestrator {
+
+/// Now as ISO 8601 UTC with seconds ("2026-11-22T05:00:00Z").
+std::string UtcNowIso8601();
+
+}  // namespace slamsweep::orchestrator
