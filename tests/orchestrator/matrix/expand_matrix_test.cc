@@ -9,6 +9,7 @@
 #include "evaluator/noise/random.h"
 #include "orchestrator/matrix/run_id.h"
 #include "tests/orchestrator/matrix/test_config.h"
+#include "orchestrator/run/run_json.h"
 
 namespace slamsweep::orchestrator {
 namespace {

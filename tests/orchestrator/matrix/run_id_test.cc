@@ -8,6 +8,7 @@
 
 #include "orchestrator/matrix/expand_matrix.h"
 #include "tests/orchestrator/matrix/test_config.h"
+#include "orchestrator/run/run_json.h"
 
 namespace slamsweep::orchestrator {
 namespace {

@@ -22,7 +22,7 @@ namespace ev = slamsweep::evaluator;
 
 double Metric(const RunMetrics& metrics, const std::string& name) {
   for (const FlatMetric& metric : metrics.metrics) {
-    if (metric.metric == name && metric.statistic == "value") return metric.value;
+    if (metric.metric == name && metric.statistic == "value") return metric.value.value();
   }
   ADD_FAILURE() << "no " << name;
   return NAN;
