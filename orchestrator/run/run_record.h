@@ -93,8 +93,8 @@ struct RunRecord {
 };
 
 /// The record's fields that result.json holds as plain values (failure_kind, reason, exit_code, signal, wall_s,
-/// cpu_s, peak_rss_kb, started_at, finished_at, command, warnings), read leniently: a missing value, or one of another type than the
-/// worker writes, is left empty. The store reads its records' result.json this way.
+/// cpu_s, peak_rss_kb, started_at, finished_at, command, warnings), read leniently: a missing value, or one of another
+/// type than the worker writes, is left empty. The store reads its records' result.json this way.
 void ReadResultFields(const nlohmann::json& result, RunRecord& run);
 
 }  // namespace slamsweep::orchestrator
