@@ -10,6 +10,7 @@
 #include "evaluator/core/input_error.h"
 #include "orchestrator/service/queue_store.h"
 #include "orchestrator/store/sqlite_db.h"
+#include "tests/orchestrator/service/queued_sweep_fixture.h"
 #include "tests/support/shared_data.h"
 
 namespace slamsweep::orchestrator::service {
@@ -67,11 +68,7 @@ TEST(QueueStatesTest, TheQueueFileHoldsTheNames) {
   testing::TempDir dir;
   {
     QueueStore queue = QueueStore::Open(dir / "queue.sqlite");
-    QueuedSweep sweep;
-    sweep.name = "s";
-    sweep.config_name = "s.yaml";
-    sweep.config_text = "name: s";
-    sweep.submitter = "me";
+    const QueuedSweep sweep = SweepNamedS();
     queue.AddSweep(sweep, {{{"run_id", "a"}}, {{"run_id", "b"}}, {{"run_id", "c"}}}, dir / "sweeps");
     queue.AddSweep(sweep, {}, dir / "sweeps");
     queue.SetRunState(1, "a", QueuedRunState::kReused, false, std::nullopt, "", 7);

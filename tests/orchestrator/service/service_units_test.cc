@@ -17,6 +17,7 @@
 #include "orchestrator/service/queue_store.h"
 #include "orchestrator/service/service_metrics.h"
 #include "orchestrator/service/status_page.h"
+#include "tests/orchestrator/service/queued_sweep_fixture.h"
 #include "tests/support/child_process.h"
 #include "tests/support/shared_data.h"
 
@@ -148,13 +149,8 @@ TEST(ServiceMetricsTest, TheTextIsValidPrometheusExpositionFormat) {
 TEST(QueueStoreTest, ARestartQueuesTheRunsLeftRunning) {
   testing::TempDir dir;
   QueueStore queue = QueueStore::Open(dir / "queue.sqlite");
-  QueuedSweep sweep;
-  sweep.name = "s";
-  sweep.config_name = "s.yaml";
-  sweep.config_text = "name: s";
-  sweep.submitter = "me";
   const QueuedSweep added =
-      queue.AddSweep(sweep, {{{"run_id", "a"}}, {{"run_id", "b"}}, {{"run_id", "c"}}}, dir / "sweeps");
+      queue.AddSweep(SweepNamedS(), {{{"run_id", "a"}}, {{"run_id", "b"}}, {{"run_id", "c"}}}, dir / "sweeps");
   EXPECT_EQ(added.id, 1);
   EXPECT_EQ(added.result_dir, dir / "sweeps" / "1");
   queue.SetRunState(1, "a", QueuedRunState::kOk, true, 2.0);
