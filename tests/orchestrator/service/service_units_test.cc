@@ -163,7 +163,7 @@ TEST(QueueStoreTest, ARestartQueuesTheRunsLeftRunning) {
   EXPECT_EQ(runs[1].attempt, 1);
   EXPECT_EQ(queue.SweepsWithOkRun("a", 2), std::vector<std::int64_t>{1});
   EXPECT_TRUE(queue.SweepsWithOkRun("a", 1).empty());
-  EXPECT_EQ(queue.AddSweep(sweep, {}, dir / "sweeps").id, 2);
+  EXPECT_EQ(queue.AddSweep(SweepNamedS(), {}, dir / "sweeps").id, 2);
 }
 
 }  // namespace
