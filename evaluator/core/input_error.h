@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 /// Thrown for bad input (files, options, data that cannot be scored). The message
 /// always names where the problem is (file, line, field) and what was expected, so
@@ -20,4 +20,4 @@ class InputError : public std::runtime_error {
 /// and Jenkins log parsers can jump to the place.
 std::string Located(const std::filesystem::path& file, std::size_t line, std::string_view message);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

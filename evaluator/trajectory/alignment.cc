@@ -8,7 +8,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 namespace {
 
 struct ModeName {
@@ -177,4 +177,4 @@ Trajectory ApplyAlignment(Trajectory trajectory, const Alignment& alignment) {
   return trajectory;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

@@ -9,7 +9,7 @@
 #include "evaluator/core/pose.h"
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 /// How the estimate is moved onto the reference before errors are taken.
 /// - kNone: as recorded.
@@ -73,4 +73,4 @@ std::optional<Alignment> ComputeAlignment(const Trajectory& reference, const Tra
 /// value so that a caller done with the original can move it in and avoid a copy.
 Trajectory ApplyAlignment(Trajectory trajectory, const Alignment& alignment);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

@@ -3,7 +3,7 @@
 #include <string>
 #include <utility>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 Ape::Ape(ApeOptions options) : options_(std::move(options)) {
   ValidateAssociationOptions(options_.association);
@@ -47,4 +47,4 @@ MetricResult Ape::Score(Association association) const {
   return result;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

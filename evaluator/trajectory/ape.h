@@ -6,7 +6,7 @@
 #include "evaluator/trajectory/metric_result.h"
 #include "evaluator/trajectory/pose_relation.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 struct ApeOptions {
   PoseRelation pose_relation = PoseRelation::kTranslation;
@@ -38,4 +38,4 @@ class Ape {
   ApeOptions options_;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

@@ -11,7 +11,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/trajectory/index_search.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 namespace {
 
 std::string FormatSeconds(double value) {
@@ -222,4 +222,4 @@ Association Associate(Trajectory&& reference, Trajectory&& estimate, const Assoc
                   std::move(longer).Select(pairing.longer_ids));
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

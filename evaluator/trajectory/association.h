@@ -5,7 +5,7 @@
 
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 struct AssociationOptions {
   /// Largest accepted |t_ref - (t_est + t_offset_s)| of a pair, seconds (evo's --t_max_diff).
@@ -50,4 +50,4 @@ Association Associate(const Trajectory& reference, const Trajectory& estimate, c
 /// (Trajectory::Select) instead of being copied. The same pairs and counts.
 Association Associate(Trajectory&& reference, Trajectory&& estimate, const AssociationOptions& options);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

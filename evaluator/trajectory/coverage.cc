@@ -5,7 +5,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 nlohmann::json TrajectoryCoverage::ToJson() const {
   return {{"fraction", fraction},
@@ -35,4 +35,4 @@ TrajectoryCoverage ComputeCoverage(const Trajectory& reference, const Trajectory
   return coverage;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

@@ -4,7 +4,7 @@
 
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 /// How much of the reference's time span an estimate covers. Measured by time span, not by the
 /// number of poses that associate: a run that reports every scan (2,725) against a reference of
@@ -27,4 +27,4 @@ struct TrajectoryCoverage {
 /// first and last stamp); both must be on one clock, as the trajectory metrics assume.
 TrajectoryCoverage ComputeCoverage(const Trajectory& reference, const Trajectory& estimate);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

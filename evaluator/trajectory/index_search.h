@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <ranges>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 /// The first index in [begin, end) at which `before` is false, for a predicate that holds on a
 /// prefix of the range: std::ranges::partition_point over indices instead of over a container,
@@ -17,4 +17,4 @@ std::size_t PartitionPointIndex(std::size_t begin, std::size_t end, Predicate be
   return begin + static_cast<std::size_t>(std::ranges::distance(indices.begin(), found));
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

@@ -6,7 +6,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 Pose InterpolatePose(const Pose& a, const Pose& b, double fraction) {
   Pose pose;
@@ -63,4 +63,4 @@ std::optional<Pose> OdometryInterpolator::At(double stamp_s, bool* linear_fallba
   return estimate_.poses()[below] * Relative(*odometry_from, *odometry_to);
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

@@ -5,7 +5,7 @@
 #include "evaluator/core/pose.h"
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 /// The pose a `fraction` (0 = a, 1 = b) of the way from a to b: positions linearly, orientations
 /// by slerp along the shorter arc (q and -q are the same rotation, so the sign is chosen to keep
@@ -47,4 +47,4 @@ class OdometryInterpolator {
   TrajectoryInterpolator odometry_;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

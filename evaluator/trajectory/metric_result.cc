@@ -1,6 +1,6 @@
 #include "evaluator/trajectory/metric_result.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 nlohmann::json MetricResult::ToJson() const {
   nlohmann::json out = statistics;
@@ -25,4 +25,4 @@ void FinishMetricResult(std::string metric, PoseRelation pose_relation, nlohmann
   result.estimate_unpaired = association.estimate_unpaired;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

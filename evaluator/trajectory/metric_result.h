@@ -11,7 +11,7 @@
 #include "evaluator/trajectory/association.h"
 #include "evaluator/trajectory/pose_relation.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 /// One APE or RPE result: the statistics of one error vector, the unit they are in and the
 /// full specification they were computed under (numbers from different specifications must
@@ -45,4 +45,4 @@ struct MetricResult {
 void FinishMetricResult(std::string metric, PoseRelation pose_relation, nlohmann::json specification,
                         const Association& association, MetricResult& result);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

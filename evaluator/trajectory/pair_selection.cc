@@ -9,7 +9,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/trajectory/index_search.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 namespace {
 
 std::string FormatNumber(double value) {
@@ -201,4 +201,4 @@ std::vector<IndexPair> SelectPairs(const Trajectory& trajectory, const PairSelec
   return pairs;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

@@ -6,7 +6,7 @@
 
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 /// The unit of the RPE step `delta`: poses (frames), metres travelled, seconds elapsed, or
 /// degrees turned.
@@ -57,4 +57,4 @@ std::vector<IndexPair> SelectPairs(const Trajectory& trajectory, const PairSelec
 /// longer than the path). Still throws InputError for invalid options.
 std::vector<IndexPair> FindPairs(const Trajectory& trajectory, const PairSelectionOptions& options);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

@@ -4,7 +4,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 PoseRelation ParsePoseRelation(std::string_view name) {
   if (name == "trans") return PoseRelation::kTranslation;
@@ -20,4 +20,4 @@ std::string_view PoseRelationUnit(PoseRelation relation) {
   return relation == PoseRelation::kTranslation ? "m" : "deg";
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

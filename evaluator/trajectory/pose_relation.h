@@ -2,7 +2,7 @@
 
 #include <string_view>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 /// Which part of a pose error a metric reports: the translation (metres) or the angle of
 /// the rotation (degrees). These are evo's `trans_part` and `angle_deg` pose relations.
@@ -16,4 +16,4 @@ std::string_view PoseRelationName(PoseRelation relation);
 /// "m" or "deg": the unit of the errors under this relation.
 std::string_view PoseRelationUnit(PoseRelation relation);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

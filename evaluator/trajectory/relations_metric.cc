@@ -10,7 +10,7 @@
 #include "evaluator/core/statistics.h"
 #include "evaluator/trajectory/interpolation.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 namespace {
 
 std::string DescribeRelationsRange(const Relations& relations, double offset_s) {
@@ -125,4 +125,4 @@ RelationsResult RelationsMetric::Compute(const Trajectory& estimate, const Relat
   return result;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

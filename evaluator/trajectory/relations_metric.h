@@ -7,7 +7,7 @@
 #include "evaluator/core/relation.h"
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 struct RelationsOptions {
   /// Added to both stamps of every relation before the estimate is looked up, seconds.
@@ -61,4 +61,4 @@ class RelationsMetric {
   RelationsOptions options_;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

@@ -3,7 +3,7 @@
 #include <string>
 #include <utility>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 Rpe::Rpe(RpeOptions options) : options_(std::move(options)) {
   ValidateAssociationOptions(options_.association);
@@ -53,4 +53,4 @@ MetricResult Rpe::Compute(const Trajectory& reference, const Trajectory& estimat
   return result;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

@@ -7,7 +7,7 @@
 #include "evaluator/trajectory/pair_selection.h"
 #include "evaluator/trajectory/pose_relation.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 struct RpeOptions {
   PoseRelation pose_relation = PoseRelation::kTranslation;
@@ -48,4 +48,4 @@ class Rpe {
   RpeOptions options_;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

@@ -8,7 +8,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 namespace {
 
 nlohmann::json OptionalStatistics(const std::optional<ErrorStatistics>& statistics) {
@@ -117,4 +117,4 @@ nlohmann::json SegmentRpeResult::ToJson() const {
           {"lengths", std::move(lengths_json)}};
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

@@ -11,7 +11,7 @@
 #include "evaluator/trajectory/association.h"
 #include "evaluator/trajectory/pair_selection.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline trajectory {
 
 /// Length of the path through the poses in order (sum of the distances between neighbours), m.
 double PathLengthM(const Trajectory& trajectory);
@@ -91,4 +91,4 @@ class SegmentRpe {
   SegmentRpeOptions options_;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline trajectory

@@ -13,7 +13,7 @@
 #include "evaluator/noise/range_noise.h"
 #include "evaluator/catalog/catalog.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 /// What a generic command adapter declares about one output file of the program.
 struct DeclaredOutput {
@@ -204,4 +204,4 @@ std::string OdometryModeOf(const SequenceSpec& sequence);
 /// odometry mode whose odometry noise is absent or zero. The worker checks the same on the data (OdometryIsReference).
 bool PlannedOdometryIsReference(const evaluator::CatalogEntry& entry, const NoiseSpec& noise);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -16,7 +16,7 @@
 #include "evaluator/trajectory/rpe.h"
 #include "evaluator/trajectory/segment_rpe.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline worker {
 
 namespace ev = slamsweep::evaluator;
 
@@ -256,4 +256,4 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
   return out;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline worker

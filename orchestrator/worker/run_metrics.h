@@ -15,7 +15,7 @@
 #include "orchestrator/run/flat_metric.h"
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline worker {
 
 /// Every metric of a run with its full specification.
 struct RunMetrics {
@@ -79,4 +79,4 @@ std::string SegmentRpeMetricName(std::string_view kind, double length_m);
 /// span than evaluation.min_coverage: its errors would be measured on the part it chose to keep.
 void RequireCoverage(const EvaluationOptions& evaluation, const RunMetrics& metrics);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline worker

@@ -12,7 +12,7 @@
 #include "evaluator/trajectory/alignment.h"
 #include "evaluator/trajectory/association.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 namespace {
 
 namespace fs = std::filesystem;
@@ -231,4 +231,4 @@ Html TrajectoriesSection(const SiteData& site, const SequenceModel& sequence, st
   return body;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

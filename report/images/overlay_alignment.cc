@@ -5,7 +5,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/trajectory/association.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 evaluator::Alignment InverseAlignment(const evaluator::Alignment& alignment) {
   evaluator::Alignment inverse;
@@ -39,4 +39,4 @@ ReferenceInMapFrame AlignReferenceOntoEstimate(const evaluator::Trajectory& refe
   }
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -18,7 +18,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline rosbag {
 namespace {
 
 constexpr const char* kTfTopic = "/tf";
@@ -216,4 +216,4 @@ BagMessages ReadBagMessages(const std::filesystem::path& path, const BagRequest&
   return messages;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline rosbag

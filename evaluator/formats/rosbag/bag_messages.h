@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline rosbag {
 
 /// The ROS message types the reader understands, as ROS names them.
 inline constexpr const char* kLaserScanType = "sensor_msgs/LaserScan";
@@ -98,4 +98,4 @@ BagSummary ReadBagSummary(const std::filesystem::path& bag);
 /// cannot be decoded.
 BagMessages ReadBagMessages(const std::filesystem::path& bag, const BagRequest& request);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline rosbag
