@@ -5,7 +5,7 @@
 #include <string>
 
 #include "evaluator/core/input_error.h"
-#include "evaluator/trajectory/interpolation.h"
+#include "evaluator/trajectory_metrics/interpolation.h"
 
 namespace slamsweep::evaluator::inline occupancy_mapping {
 

@@ -13,7 +13,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/pose.h"
 #include "evaluator/sequence/scan_overlay.h"
-#include "evaluator/trajectory/interpolation.h"
+#include "evaluator/trajectory_metrics/interpolation.h"
 
 namespace slamsweep::evaluator::inline sequence {
 namespace {

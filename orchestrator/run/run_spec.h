@@ -99,7 +99,7 @@ struct EvaluationOptions {
   /// the raw-grid profile, which depends on each program's canvas size.
   bool crop = true;
   /// A run whose trajectory spans less than this fraction of the reference's time span fails
-  /// (evaluator/trajectory/coverage.h): its errors would be measured on the part it chose to keep.
+  /// (evaluator/trajectory_metrics/coverage.h): its errors would be measured on the part it chose to keep.
   double min_coverage = 0.95;
   /// Segment lengths of the segment RPE (evaluator SegmentRpe), ascending. Absent ("auto"): 10, 20,
   /// 30, 40 and 50 % of the sequence's whole reference path rounded to 1 m, the same for every run

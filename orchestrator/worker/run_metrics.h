@@ -11,7 +11,7 @@
 #include "evaluator/core/relation.h"
 #include "evaluator/core/trajectory.h"
 #include "evaluator/formats/trajectory/segment_errors_csv.h"
-#include "evaluator/trajectory/coverage.h"
+#include "evaluator/trajectory_metrics/coverage.h"
 #include "orchestrator/run/flat_metric.h"
 #include "orchestrator/run/run_spec.h"
 

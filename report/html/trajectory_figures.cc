@@ -9,8 +9,8 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/trajectory/tum_format.h"
-#include "evaluator/trajectory/alignment.h"
-#include "evaluator/trajectory/association.h"
+#include "evaluator/trajectory_metrics/alignment.h"
+#include "evaluator/trajectory_metrics/association.h"
 
 namespace slamsweep::report::inline html {
 namespace {

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "evaluator/core/input_error.h"
-#include "evaluator/trajectory/association.h"
+#include "evaluator/trajectory_metrics/association.h"
 
 namespace slamsweep::report::inline images {
 

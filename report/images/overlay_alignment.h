@@ -4,7 +4,7 @@
 #include <string>
 
 #include "evaluator/core/trajectory.h"
-#include "evaluator/trajectory/alignment.h"
+#include "evaluator/trajectory_metrics/alignment.h"
 
 namespace slamsweep::report::inline images {
 

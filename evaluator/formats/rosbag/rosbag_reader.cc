@@ -10,7 +10,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/rosbag/bag_conversions.h"
 #include "evaluator/formats/rosbag/transform_tree.h"
-#include "evaluator/trajectory/interpolation.h"
+#include "evaluator/trajectory_metrics/interpolation.h"
 
 namespace slamsweep::evaluator::inline formats::inline rosbag {
 namespace {

@@ -3,7 +3,7 @@
 #include <iterator>
 #include <set>
 
-#include "evaluator/trajectory/interpolation.h"
+#include "evaluator/trajectory_metrics/interpolation.h"
 
 namespace slamsweep::evaluator::inline formats::inline rosbag {
 

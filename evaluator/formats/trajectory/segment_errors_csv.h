@@ -7,7 +7,7 @@
 
 namespace slamsweep::evaluator::inline formats::inline trajectory {
 
-/// One segment of a segment RPE (evaluator/trajectory/segment_rpe.h), as a run folder's
+/// One segment of a segment RPE (evaluator/trajectory_metrics/segment_rpe.h), as a run folder's
 /// rpe_segments.csv keeps it: the report pools these over the runs of a group for its boxplots.
 struct SegmentErrorRecord {
   double length_m = 0.0;
