@@ -8,9 +8,9 @@
 #include <cmath>
 #include <random>
 
-#include "evaluator/trajectory/ape.h"
-#include "evaluator/trajectory/association.h"
-#include "evaluator/trajectory/rpe.h"
+#include "evaluator/trajectory_metrics/ape.h"
+#include "evaluator/trajectory_metrics/association.h"
+#include "evaluator/trajectory_metrics/rpe.h"
 
 namespace slamsweep::evaluator {
 namespace {

@@ -13,9 +13,9 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/trajectory/relations_format.h"
 #include "evaluator/formats/trajectory/trajectory_file.h"
-#include "evaluator/trajectory/ape.h"
-#include "evaluator/trajectory/relations_metric.h"
-#include "evaluator/trajectory/rpe.h"
+#include "evaluator/trajectory_metrics/ape.h"
+#include "evaluator/trajectory_metrics/relations_metric.h"
+#include "evaluator/trajectory_metrics/rpe.h"
 
 namespace slamsweep::cli {
 namespace {

@@ -7,8 +7,8 @@
 
 #include "cli/text_table.h"
 #include "evaluator/core/input_error.h"
-#include "evaluator/trajectory/rpe.h"
-#include "evaluator/trajectory/segment_rpe.h"
+#include "evaluator/trajectory_metrics/rpe.h"
+#include "evaluator/trajectory_metrics/segment_rpe.h"
 
 namespace slamsweep::cli {
 

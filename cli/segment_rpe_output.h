@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "evaluator/core/trajectory.h"
-#include "evaluator/trajectory/association.h"
+#include "evaluator/trajectory_metrics/association.h"
 
 namespace slamsweep::cli {
 

@@ -5,7 +5,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline borders {
 
 BinaryGrid::BinaryGrid(int width_cells, int height_cells) : width(width_cells), height(height_cells) {
   if (width_cells < 0 || height_cells < 0) {
@@ -19,4 +19,4 @@ std::size_t BinaryGrid::Count(std::uint8_t value) const {
   return static_cast<std::size_t>(std::count(cells.begin(), cells.end(), value));
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline borders

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline borders {
 
 /// A cell of a BinaryGrid in the handout's coordinates: x = column, y = up.
 struct GridCell {
@@ -39,4 +39,4 @@ struct BinaryGrid {
   std::size_t Count(std::uint8_t value) const;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline borders

@@ -10,7 +10,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline borders {
 namespace {
 
 // Traces from a kObstacle cell (unchecked) and appends the border to `cells`. Returns false
@@ -144,4 +144,4 @@ long long TwiceSignedAreaCells2(const Border& border) {
   return sum;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline borders

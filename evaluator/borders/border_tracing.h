@@ -6,7 +6,7 @@
 
 #include "evaluator/borders/binary_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline borders {
 
 /// Neighbour directions of the handout, counter-clockwise from east (Y up):
 /// 0 = +X, 1 = +X+Y, 2 = +Y, 3 = -X+Y, 4 = -X, 5 = -X-Y, 6 = -Y, 7 = +X-Y.
@@ -51,4 +51,4 @@ BorderTracing TraceBorders(BinaryGrid grid);
 /// borders that enclose no area (one-cell-wide objects).
 long long TwiceSignedAreaCells2(const Border& border);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline borders

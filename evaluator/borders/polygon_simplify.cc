@@ -7,7 +7,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline borders {
 namespace {
 
 double SquaredDistance(const PlanarPoint& a, const PlanarPoint& b) {
@@ -138,4 +138,4 @@ std::vector<std::size_t> SimplifyClosedRing(std::span<const PlanarPoint> ring, d
   return {kept.begin(), kept.end()};
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline borders

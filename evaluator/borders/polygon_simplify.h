@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline borders {
 
 /// A point in the plane; the unit is the caller's (cells for traced borders).
 struct PlanarPoint {
@@ -45,4 +45,4 @@ class RingSimplifier {
   std::vector<std::size_t> kept_;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline borders

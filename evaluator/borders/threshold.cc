@@ -7,7 +7,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline borders {
 
 BinaryGrid Threshold(const OccupancyGrid& grid, double threshold) {
   if (!std::isfinite(threshold) || threshold < 0.0 || threshold > 100.0) {
@@ -36,4 +36,4 @@ BinaryGrid Threshold(const OccupancyGrid& grid, double threshold) {
   return binary;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline borders

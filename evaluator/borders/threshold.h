@@ -3,7 +3,7 @@
 #include "evaluator/borders/binary_grid.h"
 #include "evaluator/core/occupancy_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline borders {
 
 /// The thresholds the handout shows, on its 0..100 occupancy scale.
 inline constexpr double kAnyOccupancyThreshold = 0.0;    ///< > 0: every cell with any evidence.
@@ -18,4 +18,4 @@ inline constexpr double kHighOccupancyThreshold = 75.0;  ///< > 75: confident ob
 /// count is not width * height.
 BinaryGrid Threshold(const OccupancyGrid& grid, double threshold);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline borders

@@ -13,7 +13,7 @@
 #include "evaluator/borders/threshold.h"
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline borders {
 namespace {
 
 constexpr std::size_t kCoordinateBytes = 4;  // float32, as the handout counts
@@ -155,4 +155,4 @@ VectorMap Vectorize(const OccupancyGrid& grid, const VectorizeOptions& options) 
   return map;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline borders

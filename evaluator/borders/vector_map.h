@@ -6,7 +6,7 @@
 
 #include "evaluator/core/occupancy_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline borders {
 
 /// Options of Vectorize (handout steps 1-3). Defaults: the handout's strictest threshold and
 /// a one-cell simplification tolerance (removes the staircase of diagonal walls).
@@ -83,4 +83,4 @@ struct VectorMap {
 /// OccupancyGrid::CellCenterXM.
 VectorMap Vectorize(const OccupancyGrid& grid, const VectorizeOptions& options);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline borders

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline borders {
 namespace {
 
 const char* KindName(BorderKind kind) { return kind == BorderKind::kOuter ? "outer" : "hole"; }
@@ -99,4 +99,4 @@ void WriteSvg(const VectorMap& map, std::ostream& out) {
   out << "</g>\n</svg>\n";
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline borders

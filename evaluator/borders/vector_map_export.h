@@ -5,7 +5,7 @@
 
 #include "evaluator/borders/vector_map.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline borders {
 
 /// GeoJSON FeatureCollection with one feature per border, coordinates [x, y] in the map's
 /// world metres (a local frame, not WGS84 longitude/latitude) and a "bbox" of the grid.
@@ -25,4 +25,4 @@ void WriteGeoJson(const VectorMap& map, std::ostream& out);
 /// shortest form that reads back to the same double.
 void WriteSvg(const VectorMap& map, std::ostream& out);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline borders

@@ -12,7 +12,7 @@
 #include "evaluator/sequence/corrected_log_clock.h"
 #include "evaluator/simulation/simulated_sequence.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline catalog {
 namespace {
 
 constexpr std::string_view kFormats[] = {"carmen", "rawlog", "rosbag", "simulated"};
@@ -375,4 +375,4 @@ Sequence LoadCatalogSequence(const CatalogEntry& entry, const CatalogVariables& 
   return sequence;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline catalog

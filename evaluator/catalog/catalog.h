@@ -17,7 +17,7 @@ namespace YAML {
 class Node;
 }  // namespace YAML
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline catalog {
 
 /// How a catalog sequence can be scored.
 enum class GroundTruthKind {
@@ -124,4 +124,4 @@ std::filesystem::path ResolveCatalogPath(std::string_view path, const CatalogVar
 /// its options. A missing file is an InputError naming the entry, the path and the download hint.
 Sequence LoadCatalogSequence(const CatalogEntry& entry, const CatalogVariables& variables);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline catalog

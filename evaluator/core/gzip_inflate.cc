@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <memory>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 bool HasGzipMagic(std::string_view bytes) {
   return bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f &&
@@ -51,4 +51,4 @@ std::optional<std::string> InflateWholeGzip(std::string_view compressed) {
   return out;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 /// True when `bytes` starts with the gzip magic number.
 bool HasGzipMagic(std::string_view bytes);
@@ -18,4 +18,4 @@ bool HasGzipMagic(std::string_view bytes);
 /// inflate, and logs are read whole anyway; reading fr079 (2 MB gzip) is the budget that pays.
 std::optional<std::string> InflateWholeGzip(std::string_view compressed);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

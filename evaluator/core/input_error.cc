@@ -1,6 +1,6 @@
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 std::string Located(const std::filesystem::path& file, std::size_t line, std::string_view message) {
   std::string out = file.string();
@@ -13,4 +13,4 @@ std::string Located(const std::filesystem::path& file, std::size_t line, std::st
   return out;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

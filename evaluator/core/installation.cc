@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <system_error>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 namespace fs = std::filesystem;
 namespace {
 
@@ -73,4 +73,4 @@ std::string DescribeLibexecSearch() {
   return text + " (set SLAMSWEEP_LIBEXEC_DIR to choose the folder)";
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

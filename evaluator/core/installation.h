@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 /// The running program's file, symbolic links resolved: /proc/self/exe, else (a sandbox without /proc)
 /// the path it was started by (the auxiliary vector's AT_EXECFN) from the working folder it started in.
@@ -36,4 +36,4 @@ std::optional<std::filesystem::path> FindInstalledData(std::string_view relative
 /// message that reports a missing helper or module.
 std::string DescribeLibexecSearch();
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

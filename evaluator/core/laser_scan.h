@@ -5,7 +5,7 @@
 
 #include "evaluator/core/pose.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 /// One 2D laser scan. Beam i points at angle_min_rad + i * angle_increment_rad in the sensor
 /// frame (counter-clockwise, 0 = sensor +x). A range outside [range_min_m, range_max_m) is
@@ -28,4 +28,4 @@ struct LaserScan {
   bool IsHit(float range_m) const { return range_m >= range_min_m && range_m < range_max_m; }
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

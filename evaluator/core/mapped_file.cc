@@ -7,7 +7,7 @@
 
 #include <utility>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 namespace {
 
 /// Closes the descriptor when the opening is done (the mapping stays valid without it).
@@ -73,4 +73,4 @@ void MappedFile::Release() noexcept {
   size_ = 0;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 /// A whole file's bytes for parsing in place: a regular file is mapped read-only (no copy, no
 /// freshly cleared pages); a file the kernel cannot map (size 0 in /proc, for one) is read into
@@ -32,4 +32,4 @@ class MappedFile {
   std::string read_;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

@@ -4,7 +4,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 OccupancyGrid::OccupancyGrid(int width_cells, int height_cells, double resolution, GridOrigin grid_origin, float fill)
     : width(width_cells), height(height_cells), resolution_m(resolution), origin(grid_origin) {
@@ -16,4 +16,4 @@ OccupancyGrid::OccupancyGrid(int width_cells, int height_cells, double resolutio
   cells.assign(static_cast<std::size_t>(width_cells) * static_cast<std::size_t>(height_cells), fill);
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

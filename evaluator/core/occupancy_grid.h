@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 /// World pose of the lower-left corner of the grid (map_server's `origin`).
 struct GridOrigin {
@@ -40,4 +40,4 @@ struct OccupancyGrid {
   double CellCenterYM(int row) const { return origin.y_m + (height - 1 - row + 0.5) * resolution_m; }
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

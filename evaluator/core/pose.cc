@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 Pose Pose::Planar(double x_m, double y_m, double yaw_rad) {
   Pose pose;
@@ -65,4 +65,4 @@ double NormalizeAngleRad(double angle_rad) {
   return wrapped;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

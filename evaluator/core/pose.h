@@ -2,7 +2,7 @@
 
 #include <Eigen/Geometry>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 /// A rigid-body pose: position in metres and a unit quaternion. Planar (SE(2)) poses
 /// are the special case z = 0 with a rotation about +z; every metric works on the
@@ -35,4 +35,4 @@ double DegToRad(double deg);
 /// Wraps an angle to (-pi, pi].
 double NormalizeAngleRad(double angle_rad);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

@@ -4,7 +4,7 @@
 
 #include "evaluator/core/pose.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 /// One Kuemmerle et al. (2009) relation: the pose at t2_s expressed in the frame of the
 /// pose at t1_s, as measured on the reference (relations files: `t1 t2 x y z roll pitch yaw`).
@@ -16,4 +16,4 @@ struct Relation {
 
 using Relations = std::vector<Relation>;
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 MeanStd ComputeMeanStd(std::span<const double> values) {
   MeanStd out;
@@ -23,4 +23,4 @@ MeanStd ComputeMeanStd(std::span<const double> values) {
   return out;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

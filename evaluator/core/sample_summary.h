@@ -4,7 +4,7 @@
 #include <optional>
 #include <span>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 /// Mean and sample standard deviation of one metric over the iterations of one comparison group
 /// (the paper's "mean +- std"), as the report and summary.json/csv compute it. std uses n - 1 and
@@ -21,4 +21,4 @@ struct MeanStd {
 /// Mean, sample std (n - 1), min and max of `values`; n = 0 gives {n = 0}.
 MeanStd ComputeMeanStd(std::span<const double> values);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

@@ -6,7 +6,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 ErrorStatistics ComputeStatistics(std::span<const double> errors) {
   if (errors.empty()) throw InputError("no errors to summarise: the metric produced zero values");
@@ -55,4 +55,4 @@ void from_json(const nlohmann::json& in, ErrorStatistics& s) {
   in.at("n").get_to(s.n);
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

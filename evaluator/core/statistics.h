@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 /// Summary of one error vector, as evo reports it: std is the population standard
 /// deviation (ddof = 0) and the median of an even count is the mean of the middle two.
@@ -26,4 +26,4 @@ ErrorStatistics ComputeStatistics(std::span<const double> errors);
 void to_json(nlohmann::json& out, const ErrorStatistics& statistics);
 void from_json(const nlohmann::json& in, ErrorStatistics& statistics);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

@@ -14,7 +14,7 @@
 #include "evaluator/core/gzip_inflate.h"
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 namespace {
 
 std::string QuoteField(std::string_view text) {
@@ -174,4 +174,4 @@ std::string AsciiLowercase(std::string_view text) {
   return lower;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

@@ -11,7 +11,7 @@
 
 #include "evaluator/core/mapped_file.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 /// The text of a file, plain or gzip-compressed: a plain file's bytes stay where the kernel
 /// mapped them (parsers read them in place), a gzip file's are inflated into memory.
@@ -183,4 +183,4 @@ void ForEachRecord(const std::filesystem::path& file, std::string_view content, 
       comment_prefix);
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

@@ -6,7 +6,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 namespace {
 
 void CheckPose(double stamp_s, const Pose& pose, std::size_t index) {
@@ -103,4 +103,4 @@ std::string DescribeTimeRange(const Trajectory& trajectory) {
   return buffer;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

@@ -7,7 +7,7 @@
 
 #include "evaluator/core/pose.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline core {
 
 /// Timestamped poses in the order they were recorded. Invariant: as many stamps as
 /// poses, every stamp finite, every pose valid (checked by the constructor and Add,
@@ -47,4 +47,4 @@ class Trajectory {
 /// "[t0, t1] s (N poses)" for error messages.
 std::string DescribeTimeRange(const Trajectory& trajectory);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline core

@@ -16,7 +16,7 @@
 #include "evaluator/sequence/robot_log.h"
 #include "evaluator/sequence/sequence.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline format_modules {
 
 /// Raise when a call or a type passed below changes in a way the sizes do not show.
 inline constexpr int kFormatModuleVersion = 1;
@@ -72,7 +72,7 @@ struct RosbagModule {
   ModuleOutcome (*read)(const std::filesystem::path& path, const RosbagReadOptions& options, Sequence& sequence);
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline format_modules
 
 extern "C" {
 /// The entry points the loader looks up (dlsym) in each module.

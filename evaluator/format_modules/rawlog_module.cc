@@ -4,7 +4,7 @@
 #include "evaluator/formats/rawlog/rawlog_writer.h"
 #include "evaluator/format_modules/format_module.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline format_modules {
 namespace {
 
 ModuleOutcome Read(const std::filesystem::path& path, const RawlogReadOptions& options, Sequence& sequence) {
@@ -17,7 +17,7 @@ ModuleOutcome Write(const RobotLog& log, const std::filesystem::path& path, cons
 }
 
 }  // namespace
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline format_modules
 
 extern "C" __attribute__((visibility("default"))) const slamsweep::evaluator::RawlogModule* slamsweep_rawlog_module() {
   static const slamsweep::evaluator::RawlogModule module{.read = &slamsweep::evaluator::Read,

@@ -3,7 +3,7 @@
 #include "evaluator/formats/rosbag/rosbag_reader.h"
 #include "evaluator/format_modules/format_module.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline format_modules {
 namespace {
 
 ModuleOutcome Read(const std::filesystem::path& path, const RosbagReadOptions& options, Sequence& sequence) {
@@ -11,7 +11,7 @@ ModuleOutcome Read(const std::filesystem::path& path, const RosbagReadOptions& o
 }
 
 }  // namespace
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline format_modules
 
 extern "C" __attribute__((visibility("default"))) const slamsweep::evaluator::RosbagModule* slamsweep_rosbag_module() {
   static const slamsweep::evaluator::RosbagModule module{.read = &slamsweep::evaluator::Read};

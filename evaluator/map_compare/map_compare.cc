@@ -12,7 +12,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_compare {
 namespace {
 
 enum Cell : std::uint8_t { kUnknownCell = 0, kFreeCell = 1, kOccupiedCell = 2 };
@@ -460,4 +460,4 @@ nlohmann::json MapComparison::ToJson(const MapCompareOptions& options) const {
             {"distance", "exact Euclidean distance between occupied cells (separable distance transform)"}}}};
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_compare

@@ -6,7 +6,7 @@
 
 #include "evaluator/core/occupancy_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_compare {
 
 /// A rigid planar transform taking estimate-map world coordinates to reference-map ones.
 struct MapTransform {
@@ -54,4 +54,4 @@ struct MapComparison {
 MapComparison CompareMaps(const OccupancyGrid& estimate, const OccupancyGrid& reference,
                           const MapCompareOptions& options = {});
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_compare

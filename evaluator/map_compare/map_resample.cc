@@ -9,7 +9,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_compare {
 namespace {
 
 constexpr std::uint8_t kSeenFree = 1, kSeenOccupied = 2;
@@ -123,4 +123,4 @@ OccupancyGrid ResampleKeepingProbabilities(const OccupancyGrid& grid, double res
   return out;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_compare

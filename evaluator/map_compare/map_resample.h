@@ -3,7 +3,7 @@
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/map_compare/map_compare.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_compare {
 
 /// `grid` with every cell reduced to the class map comparison sees: occupied (p = 1), free (p = 0)
 /// or unknown, by the thresholds of `options`. Such a grid survives a trinary map file exactly.
@@ -27,4 +27,4 @@ OccupancyGrid ResampleToResolution(const OccupancyGrid& grid, double resolution_
 /// resolution (within 1e-9 relative) returns the grid unchanged. Throws InputError for resolution_m <= 0.
 OccupancyGrid ResampleKeepingProbabilities(const OccupancyGrid& grid, double resolution_m);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_compare

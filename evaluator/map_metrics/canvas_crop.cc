@@ -6,7 +6,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 CellWindow KnownCellsWindow(const OccupancyGrid& grid, int margin_cells) {
   if (margin_cells < 0) {
@@ -93,4 +93,4 @@ OccupancyGrid CropGrid(OccupancyGrid&& grid, const CellWindow& window) {
   return std::move(grid);
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -2,7 +2,7 @@
 
 #include "evaluator/core/occupancy_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 /// A rectangle of a grid in cells, in the grid's image order (row 0 = top row).
 struct CellWindow {
@@ -26,4 +26,4 @@ OccupancyGrid CropGrid(const OccupancyGrid& grid, const CellWindow& window);
 /// CropGrid of a grid that is no longer needed: the kept cells move up in place, without new memory.
 OccupancyGrid CropGrid(OccupancyGrid&& grid, const CellWindow& window);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -27,7 +27,7 @@
 // (as connectedComponentsWithStats' CC_STAT_AREA), not by contour area: only this reproduces the
 // reference counts exactly (fastslam_thirdparty 1051, telecom_icp 2681, telecom_rbpf 1125).
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 namespace {
 
 [[noreturn]] void FailOption(const std::string& name, double value, const std::string& expected) {
@@ -180,4 +180,4 @@ void to_json(nlohmann::json& out, const CornerCount& result) {
                        {"structure_cells", result.structure_cells}};
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -6,7 +6,7 @@
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/map_metrics/scorable_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 /// Paper profile, section III.B. Sizes are in cells; kernels are square.
 struct CornerCountOptions {
@@ -56,4 +56,4 @@ CornerCount ComputeCornerCount(ScorableGrid scorable, OccupancyGrid&& grid, cons
 void to_json(nlohmann::json& out, const CornerCountOptions& options);
 void to_json(nlohmann::json& out, const CornerCount& result);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -26,7 +26,7 @@
 // border following at a fraction of the cost. A test checks every step of the sweep against
 // cv::threshold and cv::findContours on the reference maps.
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 void Validate(const EnclosedAreasOptions& options) {
   auto fail = [](const std::string& name, std::int64_t value, const std::string& expected) {
@@ -132,4 +132,4 @@ void to_json(nlohmann::json& out, const EnclosedAreas& result) {
                        {"sweep", std::move(sweep)}};
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

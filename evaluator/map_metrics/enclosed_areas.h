@@ -7,7 +7,7 @@
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/map_metrics/scorable_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 /// Paper profile, section III.C. The 8-bit image is value = round(255 * (1 - p)) (free 255,
 /// occupied 0); unknown cells take the value u, swept over first_unknown_value,
@@ -56,4 +56,4 @@ void to_json(nlohmann::json& out, const EnclosedAreasOptions& options);
 /// The count with its details, including the whole sweep.
 void to_json(nlohmann::json& out, const EnclosedAreas& result);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

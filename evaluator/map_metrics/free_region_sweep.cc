@@ -6,7 +6,7 @@
 #include <memory>
 #include <utility>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 namespace {
 
 constexpr std::uint16_t kUnknownRank = 0xFFFF;
@@ -268,4 +268,4 @@ std::vector<std::int64_t> FreeRegionSweep::Count(bool unknown_free, std::int64_t
   return counts;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

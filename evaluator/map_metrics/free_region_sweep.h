@@ -6,7 +6,7 @@
 
 #include "evaluator/map_metrics/level_runs.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 /// Counts the enclosed free regions of a whole family of binarisations of one image at once.
 ///
@@ -57,4 +57,4 @@ class FreeRegionSweep {
   std::vector<std::size_t> known_adjacency_ends_;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -6,7 +6,7 @@
 #include <limits>
 #include <utility>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 namespace {
 
 struct Candidate {
@@ -154,4 +154,4 @@ std::vector<CornerCell> FindHarrisCorners(const cv::Mat& image, const HarrisSele
   return corners;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

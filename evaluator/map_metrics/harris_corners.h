@@ -6,7 +6,7 @@
 #include "evaluator/map_metrics/run_components.h"
 #include "evaluator/map_metrics/sparse_harris_response.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 /// The parameters of cv::goodFeaturesToTrack with the Harris detector, without a corner limit
 /// or a mask (the paper's corner count keeps every corner).
@@ -43,4 +43,4 @@ struct CornerCell {
 std::vector<CornerCell> FindHarrisCorners(const cv::Mat& image, const HarrisSelectionOptions& options,
                                           const RowRuns* nonzero = nullptr);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

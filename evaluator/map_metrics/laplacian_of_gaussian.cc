@@ -8,7 +8,7 @@
 
 #include "evaluator/map_metrics/zero_scan.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 namespace {
 
 // 64 rows of a 2000-cell map are 0.5 MB per float band: the remapped and blurred bands stay
@@ -104,4 +104,4 @@ LaplacianOfGaussianImage LaplacianOfGaussian(OccupancyGrid&& grid, const Laplaci
   return result;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

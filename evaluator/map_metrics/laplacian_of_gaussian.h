@@ -5,7 +5,7 @@
 
 #include "evaluator/core/occupancy_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 struct LaplacianOfGaussianOptions {
   int gaussian_kernel_cells = 5;  // odd
@@ -40,4 +40,4 @@ LaplacianOfGaussianImage LaplacianOfGaussian(const OccupancyGrid& grid, const La
 /// it reads, which the kernels' reach (less than a band) guarantees are the last ones it needs.
 LaplacianOfGaussianImage LaplacianOfGaussian(OccupancyGrid&& grid, const LaplacianOfGaussianOptions& options);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

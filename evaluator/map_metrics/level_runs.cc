@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <cstring>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 LevelRuns BuildLevelRuns(const OccupancyGrid& grid) {
   LevelRuns runs;
@@ -45,4 +45,4 @@ LevelRuns BuildLevelRuns(const OccupancyGrid& grid) {
   return runs;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -6,7 +6,7 @@
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/map_metrics/otsu.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 /// The map's 8-bit image, value = round(255 * (1 - p)) (free 255, occupied 0), with unknown
 /// cells kept apart, stored as runs of equal value row by row. A map is mostly long stretches
@@ -33,4 +33,4 @@ inline int ImageValue(float p) { return static_cast<int>(255.0 * (1.0 - static_c
 /// Builds the runs of a grid whose known cells hold probabilities in [0, 1] (ScorableGrid).
 LevelRuns BuildLevelRuns(const OccupancyGrid& grid);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

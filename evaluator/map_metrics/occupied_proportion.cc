@@ -7,7 +7,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 void Validate(const OccupiedProportionOptions& options) {
   if (!(options.unknown_occupancy >= 0.0 && options.unknown_occupancy <= 1.0)) {
@@ -77,4 +77,4 @@ void to_json(nlohmann::json& out, const OccupiedProportion& result) {
                        {"total_cells", result.total_cells}};
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -6,7 +6,7 @@
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/map_metrics/scorable_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 /// Paper profile, section III.A. The threshold itself has no parameter: it is the mean p.
 struct OccupiedProportionOptions {
@@ -42,4 +42,4 @@ void to_json(nlohmann::json& out, const OccupiedProportionOptions& options);
 /// The details (threshold and cell counts) next to the three ratios.
 void to_json(nlohmann::json& out, const OccupiedProportion& result);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cfloat>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 int OtsuThreshold(const Histogram256& histogram) {
   std::int64_t total = 0;
@@ -44,4 +44,4 @@ int OtsuThreshold(const Histogram256& histogram) {
   return best_value;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

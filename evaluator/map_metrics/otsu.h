@@ -3,7 +3,7 @@
 #include <array>
 #include <cstdint>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 /// Counts of an 8-bit image's values.
 using Histogram256 = std::array<std::int64_t, 256>;
@@ -16,4 +16,4 @@ using Histogram256 = std::array<std::int64_t, 256>;
 /// Returns 0 for an empty or single-valued histogram, as OpenCV does.
 int OtsuThreshold(const Histogram256& histogram);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 void to_json(nlohmann::json& out, const CanvasOptions& options) {
   out = nlohmann::json{{"crop", options.crop}, {"crop_margin_cells", options.crop_margin_cells}};
@@ -89,4 +89,4 @@ nlohmann::json PaperMetrics::ToJson() const {
       {"details", {{"occupied", occupied}, {"corners", corners}, {"enclosed", enclosed}}}};
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -9,7 +9,7 @@
 #include "evaluator/map_metrics/enclosed_areas.h"
 #include "evaluator/map_metrics/occupied_proportion.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 /// The canvas rule (spec/metrics.md): a program's canvas is arbitrary, so the metrics are computed
 /// on the known cells' bounding box grown by `crop_margin_cells`. `crop = false` is the raw-grid
@@ -61,4 +61,4 @@ PaperMetrics ComputePaperMetrics(const OccupancyGrid& grid, const PaperMetricsOp
 /// The same for a grid the caller gives up: it is cropped in place instead of copied.
 PaperMetrics ComputePaperMetrics(OccupancyGrid&& grid, const PaperMetricsOptions& options = {});
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -4,7 +4,7 @@
 #include <numeric>
 #include <utility>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 namespace {
 
 // Union-find over run indices with path halving; union by index keeps it simple and is fast
@@ -108,4 +108,4 @@ RunComponentLabels LabelRunComponents(const RowRuns& runs) {
   return labels;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 /// The foreground cells of a binary image stored as horizontal runs, row by row (compressed
 /// sparse rows). Maps are mostly long stretches of one value, so runs are far fewer than
@@ -58,4 +58,4 @@ struct RunComponentLabels {
 /// outer borders Suzuki-Abe border following traces. The runs must be complete: `height` rows.
 RunComponentLabels LabelRunComponents(const RowRuns& runs);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -13,7 +13,7 @@
 #include <emmintrin.h>
 #endif
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 namespace {
 
 [[noreturn]] void ThrowBadCell(const OccupancyGrid& grid, std::size_t index) {
@@ -99,4 +99,4 @@ ScorableGrid ScorableGrid::Check(const OccupancyGrid& grid) {
   return ScorableGrid(grid, known, (partial[0] + partial[1]) + (partial[2] + partial[3]));
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

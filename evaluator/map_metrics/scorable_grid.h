@@ -4,7 +4,7 @@
 
 #include "evaluator/core/occupancy_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 /// An occupancy grid that has been checked once for scoring, so that the map metrics can
 /// trust it without scanning it again: its cell vector matches width x height, every known
@@ -33,4 +33,4 @@ class ScorableGrid {
   double known_probability_sum_;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -7,7 +7,7 @@
 
 #include "evaluator/map_metrics/zero_scan.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 namespace {
 
 constexpr int kTileCells = 64;
@@ -181,4 +181,4 @@ void ForEachHarrisResponseBand(const cv::Mat& image, const HarrisResponseOptions
   }
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

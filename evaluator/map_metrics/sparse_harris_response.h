@@ -6,7 +6,7 @@
 
 #include "evaluator/map_metrics/run_components.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 /// Parameters of cv::cornerHarris.
 struct HarrisResponseOptions {
@@ -52,4 +52,4 @@ struct HarrisResponseBand {
 void ForEachHarrisResponseBand(const cv::Mat& image, const HarrisResponseOptions& options, const RowRuns* nonzero,
                                const std::function<void(const HarrisResponseBand&)>& visit);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -7,7 +7,7 @@
 
 #include "evaluator/map_metrics/run_components.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline map_metrics {
 
 // Scans of float images that are zero on most of their area (the structure images of the
 // corner count). They work on bit patterns, in loops without branches per pixel, which
@@ -78,4 +78,4 @@ inline void AppendNonZeroRuns(const float* pixels, int width, RowRuns& runs) {
   });
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline map_metrics

@@ -4,7 +4,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline noise {
 namespace {
 
 [[noreturn]] void FailType(const std::string& path, std::string_view expected, const nlohmann::json& value) {
@@ -91,4 +91,4 @@ void RequireNoiseField(const std::string& prefix, bool ok, const char* field, do
   }
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline noise

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline noise {
 
 /// Reads the fields of one JSON object of options strictly: a field of the wrong type is an
 /// InputError naming its full path ("odometry_noise.alpha1: expected a number, got \"x\""), a
@@ -41,4 +41,4 @@ class JsonFields {
   std::set<std::string, std::less<>> read_;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline noise

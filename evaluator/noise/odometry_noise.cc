@@ -7,7 +7,7 @@
 #include "evaluator/noise/json_fields.h"
 #include "evaluator/noise/random.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline noise {
 namespace {
 
 constexpr const char* kOdometryModelName = "odometry_motion_model";
@@ -150,4 +150,4 @@ Trajectory NoisyReadings(const Trajectory& readings, const Trajectory& clean_sca
   return out;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline noise

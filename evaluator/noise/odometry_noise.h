@@ -8,7 +8,7 @@
 #include "evaluator/core/pose.h"
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline noise {
 
 /// Noise of wheel odometry: the odometry motion model of Thrun, Burgard and Fox,
 /// "Probabilistic Robotics" (sample_motion_model_odometry), plus systematic errors that the
@@ -71,4 +71,4 @@ void to_json(nlohmann::json& out, const OdometryNoise& noise);
 OdometryNoise OdometryNoiseFromJson(const nlohmann::json& in, const std::string& path = "odometry_noise");
 void from_json(const nlohmann::json& in, OdometryNoise& noise);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline noise

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline noise {
 namespace {
 
 // SplitMix64 finaliser (Steele, Lea, Flood 2014): a bijection on 64-bit words with full
@@ -53,4 +53,4 @@ double StandardNormal(RandomEngine& engine) {
   return std::sqrt(-2.0 * std::log(radius_source)) * std::cos(2.0 * std::numbers::pi * angle_source);
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline noise

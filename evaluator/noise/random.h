@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <random>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline noise {
 
 /// Random numbers that are the same on every machine for the same seed.
 ///
@@ -66,4 +66,4 @@ class UniformIndexSampler {
 /// Bit-identical wherever std::log/std::sqrt/std::cos are (glibc on any x86-64 or arm64).
 double StandardNormal(RandomEngine& engine);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline noise

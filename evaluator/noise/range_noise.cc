@@ -7,7 +7,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/noise/json_fields.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline noise {
 namespace {
 
 constexpr const char* kRangeModelName = "range_noise";
@@ -93,4 +93,4 @@ RangeNoise RangeNoiseFromJson(const nlohmann::json& in, const std::string& path)
 
 void from_json(const nlohmann::json& in, RangeNoise& noise) { noise = RangeNoiseFromJson(in); }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline noise

@@ -10,7 +10,7 @@
 #include "evaluator/core/laser_scan.h"
 #include "evaluator/noise/random.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline noise {
 
 /// Noise of a laser range finder. Per beam, in this order of precedence:
 /// - a dropout (probability dropout_probability): no return, the range becomes range_max_m,
@@ -50,4 +50,4 @@ void to_json(nlohmann::json& out, const RangeNoise& noise);
 RangeNoise RangeNoiseFromJson(const nlohmann::json& in, const std::string& path = "range_noise");
 void from_json(const nlohmann::json& in, RangeNoise& noise);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline noise

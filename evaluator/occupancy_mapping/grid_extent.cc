@@ -5,7 +5,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline occupancy_mapping {
 
 GridExtent ExtentOf(const OccupancyGrid& grid) {
   GridExtent extent;
@@ -36,4 +36,4 @@ void to_json(nlohmann::json& out, const GridExtent& extent) {
                        {"height_cells", extent.height_cells}};
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline occupancy_mapping

@@ -4,7 +4,7 @@
 
 #include "evaluator/core/occupancy_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline occupancy_mapping {
 
 /// The part of the world a map covers: the lower-left corner (yaw 0) and the size in cells.
 /// Maps of several runs of one sequence built over the same extent and resolution are
@@ -28,4 +28,4 @@ void ValidateGridExtent(const GridExtent& extent, const char* what);
 
 void to_json(nlohmann::json& out, const GridExtent& extent);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline occupancy_mapping

@@ -6,7 +6,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline occupancy_mapping {
 namespace {
 
 // Cells store 2 * log-odds + 1 (log-odds in units of 1/kLogOddsScale), so every observed cell is
@@ -181,4 +181,4 @@ void LogOddsGrid::WriteChangedCells(OccupancyGrid& grid) {
   changed_row_max_ = -1;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline occupancy_mapping

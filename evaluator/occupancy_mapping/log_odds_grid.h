@@ -10,7 +10,7 @@
 #include "evaluator/occupancy_mapping/scan_beams.h"
 #include "evaluator/occupancy_mapping/scan_placement.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline occupancy_mapping {
 
 /// The working state of the occupancy mapper: one 16-bit log-odds value per cell (in units of
 /// 1/kLogOddsScale, with a flag for "observed") in a flat row-major array, row 0 = top as in OccupancyGrid, so that a
@@ -57,4 +57,4 @@ class LogOddsGrid {
   int changed_row_max_;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline occupancy_mapping

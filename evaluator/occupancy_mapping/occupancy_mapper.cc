@@ -9,7 +9,7 @@
 #include "evaluator/occupancy_mapping/log_odds_grid.h"
 #include "evaluator/occupancy_mapping/scan_beams.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline occupancy_mapping {
 namespace {
 
 struct Bounds {
@@ -131,4 +131,4 @@ std::vector<std::size_t> EvenlySpacedStages(std::size_t scan_count, std::size_t 
   return ends;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline occupancy_mapping

@@ -13,7 +13,7 @@
 #include "evaluator/occupancy_mapping/occupancy_mapper_options.h"
 #include "evaluator/occupancy_mapping/scan_placement.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline occupancy_mapping {
 
 /// A map rendered from scans placed along a trajectory, and how many scans it used.
 struct TrajectoryMap {
@@ -79,4 +79,4 @@ std::vector<std::size_t> StagesEveryKScans(std::size_t scan_count, std::size_t e
 /// when there are fewer scans than stages). Throws InputError when stage_count is 0.
 std::vector<std::size_t> EvenlySpacedStages(std::size_t scan_count, std::size_t stage_count);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline occupancy_mapping

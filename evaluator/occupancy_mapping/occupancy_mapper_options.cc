@@ -5,7 +5,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline occupancy_mapping {
 namespace {
 
 void Require(bool ok, const char* option, double value, const char* expected) {
@@ -57,4 +57,4 @@ void to_json(nlohmann::json& out, const OccupancyMapperOptions& options) {
   if (options.fixed_extent) out["fixed_extent"] = *options.fixed_extent;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline occupancy_mapping

@@ -6,7 +6,7 @@
 
 #include "evaluator/occupancy_mapping/grid_extent.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline occupancy_mapping {
 
 /// How scans are turned into an occupancy grid (log-odds mapping, Thrun et al. ch. 9).
 /// Every cell starts unknown at log-odds 0 (p = 0.5); a beam adds miss_log_odds to each cell
@@ -58,4 +58,4 @@ void ValidateMapperOptions(const OccupancyMapperOptions& options);
 /// The options as recorded beside a map rendered from a trajectory.
 void to_json(nlohmann::json& out, const OccupancyMapperOptions& options);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline occupancy_mapping

@@ -4,7 +4,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline occupancy_mapping {
 
 void ValidateScanGeometry(const LaserScan& scan, std::size_t scan_index) {
   const std::string where = "scan " + std::to_string(scan_index) + ": ";
@@ -41,4 +41,4 @@ void BeamDirections::Update(const LaserScan& scan) {
   }
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline occupancy_mapping

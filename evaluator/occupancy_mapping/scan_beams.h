@@ -7,7 +7,7 @@
 #include "evaluator/core/laser_scan.h"
 #include "evaluator/core/pose.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline occupancy_mapping {
 
 /// Throws InputError naming the scan's index unless its angles are finite, range_min_m is
 /// finite and >= 0 and range_max_m > range_min_m (range_max_m may be infinite).
@@ -55,4 +55,4 @@ class BeamDirections {
   std::vector<double> sin_;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline occupancy_mapping

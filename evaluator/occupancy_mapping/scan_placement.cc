@@ -5,9 +5,9 @@
 #include <string>
 
 #include "evaluator/core/input_error.h"
-#include "evaluator/trajectory/interpolation.h"
+#include "evaluator/trajectory_metrics/interpolation.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline occupancy_mapping {
 
 std::vector<PlacedScan> PlaceScans(std::span<const LaserScan> scans, std::span<const Pose> robot_poses) {
   if (scans.size() != robot_poses.size()) {
@@ -48,4 +48,4 @@ ScanPlacement PlaceScans(std::span<const LaserScan> scans, const Trajectory& tra
   return result;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline occupancy_mapping

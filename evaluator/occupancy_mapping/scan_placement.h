@@ -8,7 +8,7 @@
 #include "evaluator/core/pose.h"
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline occupancy_mapping {
 
 /// A scan and the robot pose it was taken from. Does not own the scan: the scans must outlive
 /// every PlacedScan that points at them.
@@ -34,4 +34,4 @@ std::vector<PlacedScan> PlaceScans(std::span<const LaserScan> scans, std::span<c
 /// in its span (naming both time ranges).
 ScanPlacement PlaceScans(std::span<const LaserScan> scans, const Trajectory& trajectory);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline occupancy_mapping

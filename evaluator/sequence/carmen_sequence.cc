@@ -16,7 +16,7 @@
 #include "evaluator/sequence/recorded_odometry.h"
 #include "evaluator/sequence/robot_log.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 namespace {
 
 constexpr std::string_view kFlaser = "FLASER";
@@ -416,4 +416,4 @@ Sequence ReadCarmenSequence(const std::filesystem::path& path, const CarmenSeque
   return CarmenLogToSequence(ReadCarmenLog(path), path, options);
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

@@ -9,7 +9,7 @@
 #include "evaluator/sequence/scan_stamps.h"
 #include "evaluator/sequence/sequence.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 /// How a CARMEN log becomes a Sequence. Every field has a default that reads the Radish /
 /// Freiburg "corrected" logs in shared/datasets.
@@ -84,4 +84,4 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
 /// ReadCarmenLog (plain or gzip) + CarmenLogToSequence.
 Sequence ReadCarmenSequence(const std::filesystem::path& path, const CarmenSequenceOptions& options = {});
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

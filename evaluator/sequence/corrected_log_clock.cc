@@ -6,7 +6,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 void TakeClockFromCorrectedLog(Sequence& sequence, Sequence corrected, std::size_t first_scan,
                                std::size_t first_reading, std::size_t every,
@@ -81,4 +81,4 @@ void TakeClockFromCorrectedLog(Sequence& sequence, Sequence corrected, std::size
   sequence.relations = std::move(corrected.relations);
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

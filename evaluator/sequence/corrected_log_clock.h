@@ -5,7 +5,7 @@
 
 #include "evaluator/sequence/sequence.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 /// Gives `sequence`, a log that keeps every `every`-th raw scan of a run, the clock of the run's
 /// corrected log `corrected` (read with recorded odometry, so that it has one reading per raw scan):
@@ -19,4 +19,4 @@ void TakeClockFromCorrectedLog(Sequence& sequence, Sequence corrected, std::size
                                std::size_t first_reading, std::size_t every,
                                const std::filesystem::path& corrected_source);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

@@ -5,7 +5,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 BeamFan FlaserBeamFan(std::size_t beam_count) {
   if (beam_count < 2) {
@@ -32,4 +32,4 @@ BeamFan FlaserBeamFan(std::size_t beam_count) {
   return fan;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

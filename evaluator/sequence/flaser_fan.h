@@ -2,7 +2,7 @@
 
 #include <cstddef>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 /// Beam directions of a scan in the sensor frame: beam i at angle_min_rad + i * angle_increment_rad.
 struct BeamFan {
@@ -20,4 +20,4 @@ struct BeamFan {
 /// known_layout = false. Throws InputError for n < 2 (no fan can be inferred).
 BeamFan FlaserBeamFan(std::size_t beam_count);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

@@ -7,7 +7,7 @@
 
 #include "evaluator/sequence/scan_overlay.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 namespace {
 
 /// A later hit farther than this from every earlier hit counts as this far (something newly seen).
@@ -75,4 +75,4 @@ ReversingRepair RestoreReversing(Trajectory& readings, std::span<const std::size
   return repair;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

@@ -7,7 +7,7 @@
 #include "evaluator/core/pose.h"
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 /// Which way two consecutive scans say the robot moved over an odometry step.
 enum class StepDirection { kUndecided, kAlong, kAgainst };
@@ -40,4 +40,4 @@ struct ReversingRepair {
 ReversingRepair RestoreReversing(Trajectory& readings, std::span<const std::size_t> scan_readings,
                                  std::span<const LaserScan> scans);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

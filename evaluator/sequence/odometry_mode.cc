@@ -4,7 +4,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 std::string_view OdometryModeName(OdometryMode mode) {
   return mode == OdometryMode::kRecorded ? "recorded" : "reference";
@@ -17,4 +17,4 @@ OdometryMode ParseOdometryMode(std::string_view text, std::string_view option) {
   throw InputError(fmt::format("{}: expected recorded or reference, got '{}'", option, text));
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

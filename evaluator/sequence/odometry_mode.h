@@ -2,7 +2,7 @@
 
 #include <string_view>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 /// Which odometry a SLAM program gets from a log whose logged poses are a SLAM result (the
 /// Radish/Freiburg "corrected" CARMEN logs).
@@ -20,4 +20,4 @@ std::string_view OdometryModeName(OdometryMode mode);
 /// Inverse of OdometryModeName; InputError naming `option` and the accepted values otherwise.
 OdometryMode ParseOdometryMode(std::string_view text, std::string_view option = "odometry");
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

@@ -6,7 +6,7 @@
 
 #include "evaluator/core/text_file.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 namespace {
 
 constexpr std::string_view kBlanks = " \t\r";
@@ -113,4 +113,4 @@ std::optional<Provenance> ReadProvenanceBeside(const std::filesystem::path& data
   return ParseProvenanceText(ReadTextFile(provenance_file), data_file.filename().string());
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

@@ -6,7 +6,7 @@
 
 #include "evaluator/sequence/sequence.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 /// The provenance of one data file, from a PROVENANCE.txt as kept beside each dataset in
 /// shared/datasets: blocks that start with `File: <name> ...`, holding `Key : value` lines whose
@@ -22,4 +22,4 @@ std::optional<Provenance> ParseProvenanceText(std::string_view content, std::str
 /// absent or says nothing about `data_file`. An unreadable PROVENANCE.txt is an InputError.
 std::optional<Provenance> ReadProvenanceBeside(const std::filesystem::path& data_file);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

@@ -10,7 +10,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 namespace {
 
 constexpr double kSamePoseM = 1e-6;
@@ -195,4 +195,4 @@ Trajectory ReadingsAtStamps(const Trajectory& readings, std::span<const double> 
   return out;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

@@ -11,7 +11,7 @@
 #include "evaluator/formats/trajectory/carmen_log.h"
 #include "evaluator/sequence/scan_stamps.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 /// The robot's wheel odometry as a corrected CARMEN log keeps it. Besides its laser records
 /// (keyframes, logged at the SLAM-corrected pose), such a log holds one ODOM "reading" per raw laser
@@ -64,4 +64,4 @@ Relations MapRelationsOntoReadings(Relations relations, const RecordedOdometry& 
 /// that is not.
 Trajectory ReadingsAtStamps(const Trajectory& readings, std::span<const double> stamps_s);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

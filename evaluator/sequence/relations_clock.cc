@@ -13,9 +13,9 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/pose.h"
 #include "evaluator/sequence/scan_overlay.h"
-#include "evaluator/trajectory/interpolation.h"
+#include "evaluator/trajectory_metrics/interpolation.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 namespace {
 
 /// The reading stamp nearest `stamp` in the sorted `readings`.
@@ -383,4 +383,4 @@ SearchedClockFit FitRelationsClockByScans(const Relations& relations, std::span<
   return halves.Fit(all.size(), "cm rms", [](double mean_square_m2) { return 100.0 * std::sqrt(mean_square_m2); });
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

@@ -11,7 +11,7 @@
 #include "evaluator/core/relation.h"
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 /// The map t_log = rate * t_relations + offset_s between a relations file's clock and a log's, fitted
 /// from time stamps alone: each relation stamp names a raw scan, whose time the log's reading stamps
@@ -97,4 +97,4 @@ SearchedClockFit FitRelationsClockByOdometry(const Relations& relations, const T
 SearchedClockFit FitRelationsClockByScans(const Relations& relations, std::span<const LaserScan> scans,
                                           const Trajectory& readings, double start_offset_s, double search_s = 0.5);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

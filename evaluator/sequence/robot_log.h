@@ -8,7 +8,7 @@
 #include "evaluator/core/trajectory.h"
 #include "evaluator/sequence/sequence.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 /// What a robot records, and so all that a SLAM program may read: the scans (each with its
 /// sensor's pose on the robot) and the odometry. It deliberately has no place for a reference
@@ -39,4 +39,4 @@ RobotLog TakeRobotLog(Sequence& sequence);
 /// As ValidateSequence, for the robot's part: throws InputError starting with the log's name.
 void ValidateRobotLog(const RobotLog& log);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

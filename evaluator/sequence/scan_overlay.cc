@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 std::vector<Eigen::Vector3d> HitsOnRobot(const LaserScan& scan) {
   const Eigen::Isometry3d mount = scan.sensor_pose_on_robot.ToIsometry();
@@ -61,4 +61,4 @@ double OverlayResidual(const ScanNeighbours& scan, const std::vector<Eigen::Vect
   return sum;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

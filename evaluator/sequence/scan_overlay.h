@@ -7,7 +7,7 @@
 
 #include "evaluator/core/laser_scan.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 /// The scan's hits in its robot frame.
 std::vector<Eigen::Vector3d> HitsOnRobot(const LaserScan& scan);
@@ -39,4 +39,4 @@ class ScanNeighbours {
 double OverlayResidual(const ScanNeighbours& scan, const std::vector<Eigen::Vector3d>& hits,
                        const Eigen::Isometry3d& placement);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

@@ -7,7 +7,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 namespace {
 
 std::vector<double> RecordOrder(std::size_t count, double period_s) {
@@ -88,4 +88,4 @@ ScanStamps ChooseScanStamps(std::span<const double> recorded_s, const StampOptio
   return result;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 /// How a reader turns the stamps recorded in a log into scan stamps, which must strictly increase.
 enum class StampPolicy {
@@ -61,4 +61,4 @@ struct ScanStamps {
 /// its file and line, which this function does not know. Pure. A non-finite stamp is an InputError.
 ScanStamps ChooseScanStamps(std::span<const double> recorded_s, const StampOptions& options);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

@@ -7,7 +7,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/sequence/robot_log.h"  // RobotLog shares the sequence invariant, checked here
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 namespace {
 
 [[noreturn]] void Fail(const std::string& name, const std::string& message) {
@@ -107,4 +107,4 @@ bool OdometryEqualsReference(const Sequence& sequence) {
   return true;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

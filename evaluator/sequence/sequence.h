@@ -9,7 +9,7 @@
 #include "evaluator/core/relation.h"
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence {
 
 /// Where a sequence comes from, carried into every report that uses it: public datasets must be
 /// cited, and their redistribution terms travel with them.
@@ -54,4 +54,4 @@ void ValidateSequence(const Sequence& sequence);
 /// equals the odometry pose there (within 1 um and 1 urad). A program given it is handed the answer.
 bool OdometryEqualsReference(const Sequence& sequence);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence

@@ -10,7 +10,7 @@
 
 #include "evaluator/core/installation.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence_io {
 namespace {
 
 constexpr std::string_view kMrptMissing =
@@ -129,4 +129,4 @@ void ThrowIfFailed(const ModuleOutcome& outcome) {
   }
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence_io

@@ -4,7 +4,7 @@
 
 #include "evaluator/format_modules/format_module.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence_io {
 
 /// The MRPT rawlog / ROS1 bag module, loaded (dlopen) on the first call and kept for the rest of
 /// the process. Throws InputError located at `file` (the file being read or written) when this
@@ -21,4 +21,4 @@ bool RosbagModuleAvailable();
 /// Throws what a module call reported: InputError for bad input, std::runtime_error otherwise.
 void ThrowIfFailed(const ModuleOutcome& outcome);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence_io

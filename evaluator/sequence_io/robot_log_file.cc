@@ -13,7 +13,7 @@
 #include "evaluator/sequence/flaser_fan.h"
 #include "evaluator/sequence_io/format_modules.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence_io {
 namespace {
 
 /// Beam geometry closer than this to CARMEN's inferred fan is that fan (the fans are computed in double).
@@ -149,4 +149,4 @@ void WriteRobotLog(const RobotLog& log, const std::filesystem::path& path, Seque
   }
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence_io

@@ -6,7 +6,7 @@
 
 #include "evaluator/sequence/robot_log.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence_io {
 
 /// The formats slamsweep writes for SLAM programs. Every one is written from a RobotLog, so it
 /// holds scans and odometry only, never a reference.
@@ -37,4 +37,4 @@ std::string FormatCarmenLog(const RobotLog& log);
 /// Throws InputError naming the path when it cannot be written, or when the build lacks MRPT for kRawlog.
 void WriteRobotLog(const RobotLog& log, const std::filesystem::path& path, SequenceWriteFormat format);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence_io

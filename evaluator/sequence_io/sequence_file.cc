@@ -12,7 +12,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/sequence_io/format_modules.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence_io {
 namespace {
 
 bool EndsWith(const std::string& text, std::string_view suffix) { return text.ends_with(suffix); }
@@ -136,4 +136,4 @@ Sequence ReadSequence(const std::filesystem::path& path, const SequenceReadOptio
   throw InputError(Located(path, 0, "unknown sequence format"));
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence_io

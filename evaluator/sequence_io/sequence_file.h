@@ -7,7 +7,7 @@
 #include "evaluator/sequence/carmen_sequence.h"
 #include "evaluator/sequence/sequence.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline sequence_io {
 
 /// The file formats a sequence is read from.
 enum class SequenceFormat {
@@ -50,4 +50,4 @@ SequenceFormat DetectSequenceFormat(const std::filesystem::path& path);
 /// InputError saying so ("ROS bag support not built ..."). Other errors as the format's reader.
 Sequence ReadSequence(const std::filesystem::path& path, const SequenceReadOptions& options = {});
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline sequence_io

@@ -8,7 +8,7 @@
 #include "evaluator/noise/json_fields.h"
 #include "evaluator/noise/random.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline simulation {
 namespace {
 
 constexpr float kWall = 1.0f;
@@ -266,4 +266,4 @@ FloorPlanOptions FloorPlanOptionsFromJson(const nlohmann::json& in, const std::s
   return o;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline simulation

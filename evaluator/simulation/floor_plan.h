@@ -9,7 +9,7 @@
 
 #include "evaluator/core/occupancy_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline simulation {
 
 /// Parameters of a generated office floor: a straight corridor with a row of rooms on each
 /// side, one door from every room to the corridor, some doors between neighbouring rooms, and
@@ -81,4 +81,4 @@ void to_json(nlohmann::json& out, const FloorPlanOptions& options);
 /// fields keep their defaults; the result is validated.
 FloorPlanOptions FloorPlanOptionsFromJson(const nlohmann::json& in, const std::string& path = "floor_plan");
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline simulation

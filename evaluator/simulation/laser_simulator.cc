@@ -8,7 +8,7 @@
 #include "evaluator/noise/json_fields.h"
 #include "evaluator/noise/range_noise.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline simulation {
 namespace {
 
 constexpr double kFullCircle = 2.0 * std::numbers::pi;
@@ -128,4 +128,4 @@ LaserOptions LaserOptionsFromJson(const nlohmann::json& in, const std::string& p
   return o;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline simulation

@@ -9,7 +9,7 @@
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/core/pose.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline simulation {
 
 /// A simulated planar laser scanner. Beams are spread evenly over fov_rad, centred on the
 /// sensor's +x axis; a full circle (fov_rad = 2 pi) has no duplicated beam at the seam.
@@ -42,4 +42,4 @@ void to_json(nlohmann::json& out, const LaserOptions& options);
 /// Strict reader (see JsonFields); the mounting is read as sensor_x_m, sensor_y_m, sensor_yaw_rad.
 LaserOptions LaserOptionsFromJson(const nlohmann::json& in, const std::string& path = "laser");
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline simulation

@@ -7,7 +7,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/noise/json_fields.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline simulation {
 namespace {
 
 constexpr double kMaxPoses = 1e7;
@@ -184,4 +184,4 @@ PathOptions PathOptionsFromJson(const nlohmann::json& in, const std::string& pat
   return o;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline simulation

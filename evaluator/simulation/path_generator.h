@@ -10,7 +10,7 @@
 #include "evaluator/core/trajectory.h"
 #include "evaluator/simulation/floor_plan.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline simulation {
 
 /// How the simulated robot moves along a polyline of waypoints: straight at speed_m_per_s;
 /// corners of at most max_arc_turn_rad are rounded with arcs of corner_radius_m (when the
@@ -43,4 +43,4 @@ void to_json(nlohmann::json& out, const PathOptions& options);
 /// Strict reader (see JsonFields); missing fields keep their defaults; validated.
 PathOptions PathOptionsFromJson(const nlohmann::json& in, const std::string& path = "path");
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline simulation

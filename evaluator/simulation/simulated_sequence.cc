@@ -4,7 +4,7 @@
 #include "evaluator/noise/json_fields.h"
 #include "evaluator/noise/random.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline simulation {
 namespace {
 
 constexpr const char* kGenerator = "slamsweep.simulation";
@@ -86,4 +86,4 @@ SimulationOptions SimulationOptionsFromJson(const nlohmann::json& in, const std:
   return options;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline simulation

@@ -15,7 +15,7 @@
 #include "evaluator/simulation/laser_simulator.h"
 #include "evaluator/simulation/path_generator.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline simulation {
 
 /// Everything that defines a simulated sequence. The floor plan has its own seed (the layout
 /// stays the same across noise iterations); noise_seed drives the range and odometry noise
@@ -54,4 +54,4 @@ void to_json(nlohmann::json& out, const SimulationOptions& options);
 /// misspelt option is an InputError naming it.
 SimulationOptions SimulationOptionsFromJson(const nlohmann::json& in, const std::string& path = "simulation");
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline simulation

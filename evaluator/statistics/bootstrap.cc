@@ -7,7 +7,7 @@
 
 #include "evaluator/noise/random.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline statistics {
 
 double InterpolatedQuantile(const std::vector<double>& sorted, double q) {
   const double position = std::clamp(q, 0.0, 1.0) * static_cast<double>(sorted.size() - 1);
@@ -183,4 +183,4 @@ std::optional<BootstrapInterval> BootstrapPooledRankCorrelation(const std::vecto
   return PercentileInterval(*replicates, options.confidence, options.min_defined_fraction);
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline statistics

@@ -7,7 +7,7 @@
 
 #include "evaluator/statistics/rank_correlation.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline statistics {
 
 /// How a bootstrap interval is drawn. The seed is fixed so that a report is reproducible: the
 /// same runs give the same interval on every machine (evaluator/noise/random.h draws the indices).
@@ -60,4 +60,4 @@ std::optional<BootstrapInterval> PercentileInterval(const BootstrapReplicates& r
 /// between order statistics: position q (n - 1).
 double InterpolatedQuantile(const std::vector<double>& sorted, double q);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline statistics

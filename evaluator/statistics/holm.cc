@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline statistics {
 
 std::vector<double> HolmAdjusted(std::span<const double> p_values) {
   const std::size_t m = p_values.size();
@@ -26,4 +26,4 @@ std::vector<double> BonferroniAdjusted(std::span<const double> p_values) {
   return adjusted;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline statistics

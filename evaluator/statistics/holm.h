@@ -3,7 +3,7 @@
 #include <span>
 #include <vector>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline statistics {
 
 /// Holm's step-down adjustment of p-values for a family of tests: the i-th smallest p is multiplied by the
 /// number of tests not yet rejected (m - i + 1), made monotone and capped at 1. Rejecting where the adjusted
@@ -14,4 +14,4 @@ std::vector<double> HolmAdjusted(std::span<const double> p_values);
 /// interval per test keeps the family's coverage at 1 - alpha).
 std::vector<double> BonferroniAdjusted(std::span<const double> p_values);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline statistics

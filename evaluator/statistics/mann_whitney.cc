@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline statistics {
 namespace {
 
 struct RankSums {
@@ -134,4 +134,4 @@ double CliffsDelta(std::span<const double> x, std::span<const double> y) {
   return dominance / (static_cast<double>(x.size()) * static_cast<double>(y.size()));
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline statistics

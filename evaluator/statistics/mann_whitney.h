@@ -4,7 +4,7 @@
 #include <span>
 #include <string_view>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline statistics {
 
 /// How the p-value of a Mann-Whitney U test was obtained.
 enum class MannWhitneyMethod {
@@ -51,4 +51,4 @@ double MannWhitneyMinimumOneSidedP(std::size_t n_x, std::size_t n_y);
 /// to be larger. 0 when either sample is empty.
 double CliffsDelta(std::span<const double> x, std::span<const double> y);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline statistics

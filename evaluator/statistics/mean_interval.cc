@@ -4,7 +4,7 @@
 
 #include <boost/math/distributions/students_t.hpp>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline statistics {
 
 std::optional<MeanInterval> StudentTInterval(std::span<const double> values, double confidence) {
   if (values.size() < 2) return std::nullopt;
@@ -20,4 +20,4 @@ std::optional<MeanInterval> StudentTInterval(std::span<const double> values, dou
   return MeanInterval{mean, mean - t * standard_error, mean + t * standard_error};
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline statistics

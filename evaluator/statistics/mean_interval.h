@@ -3,7 +3,7 @@
 #include <optional>
 #include <span>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline statistics {
 
 /// A confidence interval of a mean.
 struct MeanInterval {
@@ -16,4 +16,4 @@ struct MeanInterval {
 /// None with fewer than two values (no spread to estimate); a zero-width interval when every value is equal.
 std::optional<MeanInterval> StudentTInterval(std::span<const double> values, double confidence = 0.95);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline statistics

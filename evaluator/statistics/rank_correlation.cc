@@ -5,7 +5,7 @@
 #include <map>
 #include <numeric>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline statistics {
 
 std::vector<double> AverageRanks(std::span<const double> values) {
   std::vector<std::size_t> order(values.size());
@@ -85,4 +85,4 @@ std::optional<double> StratifiedSpearmanRho(std::span<const double> x, std::span
   return PooledRankCorrelation(GroupIntoStrata(x, y, strata));
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline statistics

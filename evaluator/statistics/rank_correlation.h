@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline statistics {
 
 /// The 1-based ranks of `values` in ascending order; tied values share the mean of the ranks they
 /// occupy ("average" or mid-ranks, as scipy.stats.rankdata's default). Values must be finite.
@@ -45,4 +45,4 @@ std::optional<double> PooledCorrelationOfRanks(const std::vector<std::vector<dou
 std::vector<PairedStratum> GroupIntoStrata(std::span<const double> x, std::span<const double> y,
                                            std::span<const std::size_t> strata);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline statistics

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <stdexcept>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline statistics {
 
 double SignTestPValue(std::size_t wins, std::size_t pairs) {
   if (wins == 0) return 1.0;
@@ -52,4 +52,4 @@ SignTestResult OneSidedSignTest(std::span<const double> candidate, std::span<con
   return result;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline statistics

@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <span>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline statistics {
 
 /// The one-sided sign test of paired samples: does `candidate` come out lower (better) than
 /// `baseline` more often than chance would have it? Pairs are (candidate[i], baseline[i]); a tie
@@ -26,4 +26,4 @@ double SignTestPValue(std::size_t wins, std::size_t pairs);
 /// when no count is enough (too few pairs for that level). 10 pairs at 0.05 need 9 wins.
 std::size_t SignTestWinsNeeded(std::size_t pairs, double alpha);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline statistics

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline statistics {
 namespace {
 
 // counts[w] = number of the 2^n sign assignments of ranks 1..n whose positive ranks sum to w.
@@ -73,4 +73,4 @@ WilcoxonResult WilcoxonSignedRank(std::span<const double> x, std::span<const dou
 
 double WilcoxonMinimumOneSidedP(std::size_t pairs) { return std::pow(0.5, static_cast<double>(pairs)); }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline statistics

@@ -5,7 +5,7 @@
 
 #include "evaluator/statistics/mann_whitney.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline statistics {
 
 /// The outcome of a Wilcoxon signed-rank test of pairs (x[i], y[i]).
 struct WilcoxonResult {
@@ -34,4 +34,4 @@ WilcoxonResult WilcoxonSignedRank(std::span<const double> x, std::span<const dou
 /// The smallest one-sided p-value n differing pairs can reach: 1 / 2^n (5 pairs: 1/32).
 double WilcoxonMinimumOneSidedP(std::size_t pairs);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline statistics

@@ -11,7 +11,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline validity {
 namespace {
 
 constexpr std::array<ValidityQuantity, 8> kCandidates = {{
@@ -379,4 +379,4 @@ ValidityStudy ValidityStudyFromJson(const nlohmann::json& json) {
   return study;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline validity

@@ -12,7 +12,7 @@
 
 #include "evaluator/statistics/bootstrap.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline validity {
 
 /// One run as the validity study reads it (from result.json, the store or the report's model).
 struct ValidityRun {
@@ -146,4 +146,4 @@ nlohmann::json ToJson(const ValidityStudy& study);
 /// InputError naming the field that is missing or of the wrong type.
 ValidityStudy ValidityStudyFromJson(const nlohmann::json& json);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline validity

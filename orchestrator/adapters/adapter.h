@@ -15,7 +15,7 @@
 #include "orchestrator/adapters/run_paths.h"
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// What to start for a run. The worker runs it with the run folder as working directory and
 /// stdin from /dev/null; never through a shell.
@@ -66,4 +66,4 @@ class Adapter {
 /// "odometry" or a roster algorithm (roster.h). Anything else is an InputError listing these.
 std::unique_ptr<Adapter> MakeAdapter(std::string_view name);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -8,7 +8,7 @@
 #include "orchestrator/adapters/program_identity.h"
 #include "orchestrator/adapters/roster_adapter.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 std::vector<std::filesystem::path> Adapter::ProgramReads(const RunSpec& /*spec*/) const { return {}; }
 
@@ -21,4 +21,4 @@ std::unique_ptr<Adapter> MakeAdapter(std::string_view name) {
   ThrowUnknownAdapter(name);
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -11,7 +11,7 @@
 #include "orchestrator/config/program_path.h"
 #include "orchestrator/process/process_set.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 namespace fs = std::filesystem;
 
@@ -157,4 +157,4 @@ std::vector<AlgorithmInfo> DescribeAlgorithms() {
   return all;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

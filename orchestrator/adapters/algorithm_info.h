@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// What `slamsweep algorithms` says about one adapter.
 struct AlgorithmInfo {
@@ -30,4 +30,4 @@ struct AlgorithmInfo {
 /// package version) without running any SLAM.
 std::vector<AlgorithmInfo> DescribeAlgorithms();
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

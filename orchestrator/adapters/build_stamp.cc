@@ -8,7 +8,7 @@
 #include "orchestrator/build_identity/file_digest.h"
 #include "orchestrator/build_identity/revision.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 void StampBuildIdentity(std::vector<RunSpec>& runs) {
   std::map<std::string, std::string> digests;
@@ -28,4 +28,4 @@ void StampBuildIdentity(std::vector<RunSpec>& runs) {
   }
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

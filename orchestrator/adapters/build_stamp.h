@@ -4,7 +4,7 @@
 
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// Fills every run's `build` (SlamsweepRevision() and the SHA-256 of each of its
 /// ProgramFilesOf) and `seeding` (SeedingOf; program_identity.h). Each file is read once however many runs
@@ -12,4 +12,4 @@ namespace slamsweep::orchestrator {
 /// a sweep whose program cannot run stops before any run starts.
 void StampBuildIdentity(std::vector<RunSpec>& runs);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

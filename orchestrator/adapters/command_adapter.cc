@@ -17,7 +17,7 @@
 #include "orchestrator/config/program_path.h"
 #include "orchestrator/matrix/seed_fold.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 namespace ev = slamsweep::evaluator;
 namespace fs = std::filesystem;
@@ -181,4 +181,4 @@ CollectedOutputs CommandAdapter::Collect(const RunSpec& spec, const ev::RobotLog
   return outputs;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

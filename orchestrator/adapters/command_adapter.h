@@ -7,7 +7,7 @@
 #include "orchestrator/adapters/adapter.h"
 #include "orchestrator/adapters/placeholder_expansion.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// A SLAM program run through its declared argv (run_spec.h CommandDeclaration). Prepare writes
 /// input/<seq>.<ext> in input_format and expands the argv. Collect reads the declared trajectory
@@ -21,4 +21,4 @@ class CommandAdapter : public Adapter {
   std::vector<std::filesystem::path> ProgramReads(const RunSpec& spec) const override;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -16,7 +16,7 @@
 #include "orchestrator/config/program_path.h"
 #include "orchestrator/matrix/seed_fold.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 namespace ev = slamsweep::evaluator;
 namespace fs = std::filesystem;
@@ -124,4 +124,4 @@ CollectedOutputs RbpfSlamAdapter::Collect(const RunSpec& spec, const ev::RobotLo
   return outputs;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

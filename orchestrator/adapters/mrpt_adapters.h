@@ -7,7 +7,7 @@
 #include "orchestrator/adapters/adapter.h"
 #include "orchestrator/adapters/mrpt_settings.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// MRPT's icp-slam: `icp-slam ../input/icp-slam.ini` (run in raw/), deterministic: ICP has no random draw. Outputs:
 /// raw/_finalmaps_.txt_mrpt__maps__ COccupancyGridMap2D_00.png (+ _limits.txt) and raw/log_estimated_path.txt ("step x
@@ -38,4 +38,4 @@ class RbpfSlamAdapter : public Adapter {
   std::filesystem::path template_path_;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

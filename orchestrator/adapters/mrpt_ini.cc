@@ -7,7 +7,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 namespace {
 
@@ -132,4 +132,4 @@ std::string RenderIni(std::string_view template_text, std::span<const IniSetting
   return out;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

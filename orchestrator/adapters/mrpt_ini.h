@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// One `key=value` line of an MRPT .ini file, in `[section]`.
 struct IniSetting {
@@ -33,4 +33,4 @@ std::vector<IniSetting> IniSettingsFromParameters(const nlohmann::json& paramete
 /// settings win. Comment lines (#, ;, //) and all other lines are kept as they are.
 std::string RenderIni(std::string_view template_text, std::span<const IniSetting> settings);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -6,7 +6,7 @@
 #include "evaluator/core/input_error.h"
 #include "orchestrator/matrix/seed_fold.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 namespace ev = slamsweep::evaluator;
 
@@ -92,4 +92,4 @@ std::vector<IniSetting> RbpfSlamSettings(const RunSpec& spec, const std::string&
   return Compose(defaults, spec.algorithm.parameters, controlled);
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -8,7 +8,7 @@
 #include "orchestrator/adapters/mrpt_ini.h"
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// The configuration templates shipped with Debian's mrpt-apps.
 inline constexpr const char* kIcpSlamTemplate =
@@ -44,4 +44,4 @@ std::vector<IniSetting> RbpfSlamSettings(const RunSpec& spec, const std::string&
 /// A file of the run's input/ folder as the program sees it: it runs in raw/, its input is beside it.
 std::string FromRawDir(const std::string& input_file);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

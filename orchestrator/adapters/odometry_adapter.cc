@@ -6,7 +6,7 @@
 #include "evaluator/core/input_error.h"
 #include "orchestrator/adapters/rendered_map.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 PreparedRun OdometryAdapter::Prepare(const RunSpec& spec, const evaluator::RobotLog& /*robot*/,
                                      const RunPaths& /*paths*/) const {
@@ -28,4 +28,4 @@ CollectedOutputs OdometryAdapter::Collect(const RunSpec& spec, const evaluator::
   return outputs;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -2,7 +2,7 @@
 
 #include "orchestrator/adapters/adapter.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// The baseline every SLAM benchmark shows: no program, the trajectory is the run's (noisy)
 /// odometry and the map is rendered from it with the scans. A SLAM program that scores worse
@@ -13,4 +13,4 @@ class OdometryAdapter : public Adapter {
   CollectedOutputs Collect(const RunSpec& spec, const evaluator::RobotLog& robot, const RunPaths& paths) const override;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -11,7 +11,7 @@
 #include "evaluator/formats/map/map_file.h"
 #include "orchestrator/run/run_failure.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 namespace ev = slamsweep::evaluator;
 namespace fs = std::filesystem;
@@ -103,4 +103,4 @@ std::vector<double> ScanStamps(std::span<const ev::LaserScan> scans) {
   return stamps;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

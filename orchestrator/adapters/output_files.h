@@ -15,7 +15,7 @@
 #include "evaluator/formats/trajectory/trajectory_file.h"
 #include "orchestrator/adapters/run_paths.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// `file` relative to the run folder when it lies inside it ("raw/map.yaml"), for reasons that
 /// stay readable and do not depend on where the output directory is.
@@ -47,4 +47,4 @@ std::string SafeFileStem(std::string_view name);
 /// The scan stamps: step k of an MRPT path is the k-th action/sensory-frame pair, i.e. scan k.
 std::vector<double> ScanStamps(std::span<const evaluator::LaserScan> scans);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

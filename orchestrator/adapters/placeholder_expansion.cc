@@ -6,7 +6,7 @@
 #include "orchestrator/adapters/mrpt_ini.h"
 #include "orchestrator/config/placeholders.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 namespace ev = slamsweep::evaluator;
 
@@ -65,4 +65,4 @@ std::string InputExtension(std::string_view input_format) {
                        std::string(input_format) + "'");
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// What the placeholders of a command declaration stand for in one run.
 struct PlaceholderValues {
@@ -27,4 +27,4 @@ std::string ExpandPlaceholders(std::string_view text, const PlaceholderValues& v
 /// The file extension of a written input format: "rawlog" -> ".rawlog", "carmen" -> ".log", "tum" -> ".tum".
 std::string InputExtension(std::string_view input_format);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

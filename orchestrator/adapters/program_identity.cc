@@ -9,7 +9,7 @@
 #include "orchestrator/config/placeholders.h"
 #include "orchestrator/config/program_path.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 namespace ev = slamsweep::evaluator;
 namespace fs = std::filesystem;
@@ -81,4 +81,4 @@ void ThrowUnknownAdapter(std::string_view name) {
       std::string(name) + "'");
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -8,7 +8,7 @@
 
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// The files a run of `algorithm` executes or reads as its program's configuration (binary,
 /// wrapper script, configuration template), found as the worker will find them: their digests
@@ -22,4 +22,4 @@ Seeding SeedingOf(const AlgorithmSpec& algorithm);
 /// The InputError for an adapter name no adapter has, listing the known ones.
 [[noreturn]] void ThrowUnknownAdapter(std::string_view name);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -4,7 +4,7 @@
 #include "evaluator/occupancy_mapping/scan_placement.h"
 #include "orchestrator/adapters/stage_image.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 namespace ev = slamsweep::evaluator;
 
@@ -35,4 +35,4 @@ RenderedMap RenderMapFromTrajectory(std::span<const ev::LaserScan> scans, const 
   return rendered;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

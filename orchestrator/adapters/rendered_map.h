@@ -12,7 +12,7 @@
 #include "evaluator/occupancy_mapping/occupancy_mapper_options.h"
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// A map built from the run's scans placed along a trajectory (evaluator/mapping), for programs
 /// that write no map or no stage maps, and for the odometry baseline.
@@ -34,4 +34,4 @@ evaluator::OccupancyMapperOptions RenderMapperOptions(const EvaluationOptions& e
 RenderedMap RenderMapFromTrajectory(std::span<const evaluator::LaserScan> scans,
                                     const evaluator::Trajectory& trajectory, const EvaluationOptions& evaluation);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

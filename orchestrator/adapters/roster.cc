@@ -10,7 +10,7 @@
 #include "evaluator/core/installation.h"
 #include "orchestrator/config/program_path.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 namespace fs = std::filesystem;
 
@@ -144,4 +144,4 @@ std::optional<nlohmann::json> ReadRosterManifest(const RosterAlgorithm& algorith
   }
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

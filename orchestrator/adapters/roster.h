@@ -11,7 +11,7 @@
 
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// One algorithm of the paper's roster: a driver program slamsweep-slam-<name> (slam/<name>/) built
 /// against an upstream that scripts/install-slam.sh installed (recipe scripts/slam/<upstream>.sh).
@@ -66,4 +66,4 @@ std::filesystem::path RosterManifestPath(const RosterAlgorithm& algorithm);
 /// is an InputError naming it.
 std::optional<nlohmann::json> ReadRosterManifest(const RosterAlgorithm& algorithm);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -5,7 +5,7 @@
 #include "orchestrator/adapters/output_files.h"
 #include "orchestrator/adapters/stage_image.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 namespace ev = slamsweep::evaluator;
 namespace fs = std::filesystem;
@@ -56,4 +56,4 @@ CollectedOutputs RosterAdapter::Collect(const RunSpec& spec, const ev::RobotLog&
   return outputs;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -3,7 +3,7 @@
 #include "orchestrator/adapters/adapter.h"
 #include "orchestrator/adapters/roster.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// A roster algorithm run through its driver (slam/README.md, "Driver contract"), from raw/:
 ///   slamsweep-slam-<name> --input ../input/<seq>.log --output-dir . --seed <seed>
@@ -28,4 +28,4 @@ class RosterAdapter : public Adapter {
 /// numbers in JSON's shortest exact form.
 std::string RosterParameterText(const nlohmann::json& value);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -11,7 +11,7 @@
 #include "evaluator/noise/range_noise.h"
 #include "evaluator/catalog/catalog.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 namespace ev = slamsweep::evaluator;
 
@@ -95,4 +95,4 @@ RunInputs PrepareRunInputs(const RunSpec& spec) {
   return inputs;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

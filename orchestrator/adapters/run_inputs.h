@@ -14,7 +14,7 @@
 #include "evaluator/sequence/sequence.h"
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// What a run is scored against. Only the worker holds it: adapters get the RobotLog alone, and
 /// the worker writes none of it into the run folder before the program has exited.
@@ -62,4 +62,4 @@ bool OdometryIsReference(const evaluator::Sequence& sequence);
 /// InputError naming the sequence or the field.
 RunInputs PrepareRunInputs(const RunSpec& spec);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// The fixed layout of one run folder (orchestrator/DESIGN.md, "Output directory"). Adapters and
 /// the worker name files only through it, so the layout is written down once.
@@ -32,4 +32,4 @@ struct RunPaths {
   std::filesystem::path ResultJson() const { return root / "result.json"; }
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -10,7 +10,7 @@
 #include <emmintrin.h>
 #endif
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 namespace {
 
@@ -83,4 +83,4 @@ cv::Mat StageImage(const evaluator::OccupancyGrid& grid) {
   return image;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

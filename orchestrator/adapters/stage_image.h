@@ -4,7 +4,7 @@
 
 #include "evaluator/core/occupancy_grid.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline adapters {
 
 /// Grey levels of stage images (orchestrator/DESIGN.md), the map_saver convention.
 inline constexpr int kStageOccupied = 0;
@@ -16,4 +16,4 @@ inline constexpr int kStageUnknown = 205;
 /// Trinary keeps stage frames comparable whatever grey scale the program used.
 cv::Mat StageImage(const evaluator::OccupancyGrid& grid);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline adapters

@@ -9,7 +9,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline build_identity {
 namespace {
 
 struct DigestContextFree {
@@ -58,4 +58,4 @@ std::string Sha256OfFile(const std::filesystem::path& file) {
   return FinishHex(context.get());
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline build_identity

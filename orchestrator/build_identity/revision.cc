@@ -2,8 +2,8 @@
 
 #include "slamsweep_revision.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline build_identity {
 
 std::string_view SlamsweepRevision() { return SLAMSWEEP_REVISION; }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline build_identity

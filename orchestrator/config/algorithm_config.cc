@@ -13,7 +13,7 @@
 #include "orchestrator/config/program_path.h"
 #include "orchestrator/config/yaml_fields.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 namespace {
 
 constexpr std::string_view kAdapters[] = {"mrpt-icp-slam", "mrpt-rbpf-slam", "command", "odometry",    "gmapping",
@@ -228,4 +228,4 @@ AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YA
   return algorithm;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

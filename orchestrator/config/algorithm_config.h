@@ -7,7 +7,7 @@
 
 #include "orchestrator/config/sweep_config.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 
 /// One entry of `algorithms:` (see sweep_config.h). `path` names it in messages ("algorithms[2]").
 /// Checks the adapter name, parameter values (scalars or non-empty lists of scalars), and for the
@@ -16,4 +16,4 @@ namespace slamsweep::orchestrator {
 AlgorithmConfig ParseAlgorithmConfig(const std::filesystem::path& file, const YAML::Node& node, const std::string& path,
                                      const InputPolicy& policy = {});
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

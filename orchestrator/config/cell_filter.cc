@@ -6,7 +6,7 @@
 
 #include "orchestrator/config/yaml_fields.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 namespace {
 
 template <typename Item, typename NameOf>
@@ -78,4 +78,4 @@ std::vector<CellFilter> ParseCellFilters(const std::filesystem::path& file, cons
   return filters;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

@@ -8,7 +8,7 @@
 
 #include "orchestrator/config/sweep_config.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 
 /// The `exclude:` or `include:` list (`key`) of a sweep whose algorithms, sequences and noise are already
 /// parsed into `config`. Every name must exist, and every parameter must be declared by the named
@@ -17,4 +17,4 @@ namespace slamsweep::orchestrator {
 std::vector<CellFilter> ParseCellFilters(const std::filesystem::path& file, const YAML::Node& node,
                                          std::string_view key, const SweepConfig& config, bool is_include);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

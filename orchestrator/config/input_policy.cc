@@ -6,7 +6,7 @@
 
 #include "orchestrator/config/yaml_fields.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 namespace {
 
 /// The path as the kernel will see it: absolute, ".." folded, every existing symbolic link followed.
@@ -45,4 +45,4 @@ void RequireAllowedPath(const InputPolicy& policy, const std::filesystem::path& 
                                           field, what, path.string())));
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

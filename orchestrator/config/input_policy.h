@@ -8,7 +8,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 
 /// What a sweep file may use when it comes from someone the operator does not fully trust (a sweep
 /// submitted to `slamsweep serve`). The default trusts the file, as `slamsweep run` does.
@@ -38,4 +38,4 @@ bool IsAllowedPath(const InputPolicy& policy, const std::filesystem::path& path)
 void RequireAllowedPath(const InputPolicy& policy, const std::filesystem::path& file, const YAML::Node& node,
                         std::string_view field, std::string_view what, const std::filesystem::path& path);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

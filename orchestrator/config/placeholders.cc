@@ -6,7 +6,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 
 std::vector<TemplatePiece> ParseTemplate(std::string_view text) {
   std::vector<TemplatePiece> pieces;
@@ -60,4 +60,4 @@ void CheckPlaceholderName(std::string_view name, std::span<const std::string> pa
   throw evaluator::InputError(fmt::format("unknown placeholder {{{}}}; accepted: {}", name, AcceptedPlaceholders()));
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 
 /// The placeholders of a command declaration's argv and output paths (besides {param:NAME}):
 /// {input} the program's input file, {input_dir} the folder holding it, {output_dir} the program's
@@ -34,4 +34,4 @@ void CheckPlaceholderName(std::string_view name, std::span<const std::string> pa
 /// "{input}, {input_dir}, ..., {param:NAME}, {{, }}": what a template accepts, for messages.
 std::string AcceptedPlaceholders();
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

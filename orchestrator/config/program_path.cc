@@ -7,7 +7,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 namespace {
 
 bool IsExecutableFile(const std::filesystem::path& path) {
@@ -49,4 +49,4 @@ std::filesystem::path ResolveProgram(std::string_view program, const std::filesy
   return path;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string_view>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 
 /// The file a program name stands for, as execvp would find it: a name without '/' is looked up in
 /// PATH; a path with a '/' is taken as is when absolute, else relative to `base_dir`. Returns the
@@ -11,4 +11,4 @@ namespace slamsweep::orchestrator {
 /// PATH's folders; no such file; not a regular file; not executable).
 std::filesystem::path ResolveProgram(std::string_view program, const std::filesystem::path& base_dir);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

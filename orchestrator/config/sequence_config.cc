@@ -5,7 +5,7 @@
 #include "evaluator/core/input_error.h"
 #include "orchestrator/config/yaml_fields.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 namespace {
 
 const evaluator::CatalogEntry& LookUp(const std::filesystem::path& file, const YAML::Node& node,
@@ -121,4 +121,4 @@ SequenceSpec ParseSequenceConfig(const std::filesystem::path& file, YAML::Node n
   return spec;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

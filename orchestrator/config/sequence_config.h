@@ -9,7 +9,7 @@
 #include "orchestrator/config/input_policy.h"
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 
 /// One entry of a sweep's `sequences:`: a catalog name, {catalog: NAME, name: NEW, max_scans: N}, or an
 /// inline catalog entry (plus max_scans). Paths come back resolved (${VARIABLES} replaced, relative
@@ -20,4 +20,4 @@ SequenceSpec ParseSequenceConfig(const std::filesystem::path& file, YAML::Node n
                                  const evaluator::Catalog& catalog, const evaluator::CatalogVariables& variables,
                                  const InputPolicy& policy = {});
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

@@ -14,7 +14,7 @@
 #include "orchestrator/run/spec_checks.h"
 #include "orchestrator/config/yaml_fields.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 namespace {
 
 using evaluator::InputError;
@@ -284,4 +284,4 @@ SweepConfig ReadSweepConfig(const std::filesystem::path& file, const SweepConfig
   return ParseSweepConfig(evaluator::ReadTextFile(file), file, context);
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

@@ -16,7 +16,7 @@
 #include "orchestrator/config/input_policy.h"
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 
 /// One swept parameter: its values in the order written (a scalar in the file is a list of one).
 struct ParameterAxis {
@@ -112,4 +112,4 @@ SweepConfig ReadSweepConfig(const std::filesystem::path& file, const SweepConfig
 SweepConfig ParseSweepConfig(std::string_view yaml_text, const std::filesystem::path& file,
                              const SweepConfigContext& context);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

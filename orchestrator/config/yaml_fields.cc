@@ -7,7 +7,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 namespace {
 
 bool IsQuoted(const YAML::Node& node) { return node.Tag() == "!"; }
@@ -151,4 +151,4 @@ void YamlFields::Finish() const {
   }
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline config {
 
 /// "FILE:LINE:COLUMN: message" at `node` (yaml-cpp counts from 0, editors from 1).
 std::string LocatedAt(const std::filesystem::path& file, const YAML::Node& node, std::string_view message);
@@ -58,4 +58,4 @@ class YamlFields {
   std::set<std::string, std::less<>> known_;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline config

@@ -11,7 +11,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline files {
 namespace {
 
 [[noreturn]] void Fail(const std::filesystem::path& file, const char* doing, int error) {
@@ -58,4 +58,4 @@ void WriteFileAtomically(const std::filesystem::path& file, std::string_view con
   }
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline files

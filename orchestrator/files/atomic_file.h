@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string_view>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline files {
 
 /// Replaces `file` with `content` so that a reader (or a crash) sees either the old or the new file,
 /// never a half-written one: writes a temporary file beside it, fsyncs it, renames it over `file`
@@ -11,4 +11,4 @@ namespace slamsweep::orchestrator {
 /// Throws InputError naming the file and the system error when it cannot be written.
 void WriteFileAtomically(const std::filesystem::path& file, std::string_view content);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline files

@@ -6,7 +6,7 @@
 
 #include "orchestrator/history/series_odometry.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline history {
 namespace {
 
 constexpr const char* kNightsTable = R"sql(
@@ -88,4 +88,4 @@ void CreateOrMigrateHistorySchema(SqliteDb& db, std::int64_t from_version) {
   db.Execute(fmt::format("PRAGMA user_version = {}", kHistorySchemaVersion));
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline history

@@ -4,7 +4,7 @@
 
 #include "orchestrator/store/sqlite_db.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline history {
 
 /// The history schema version this build writes (PRAGMA user_version). Version 2 keys every series by its
 /// odometry mode as well (samples.odometry, cells.odometry).
@@ -19,4 +19,4 @@ inline constexpr std::int64_t kHistoryApplicationId = 0x534C4853;  // "SLHS"
 /// guessed "recorded".
 void CreateOrMigrateHistorySchema(SqliteDb& db, std::int64_t from_version);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline history

@@ -11,7 +11,7 @@
 #include "orchestrator/history/series_odometry.h"
 #include "orchestrator/store/results_store.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline history {
 namespace {
 
 /// The comparable odometry modes of a night's series ("recorded", "reference").
@@ -271,4 +271,4 @@ std::optional<NightEntry> PreviousNight(const HistoryStore& store, const Night& 
   return std::nullopt;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline history

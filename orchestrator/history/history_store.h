@@ -10,7 +10,7 @@
 #include "orchestrator/history/night.h"
 #include "orchestrator/store/sqlite_db.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline history {
 
 /// A night without its samples (the history's table of contents).
 struct NightEntry {
@@ -82,4 +82,4 @@ class HistoryStore {
 /// would leave every series "not comparable"); none when there is no such night.
 std::optional<NightEntry> PreviousNight(const HistoryStore& store, const Night& current);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline history

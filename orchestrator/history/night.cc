@@ -12,7 +12,7 @@
 #include "orchestrator/run/run_json.h"
 #include "orchestrator/store/results_store.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline history {
 namespace {
 
 /// Orders a night's series: algorithm, sequence, noise, odometry, metric, statistic.
@@ -104,4 +104,4 @@ const SampleSeries* FindSeries(const Night& night, const SeriesKey& key) {
   return it == night.series.end() ? nullptr : &*it;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline history

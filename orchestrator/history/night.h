@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline history {
 
 /// The identity of a series across nights: algorithm (with its parameters) x sequence x noise x odometry mode x
 /// metric x statistic (and the unit its values carry): a comparison group and one of its metrics.
@@ -75,4 +75,4 @@ Night ReadNight(const std::filesystem::path& result_dir, const std::string& labe
 /// The series of `night` with this key (SameSeries), or null.
 const SampleSeries* FindSeries(const Night& night, const SeriesKey& key);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline history

@@ -12,7 +12,7 @@
 #include "orchestrator/store/junit_xml.h"
 #include "orchestrator/store/metric_direction.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline history {
 namespace {
 
 using nlohmann::json;
@@ -198,4 +198,4 @@ std::string RenderComparisonJUnit(const Comparison& comparison) {
   return xml;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline history

@@ -11,7 +11,7 @@
 #include "evaluator/statistics/mann_whitney.h"
 #include "orchestrator/history/night.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline history {
 
 /// When a difference between two nights counts (the sweep config's `regression:` block, or CLI options).
 struct RegressionOptions {
@@ -87,4 +87,4 @@ nlohmann::json ComparisonToJson(const Comparison& comparison);
 /// compared is <skipped>.
 std::string RenderComparisonJUnit(const Comparison& comparison);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline history

@@ -6,7 +6,7 @@
 #include "orchestrator/run/run_json.h"
 #include "orchestrator/store/results_store.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline history {
 
 bool IsComparableOdometryMode(std::string_view mode) {
   return mode == evaluator::OdometryModeName(evaluator::OdometryMode::kRecorded) ||
@@ -36,4 +36,4 @@ std::map<NightCell, std::string> OdometryModesOfResultDir(const std::filesystem:
   return modes;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline history

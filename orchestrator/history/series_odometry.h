@@ -9,7 +9,7 @@
 
 #include "orchestrator/run/run_json.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline history {
 
 // kOdometryUnknown (orchestrator/run/run_json.h) also marks a history series whose night was recorded before
 // the history kept the mode and whose results are gone: never compared with anything.
@@ -31,4 +31,4 @@ using NightCell = std::tuple<std::string, std::string, std::string>;
 std::map<NightCell, std::string> OdometryModesOfResultDir(const std::filesystem::path& result_dir,
                                                           std::int64_t last_sweep_id);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline history

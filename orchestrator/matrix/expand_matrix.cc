@@ -11,7 +11,7 @@
 #include "orchestrator/matrix/run_id.h"
 #include "orchestrator/run/run_json.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline matrix {
 namespace {
 
 constexpr std::uint64_t kMaxRuns = 1000000;
@@ -214,4 +214,4 @@ std::vector<RunSpec> ExpandMatrix(const SweepConfig& config, std::uint64_t max_r
   return runs;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline matrix

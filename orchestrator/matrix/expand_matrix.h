@@ -7,7 +7,7 @@
 #include "orchestrator/config/sweep_config.h"
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline matrix {
 
 /// Every run of a sweep, in a deterministic order: for each algorithm (as written), each combination
 /// of its parameter lists (cartesian product, first parameter varying slowest), each sequence, each
@@ -35,4 +35,4 @@ std::uint64_t SeedForRun(const RunSpec& spec, std::uint64_t base_seed, SeedPolic
 /// True when `filter` matches the cell of `spec` (every given field equal; parameters compared by value).
 bool Matches(const CellFilter& filter, const RunSpec& spec);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline matrix

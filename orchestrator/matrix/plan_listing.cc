@@ -9,7 +9,7 @@
 #include <map>
 #include <utility>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline matrix {
 
 std::string FormatParameters(const nlohmann::json& parameters) {
   const std::string text = ParametersText(parameters);
@@ -63,4 +63,4 @@ nlohmann::json PlanJson(const std::vector<RunSpec>& runs) {
   return array;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline matrix

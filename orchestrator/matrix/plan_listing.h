@@ -7,7 +7,7 @@
 
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline matrix {
 
 /// ParametersText of a run's parameters ("k=v;k=v", keys sorted, text values unquoted); "-" when there are none.
 std::string FormatParameters(const nlohmann::json& parameters);
@@ -23,4 +23,4 @@ std::string FormatPlan(const std::vector<RunSpec>& runs);
 /// `slamsweep plan --json`: an array of run.json objects (ToJson of each run).
 nlohmann::json PlanJson(const std::vector<RunSpec>& runs);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline matrix

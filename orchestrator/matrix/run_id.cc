@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline matrix {
 
 std::string SanitizeIdPart(std::string_view text) {
   constexpr std::size_t kMaxChars = 32;
@@ -26,4 +26,4 @@ std::string MakeRunId(const RunSpec& spec) {
                      static_cast<std::uint32_t>(hash >> 32));
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline matrix

@@ -7,7 +7,7 @@
 #include "orchestrator/run/run_spec.h"
 #include "orchestrator/run/stable_hash.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline matrix {
 
 /// A readable part of a run id: every character outside [A-Za-z0-9_.-] becomes '_', leading dots
 /// are dropped (no hidden folders, no "..") and at most 32 characters are kept; "_" when nothing is left.
@@ -18,4 +18,4 @@ std::string SanitizeIdPart(std::string_view text);
 /// '/', never starts with '.'. Two runs whose names sanitise alike still differ in hash8.
 std::string MakeRunId(const RunSpec& spec);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline matrix

@@ -9,7 +9,7 @@
 #include "evaluator/core/input_error.h"
 #include "orchestrator/matrix/run_id.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline matrix {
 namespace {
 
 bool ParseCount(std::string_view text, std::size_t& value) {
@@ -42,4 +42,4 @@ std::vector<RunSpec> SelectShard(std::vector<RunSpec> runs, std::size_t index, s
   return runs;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline matrix

@@ -6,7 +6,7 @@
 
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline matrix {
 
 /// Share `index` (1-based) of `count` shares: `--shard 2/4`.
 struct Shard {
@@ -25,4 +25,4 @@ inline std::vector<RunSpec> SelectShard(std::vector<RunSpec> runs, const Shard& 
   return SelectShard(std::move(runs), shard.index, shard.count);
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline matrix

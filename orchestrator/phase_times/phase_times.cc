@@ -11,7 +11,7 @@
 #include <mutex>
 #include <string>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline phase_times {
 namespace {
 
 const char* TimesFile() {
@@ -102,4 +102,4 @@ PhaseTimer::~PhaseTimer() {
   }
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline phase_times

@@ -3,7 +3,7 @@
 #include <chrono>
 #include <string_view>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline phase_times {
 
 /// True when $SLAMSWEEP_PHASE_TIMES names a file: timers then add up, otherwise they cost a branch.
 bool PhaseTimesEnabled();
@@ -31,4 +31,4 @@ class PhaseTimer {
   double start_cpu_s_ = 0.0;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline phase_times

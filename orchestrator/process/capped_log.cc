@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 CappedLog::CappedLog(std::uint64_t cap_bytes) {
   if (cap_bytes == 0) {
@@ -109,4 +109,4 @@ void CappedLog::Finish() {
   fd_ = -1;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 /// A child's output log of bounded size: the first half of the cap is written as it arrives (so a
 /// running program's log can be watched), the last part is kept in memory and written at Finish(),
@@ -56,4 +56,4 @@ class CappedLog {
   std::uint64_t tail_seen_ = 0;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

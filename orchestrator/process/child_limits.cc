@@ -8,7 +8,7 @@
 
 #include "orchestrator/process/group_memory.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 void StopChild(RunningChild& child, StopCause cause, ChildClock::time_point now) {
   if (child.stop_cause != StopCause::kNone) return;  // already stopping; keep the first cause
@@ -68,4 +68,4 @@ ChildClock::time_point LimitEnforcer::Enforce(RunningChildren& children, ChildCl
   return std::min(next, next_usage_poll_);
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

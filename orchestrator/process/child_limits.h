@@ -4,7 +4,7 @@
 
 #include "orchestrator/process/running_child.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 /// How often the usage of children with a memory or process limit is looked at; a child is first
 /// looked at one period after its start, so a short run pays no scan of /proc.
@@ -32,4 +32,4 @@ class LimitEnforcer {
   ChildClock::time_point next_usage_poll_;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

@@ -13,7 +13,7 @@
 
 #include "orchestrator/process/outcome_reason.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 namespace {
 
 // After the child ended: what is still in the pipe, bounded because a grandchild outside the group
@@ -134,4 +134,4 @@ ProcessOutcome ReapChild(RunningChild& child) {
   return outcome;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

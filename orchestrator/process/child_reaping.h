@@ -3,7 +3,7 @@
 #include "orchestrator/process/process_outcome.h"
 #include "orchestrator/process/running_child.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 /// Collects a child that has ended: SIGKILLs its group (so no grandchild outlives it or holds its
 /// pipe), drains its output into the log, waits for it with wait4() (rusage) and closes its
@@ -11,4 +11,4 @@ namespace slamsweep::orchestrator {
 /// sandboxed child the one slamsweep-sandbox-init reported. Call only once the child has ended.
 ProcessOutcome ReapChild(RunningChild& child);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

@@ -9,7 +9,7 @@
 #include <charconv>
 #include <string>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 namespace {
 
 template <typename Int>
@@ -125,4 +125,4 @@ std::map<pid_t, GroupUsage> GroupUsageOf(const std::vector<pid_t>& leaders) {
   return GroupUsageOf(leaders, processes, ::sysconf(_SC_PAGESIZE) / 1024);
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

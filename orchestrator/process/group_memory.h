@@ -8,7 +8,7 @@
 
 #include <sys/types.h>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 /// The fields of /proc/PID/stat the resource limits need.
 struct ProcStat {
@@ -41,4 +41,4 @@ std::map<pid_t, GroupUsage> GroupUsageOf(const std::vector<pid_t>& leaders);
 std::map<pid_t, GroupUsage> GroupUsageOf(const std::vector<pid_t>& leaders, const std::vector<ProcStat>& processes,
                                          std::int64_t page_kb);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

@@ -9,7 +9,7 @@
 
 #include "orchestrator/process/signal_wakeup.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 namespace {
 
 constexpr std::array<int, 3> kInterruptSignals = {SIGINT, SIGTERM, SIGHUP};
@@ -69,4 +69,4 @@ int InterruptionGuard::Signal() { return g_interrupt_signal; }
 
 bool InterruptionPending() { return g_depth.load() > 0 && g_interrupt_signal != 0; }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

@@ -2,7 +2,7 @@
 
 #include <signal.h>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 /// Process-wide interruption by SIGINT, SIGTERM or SIGHUP (Ctrl-C, `kill`, a closed terminal).
 /// While a guard lives, those signals no longer end the program: their handler only records the
@@ -34,4 +34,4 @@ class InterruptionGuard {
 /// interruption seen by an earlier guard does not stop children started after it ended.
 bool InterruptionPending();
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

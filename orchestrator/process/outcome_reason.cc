@@ -4,7 +4,7 @@
 
 #include "orchestrator/process/signal_name.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 std::string ExitReason(int exit_code) { return fmt::format("exit code {}", exit_code); }
 
@@ -47,4 +47,4 @@ std::string StartFailureReason(const std::string& program, const std::string& de
   return fmt::format("cannot start '{}': {}", program, detail);
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 // The one-sentence reasons of ProcessOutcome, kept in one place so that result.json, the status
 // line and the tests agree on their wording.
@@ -29,4 +29,4 @@ std::string InterruptReason(int interrupt_signal, bool needed_kill, double grace
 /// "cannot start 'foo': No such file or directory".
 std::string StartFailureReason(const std::string& program, const std::string& detail);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

@@ -1,6 +1,6 @@
 #include "orchestrator/process/process_outcome.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 std::string_view EndingName(ProcessEnding ending) {
   switch (ending) {
@@ -22,4 +22,4 @@ std::string_view EndingName(ProcessEnding ending) {
   return "unknown";
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

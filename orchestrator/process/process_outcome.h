@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 /// How a child ended. Every ending is data for the caller; none is an exception.
 enum class ProcessEnding { kExited, kSignaled, kTimedOut, kMemoryLimit, kProcessLimit, kInterrupted, kFailedToStart };
@@ -38,4 +38,4 @@ struct ProcessOutcome {
   bool ok() const { return ending == ProcessEnding::kExited && exit_code == 0; }
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

@@ -16,7 +16,7 @@
 #include "orchestrator/process/spawn.h"
 #include "orchestrator/process/wake_up.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 namespace {
 
 // Per child and wake-up, so a flooding child cannot starve the others.
@@ -173,4 +173,4 @@ ProcessOutcome RunProcess(const ProcessSpec& spec) {
   }
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

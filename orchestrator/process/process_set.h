@@ -14,7 +14,7 @@
 #include "orchestrator/process/process_spec.h"
 #include "orchestrator/process/running_child.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 /// Several child programs at once under one supervising loop (ninja's SubprocessSet): each child in
 /// its own process group, stdin /dev/null, output captured into its capped log, timeout
@@ -75,4 +75,4 @@ class ProcessSet {
 /// InterruptionPending(), it terminates the child's group itself and returns kInterrupted.
 ProcessOutcome RunProcess(const ProcessSpec& spec);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

@@ -9,7 +9,7 @@
 
 #include "orchestrator/sandbox/sandbox_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 /// How to run one child program. Plain data: the runner never changes it.
 struct ProcessSpec {
@@ -39,4 +39,4 @@ struct ProcessSpec {
   std::optional<SandboxSpec> sandbox;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

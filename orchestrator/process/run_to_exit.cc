@@ -8,7 +8,7 @@
 
 #include "orchestrator/process/process_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 ExitStatus RunToExit(const std::vector<std::string>& argv, const ChildStreams& streams) {
   if (!streams.OutputElsewhere()) {
@@ -30,4 +30,4 @@ ExitStatus RunToExit(const std::vector<std::string>& argv, const ChildStreams& s
   return exit;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

@@ -5,7 +5,7 @@
 
 #include "orchestrator/process/spawn.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 /// How a program run by RunToExit ended.
 struct ExitStatus {
@@ -22,4 +22,4 @@ struct ExitStatus {
 /// Throws std::system_error when the wait fails (other code in this process reaped the child).
 ExitStatus RunToExit(const std::vector<std::string>& argv, const ChildStreams& streams);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

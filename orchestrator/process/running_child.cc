@@ -8,7 +8,7 @@
 #include <cerrno>
 #include <string_view>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 namespace {
 
 // Enough for bubblewrap's one-line message when it cannot set a sandbox up.
@@ -47,4 +47,4 @@ void ReadChildOutput(RunningChild& child, std::size_t max_bytes) {
   }
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

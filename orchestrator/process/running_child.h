@@ -12,7 +12,7 @@
 #include "orchestrator/process/capped_log.h"
 #include "orchestrator/process/process_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 // The state ProcessSet keeps per started child, shared by its limit enforcement and reaping.
 // Internal to orchestrator/process.
@@ -61,4 +61,4 @@ void SignalGroup(pid_t group, int signal_number);
 /// without blocking; closes the pipe at EOF or on an error.
 void ReadChildOutput(RunningChild& child, std::size_t max_bytes);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

@@ -3,7 +3,7 @@
 #include <csignal>
 #include <cstring>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 std::string SignalName(int signal_number) {
   // glibc >= 2.32 knows the abbreviations; real-time signals get none and are rare enough for a number.
@@ -13,4 +13,4 @@ std::string SignalName(int signal_number) {
   return "signal " + std::to_string(signal_number);
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

@@ -9,7 +9,7 @@
 #include <mutex>
 #include <stdexcept>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 namespace {
 
 // Written by signal handlers, so a plain int set before any handler is installed.
@@ -57,4 +57,4 @@ void EnsureChildSignalHandler() {
   });
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

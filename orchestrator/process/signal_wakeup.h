@@ -1,6 +1,6 @@
 #pragma once
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 // The self-pipe that slamsweep's signal handlers write to, so that a ProcessSet blocked in ppoll()
 // wakes up even when the signal was delivered to another thread. Internal to orchestrator/process.
@@ -15,4 +15,4 @@ void DrainSignalWakeup();
 /// handler SIGCHLD is ignored by default and would not interrupt ppoll().
 void EnsureChildSignalHandler();
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

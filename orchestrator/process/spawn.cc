@@ -23,7 +23,7 @@
 #include <boost/process/extend.hpp>
 #include <boost/process/posix.hpp>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 namespace bp = boost::process;
 namespace {
 
@@ -219,4 +219,4 @@ SpawnResult SpawnChild(const ProcessSpec& spec, const ChildStreams& streams) {
   return result;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

@@ -6,7 +6,7 @@
 
 #include "orchestrator/process/process_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 /// A started child, or why it could not start.
 struct SpawnResult {
@@ -44,4 +44,4 @@ struct ChildStreams {
 /// Never throws for a program that cannot start. The caller owns the pid (reaps it) and the fds.
 SpawnResult SpawnChild(const ProcessSpec& spec, const ChildStreams& streams = {});
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

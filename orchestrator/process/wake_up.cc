@@ -9,7 +9,7 @@
 
 #include "orchestrator/process/signal_wakeup.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 namespace {
 
 std::atomic<bool> g_wake_up_requested = false;
@@ -37,4 +37,4 @@ void SleepUnlessWoken(double seconds) {
   if (::ppoll(&wake, 1, &timeout, &open_mask) > 0) DrainSignalWakeup();
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

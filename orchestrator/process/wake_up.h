@@ -1,6 +1,6 @@
 #pragma once
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline process {
 
 // Wake-ups of a supervising thread by other threads of the same process. The service's scheduler
 // blocks in its executor's Wait() (ProcessSet::WaitForAny, the Slurm executor's polling) while the
@@ -20,4 +20,4 @@ bool TakeWakeUpRequest();
 /// TakeWakeUpRequest() afterwards.
 void SleepUnlessWoken(double seconds);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline process

@@ -17,7 +17,7 @@
 #include "orchestrator/reference_map/reference_map_cache.h"
 #include "orchestrator/run/run_json.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline reference_map {
 namespace {
 
 namespace fs = std::filesystem;
@@ -122,4 +122,4 @@ std::optional<ReferenceMap> LoadReferenceMap(const RunSpec& spec, bool sequence_
   return map;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline reference_map

@@ -9,7 +9,7 @@
 #include "evaluator/core/occupancy_grid.h"
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline reference_map {
 
 /// A run's reference map: what its map is scored against (evaluator/map_compare). It is truth,
 /// exactly like the reference trajectory: only the worker reads or renders it, after the program
@@ -58,4 +58,4 @@ std::string ReferenceMapCacheName(const RunSpec& spec);
 std::optional<ReferenceMap> LoadReferenceMap(const RunSpec& spec, bool sequence_has_reference,
                                              const std::filesystem::path& cache_dir);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline reference_map

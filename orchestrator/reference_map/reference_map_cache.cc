@@ -15,7 +15,7 @@
 #include "evaluator/formats/map/map_server_format.h"
 #include "orchestrator/files/atomic_file.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline reference_map {
 namespace {
 
 namespace fs = std::filesystem;
@@ -83,4 +83,4 @@ MapCache::Entry MapCache::LoadOrRender(const std::string& name, const nlohmann::
   return {std::move(*stored), yaml, false};
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline reference_map

@@ -8,7 +8,7 @@
 
 #include "evaluator/core/occupancy_grid.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline reference_map {
 
 /// A folder of maps, each stored as <name>.pgm + <name>.yaml (map_server, trinary) with the key it
 /// was made for in <name>.key.json; safe for many worker processes at once.
@@ -35,4 +35,4 @@ class MapCache {
   std::filesystem::path dir_;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline reference_map

@@ -1,6 +1,6 @@
 #include "orchestrator/run/flat_metric.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 nlohmann::json ToJson(const FlatMetric& metric) {
   return {{"metric", metric.metric},
@@ -9,4 +9,4 @@ nlohmann::json ToJson(const FlatMetric& metric) {
           {"unit", metric.unit}};
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 /// One number of result.json's flat `metrics` list (orchestrator/DESIGN.md), e.g. {"ape_trans", "rmse", 0.12, "m"}.
 struct FlatMetric {
@@ -19,4 +19,4 @@ struct FlatMetric {
 /// {"metric", "statistic", "value", "unit"}; a missing value is null.
 nlohmann::json ToJson(const FlatMetric& metric);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -1,6 +1,6 @@
 #include "orchestrator/run/run_failure.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 std::string_view FailureKindName(FailureKind kind) {
   switch (kind) {
@@ -34,4 +34,4 @@ std::string_view FailureKindName(FailureKind kind) {
   return "internal";
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 /// Why a run failed, as result.json's `failure_kind` names it (orchestrator/DESIGN.md).
 enum class FailureKind {
@@ -38,4 +38,4 @@ class RunFailure : public std::runtime_error {
   FailureKind kind_;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -2,7 +2,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 namespace {
 
 using evaluator::InputError;
@@ -131,4 +131,4 @@ RunFlags RunFlagsOf(const json& run_json, const json& result_json) {
   return flags;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

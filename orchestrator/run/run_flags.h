@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 /// A mark on a run that every reader of its numbers must see: each one keeps the run's row out of
 /// "best" and out of rankings, and is shown beside the row in every table, file and JUnit case.
@@ -73,4 +73,4 @@ std::string RunFlagsLabel(const RunFlags& flags);
 /// Either may be null. Malformed `flags` fields are an InputError naming the file.
 RunFlags RunFlagsOf(const nlohmann::json& run_json, const nlohmann::json& result_json);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -11,7 +11,7 @@
 #include "orchestrator/run/run_failure.h"
 #include "orchestrator/run/run_status.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 nlohmann::json ReadJsonFile(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -97,4 +97,4 @@ void RemovePartialRun(const std::filesystem::path& run_dir) {
   std::filesystem::remove_all(run_dir, ignored);
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

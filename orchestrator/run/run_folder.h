@@ -9,7 +9,7 @@
 
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 /// Parses a JSON file. Throws InputError "FILE: ..." when it is missing, unreadable or not valid JSON
 /// (with the parser's byte position).
@@ -47,4 +47,4 @@ nlohmann::json MissingResult(const RunSpec& run, const std::string& reason, bool
 /// given up). Errors are ignored: a file that cannot be removed is overwritten by the next attempt.
 void RemovePartialRun(const std::filesystem::path& run_dir);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -17,7 +17,7 @@
 #include "orchestrator/run/spec_checks.h"
 #include "orchestrator/run/stable_hash.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 namespace {
 
 using evaluator::InputError;
@@ -571,4 +571,4 @@ std::optional<RunStatus> StatusOfResultJson(const json& result) {
   return status->is_string() ? RecordedRunStatus(status->get_ref<const std::string&>()) : std::nullopt;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -10,7 +10,7 @@
 #include "orchestrator/run/run_spec.h"
 #include "orchestrator/run/run_status.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 /// run.json, as in orchestrator/DESIGN.md. FromJson is strict: an unknown or mistyped field is an
 /// InputError naming its path ("run.json: algorithm.timeout_s: expected a number").
@@ -52,4 +52,4 @@ nlohmann::json RunIdentity(const RunSpec& spec);
 /// any other text (or no object at all) has none.
 std::optional<RunStatus> StatusOfResultJson(const nlohmann::json& result);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -1,6 +1,6 @@
 #include "orchestrator/run/run_record.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 std::optional<double> RunRecord::Metric(std::string_view metric_name, std::string_view statistic) const {
   for (const FlatMetric& m : metrics) {
@@ -52,4 +52,4 @@ void ReadResultFields(const nlohmann::json& result, RunRecord& run) {
   run.warnings = strings("warnings");
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -13,7 +13,7 @@
 #include "orchestrator/run/run_flags.h"
 #include "orchestrator/run/run_status.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 /// File names from result.json's `outputs`, relative to the run folder; empty when absent.
 struct RunOutputs {
@@ -97,4 +97,4 @@ struct RunRecord {
 /// type than the worker writes, is left empty. The store reads its records' result.json this way.
 void ReadResultFields(const nlohmann::json& result, RunRecord& run);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -10,7 +10,7 @@
 #include "evaluator/sequence/odometry_mode.h"
 #include "orchestrator/run/stable_hash.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 using nlohmann::json;
 
@@ -74,4 +74,4 @@ bool PlannedOdometryIsReference(const evaluator::CatalogEntry& entry, const Nois
          (!noise.odometry || *noise.odometry == evaluator::OdometryNoise{});
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

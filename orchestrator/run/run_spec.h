@@ -13,7 +13,7 @@
 #include "evaluator/noise/range_noise.h"
 #include "evaluator/catalog/catalog.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 /// What a generic command adapter declares about one output file of the program.
 struct DeclaredOutput {
@@ -99,7 +99,7 @@ struct EvaluationOptions {
   /// the raw-grid profile, which depends on each program's canvas size.
   bool crop = true;
   /// A run whose trajectory spans less than this fraction of the reference's time span fails
-  /// (evaluator/trajectory/coverage.h): its errors would be measured on the part it chose to keep.
+  /// (evaluator/trajectory_metrics/coverage.h): its errors would be measured on the part it chose to keep.
   double min_coverage = 0.95;
   /// Segment lengths of the segment RPE (evaluator SegmentRpe), ascending. Absent ("auto"): 10, 20,
   /// 30, 40 and 50 % of the sequence's whole reference path rounded to 1 m, the same for every run
@@ -204,4 +204,4 @@ std::string OdometryModeOf(const SequenceSpec& sequence);
 /// odometry mode whose odometry noise is absent or zero. The worker checks the same on the data (OdometryIsReference).
 bool PlannedOdometryIsReference(const evaluator::CatalogEntry& entry, const NoiseSpec& noise);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -1,6 +1,6 @@
 #include "orchestrator/run/run_status.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 std::string_view RunStatusName(RunStatus status) {
   switch (status) {
@@ -45,4 +45,4 @@ std::optional<SweepStatus> SweepStatusFromName(std::string_view text) {
   return std::nullopt;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -3,7 +3,7 @@
 #include <optional>
 #include <string_view>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 /// What became of a run. result.json records kOk or kFailed; a run folder without a readable result.json
 /// is kUnfinished or kUnreadable to whoever reads it.
@@ -33,4 +33,4 @@ std::string_view SweepStatusName(SweepStatus status);
 /// The status of that name; nullopt for any other text.
 std::optional<SweepStatus> SweepStatusFromName(std::string_view text);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -6,7 +6,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 namespace {
 
 using evaluator::InputError;
@@ -65,4 +65,4 @@ void ValidateThreshold(const Threshold& threshold, const std::string& path) {
   }
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

@@ -12,7 +12,7 @@
 
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 /// Range checks shared by the sweep config and run.json: InputError naming `path`.field and what is
 /// expected ("evaluation.rpe_delta_m: expected a finite distance > 0 m"), without a file location
@@ -52,4 +52,4 @@ std::string Choices(const std::string_view (&choices)[N]) {
   return text;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

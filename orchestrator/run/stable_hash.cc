@@ -1,6 +1,6 @@
 #include "orchestrator/run/stable_hash.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline run {
 
 std::uint64_t Fnv1a64(std::string_view bytes) {
   constexpr std::uint64_t kOffsetBasis = 0xcbf29ce484222325ULL;
@@ -13,4 +13,4 @@ std::uint64_t Fnv1a64(std::string_view bytes) {
   return hash;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline run

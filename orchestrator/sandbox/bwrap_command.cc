@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <system_error>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sandbox {
 namespace fs = std::filesystem;
 namespace {
 
@@ -130,4 +130,4 @@ std::vector<std::string> BwrapCommand(const SandboxSpec& spec, const std::vector
   return argv;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sandbox

@@ -6,7 +6,7 @@
 
 #include "orchestrator/sandbox/sandbox_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sandbox {
 
 /// The system paths every sandboxed program sees read-only, those of them that exist here: /usr,
 /// the /bin, /sbin and /lib* links of a merged-/usr system (or the folders themselves), and the
@@ -22,4 +22,4 @@ std::vector<std::filesystem::path> SystemPaths();
 std::vector<std::string> BwrapCommand(const SandboxSpec& spec, const std::vector<std::string>& program_argv,
                                       const std::filesystem::path& working_dir, int status_fd);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sandbox

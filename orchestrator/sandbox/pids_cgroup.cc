@@ -9,7 +9,7 @@
 #include <sstream>
 #include <thread>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sandbox {
 namespace fs = std::filesystem;
 namespace {
 
@@ -120,4 +120,4 @@ std::uint64_t PidsCgroup::Refusals() const {
   return 0;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sandbox

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sandbox {
 
 /// One sandbox's own pids cgroup (cgroup v1 `pids` hierarchy, or cgroup v2 with the pids
 /// controller), a child of this process's cgroup: every process and thread the sandbox starts counts,
@@ -31,4 +31,4 @@ class PidsCgroup {
   std::filesystem::path folder_;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sandbox

@@ -12,7 +12,7 @@
 
 extern char** environ;
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sandbox {
 namespace {
 
 struct Attempt {
@@ -106,4 +106,4 @@ SandboxProcChoice DecideSandboxProcForWorkers(const std::filesystem::path& bwrap
   return choice;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sandbox

@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sandbox {
 
 /// Says how sandboxes get their /proc: "own" (a fresh /proc of their PID namespace) or "none" (no /proc
 /// at all), optionally followed by ": why". Set by `slamsweep run` and `serve` for their workers after
@@ -36,4 +36,4 @@ const SandboxProcChoice& ChosenSandboxProc(const std::filesystem::path& bwrap);
 /// workers they start, so that no worker probes again. Call before any thread starts.
 SandboxProcChoice DecideSandboxProcForWorkers(const std::filesystem::path& bwrap);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sandbox

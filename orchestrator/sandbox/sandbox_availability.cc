@@ -7,7 +7,7 @@
 
 #include "evaluator/core/installation.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sandbox {
 namespace fs = std::filesystem;
 namespace {
 
@@ -42,4 +42,4 @@ const SandboxPrograms& FindSandboxPrograms() {
   return programs;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sandbox

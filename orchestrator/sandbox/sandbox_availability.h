@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sandbox {
 
 /// Where the sandbox's programs are on this machine: bubblewrap (bwrap in PATH, Debian's
 /// `bubblewrap`) and slamsweep-sandbox-init (beside the slamsweep programs, evaluator/core/installation.h).
@@ -19,4 +19,4 @@ struct SandboxPrograms {
 /// Looked up once per process.
 const SandboxPrograms& FindSandboxPrograms();
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sandbox

@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sandbox {
 
 /// What a program started in a sandbox (bubblewrap, orchestrator/sandbox/bwrap_command.h) may see and
 /// use. Its file system is built from nothing: the system folders it needs read-only (SystemPaths),
@@ -49,4 +49,4 @@ struct SandboxSpec {
   std::filesystem::path bwrap_program = "bwrap";
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sandbox

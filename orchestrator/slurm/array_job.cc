@@ -7,7 +7,7 @@
 
 #include "orchestrator/sweep/worker_environment.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline slurm {
 
 std::int64_t TimeLimitMinutes(double timeout_s, double overhead_s) {
   const double total_s = std::max(0.0, timeout_s) + std::max(0.0, overhead_s);
@@ -84,4 +84,4 @@ std::int64_t ParseSbatchJobId(const std::string& output) {
   return id;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline slurm

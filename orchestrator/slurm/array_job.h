@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline slurm {
 
 /// One Slurm job array: task i runs the run folder on line i + 1 of the manifest.
 struct ArrayJobRequest {
@@ -47,4 +47,4 @@ std::string ShellQuote(const std::string& text);
 /// Reads the job id from `sbatch --parsable` output ("123" or "123;cluster"); -1 if there is none.
 std::int64_t ParseSbatchJobId(const std::string& output);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline slurm

@@ -10,7 +10,7 @@
 
 #include "orchestrator/process/spawn.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline slurm {
 namespace {
 
 constexpr std::size_t kMaxOutputBytes = 4 << 20;
@@ -61,4 +61,4 @@ CommandOutput RunSlurmCommand(const std::vector<std::string>& argv, double timeo
   return result;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline slurm

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline slurm {
 
 /// What a short Slurm client command (sbatch, scontrol, sacct, scancel) said.
 struct CommandOutput {
@@ -21,4 +21,4 @@ struct CommandOutput {
 /// their process group) and reported as exit code -1. Never throws for a command that fails.
 CommandOutput RunSlurmCommand(const std::vector<std::string>& argv, double timeout_s = 60.0);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline slurm

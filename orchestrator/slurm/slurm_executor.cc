@@ -19,7 +19,7 @@
 #include "orchestrator/slurm/slurm_states.h"
 #include "orchestrator/sweep/local_executor.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline slurm {
 namespace {
 
 namespace fs = std::filesystem;
@@ -260,4 +260,4 @@ std::unique_ptr<Executor> MakeSlurmExecutor(const SlurmOptions& options) {
   return std::make_unique<SlurmExecutor>(options);
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline slurm

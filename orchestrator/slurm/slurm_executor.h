@@ -8,7 +8,7 @@
 
 #include "orchestrator/supervisor/executor.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline slurm {
 
 /// How runs go to Slurm. Plain data; the defaults suit a cluster where the output directory and
 /// the slamsweep binary are on a file system every node sees.
@@ -42,4 +42,4 @@ struct SlurmOptions {
 /// Slurm client commands run without a shell; SLURM_CONF and PATH come from the environment.
 std::unique_ptr<Executor> MakeSlurmExecutor(const SlurmOptions& options);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline slurm

@@ -5,7 +5,7 @@
 
 #include "orchestrator/process/signal_name.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline slurm {
 namespace {
 
 std::optional<int> ToInt(std::string_view text) {
@@ -140,4 +140,4 @@ SlurmTaskEnding EndingForState(const SlurmTaskState& task, bool cancelled_by_us)
   return {"Slurm " + (state.empty() ? std::string("UNKNOWN") : state) + ": " + detail, false};
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline slurm

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline slurm {
 
 /// One array task as Slurm reports it.
 struct SlurmTaskState {
@@ -47,4 +47,4 @@ struct SlurmTaskEnding {
 /// called scancel (TerminateAll), so CANCELLED means "interrupted", not a failure.
 SlurmTaskEnding EndingForState(const SlurmTaskState& task, bool cancelled_by_us);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline slurm

@@ -9,7 +9,7 @@
 
 #include "orchestrator/files/atomic_file.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 namespace {
 
 std::string CsvField(const std::string& text) {
@@ -168,4 +168,4 @@ void WriteCsvTables(const std::vector<RunRecord>& runs, const evaluator::Validit
   }
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -8,7 +8,7 @@
 #include "evaluator/validity/metric_validity.h"
 #include "orchestrator/store/results_store.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// summary.csv (RFC 4180): one row per comparison group: sequence, algorithm, parameters ("k=v;..."),
 /// noise, n_runs, n_ok, n_failed, odometry_is_reference, seeding, flags, build (the group's
@@ -34,4 +34,4 @@ std::string ValidityCsv(const evaluator::ValidityStudy& study);
 void WriteCsvTables(const std::vector<RunRecord>& runs, const evaluator::ValidityStudy& study,
                     const std::filesystem::path& output_dir);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -7,7 +7,7 @@
 #include <set>
 #include <utility>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 namespace {
 
 /// result.json's metric_details.segment_rpe.specification.lengths_m; nullopt when the run has none.
@@ -121,4 +121,4 @@ bool IsHeadlineStatistic(const std::string& metric, const std::string& statistic
   return statistic == "rmse" || statistic == "value";
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -10,7 +10,7 @@
 #include "orchestrator/run/run_json.h"
 #include "orchestrator/store/results_store.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// One flat metric (metric x statistic) over the ok runs of a group.
 struct MetricAggregate {
@@ -64,4 +64,4 @@ nlohmann::json ToJson(const GroupSummary& group);
 /// metric and of the segment RPE, value of the map metrics (summary.csv's columns).
 bool IsHeadlineStatistic(const std::string& metric, const std::string& statistic);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// The value at `key` of a result or run file's object, or nullptr when it is missing or `object` is no object.
 inline const nlohmann::json* FindField(const nlohmann::json& object, const char* key) {
@@ -23,4 +23,4 @@ inline const nlohmann::json& Nested(const nlohmann::json& object, const char* ou
   return FieldOrNull(FieldOrNull(object, outer), inner);
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

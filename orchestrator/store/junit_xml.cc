@@ -10,7 +10,7 @@
 #include "orchestrator/run/run_spec.h"
 #include "orchestrator/store/json_lookup.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 namespace {
 
 using nlohmann::json;
@@ -266,4 +266,4 @@ void WriteJUnit(const std::vector<RunRecord>& runs, const std::filesystem::path&
   WriteFileAtomically(file, RenderJUnit(runs));
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -7,7 +7,7 @@
 
 #include "orchestrator/store/results_store.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// The thresholds of run.json ("thresholds": [{"metric", "statistic" (default "rmse"), "max", "min"}])
 /// checked against a run's metrics.
@@ -33,4 +33,4 @@ std::string RenderJUnit(const std::vector<RunRecord>& runs);
 /// Writes RenderJUnit(runs) to `file` atomically.
 void WriteJUnit(const std::vector<RunRecord>& runs, const std::filesystem::path& file);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

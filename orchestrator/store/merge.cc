@@ -14,7 +14,7 @@
 #include "orchestrator/store/result_files.h"
 #include "orchestrator/store/results_store.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 namespace {
 
 namespace fs = std::filesystem;
@@ -214,4 +214,4 @@ MergeReport MergeResultDirs(const std::vector<fs::path>& inputs, const fs::path&
   return report;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

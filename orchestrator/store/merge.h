@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// What MergeResultDirs did.
 struct MergeReport {
@@ -28,4 +28,4 @@ struct MergeReport {
 /// input is `out` itself.
 MergeReport MergeResultDirs(const std::vector<std::filesystem::path>& inputs, const std::filesystem::path& out);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

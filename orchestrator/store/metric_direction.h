@@ -3,7 +3,7 @@
 #include <array>
 #include <string_view>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// The run metrics that grow as a run gets better: the map-versus-reference scores (fractions of
 /// matched walls and intersections over union; orchestrator/worker/run_metrics.cc names them). Every
@@ -17,4 +17,4 @@ inline bool HigherIsBetter(std::string_view metric) {
   return false;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -5,7 +5,7 @@
 #include "evaluator/core/input_error.h"
 #include "orchestrator/files/atomic_file.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 NamedStudy ReadNamedStudy(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -38,4 +38,4 @@ void WriteNamedStudy(const NamedStudy& study, const std::filesystem::path& outpu
   WriteFileAtomically(output_dir / kNamedStudyFile, out.dump(1) + "\n");
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -7,7 +7,7 @@
 
 #include "evaluator/validity/metric_validity.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// The result directory's copy of the validity study a sweep names (validity_study: FILE): the
 /// report reads it from there, so a result directory stays complete when FILE moves.
@@ -26,4 +26,4 @@ NamedStudy ReadNamedStudy(const std::filesystem::path& file);
 /// Writes OUTPUT_DIR/kNamedStudyFile: {"source": ..., "validity": ...}.
 void WriteNamedStudy(const NamedStudy& study, const std::filesystem::path& output_dir);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -5,7 +5,7 @@
 #include "evaluator/core/input_error.h"
 #include "orchestrator/run/run_folder.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 using evaluator::InputError;
 
@@ -22,4 +22,4 @@ void RecordRunFolder(ResultsStore& store, std::int64_t sweep_id, const std::file
   }
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

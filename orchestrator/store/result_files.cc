@@ -8,7 +8,7 @@
 #include "orchestrator/store/summary_json.h"
 #include "orchestrator/store/validity_table.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 void WriteResultFiles(const std::vector<RunRecord>& runs, const std::filesystem::path& output_dir) {
   std::optional<PhaseTimer> phase(std::in_place, "validity");
@@ -21,4 +21,4 @@ void WriteResultFiles(const std::vector<RunRecord>& runs, const std::filesystem:
   WriteJUnit(runs, output_dir / "junit.xml");
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

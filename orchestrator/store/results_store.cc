@@ -5,7 +5,7 @@
 #include "evaluator/core/input_error.h"
 #include "orchestrator/store/run_reader.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 using evaluator::InputError;
 
@@ -92,4 +92,4 @@ std::optional<RunRecord> ResultsStore::FindRun(const std::string& run_id) const 
 
 std::vector<RunRecord> ResultsStore::Runs() const { return ReadRuns(*db_); }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

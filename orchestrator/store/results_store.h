@@ -22,7 +22,7 @@
 #include "orchestrator/store/sweeps_table.h"
 #include "orchestrator/store/utc_now.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// results.sqlite: the index of an output directory (result.json in each run folder is the commit point of a run,
 /// the store indexes what the folders hold). Safe for several processes at once: WAL journal,
@@ -96,4 +96,4 @@ class ResultsStore {
   RunWriter writer_;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -6,7 +6,7 @@
 
 #include "orchestrator/store/runs_table.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 namespace {
 
 // Median as evo and numpy define it: the mean of the middle two for an even count.
@@ -68,4 +68,4 @@ std::string TypicalWallKey(const std::string& algorithm, const std::string& sequ
   return algorithm + "\t" + sequence;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

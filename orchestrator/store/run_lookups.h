@@ -9,7 +9,7 @@
 #include "orchestrator/run/run_status.h"
 #include "orchestrator/store/sqlite_db.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// Lookups of a few columns of the runs table, without reading whole runs.
 
@@ -35,4 +35,4 @@ std::map<std::string, double> ReadTypicalWallSeconds(const SqliteDb& db);
 /// "<algorithm>\t<sequence>", the key of ReadTypicalWallSeconds.
 std::string TypicalWallKey(const std::string& algorithm, const std::string& sequence);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -12,7 +12,7 @@
 #include "orchestrator/run/run_status.h"
 #include "orchestrator/store/runs_table.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 namespace {
 
 using nlohmann::json;
@@ -139,4 +139,4 @@ std::optional<RunRecord> ReadRun(const SqliteDb& db, const std::string& run_id) 
   return std::move(runs.front());
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

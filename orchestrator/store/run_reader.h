@@ -7,7 +7,7 @@
 #include "orchestrator/run/run_record.h"
 #include "orchestrator/store/sqlite_db.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// Reading runs back from results.sqlite as RunRecords: each run's columns, its shared documents, metrics and
 /// metric specifications, read in one snapshot so that a concurrent writer cannot pair a run with another
@@ -19,4 +19,4 @@ std::vector<RunRecord> ReadRuns(const SqliteDb& db);
 /// The run `run_id`, or nullopt when it was never recorded.
 std::optional<RunRecord> ReadRun(const SqliteDb& db, const std::string& run_id);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -13,7 +13,7 @@
 #include "orchestrator/store/runs_table.h"
 #include "orchestrator/store/store_schema.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 namespace {
 
 using evaluator::InputError;
@@ -287,4 +287,4 @@ void RunWriter::ForgetCachedIds() {
   document_ids_.clear();
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

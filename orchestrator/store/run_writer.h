@@ -14,7 +14,7 @@
 #include "orchestrator/run/run_flags.h"
 #include "orchestrator/store/sqlite_db.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// Writes runs into results.sqlite (the runs, metric_values and metric_spec_refs rows, and the documents and
 /// metric names they refer to). Keeps the statements it runs for every run prepared, and the ids of the metric
@@ -71,4 +71,4 @@ class RunWriter {
   std::function<void()> mid_transaction_hook_;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -6,7 +6,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 using evaluator::InputError;
 using nlohmann::json;
@@ -31,4 +31,4 @@ RunStatus StoredRunStatus(const std::filesystem::path& file, const std::string& 
   return *status;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

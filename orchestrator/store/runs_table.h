@@ -7,7 +7,7 @@
 
 #include "orchestrator/run/run_status.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// The layout of the runs table that the run writer and the run reader share: which members of run.json and
 /// result.json are columns, which are shared documents, and where the reader finds each column.
@@ -41,4 +41,4 @@ nlohmann::json ParseStoredDocument(const std::filesystem::path& file, const std:
 /// A runs.status as the writer stores it; anything else is an InputError (a damaged database).
 RunStatus StoredRunStatus(const std::filesystem::path& file, const std::string& run_id, const std::string& text);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

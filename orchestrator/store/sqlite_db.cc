@@ -11,7 +11,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 namespace {
 
 using evaluator::InputError;
@@ -231,4 +231,4 @@ void SqliteTransaction::Commit() {
   done_ = true;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

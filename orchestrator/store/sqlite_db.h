@@ -12,7 +12,7 @@
 struct sqlite3;
 struct sqlite3_stmt;
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// A prepared statement, finalized when it goes out of scope. Bind indices start at 1,
 /// column indices at 0, as in the SQLite C API. Errors throw InputError naming the database file.
@@ -102,4 +102,4 @@ class SqliteTransaction {
 std::string DescribeSqliteError(const std::filesystem::path& file, int code, std::string_view sqlite_message,
                                 std::string_view doing);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

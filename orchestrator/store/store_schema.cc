@@ -5,7 +5,7 @@
 #include "evaluator/core/input_error.h"
 #include "orchestrator/matrix/run_id.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 namespace {
 
 using nlohmann::json;
@@ -141,4 +141,4 @@ std::int64_t DocumentId(SqliteDb& db, const json& value) {
   return db.LastInsertRowId();
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -9,7 +9,7 @@
 
 #include "orchestrator/store/sqlite_db.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// The schema version this build writes (PRAGMA user_version). A file with a higher version was
 /// written by a newer slamsweep and is refused rather than misread.
@@ -31,4 +31,4 @@ void CreateOrMigrateSchema(SqliteDb& db, std::int64_t from_version,
 /// A JSON value kept once however many runs share it (the documents table): its id, added when new.
 std::int64_t DocumentId(SqliteDb& db, const nlohmann::json& value);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

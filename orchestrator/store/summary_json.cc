@@ -4,7 +4,7 @@
 #include "orchestrator/store/group_summary.h"
 #include "orchestrator/store/json_lookup.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 namespace {
 
 using nlohmann::json;
@@ -99,4 +99,4 @@ void WriteSummaryJson(const std::vector<RunRecord>& runs, const evaluator::Valid
   WriteFileAtomically(file, text);
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -9,7 +9,7 @@
 #include "evaluator/validity/metric_validity.h"
 #include "orchestrator/store/results_store.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// One run as summary.json lists it: spec summary, status, reason, resources, flat metrics
 /// ({"ape_trans": {"rmse": 0.1, ...}, "corners": {"value": 12}}), their units and the output files.
@@ -25,4 +25,4 @@ nlohmann::json BuildSummaryJson(const std::vector<RunRecord>& runs, const evalua
 void WriteSummaryJson(const std::vector<RunRecord>& runs, const evaluator::ValidityStudy& study,
                       const std::filesystem::path& file);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -8,7 +8,7 @@
 #include "evaluator/core/input_error.h"
 #include "orchestrator/store/utc_now.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 using evaluator::InputError;
 
@@ -89,4 +89,4 @@ std::int64_t FindOrInsertSweep(SqliteDb& db, const StoredSweep& sweep) {
   return id;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -7,7 +7,7 @@
 #include "orchestrator/run/run_status.h"
 #include "orchestrator/store/sqlite_db.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// What is known about a sweep when it starts.
 struct SweepInfo {
@@ -43,4 +43,4 @@ std::vector<StoredSweep> ReadSweeps(const SqliteDb& db);
 /// The id of a sweep equal to `sweep` (same name, config digest, start time, host), adding it when there is none.
 std::int64_t FindOrInsertSweep(SqliteDb& db, const StoredSweep& sweep);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

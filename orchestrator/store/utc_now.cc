@@ -2,7 +2,7 @@
 
 #include <ctime>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 std::string UtcNowIso8601() {
   const std::time_t now = std::time(nullptr);
@@ -13,4 +13,4 @@ std::string UtcNowIso8601() {
   return text;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -1,6 +1,6 @@
 #include "orchestrator/store/validity_table.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 evaluator::ValidityRun ToValidityRun(const RunRecord& run) {
   evaluator::ValidityRun out;
@@ -33,4 +33,4 @@ evaluator::ValidityStudy ValidityStudyOf(const std::vector<RunRecord>& runs) {
   return evaluator::ComputeValidityStudy(ToValidityRuns(runs));
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -5,7 +5,7 @@
 #include "evaluator/validity/metric_validity.h"
 #include "orchestrator/store/results_store.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline store {
 
 /// A run as the metric validity study reads it: status, odometry flag, every flat metric with a value
 /// as "<metric>.<statistic>", and the resources (wall_s, cpu_s, peak_rss_kb) of runs that ran a
@@ -18,4 +18,4 @@ std::vector<evaluator::ValidityRun> ToValidityRuns(const std::vector<RunRecord>&
 /// "validity" and validity.csv.
 evaluator::ValidityStudy ValidityStudyOf(const std::vector<RunRecord>& runs);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline store

@@ -7,7 +7,7 @@
 
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline supervisor {
 
 /// How a worker ended, as the executor saw it. The run's own result is in its result.json; this
 /// only matters when there is none (the worker crashed, was killed or never started).
@@ -39,4 +39,4 @@ class Executor {
   virtual bool Interrupted() const = 0;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline supervisor

@@ -8,7 +8,7 @@
 #include "orchestrator/run/run_spec.h"
 #include "orchestrator/supervisor/executor.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline supervisor {
 
 /// A run the source wants started now; its folder is ready (run.json written).
 struct RunStart {
@@ -51,4 +51,4 @@ class RunSource {
   virtual void Terminating(std::size_t /*running*/) {}
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline supervisor

@@ -6,7 +6,7 @@
 #include "orchestrator/phase_times/phase_times.h"
 #include "orchestrator/process/wake_up.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline supervisor {
 
 Supervisor::Supervisor(Executor& executor, SupervisorOptions options) : executor_(executor), options_(options) {}
 
@@ -81,4 +81,4 @@ void Supervisor::Terminate(RunSource& source) {
   source.EndTurn();
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline supervisor

@@ -6,7 +6,7 @@
 #include "orchestrator/supervisor/executor.h"
 #include "orchestrator/supervisor/run_source.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline supervisor {
 
 struct SupervisorOptions {
   /// Runs at once (>= 1).
@@ -44,4 +44,4 @@ class Supervisor {
   Clock::time_point drain_deadline_;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline supervisor

@@ -6,7 +6,7 @@
 #include "orchestrator/phase_times/phase_times.h"
 #include "orchestrator/sweep/worker_environment.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 
 LocalExecutor::LocalExecutor(std::filesystem::path worker_program) : worker_program_(std::move(worker_program)) {}
 
@@ -58,4 +58,4 @@ std::filesystem::path WorkerProgram() {
   return std::filesystem::read_symlink("/proc/self/exe");
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

@@ -9,7 +9,7 @@
 #include "orchestrator/process/process_set.h"
 #include "orchestrator/supervisor/executor.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 
 /// Runs each run as `WORKER_PROGRAM worker RUN_DIR` on this machine, several at once.
 class LocalExecutor final : public Executor {
@@ -42,4 +42,4 @@ class LocalExecutor final : public Executor {
 /// program's own executable (/proc/self/exe).
 std::filesystem::path WorkerProgram();
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 
 /// Exclusive ownership of an output directory for one orchestrator at a time: a second
 /// `slamsweep run` (or merge) on the same directory stops with an InputError naming the holder
@@ -20,4 +20,4 @@ class OutputLock {
   int fd_ = -1;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

@@ -5,7 +5,7 @@
 #include <optional>
 #include <system_error>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 namespace {
 
 namespace fs = std::filesystem;
@@ -50,4 +50,4 @@ void SharedRunFiles::Share(const fs::path& file) {
   if (error) fs::remove(link, error);
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

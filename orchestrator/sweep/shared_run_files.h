@@ -4,7 +4,7 @@
 #include <string>
 #include <unordered_map>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 
 /// Files that many runs of a sweep write byte for byte alike (a sequence's reference.tum, the same for every
 /// algorithm, noise level and iteration) are stored once: the first of each content is kept, each later one is
@@ -21,4 +21,4 @@ class SharedRunFiles {
   std::unordered_map<std::string, std::filesystem::path> first_with_content_;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

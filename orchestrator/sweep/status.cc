@@ -10,7 +10,7 @@
 #include <spdlog/logger.h>
 #include <spdlog/sinks/ostream_sink.h>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 namespace {
 
 std::string FormatDuration(double seconds) {
@@ -127,4 +127,4 @@ bool IsSmartTerminal(int fd) {
   return term != nullptr && std::string_view(term) != "dumb" && std::string_view(term) != "";
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 
 /// What the sweep loop tells the person or the CI log watching it (ninja's Status).
 struct FinishedRun {
@@ -44,4 +44,4 @@ std::unique_ptr<Status> MakeStatus(std::ostream& out, bool smart, std::size_t sl
 /// A terminal that can redraw a line: a tty whose TERM is set and not "dumb".
 bool IsSmartTerminal(int fd);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

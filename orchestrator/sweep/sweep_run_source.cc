@@ -6,7 +6,7 @@
 #include "orchestrator/run/run_folder.h"
 #include "orchestrator/sweep/sweep_steps.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 
 SweepRunSource::SweepRunSource(const SweepSettings& settings, Status& status, ResultsStore& store,
                                std::int64_t sweep_id, SweepOutcome& outcome)
@@ -66,4 +66,4 @@ void SweepRunSource::CountNotStarted() {
   }
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

@@ -14,7 +14,7 @@
 #include "orchestrator/sweep/status.h"
 #include "orchestrator/sweep/sweep_runner.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 
 /// One sweep's runs for the Supervisor (`slamsweep run`): a queue started in the order added while
 /// the failure budget allows, each ending recorded in the output directory and the store the moment
@@ -49,4 +49,4 @@ class SweepRunSource final : public RunSource {
   SharedRunFiles shared_files_;
 };
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

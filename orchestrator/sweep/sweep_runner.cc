@@ -12,7 +12,7 @@
 #include "orchestrator/sweep/sweep_run_source.h"
 #include "orchestrator/sweep/sweep_steps.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 namespace {
 
 std::string ExpectationKey(const RunSpec& run) { return run.algorithm.name + "\t" + run.sequence.entry.name; }
@@ -96,4 +96,4 @@ SweepOutcome RunSweep(const std::vector<RunSpec>& runs, const SweepSettings& set
   return outcome;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

@@ -11,7 +11,7 @@
 #include "orchestrator/sweep/status.h"
 #include "orchestrator/run/run_status.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 
 /// Everything about a sweep that is not a run.
 struct SweepSettings {
@@ -76,4 +76,4 @@ bool RecordedRunIsReusable(const RunSpec& run, std::optional<RunStatus> recorded
 std::vector<const RunSpec*> LongestExpectedFirst(const std::vector<const RunSpec*>& runs,
                                                  const std::map<std::string, double>& typical_wall_s);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

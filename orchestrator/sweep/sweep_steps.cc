@@ -6,7 +6,7 @@
 #include "orchestrator/run/run_folder.h"
 #include "orchestrator/run/run_json.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 namespace {
 
 std::string HostName() {
@@ -125,4 +125,4 @@ SweepInfo SweepInfoFor(const SweepSettings& settings) {
   return info;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

@@ -13,7 +13,7 @@
 #include "orchestrator/sweep/status.h"
 #include "orchestrator/sweep/sweep_runner.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 
 // The steps of one sweep into one output directory, shared by `slamsweep run` (RunSweep) and the
 // service's scheduler (orchestrator/service), so that both leave exactly the same files and records.
@@ -44,4 +44,4 @@ std::size_t WriteSweepOutputs(const ResultsStore& store, const std::set<std::str
 /// The store's record of a sweep as it starts (name, config, host, version, command line).
 SweepInfo SweepInfoFor(const SweepSettings& settings);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

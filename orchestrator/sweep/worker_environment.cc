@@ -2,7 +2,7 @@
 
 #include <cstdlib>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 
 std::string WorkerGlibcTunables(const char* inherited) {
   const std::string ours = "glibc.malloc.hugetlb=1";
@@ -15,4 +15,4 @@ std::vector<std::pair<std::string, std::string>> WorkerEnvironment() {
   return {{"GLIBC_TUNABLES", WorkerGlibcTunables(std::getenv("GLIBC_TUNABLES"))}};
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

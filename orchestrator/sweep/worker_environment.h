@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline sweep {
 
 /// Environment variables set for every worker process, by every executor (on top of the
 /// orchestrator's own environment).
@@ -21,4 +21,4 @@ std::vector<std::pair<std::string, std::string>> WorkerEnvironment();
 /// GLIBC_TUNABLES for a worker given the orchestrator's value (null when unset).
 std::string WorkerGlibcTunables(const char* inherited);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline sweep

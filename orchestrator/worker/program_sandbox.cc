@@ -15,7 +15,7 @@
 #include "orchestrator/sandbox/bwrap_command.h"
 #include "orchestrator/sandbox/proc_choice.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline worker {
 namespace fs = std::filesystem;
 namespace {
 
@@ -162,4 +162,4 @@ SandboxSpec ProgramSandbox(const RunSpec& spec, const RunPaths& paths, const std
   return sandbox;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline worker

@@ -9,7 +9,7 @@
 #include "orchestrator/sandbox/sandbox_availability.h"
 #include "orchestrator/sandbox/sandbox_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline worker {
 
 /// Set by `slamsweep run` and `serve` for their workers: more folders (':'-separated) that no
 /// sandbox may show, such as the shared data folder with every reference, or the service's data
@@ -40,4 +40,4 @@ SandboxSpec ProgramSandbox(const RunSpec& spec, const RunPaths& paths, const std
                            const std::string& program, const SandboxPrograms& programs,
                            const std::filesystem::path& pids_cgroup_procs = {}, bool fresh_proc = true);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline worker

@@ -1,6 +1,6 @@
 #include "orchestrator/worker/raw_folder.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline worker {
 namespace fs = std::filesystem;
 namespace {
 
@@ -48,4 +48,4 @@ RawFolderCheck CheckRawFolder(const fs::path& raw, std::uint64_t file_size_limit
   return check;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline worker

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline worker {
 
 /// What a program left in raw/, checked after it exited and before the worker reads anything there.
 struct RawFolderCheck {
@@ -23,4 +23,4 @@ struct RawFolderCheck {
 /// (0 = no limit): the program was stopped there by RLIMIT_FSIZE.
 RawFolderCheck CheckRawFolder(const std::filesystem::path& raw, std::uint64_t file_size_limit_bytes);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline worker

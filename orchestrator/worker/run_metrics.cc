@@ -11,12 +11,12 @@
 #include "evaluator/map_metrics/paper_metrics.h"
 #include "evaluator/map_compare/map_compare.h"
 #include "evaluator/map_compare/map_resample.h"
-#include "evaluator/trajectory/ape.h"
-#include "evaluator/trajectory/relations_metric.h"
-#include "evaluator/trajectory/rpe.h"
-#include "evaluator/trajectory/segment_rpe.h"
+#include "evaluator/trajectory_metrics/ape.h"
+#include "evaluator/trajectory_metrics/relations_metric.h"
+#include "evaluator/trajectory_metrics/rpe.h"
+#include "evaluator/trajectory_metrics/segment_rpe.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline worker {
 
 namespace ev = slamsweep::evaluator;
 
@@ -256,4 +256,4 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
   return out;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline worker

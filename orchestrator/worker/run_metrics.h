@@ -11,11 +11,11 @@
 #include "evaluator/core/relation.h"
 #include "evaluator/core/trajectory.h"
 #include "evaluator/formats/trajectory/segment_errors_csv.h"
-#include "evaluator/trajectory/coverage.h"
+#include "evaluator/trajectory_metrics/coverage.h"
 #include "orchestrator/run/flat_metric.h"
 #include "orchestrator/run/run_spec.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline worker {
 
 /// Every metric of a run with its full specification.
 struct RunMetrics {
@@ -79,4 +79,4 @@ std::string SegmentRpeMetricName(std::string_view kind, double length_m);
 /// span than evaluation.min_coverage: its errors would be measured on the part it chose to keep.
 void RequireCoverage(const EvaluationOptions& evaluation, const RunMetrics& metrics);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline worker

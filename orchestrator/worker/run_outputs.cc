@@ -11,7 +11,7 @@
 #include "evaluator/formats/trajectory/output_file.h"
 #include "evaluator/formats/trajectory/tum_format.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline worker {
 
 namespace ev = slamsweep::evaluator;
 namespace fs = std::filesystem;
@@ -74,4 +74,4 @@ nlohmann::json WriteRunOutputs(const RunPaths& paths, const CollectedOutputs& co
   return outputs;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline worker

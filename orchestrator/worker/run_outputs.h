@@ -9,7 +9,7 @@
 #include "orchestrator/adapters/adapter.h"
 #include "orchestrator/adapters/run_paths.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline worker {
 
 /// Writes a run's converted outputs in the run folder's fixed layout: map.png + map.yaml
 /// (map_saver trinary, as an 8-bit grey PNG), trajectory.tum, reference.tum (when `reference`),
@@ -21,4 +21,4 @@ namespace slamsweep::orchestrator {
 nlohmann::json WriteRunOutputs(const RunPaths& paths, const CollectedOutputs& collected,
                                const evaluator::Trajectory* reference);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline worker

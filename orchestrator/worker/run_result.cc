@@ -8,7 +8,7 @@
 #include "orchestrator/files/atomic_file.h"
 #include "orchestrator/run/run_status.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline worker {
 
 void RunResult::Fail(FailureKind kind, std::string why) {
   if (failure_kind) return;
@@ -73,4 +73,4 @@ void WriteJsonFileAtomically(const std::filesystem::path& file, const nlohmann::
   WriteFileAtomically(file, value.dump() + "\n");
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline worker

@@ -12,7 +12,7 @@
 #include "orchestrator/run/run_flags.h"
 #include "orchestrator/worker/run_metrics.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline worker {
 
 /// result.json of one run (orchestrator/DESIGN.md): the commit point of the run.
 struct RunResult {
@@ -60,4 +60,4 @@ std::string NowIso8601Utc();
 /// or the whole file. Throws std::runtime_error naming the file when any step fails.
 void WriteJsonFileAtomically(const std::filesystem::path& file, const nlohmann::json& value);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline worker

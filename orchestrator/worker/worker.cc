@@ -36,7 +36,7 @@
 #include "orchestrator/worker/run_outputs.h"
 #include "orchestrator/worker/run_result.h"
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline worker {
 
 namespace ev = slamsweep::evaluator;
 namespace fs = std::filesystem;
@@ -379,4 +379,4 @@ int RunWorker(const fs::path& run_dir) {
   return kWorkerWroteResult;
 }
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline worker

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-namespace slamsweep::orchestrator {
+namespace slamsweep::orchestrator::inline worker {
 
 /// Exit codes of `slamsweep worker RUN_DIR` (orchestrator/DESIGN.md).
 inline constexpr int kWorkerWroteResult = 0;
@@ -19,4 +19,4 @@ inline constexpr int kWorkerInterrupted = 130;
 /// result.json is written). Sets PR_SET_PDEATHSIG(SIGTERM): a worker whose supervisor died stops.
 int RunWorker(const std::filesystem::path& run_dir);
 
-}  // namespace slamsweep::orchestrator
+}  // namespace slamsweep::orchestrator::inline worker

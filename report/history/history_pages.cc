@@ -12,7 +12,7 @@
 #include "report/plots/algorithm_palette.h"
 #include "report/plots/gnuplot_string.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline history {
 namespace {
 
 using orchestrator::Finding;
@@ -229,4 +229,4 @@ std::string HistoryPlotScript(const HistorySeriesPage& page, const std::filesyst
   return script;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline history

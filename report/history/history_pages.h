@@ -11,7 +11,7 @@
 #include "orchestrator/history/regression.h"
 #include "report/html/html.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline history {
 
 /// One night of a series as its history page shows it.
 struct NightPoint {
@@ -81,4 +81,4 @@ Html RenderHistorySection(const HistorySection& section);
 /// positive (like the report's other plots).
 std::string HistoryPlotScript(const HistorySeriesPage& page, const std::filesystem::path& png);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline history

@@ -11,7 +11,7 @@
 #include "report/history/history_pages.h"
 #include "report/plots/gnuplot_process.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline history {
 namespace {
 
 namespace fs = std::filesystem;
@@ -169,4 +169,4 @@ std::unique_ptr<SiteExtension> MakeHistorySite(const HistorySiteOptions& options
   return std::make_unique<HistorySite>(options);
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline history

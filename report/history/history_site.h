@@ -6,7 +6,7 @@
 #include "orchestrator/history/regression.h"
 #include "report/html/write_report.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline history {
 
 /// What `slamsweep report RESULT_DIR --history FILE [--compare-previous]` adds to the site.
 struct HistorySiteOptions {
@@ -28,4 +28,4 @@ struct HistorySiteOptions {
 /// an InputError naming it.
 std::unique_ptr<SiteExtension> MakeHistorySite(const HistorySiteOptions& options);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline history

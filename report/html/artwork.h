@@ -10,7 +10,7 @@
 #include "report/plots/figure_types.h"
 #include "report/plots/scatter_plot.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// One algorithm's values in a metric plot (one per successful iteration).
 struct PlotSeriesValues {
@@ -77,4 +77,4 @@ class Artwork {
                                  const OverlaySettings& settings) = 0;
 };
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

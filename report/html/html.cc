@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 std::string EscapeHtml(std::string_view text) {
   std::string out;
@@ -83,4 +83,4 @@ Html Link(std::string_view href, const Html& content) {
   return Html::Trusted("<a href=\"" + EscapeHtml(href) + "\">") + content + Html::Trusted("</a>");
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

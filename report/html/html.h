@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// `text` with & < > " ' replaced by entities: safe inside element content and quoted attributes.
 std::string EscapeHtml(std::string_view text);
@@ -53,4 +53,4 @@ Html Element(std::string_view tag, std::string_view css_class, const Html& conte
 /// `<a href="...">content</a>` with the (relative, report-internal) href escaped.
 Html Link(std::string_view href, const Html& content);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

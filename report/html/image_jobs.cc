@@ -6,7 +6,7 @@
 #include <mutex>
 #include <thread>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 void ParallelFor(std::size_t n, int threads, const std::function<void(std::size_t)>& fn) {
   std::atomic<std::size_t> next{0};
@@ -43,4 +43,4 @@ void RunImageJobs(std::vector<ImageJob>& jobs, int threads) {
   for (std::size_t i = 0; i < jobs.size(); ++i) jobs[i].done(errors[i]);
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

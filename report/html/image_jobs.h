@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// Calls fn(i) for i in [0, n) on `threads` threads (the calling one among them); fn must only touch
 /// data of its own i. Rethrows the first exception once every call ended.
@@ -21,4 +21,4 @@ struct ImageJob {
 /// std::exception its `make` threw ("unknown error" when empty), or an empty string.
 void RunImageJobs(std::vector<ImageJob>& jobs, int threads);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -16,7 +16,7 @@
 #include "report/html/safe_name.h"
 #include "orchestrator/store/json_lookup.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 namespace {
 
 namespace fs = std::filesystem;
@@ -293,4 +293,4 @@ p.map-counts { margin: 0.2em 0; font-size: 0.9em; }
 )";
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -8,7 +8,7 @@
 #include "report/html/site_data.h"
 #include "report/images/map_comparison_types.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// One table's maps to draw (Artwork::MapComparison), with the key of its table in SiteData::maps_compared.
 struct PlannedMapComparison {
@@ -31,4 +31,4 @@ Html MapsComparedSection(const SiteData& site, const SequenceModel& sequence, st
 /// The style sheet rules of that section, appended to style.css.
 std::string_view MapsComparedStyleSheet();
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -5,7 +5,7 @@
 
 #include "report/html/view_pages.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 namespace {
 
 namespace fs = std::filesystem;
@@ -55,4 +55,4 @@ std::vector<PlotRequest> PlanPlots(const SweepModel& model, const ReportLayout& 
   return requests;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

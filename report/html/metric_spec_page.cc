@@ -7,7 +7,7 @@
 
 #include "evaluator/validity/metric_validity.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 namespace {
 
 struct MetricDefinition {
@@ -188,4 +188,4 @@ std::string RenderMetricSpecPage(const SiteData& /*site*/) {
   return RenderPage("Metric specification", "", body);
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

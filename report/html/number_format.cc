@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 namespace {
 
@@ -59,4 +59,4 @@ std::string FormatOptional(const std::optional<double>& value, std::string_view 
   return out;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

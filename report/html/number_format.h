@@ -5,7 +5,7 @@
 
 #include "report/model/mean_std.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// A number for a table: integers as integers, others with 4 significant digits and no
 /// exponent (0.1234, 12.35, 1235); NaN/inf as "n/a".
@@ -18,4 +18,4 @@ std::string FormatMeanStd(const MeanStd& value);
 /// An optional number with a unit ("3.2 s"), or "n/a".
 std::string FormatOptional(const std::optional<double>& value, std::string_view unit);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -7,7 +7,7 @@
 
 #include "report/html/number_format.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 namespace {
 
 using html_shorthand::E;
@@ -117,4 +117,4 @@ Html OverviewSection(const SiteData& site, const std::vector<TableSignificance>&
   return Element("section", "overview", section);
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

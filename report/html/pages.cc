@@ -11,7 +11,7 @@
 #include "report/html/site_data.h"
 #include "report/html/trajectory_figures.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 namespace {
 
@@ -525,4 +525,4 @@ ul.tests { font-size: 0.85em; color: #444; }
 )";
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

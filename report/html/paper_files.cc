@@ -6,7 +6,7 @@
 #include "report/html/site_files.h"
 #include "report/html/text_outputs.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 namespace fs = std::filesystem;
 
@@ -28,4 +28,4 @@ void WritePaperFiles(const SweepModel& model, const ReportLayout& layout, const 
   }
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

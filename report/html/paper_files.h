@@ -6,7 +6,7 @@
 #include "report/html/site_data.h"
 #include "report/model/sweep_model.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// Writes the paper service's text files per algorithm x sequence under `out_dir`
 /// (files/<algorithm>/<sequence>/: rmse.txt, corners.txt, occupied_ratio.txt, and pose_log.tum from the
@@ -14,4 +14,4 @@ namespace slamsweep::report {
 void WritePaperFiles(const SweepModel& model, const ReportLayout& layout, const std::filesystem::path& out_dir,
                      SiteData& site);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

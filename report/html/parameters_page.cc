@@ -2,7 +2,7 @@
 #include "report/html/number_format.h"
 #include "report/html/view_pages.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 namespace {
 
 using html_shorthand::E;
@@ -129,4 +129,4 @@ std::string RenderParametersPage(const SiteData& site, const SequenceModel& sequ
   return RenderPage("Parameters: " + sequence.title, kParametersPageRoot, body);
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -5,7 +5,7 @@
 
 #include "report/html/safe_name.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 namespace {
 
@@ -55,4 +55,4 @@ std::string ReportLayout::FilesDir(const std::string& algorithm, const std::stri
   return "files/" + algorithm_names_.at(algorithm) + "/" + sequence_names_.at(sequence) + "/";
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

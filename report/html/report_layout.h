@@ -6,7 +6,7 @@
 
 #include "report/model/sweep_model.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// Where everything goes inside the report folder. Every name is made with SafeFileName and
 /// made unique, so hostile run ids, algorithm or sequence names can neither escape the folder
@@ -33,4 +33,4 @@ class ReportLayout {
   std::map<std::string, std::string> algorithm_names_;
 };
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

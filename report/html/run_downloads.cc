@@ -9,7 +9,7 @@
 #include "report/html/safe_name.h"
 #include "report/html/site_files.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 namespace {
 
 namespace fs = std::filesystem;
@@ -120,4 +120,4 @@ LogTail ReadLogTail(const fs::path& log, std::size_t max_lines) {
   return tail;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -8,7 +8,7 @@
 #include "report/html/site_data.h"
 #include "orchestrator/run/run_record.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 // What the report takes from a run folder (orchestrator/DESIGN.md) into the run's page and folder.
 
@@ -36,4 +36,4 @@ struct LogTail {
 /// out. Empty for a missing file.
 LogTail ReadLogTail(const std::filesystem::path& log, std::size_t max_lines);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

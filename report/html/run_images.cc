@@ -9,7 +9,7 @@
 #include "report/html/trajectory_figures.h"
 #include "report/html/vector_map_download.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 namespace {
 
 namespace fs = std::filesystem;
@@ -110,4 +110,4 @@ void PlanVectorMaps(const SweepModel& model, const ReportLayout& layout, const f
   }
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

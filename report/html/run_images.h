@@ -9,7 +9,7 @@
 #include "report/html/write_report.h"
 #include "report/model/sweep_model.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// Appends the jobs that draw each run's own figures (thumbnail, trajectory over the map, stages GIF) with
 /// options.artwork, which must be set; their `done` records the result in site.runs. Every run's figures are
@@ -25,4 +25,4 @@ void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const st
 void PlanVectorMaps(const SweepModel& model, const ReportLayout& layout, const std::filesystem::path& out_dir,
                     const ReportOptions& options, SiteData& site, std::vector<ImageJob>& jobs);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <cstdio>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 namespace {
 
@@ -40,4 +40,4 @@ bool IsRegularFileNoFollow(const std::filesystem::path& path) {
   return std::filesystem::symlink_status(path, error).type() == std::filesystem::file_type::regular;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

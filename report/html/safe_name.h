@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// A file name made from untrusted text (run id, algorithm, sequence): only [A-Za-z0-9_.-], no
 /// leading dot, at most 64 characters. When anything had to change, "-" and 8 hex digits of a
@@ -16,4 +16,4 @@ std::string SafeFileName(std::string_view text);
 /// folder cannot bring a file from elsewhere into the report.
 bool IsRegularFileNoFollow(const std::filesystem::path& path);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -2,7 +2,7 @@
 #include "report/html/number_format.h"
 #include "report/html/view_pages.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 namespace {
 
 using html_shorthand::E;
@@ -98,4 +98,4 @@ std::string RenderSegmentPage(const SiteData& site, const SequenceModel& sequenc
   return RenderPage("Drift over segment lengths: " + sequence.title, kSegmentPageRoot, body);
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -16,7 +16,7 @@
 #include "report/model/sweep_model.h"
 #include "report/plots/algorithm_palette.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// What WriteReport made for one run, for its page: which images exist and why others do not.
 struct RunArtifacts {
@@ -126,4 +126,4 @@ Html ImageElement(std::string_view src, std::string_view alt, std::string_view c
 /// empty without a palette.
 Html AlgorithmSwatch(const SiteData& site, std::string_view algorithm);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

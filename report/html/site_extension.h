@@ -4,7 +4,7 @@
 
 #include "report/html/html.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 struct ReportSummary;
 
@@ -18,4 +18,4 @@ class SiteExtension {
   virtual Html Write(const std::filesystem::path& out_dir, ReportSummary& summary) = 0;
 };
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -5,7 +5,7 @@
 #include "evaluator/core/input_error.h"
 #include "report/html/safe_name.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 namespace {
 
 namespace fs = std::filesystem;
@@ -59,4 +59,4 @@ bool CopyResultFile(const fs::path& result_dir, const fs::path& out_dir, const c
   return !error;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -4,7 +4,7 @@
 #include <string_view>
 #include <system_error>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 // Files and folders of the site being written. Failures that make the site unusable throw
 // evaluator::InputError naming the path.
@@ -29,4 +29,4 @@ void LinkOrCopy(const std::filesystem::path& from, const std::filesystem::path& 
 /// none. The sweep replaces these files by rename, never in place, so a link keeps the report's version.
 bool CopyResultFile(const std::filesystem::path& result_dir, const std::filesystem::path& out_dir, const char* name);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

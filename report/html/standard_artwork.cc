@@ -8,7 +8,7 @@
 #include "report/plots/scatter_plot.h"
 #include "report/plots/view_figures.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 namespace {
 
@@ -66,4 +66,4 @@ std::unique_ptr<Artwork> MakeStandardArtwork() { return std::make_unique<Standar
 
 bool StandardArtworkDrawsImages() { return true; }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

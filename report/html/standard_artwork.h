@@ -4,7 +4,7 @@
 
 #include "report/html/artwork.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// The report's real images: gnuplot plots (report/plots) and giflib GIFs, thumbnails and
 /// overlays (report/images). In a build without those libraries it draws nothing and every page
@@ -14,4 +14,4 @@ std::unique_ptr<Artwork> MakeStandardArtwork();
 /// False in a build without the plot and image libraries.
 bool StandardArtworkDrawsImages();
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -4,7 +4,7 @@
 
 #include "report/html/number_format.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 namespace {
 
@@ -57,4 +57,4 @@ std::string MapMetricText(const SequenceModel& sequence, const AlgorithmRow& row
   return out + metric + "_mean: n/a\n" + metric + "_std: n/a\nnote: no run produced this metric\n";
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -4,7 +4,7 @@
 
 #include "report/model/sweep_model.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// The paper service's text files for one algorithm on one sequence, as "name: value" lines.
 /// rmse.txt: ATE translation RMSE mean and std (with its alignment); corners.txt and
@@ -12,4 +12,4 @@ namespace slamsweep::report {
 std::string RmseText(const SequenceModel& sequence, const AlgorithmRow& row);
 std::string MapMetricText(const SequenceModel& sequence, const AlgorithmRow& row, const std::string& metric);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

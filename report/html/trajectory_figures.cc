@@ -9,10 +9,10 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/trajectory/tum_format.h"
-#include "evaluator/trajectory/alignment.h"
-#include "evaluator/trajectory/association.h"
+#include "evaluator/trajectory_metrics/alignment.h"
+#include "evaluator/trajectory_metrics/association.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 namespace {
 
 namespace fs = std::filesystem;
@@ -231,4 +231,4 @@ Html TrajectoriesSection(const SiteData& site, const SequenceModel& sequence, st
   return body;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -9,7 +9,7 @@
 #include "report/html/site_data.h"
 #include "report/plots/figure_types.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// How a run's trajectory is aligned for pictures: the run's own evaluation settings (run.json `evaluation`:
 /// align, t_max_diff_s), so a picture agrees with the ATE it illustrates.
@@ -43,4 +43,4 @@ std::pair<std::size_t, std::size_t> MarkRunPathErrorFigures(const std::filesyste
 /// The sequence page's "Trajectories" section: the figures planned above (with why one is missing).
 Html TrajectoriesSection(const SiteData& site, const SequenceModel& sequence, std::string_view root);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

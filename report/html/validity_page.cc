@@ -13,7 +13,7 @@
 #include "report/html/safe_name.h"
 #include "orchestrator/store/validity_table.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 namespace {
 
 namespace fs = std::filesystem;
@@ -316,4 +316,4 @@ std::string RenderValidityPage(const SiteData& /*site*/, const ValiditySite& val
   return RenderPage("Which metrics can be trusted?", "", body);
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -9,7 +9,7 @@
 #include "report/html/site_data.h"
 #include "report/html/write_report.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// One scatter plot of the validity page: a candidate metric (x) against a real error (y) on one sequence.
 struct ValidityPlot {
@@ -47,4 +47,4 @@ void CountValidityPlots(const std::filesystem::path& out_dir, bool drawing, Vali
 /// sequences, ranked across noise settings and within each; then the scatter plots.
 std::string RenderValidityPage(const SiteData& site, const ValiditySite& validity);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -7,7 +7,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/map/map_file.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 namespace ev = slamsweep::evaluator;
 
@@ -20,4 +20,4 @@ void WriteVectorMapDownload(const std::filesystem::path& map_yaml, const std::fi
   if (!file) throw ev::InputError(out.string() + ": write failed");
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -8,7 +8,7 @@
 #include "report/html/site_data.h"
 #include "report/plots/figure_types.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 // The report's views beyond the tables: per table (sequence x noise)
 // - sequences/<table>/segments.html: drift over segment lengths (segment RPE): boxplots of the
@@ -57,4 +57,4 @@ std::string ViewStyleSheet();
 /// "12 m", "2.5 m".
 std::string LengthLabel(double length_m);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -12,7 +12,7 @@
 #include "report/html/number_format.h"
 #include "report/html/view_pages.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 namespace {
 
 namespace fs = std::filesystem;
@@ -279,4 +279,4 @@ td.missing { color: #888; }
 )";
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

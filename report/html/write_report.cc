@@ -25,7 +25,7 @@
 #include "report/model/named_study.h"
 #include "report/model/sweep_model.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 namespace {
 
@@ -199,4 +199,4 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   return summary;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

@@ -8,7 +8,7 @@
 #include "report/html/artwork.h"
 #include "report/html/site_extension.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline html {
 
 /// How `slamsweep report` builds the site.
 struct ReportOptions {
@@ -48,4 +48,4 @@ struct ReportSummary {
 ReportSummary WriteReport(const std::filesystem::path& result_dir, const std::filesystem::path& out_dir,
                           const ReportOptions& options);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline html

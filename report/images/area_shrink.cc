@@ -4,7 +4,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 cv::Size ShrunkSize(const cv::Size& size, int max_side_px) {
   const int side = std::max(size.width, size.height);
@@ -44,4 +44,4 @@ cv::Mat ShrinkToFit(const cv::Mat& image, int max_side_px) {
   return ShrinkByArea(image, ShrunkSize(image.size(), max_side_px));
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -2,7 +2,7 @@
 
 #include <opencv2/core/mat.hpp>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 /// The size of `size` shrunk so that its longer side is at most `max_side_px` (never enlarged;
 /// each side at least 1 pixel).
@@ -19,4 +19,4 @@ cv::Mat ShrinkByArea(const cv::Mat& image, const cv::Size& size);
 /// ShrinkByArea to ShrunkSize(image.size(), max_side_px); the image itself when it already fits.
 cv::Mat ShrinkToFit(const cv::Mat& image, int max_side_px);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -1,6 +1,6 @@
 #include "report/images/frame_selection.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 std::vector<std::size_t> EvenlySpacedIndices(std::size_t count, std::size_t keep) {
   std::vector<std::size_t> indices;
@@ -15,4 +15,4 @@ std::vector<std::size_t> EvenlySpacedIndices(std::size_t count, std::size_t keep
   return indices;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 /// `keep` indices out of 0..count-1, evenly spread, ascending and distinct, always holding the
 /// first and the last (when keep >= 2): index i of the result is round(i (count - 1) / (keep - 1)).
@@ -11,4 +11,4 @@ namespace slamsweep::report {
 /// count == 0 gives none.
 std::vector<std::size_t> EvenlySpacedIndices(std::size_t count, std::size_t keep);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -8,7 +8,7 @@
 #include <string>
 #include <system_error>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 namespace {
 
 /// The part of a frame that is written: a rectangle of the canvas.
@@ -158,4 +158,4 @@ GifWriteOutcome WriteGreyGif(std::size_t frame_count, const std::function<GreyFr
   return {.complete = true, .frames_written = frame_count, .bytes = static_cast<std::size_t>(bytes)};
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

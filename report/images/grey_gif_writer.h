@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 /// One frame of an animation: an 8-bit grey image (CV_8UC1) and how long it stays, in
 /// hundredths of a second (the GIF unit).
@@ -43,4 +43,4 @@ GifWriteOutcome WriteGreyGif(std::size_t frame_count, const std::function<GreyFr
                              const std::filesystem::path& gif,
                              std::optional<std::size_t> give_up_above_bytes = std::nullopt);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <string>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 namespace {
 
 std::optional<cv::Size> PngSize(const std::array<unsigned char, 24>& head) {
@@ -62,4 +62,4 @@ std::optional<cv::Size> PeekImageSize(const std::filesystem::path& path) {
   return cv::Size(*width, *height);
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -4,7 +4,7 @@
 #include <opencv2/core/types.hpp>
 #include <optional>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 /// The pixel size of a PNG (from its IHDR chunk) or a binary/ASCII PGM/PPM/PBM (from its header)
 /// without decoding the pixels, or nullopt when the file is not one of those or its header cannot
@@ -12,4 +12,4 @@ namespace slamsweep::report {
 /// Lets a long list of large stage maps be sized before any is held in memory.
 std::optional<cv::Size> PeekImageSize(const std::filesystem::path& path);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -9,7 +9,7 @@
 #include "evaluator/formats/map/map_file.h"
 #include "report/images/map_panels.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 namespace {
 
 namespace fs = std::filesystem;
@@ -112,4 +112,4 @@ MapComparisonDrawn WriteMapComparison(const MapComparisonJob& job) {
   return drawn;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -2,7 +2,7 @@
 
 #include "report/images/map_comparison_types.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 /// Draws one table's "Maps compared" figures: every panel (and the reference map, when the job names
 /// one) of the same world window at the same metres per pixel (report/images/map_panels.h), with a scale
@@ -12,4 +12,4 @@ namespace slamsweep::report {
 /// has a known cell.
 MapComparisonDrawn WriteMapComparison(const MapComparisonJob& job);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 /// A map's place in the table's common frame: world (x, y) of the map goes to
 /// (x_m, y_m) + scale * R(yaw_rad) (x, y). The identity draws a map as recorded.
@@ -73,4 +73,4 @@ struct MapComparisonDrawn {
   std::vector<MapPanelDrawn> panels;  ///< parallel to MapComparisonJob::panels
 };
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

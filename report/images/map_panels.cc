@@ -11,7 +11,7 @@
 #include "evaluator/map_metrics/canvas_crop.h"
 #include "evaluator/map_compare/map_resample.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 namespace {
 
 using evaluator::OccupancyGrid;
@@ -302,4 +302,4 @@ void DrawScaleBar(cv::Mat& bgr, double metres_per_pixel) {
   cv::putText(bgr, label, text, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -9,7 +9,7 @@
 #include "evaluator/core/occupancy_grid.h"
 #include "report/images/map_comparison_types.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 /// An axis-aligned rectangle of the common frame, metres.
 struct WorldWindow {
@@ -90,4 +90,4 @@ cv::Mat RenderDifferencePanel(const WallDifference& difference, const PanelGeome
 /// A scale bar (1, 2 or 5 x 10^k metres, about a fifth of the width) with its length, bottom left.
 void DrawScaleBar(cv::Mat& bgr, double metres_per_pixel);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 
 #include "evaluator/core/input_error.h"
-#include "evaluator/trajectory/association.h"
+#include "evaluator/trajectory_metrics/association.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 evaluator::Alignment InverseAlignment(const evaluator::Alignment& alignment) {
   evaluator::Alignment inverse;
@@ -39,4 +39,4 @@ ReferenceInMapFrame AlignReferenceOntoEstimate(const evaluator::Trajectory& refe
   }
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

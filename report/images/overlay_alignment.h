@@ -4,9 +4,9 @@
 #include <string>
 
 #include "evaluator/core/trajectory.h"
-#include "evaluator/trajectory/alignment.h"
+#include "evaluator/trajectory_metrics/alignment.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 /// The transform that undoes `alignment`: InverseAlignment(a).Apply(a.Apply(p)) == p. Exact for
 /// the alignments the evaluator makes, whose scale commutes with their rotation (planar ones
@@ -30,4 +30,4 @@ ReferenceInMapFrame AlignReferenceOntoEstimate(const evaluator::Trajectory& refe
                                                const evaluator::Trajectory& estimate, const std::string& align,
                                                double t_max_diff_s);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -15,7 +15,7 @@
 #include "report/images/image_header.h"
 #include "report/images/map_greys.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 namespace {
 
 using evaluator::InputError;
@@ -191,4 +191,4 @@ void WriteStagesGif(const std::vector<std::filesystem::path>& stage_images, cons
   if (error) throw std::runtime_error("cannot move the GIF into place at " + gif.string() + ": " + error.message());
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <vector>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 struct GifOptions {
   /// Longest side of the animation, pixels (maps are only ever shrunk, never enlarged).
@@ -40,4 +40,4 @@ void ValidateGifOptions(const GifOptions& options);
 void WriteStagesGif(const std::vector<std::filesystem::path>& stage_images, const std::filesystem::path& gif,
                     const GifOptions& options);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -10,7 +10,7 @@
 #include "report/images/area_shrink.h"
 #include "report/images/map_greys.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 namespace {
 
 cv::Mat GreyOf(const cv::Mat& image) {
@@ -43,4 +43,4 @@ void WriteThumbnail(const std::filesystem::path& map_image, const std::filesyste
   evaluator::WriteBinaryFile(png, evaluator::EncodePng(thumbnail.clone()));
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

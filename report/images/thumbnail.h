@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 /// Writes a gallery thumbnail of a map image (PGM/PNG, e.g. map_saver's map.pgm) as a grey PNG:
 /// cropped to the cells that are not map_saver's unknown grey 205 (with a margin of 4 % of the
@@ -13,4 +13,4 @@ namespace slamsweep::report {
 /// naming max_side_px when it is below 1.
 void WriteThumbnail(const std::filesystem::path& map_image, const std::filesystem::path& png, int max_side_px);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

@@ -14,7 +14,7 @@
 #include "report/images/overlay_alignment.h"
 #include "report/images/map_greys.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 namespace {
 
 using evaluator::OccupancyGrid;
@@ -228,4 +228,4 @@ void WriteTrajectoryOverlay(const std::filesystem::path& map_yaml, const std::fi
   evaluator::WriteBinaryFile(png, evaluator::EncodePng(WithLegend(image, legend)));
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

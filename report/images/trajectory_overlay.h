@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline images {
 
 struct OverlayOptions {
   /// Longer side of the map part of the picture, pixels (small maps are enlarged to it).
@@ -38,4 +38,4 @@ void WriteTrajectoryOverlay(const std::filesystem::path& map_yaml, const std::fi
                             const std::filesystem::path& reference_tum, const std::filesystem::path& png,
                             const OverlayOptions& options);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline images

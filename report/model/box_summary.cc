@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 
 double InterpolatedQuantile(const std::vector<double>& sorted, double p) {
   const double h = p * static_cast<double>(sorted.size() - 1);
@@ -38,4 +38,4 @@ std::optional<BoxSummary> SummarizeBox(std::vector<double> values) {
   return box;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 
 /// The five numbers a boxplot draws, plus the mean and the count: Tukey's box. Quartiles are
 /// interpolated linearly between order statistics (numpy's default, R's type 7); the whiskers end
@@ -27,4 +27,4 @@ double InterpolatedQuantile(const std::vector<double>& sorted, double p);
 /// nullopt for no finite value; non-finite values are left out.
 std::optional<BoxSummary> SummarizeBox(std::vector<double> values);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

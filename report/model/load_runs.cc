@@ -8,7 +8,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 
 namespace {
 
@@ -247,4 +247,4 @@ std::vector<RunRecord> LoadRuns(const std::filesystem::path& result_dir) {
   return runs;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

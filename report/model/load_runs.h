@@ -6,7 +6,7 @@
 
 #include "orchestrator/run/run_record.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 
 using orchestrator::FlatMetric;
 using orchestrator::RunOutputs;
@@ -23,4 +23,4 @@ RunRecord LoadRun(const std::filesystem::path& run_dir);
 /// Throws evaluator::InputError when `result_dir` or its runs/ folder does not exist.
 std::vector<RunRecord> LoadRuns(const std::filesystem::path& result_dir);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

@@ -5,7 +5,7 @@
 #include "evaluator/core/input_error.h"
 #include "orchestrator/store/named_study.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 
 SweepModelOptions LoadSweepModelOptions(const std::filesystem::path& result_dir) {
   SweepModelOptions options;
@@ -18,4 +18,4 @@ SweepModelOptions LoadSweepModelOptions(const std::filesystem::path& result_dir)
   return options;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

@@ -4,7 +4,7 @@
 
 #include "report/model/sweep_model.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 
 /// The study a sweep named (validity_study: in its file), as the sweep copied it into the result
 /// directory (orchestrator/store/named_study.h): SweepModelOptions with named_study set, or empty
@@ -12,4 +12,4 @@ namespace slamsweep::report {
 /// but unreadable.
 SweepModelOptions LoadSweepModelOptions(const std::filesystem::path& result_dir);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

@@ -4,7 +4,7 @@
 #include <map>
 #include <set>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 namespace {
 
 using nlohmann::json;
@@ -173,4 +173,4 @@ BestValue FindBest(const SequenceModel& sequence, const std::vector<std::size_t>
   return best;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

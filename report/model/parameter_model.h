@@ -10,7 +10,7 @@
 
 #include "report/model/sweep_model.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 
 /// A parameter that takes several values among one algorithm's rows of a table.
 struct ParameterAxis {
@@ -85,4 +85,4 @@ std::string ParameterValueText(const nlohmann::json& value);
 /// "c=1, d=fast": the values of the parameters not drawn in a slice ("" for one or two varying).
 std::string SliceText(const ParameterSweep& sweep, const ParameterSlice& slice);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

@@ -8,7 +8,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/installation.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 namespace {
 
 std::optional<std::pair<double, double>> MeanStdOf(const YAML::Node& node, const std::string& where) {
@@ -65,4 +65,4 @@ std::vector<PublishedFigure> LoadDefaultPublishedFigures() {
   return ReadPublishedFigures(path);
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

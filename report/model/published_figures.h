@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 
 /// One published relations error (Kuemmerle et al.'s metric) for a whole log: configs/published.yaml.
 struct PublishedFigure {
@@ -25,4 +25,4 @@ std::vector<PublishedFigure> ReadPublishedFigures(const std::filesystem::path& p
 /// configs/published.yaml, else the source tree's; none when no such file exists.
 std::vector<PublishedFigure> LoadDefaultPublishedFigures();
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

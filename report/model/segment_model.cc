@@ -9,7 +9,7 @@
 
 #include "evaluator/formats/trajectory/segment_errors_csv.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 namespace {
 
 using nlohmann::json;
@@ -183,4 +183,4 @@ std::optional<SegmentTable> BuildSegmentTable(const SweepModel& model, const Seq
   return table;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

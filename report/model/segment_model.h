@@ -9,7 +9,7 @@
 #include "report/model/mean_std.h"
 #include "report/model/sweep_model.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 
 /// One row of a table at one segment length.
 struct SegmentCell {
@@ -50,4 +50,4 @@ struct SegmentTable {
 /// read is left out and named in a note.
 std::optional<SegmentTable> BuildSegmentTable(const SweepModel& model, const SequenceModel& sequence);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

@@ -7,7 +7,7 @@
 #include "evaluator/statistics/mann_whitney.h"
 #include "evaluator/statistics/wilcoxon_signed_rank.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 namespace {
 
 // The headline column: the relations error where relations exist, else ATE.
@@ -215,4 +215,4 @@ std::vector<TableSignificance> BuildSignificance(const SweepModel& model, double
   return tables;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

@@ -8,7 +8,7 @@
 #include "evaluator/statistics/mean_interval.h"
 #include "report/model/sweep_model.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 
 /// One one-sided test: are the best row's values lower than another row's?
 struct RowTest {
@@ -68,4 +68,4 @@ std::vector<TableSignificance> BuildSignificance(const SweepModel& model, double
 /// `level` (paired: 1/2^n; unpaired: 1/C(2n, n)).
 std::size_t IterationsNeeded(double level, bool paired);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

@@ -11,7 +11,7 @@
 #include "orchestrator/store/validity_table.h"
 #include "report/model/validity_support.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 
 namespace {
 
@@ -434,4 +434,4 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions&
   return model;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

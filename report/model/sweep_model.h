@@ -10,7 +10,7 @@
 #include "report/model/published_figures.h"
 #include "orchestrator/run/run_record.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 
 using orchestrator::FlatMetric;
 using orchestrator::RunOutputs;
@@ -148,4 +148,4 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions&
 /// for APE, "delta 1 m" for RPE (from metric_details, else run.json's evaluation), "" otherwise.
 std::string MetricSpecLabel(const RunRecord& run, const std::string& metric);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 
 namespace ev = slamsweep::evaluator;
 
@@ -94,4 +94,4 @@ ValiditySupport SupportFor(std::string_view candidate, std::string_view sequence
                              TitleOf(candidate))};
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

@@ -5,7 +5,7 @@
 
 #include "evaluator/validity/metric_validity.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline model {
 
 /// Whether a ground-truth-free metric may name a best run on one sequence, and why not.
 struct ValiditySupport {
@@ -25,4 +25,4 @@ struct ValiditySupport {
 ValiditySupport SupportFor(std::string_view candidate, std::string_view sequence, const evaluator::ValidityStudy& own,
                            const evaluator::ValidityStudy* named, std::string_view named_source);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline model

@@ -6,7 +6,7 @@
 #include <array>
 #include <set>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 namespace {
 
 struct Colour {
@@ -107,4 +107,4 @@ std::string PaletteStyleSheet() {
   return css;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

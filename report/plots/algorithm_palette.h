@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 
 /// How one algorithm is drawn everywhere in a report: the colour of its points, lines, boxes and
 /// table swatch, and its marker.
@@ -66,4 +66,4 @@ std::size_t PreferredSlot(std::string_view name);
 /// (pages may not carry inline styles under Jenkins' Content-Security-Policy).
 std::string PaletteStyleSheet();
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

@@ -13,7 +13,7 @@
 
 #include "report/model/box_summary.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 
 /// How one series is drawn: its algorithm's colour and marker (AlgorithmPalette), and `variant`
 /// for the second, third, ... row of the same algorithm in one figure (other parameter values):
@@ -124,4 +124,4 @@ struct FigureJob {
 /// The title of any figure.
 const std::string& FigureTitle(const ViewFigure& figure);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

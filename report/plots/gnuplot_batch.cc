@@ -10,7 +10,7 @@
 #include "report/plots/metric_plot_script.h"
 #include "report/plots/png_repack.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 namespace {
 
 constexpr std::string_view kDoneMarker = "SLAMSWEEP_PLOTS_DONE";
@@ -76,4 +76,4 @@ void RunGnuplotBatch(const std::vector<GnuplotBatchJob>& jobs) {
   for (const GnuplotBatchJob& job : jobs) RepackAsPalettePng(job.png);
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

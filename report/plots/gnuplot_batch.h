@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 
 /// One PNG of a batch: the gnuplot commands that draw it, which must begin with
 /// `print PlotMarker(index)` (after `reset`) and end with `unset output`.
@@ -31,4 +31,4 @@ void RunGnuplotJobs(const std::vector<Job>& jobs, ToBatchJob to_batch_job) {
   RunGnuplotBatch(batch);
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

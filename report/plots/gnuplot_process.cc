@@ -12,7 +12,7 @@
 
 #include "orchestrator/process/run_to_exit.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 namespace {
 
 std::string ErrnoText(int error) { return std::strerror(error); }
@@ -99,4 +99,4 @@ GnuplotOutcome RunGnuplot(std::string_view script, const std::filesystem::path& 
   return outcome;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

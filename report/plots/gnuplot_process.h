@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 
 /// What a gnuplot process left behind.
 struct GnuplotOutcome {
@@ -23,4 +23,4 @@ struct GnuplotOutcome {
 /// cannot be made. A script error is not an exception here: it shows in the outcome.
 GnuplotOutcome RunGnuplot(std::string_view script, const std::filesystem::path& program = "/usr/bin/gnuplot");
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

@@ -1,6 +1,6 @@
 #include "report/plots/gnuplot_string.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 
 std::string GnuplotQuoted(std::string_view text) {
   std::string quoted;
@@ -20,4 +20,4 @@ std::string GnuplotQuoted(std::string_view text) {
   return quoted;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

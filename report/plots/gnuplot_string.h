@@ -3,7 +3,7 @@
 #include <string>
 #include <string_view>
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 
 /// `text` as a gnuplot string expression that evaluates to exactly `text`, for any command that
 /// takes a string (`set title`, `set output`, xtics labels, `print`). Built from single-quoted
@@ -15,4 +15,4 @@ namespace slamsweep::report {
 /// `noenhanced`, or ^ _ { } @ & would still be read as markup.
 std::string GnuplotQuoted(std::string_view text);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

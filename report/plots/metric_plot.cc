@@ -3,7 +3,7 @@
 #include "report/plots/gnuplot_batch.h"
 #include "report/plots/metric_plot_script.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 
 void WriteMetricPlots(const std::vector<MetricPlotJob>& jobs) {
   RunGnuplotJobs(jobs, [](const MetricPlotJob& job, std::size_t i) {
@@ -11,4 +11,4 @@ void WriteMetricPlots(const std::vector<MetricPlotJob>& jobs) {
   });
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

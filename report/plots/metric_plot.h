@@ -7,7 +7,7 @@
 
 #include "report/plots/figure_types.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 
 /// One algorithm's values of a metric on one sequence, one value per iteration (failed runs
 /// are left out by the caller: they have no value, and the tables count them).
@@ -48,4 +48,4 @@ struct MetricPlotJob {
 /// plot fails or its PNG is missing, or when gnuplot cannot be started. Does nothing for no jobs.
 void WriteMetricPlots(const std::vector<MetricPlotJob>& jobs);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

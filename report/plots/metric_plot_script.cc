@@ -10,7 +10,7 @@
 
 #include "report/plots/gnuplot_string.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 namespace {
 
 /// Half the width of the band the points of one algorithm are spread over, in x units.
@@ -170,4 +170,4 @@ std::string MetricPlotScript(const MetricPlot& plot, const std::filesystem::path
   return script;
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

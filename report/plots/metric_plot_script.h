@@ -8,7 +8,7 @@
 
 #include "report/plots/metric_plot.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 
 /// Mean and sample standard deviation of the finite values of one series.
 struct SeriesSpread {
@@ -32,4 +32,4 @@ std::string PlotMarker(std::size_t index);
 /// after `index`, so that one gnuplot process can run the scripts of many plots in a row.
 std::string MetricPlotScript(const MetricPlot& plot, const std::filesystem::path& png, std::size_t index);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

@@ -11,7 +11,7 @@
 #include "evaluator/formats/map/compact_png.h"
 #include "evaluator/formats/map/image_file.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 
 void RepackAsPalettePng(const std::filesystem::path& png) {
   // libpng through the evaluator's reader, not OpenCV's imgcodecs: imgcodecs would load GDAL and
@@ -45,4 +45,4 @@ void RepackAsPalettePng(const std::filesystem::path& png) {
   if (error) std::filesystem::remove(temporary, error);
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

@@ -11,7 +11,7 @@
 #include "report/plots/metric_plot_script.h"
 #include "report/plots/view_figure_scripts.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 namespace {
 
 /// Where the graded colours start on the heatmap scale: its palest yellow is too faint for a point on white.
@@ -96,4 +96,4 @@ void WriteScatterPlots(const std::vector<ScatterPlotJob>& jobs) {
   });
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

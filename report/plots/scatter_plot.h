@@ -8,7 +8,7 @@
 
 #include "report/plots/figure_types.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 
 /// One set of points drawn in one colour and marker, with its label in the key.
 struct ScatterSeries {
@@ -47,4 +47,4 @@ std::string ScatterPlotScript(const ScatterPlot& plot, const std::filesystem::pa
 /// Draws every job as a PNG in one gnuplot process; throws like WriteMetricPlots.
 void WriteScatterPlots(const std::vector<ScatterPlotJob>& jobs);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

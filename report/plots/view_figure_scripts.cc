@@ -10,7 +10,7 @@
 #include "report/plots/gnuplot_string.h"
 #include "report/plots/metric_plot_script.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 namespace {
 
 std::string GnuplotNumber(double value) { return fmt::format("{}", value); }
@@ -457,4 +457,4 @@ const std::string& FigureTitle(const ViewFigure& figure) {
   return std::visit([](const auto& f) -> const std::string& { return f.title; }, figure);
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

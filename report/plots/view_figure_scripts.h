@@ -6,7 +6,7 @@
 
 #include "report/plots/figure_types.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 
 /// Gnuplot commands that draw one figure into `png` (pngcairo), self-contained like
 /// MetricPlotScript: `reset`, the batch marker of `index`, datablocks named after `index`, and
@@ -37,4 +37,4 @@ std::string FigureScript(const FigureJob& job, std::size_t index);
 std::uint32_t HeatmapColour(double t);
 bool HeatmapTextIsWhite(double t);
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

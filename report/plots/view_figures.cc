@@ -3,7 +3,7 @@
 #include "report/plots/gnuplot_batch.h"
 #include "report/plots/view_figure_scripts.h"
 
-namespace slamsweep::report {
+namespace slamsweep::report::inline plots {
 
 void WriteViewFigures(const std::vector<FigureJob>& jobs) {
   RunGnuplotJobs(jobs, [](const FigureJob& job, std::size_t i) {
@@ -11,4 +11,4 @@ void WriteViewFigures(const std::vector<FigureJob>& jobs) {
   });
 }
 
-}  // namespace slamsweep::report
+}  // namespace slamsweep::report::inline plots

@@ -6,7 +6,7 @@
 
 #include <opencv2/core/mat.hpp>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 
 /// An 8-bit grey image as a small PNG: grey colour type, filter None, deflate level 6 (libdeflate). For a
 /// map_saver trinary map it is the map_server image that stores the map in the fewest bytes (map_server
@@ -36,4 +36,4 @@ struct AnimatedPngTiming {
 /// Throws InputError for an empty list or frames of other types or sizes.
 std::string EncodeAnimatedGreyPng(const std::vector<cv::Mat>& frames, const AnimatedPngTiming& timing = {});
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

@@ -7,7 +7,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 namespace {
 
 void RequireGreyLevel(int value, const char* name) {
@@ -69,4 +69,4 @@ OccupancyGrid FromImage8(const cv::Mat& image8, std::optional<int> unknown_value
   return grid;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

@@ -5,7 +5,7 @@
 
 #include "evaluator/core/occupancy_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 
 /// Throws InputError unless the grid has width x height > 0 cells, each unknown or holding p in [0, 1].
 void RequireValidGrid(const OccupancyGrid& grid);
@@ -24,4 +24,4 @@ cv::Mat ToImage8(const OccupancyGrid& grid, int unknown_value);
 OccupancyGrid FromImage8(const cv::Mat& image8, std::optional<int> unknown_value, double resolution_m,
                          GridOrigin origin = {});
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

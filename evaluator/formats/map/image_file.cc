@@ -12,7 +12,7 @@
 #include "evaluator/formats/map/png_image.h"
 #include "evaluator/formats/map/pnm_image.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 namespace {
 
 MappedFile ReadBytes(const std::filesystem::path& path) {
@@ -101,4 +101,4 @@ void WriteBinaryFile(const std::filesystem::path& path, std::string_view bytes) 
 
 std::string EncodePng(const cv::Mat& image) { return EncodePngBytes(image); }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 
 /// An image file as map_server's loader (SDL_image) sees it: 8-bit samples, 1 channel (grey),
 /// 3 (R, G, B) or 4 (R, G, B, A) in that order. Grey + alpha images are widened to R = G = B
@@ -31,4 +31,4 @@ void WriteBinaryFile(const std::filesystem::path& path, std::string_view bytes);
 /// PNG encoding of an 8-bit image (grey, or B, G, R, A in OpenCV's order): EncodePngBytes.
 std::string EncodePng(const cv::Mat& image);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

@@ -10,7 +10,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/map/image_file.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 namespace {
 
 std::string LowerExtension(const std::filesystem::path& path) {
@@ -66,4 +66,4 @@ OccupancyGrid ReadBareImage(const std::filesystem::path& path, const MapReadOpti
   return FromImage8(ReadGreyImageFile(path), options.unknown_value, options.default_resolution_m);
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

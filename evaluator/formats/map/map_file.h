@@ -8,7 +8,7 @@
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/formats/map/mrpt_gridmap_format.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 
 /// The format ReadMap will use for `path`: options.format when given, else by name:
 /// .yaml/.yml -> ROS map_server; .png with a sibling `<stem>_limits.txt` -> MRPT grid bitmap;
@@ -29,4 +29,4 @@ OccupancyGrid ReadMap(const std::filesystem::path& path, const MapReadOptions& o
 /// (ReadGreyImageFile).
 OccupancyGrid ReadBareImage(const std::filesystem::path& path, const MapReadOptions& options = {});
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

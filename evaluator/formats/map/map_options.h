@@ -2,7 +2,7 @@
 
 #include <optional>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 
 /// Which reader ReadMap uses. kAuto decides from the file name (see ReadMap).
 enum class MapFormat {
@@ -44,4 +44,4 @@ struct MapWriteOptions {
   int free_threshold_percent = 25;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

@@ -17,7 +17,7 @@
 #include "evaluator/formats/map/map_server_yaml.h"
 #include "evaluator/formats/map/pnm_image.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 namespace {
 
 // map_saver's fixed values: the YAML thresholds it writes and the grey levels of a trinary PGM.
@@ -144,4 +144,4 @@ void WriteMapServer(const OccupancyGrid& grid, const std::filesystem::path& yaml
   WriteBinaryFile(yaml_path, yaml);
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

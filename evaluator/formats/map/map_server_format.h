@@ -5,7 +5,7 @@
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/formats/map/map_options.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 
 /// Reads a ROS map_server map: the YAML (ParseMapServerYaml) and the image it names, turned into
 /// cells with map_server's own rules (MapServerGridFromImage): p = v / 100 for the map_server
@@ -26,4 +26,4 @@ OccupancyGrid ReadMapServer(const std::filesystem::path& yaml_path);
 void WriteMapServer(const OccupancyGrid& grid, const std::filesystem::path& yaml_path,
                     const MapWriteOptions& options = {});
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

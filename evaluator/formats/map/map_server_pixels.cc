@@ -8,7 +8,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 
 std::uint8_t MapServerPixelValue(const std::uint8_t* samples, int channels, const MapServerMetadata& metadata) {
   const bool has_alpha = channels == 4;
@@ -89,4 +89,4 @@ OccupancyGrid MapServerGridFromImage(const cv::Mat& image, const MapServerMetada
   return grid;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

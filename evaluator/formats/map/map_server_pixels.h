@@ -6,7 +6,7 @@
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/formats/map/map_server_yaml.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 
 /// map_server's byte for value -1 (unknown) before it is stored in the int8 map.
 inline constexpr std::uint8_t kMapServerUnknownByte = 255;
@@ -31,4 +31,4 @@ std::uint8_t MapServerPixelValue(const std::uint8_t* samples, int channels, cons
 /// image, pixel and value.
 OccupancyGrid MapServerGridFromImage(const cv::Mat& image, const MapServerMetadata& metadata);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

@@ -13,7 +13,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 namespace {
 
 constexpr std::array<std::string_view, 7> kKeys = {"image",           "resolution",  "origin", "negate",
@@ -186,4 +186,4 @@ MapServerMetadata ParseMapServerYaml(std::string_view content, const std::filesy
   return metadata;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

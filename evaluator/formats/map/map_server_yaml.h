@@ -6,7 +6,7 @@
 
 #include "evaluator/core/occupancy_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 
 /// map_server's `mode` key: how grey levels become cell values.
 enum class MapServerMode { kTrinary, kScale, kRaw };
@@ -37,4 +37,4 @@ MapServerMetadata ParseMapServerYaml(std::string_view content, const std::filesy
 /// map_server's name of a mode ("trinary", "scale", "raw").
 std::string_view MapServerModeName(MapServerMode mode);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

@@ -11,7 +11,7 @@
 #include "evaluator/formats/map/image8.h"
 #include "evaluator/formats/map/image_file.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 namespace {
 
 /// The grid extent in metres as `<stem>_limits.txt` gives it.
@@ -98,4 +98,4 @@ void WriteMrptGridmap(const OccupancyGrid& grid, const std::filesystem::path& im
                               grid.origin.x_m, x_max_m, grid.origin.y_m, y_max_m));
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

@@ -4,7 +4,7 @@
 
 #include "evaluator/core/occupancy_grid.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 
 /// MRPT's unknown grey level: COccupancyGridMap2D stores p(free) and draws the prior 0.5 as 127.
 inline constexpr int kMrptUnknownValue = 127;
@@ -31,4 +31,4 @@ OccupancyGrid ReadMrptGridmap(const std::filesystem::path& image_path, int unkno
 /// Throws InputError for a rotated origin (MRPT grids are axis-aligned) or a malformed grid.
 void WriteMrptGridmap(const OccupancyGrid& grid, const std::filesystem::path& image_path);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

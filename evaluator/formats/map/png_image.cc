@@ -17,7 +17,7 @@
 #include <emmintrin.h>
 #endif
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 namespace {
 
 constexpr std::string_view kPngSignature = "\x89PNG\r\n\x1a\n";
@@ -315,4 +315,4 @@ std::string EncodeGreyPalettePng(const cv::Mat& grey) {
   return encoded;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 
 /// True when `bytes` starts with the PNG signature.
 bool LooksLikePng(std::string_view bytes);
@@ -32,4 +32,4 @@ std::string EncodePngBytes(const cv::Mat& image);
 /// indices of a palette image, not its colours. Throws InputError for another image type.
 std::string EncodeGreyPalettePng(const cv::Mat& grey);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

@@ -11,7 +11,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 namespace {
 
 bool IsPnmSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
@@ -182,4 +182,4 @@ std::string EncodePgm(const cv::Mat& grey, std::string_view comment) {
   return out;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

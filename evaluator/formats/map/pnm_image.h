@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline map {
 
 /// True when `bytes` starts with a Netpbm magic number "P1" ... "P7" (DecodePnm accepts P2, P3, P5, P6
 /// and rejects the others with a clear message).
@@ -29,4 +29,4 @@ std::optional<cv::Mat> BinaryGreyPnmView(std::string_view bytes, const std::file
 /// layout map_saver writes.
 std::string EncodePgm(const cv::Mat& grey, std::string_view comment);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline map

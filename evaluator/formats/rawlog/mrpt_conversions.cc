@@ -8,7 +8,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator::rawlog_internal {
+namespace slamsweep::evaluator::inline formats::inline rawlog::internal {
 namespace {
 
 void RequireTwoBeams(std::size_t beams) {
@@ -96,4 +96,4 @@ LaserScan FromMrptScan(const mrpt::obs::CObservation2DRangeScan& observation) {
   return scan;
 }
 
-}  // namespace slamsweep::evaluator::rawlog_internal
+}  // namespace slamsweep::evaluator::inline formats::inline rawlog::internal

@@ -12,7 +12,7 @@
 #include "evaluator/core/laser_scan.h"
 #include "evaluator/core/pose.h"
 
-namespace slamsweep::evaluator::rawlog_internal {
+namespace slamsweep::evaluator::inline formats::inline rawlog::internal {
 
 mrpt::poses::CPose3D ToMrptPose3D(const Pose& pose);
 Pose FromMrptPose3D(const mrpt::poses::CPose3D& pose);
@@ -35,4 +35,4 @@ mrpt::obs::CObservation2DRangeScan::Ptr ToMrptScan(const LaserScan& scan, const 
 /// stamp_s = mrpt::Clock::toDouble(timestamp). Needs at least 2 beams.
 LaserScan FromMrptScan(const mrpt::obs::CObservation2DRangeScan& scan);
 
-}  // namespace slamsweep::evaluator::rawlog_internal
+}  // namespace slamsweep::evaluator::inline formats::inline rawlog::internal

@@ -17,11 +17,11 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/rawlog/mrpt_conversions.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline rawlog {
 namespace {
 
-using rawlog_internal::FromMrptPose2D;
-using rawlog_internal::FromMrptScan;
+using internal::FromMrptPose2D;
+using internal::FromMrptScan;
 
 /// A scan as read, before its stamp and odometry are settled (both need the whole file).
 struct ReadScan {
@@ -271,4 +271,4 @@ Sequence ReadRawlog(const std::filesystem::path& path, const RawlogReadOptions& 
   return ReadRawlogContents(path, options).sequence;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline rawlog

@@ -7,7 +7,7 @@
 #include "evaluator/sequence/scan_stamps.h"
 #include "evaluator/sequence/sequence.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline rawlog {
 
 struct RawlogReadOptions {
   /// Empty: the file name without ".gz" and ".rawlog".
@@ -42,4 +42,4 @@ RawlogContents ReadRawlogContents(const std::filesystem::path& path, const Rawlo
 /// ReadRawlogContents(...).sequence.
 Sequence ReadRawlog(const std::filesystem::path& path, const RawlogReadOptions& options = {});
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline rawlog

@@ -16,11 +16,11 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/rawlog/mrpt_conversions.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline rawlog {
 namespace {
 
-using rawlog_internal::ToMrptPose2D;
-using rawlog_internal::ToMrptScan;
+using internal::ToMrptPose2D;
+using internal::ToMrptScan;
 
 /// Tolerance on z, roll and pitch of the odometry: a rawlog action is a planar increment.
 constexpr double kPlanarTolerance = 1e-6;
@@ -122,4 +122,4 @@ RawlogSummary WriteRawlog(const RobotLog& sequence, const std::filesystem::path&
   return summary;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline rawlog

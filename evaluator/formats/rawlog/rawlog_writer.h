@@ -6,7 +6,7 @@
 
 #include "evaluator/sequence/robot_log.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline rawlog {
 
 /// The two layouts of an MRPT rawlog (https://www.mrpt.org/Rawlog_Format, CRawlog).
 enum class RawlogForm {
@@ -55,4 +55,4 @@ struct RawlogSummary {
 RawlogSummary WriteRawlog(const RobotLog& log, const std::filesystem::path& path,
                           const RawlogWriteOptions& options = {});
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline rawlog

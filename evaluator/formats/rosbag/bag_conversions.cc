@@ -7,7 +7,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline rosbag {
 
 Pose ToPlanarPose(const BagPose& pose, std::string_view where) {
   const double components[] = {pose.x_m, pose.y_m, pose.z_m, pose.qx, pose.qy, pose.qz, pose.qw};
@@ -57,4 +57,4 @@ Trajectory ToTrajectory(const std::vector<BagStampedPose>& poses, const std::fil
   return trajectory;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline rosbag

@@ -11,7 +11,7 @@
 #include "evaluator/core/trajectory.h"
 #include "evaluator/formats/rosbag/bag_messages.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline rosbag {
 
 /// The planar pose (x, y, yaw) of a stored pose, its quaternion normalised first (ROS tools write
 /// float-rounded quaternions). Throws InputError "`where`: ..." for a non-finite component or a
@@ -33,4 +33,4 @@ inline double MessageStamp(double header_stamp_s, double record_s) {
 Trajectory ToTrajectory(const std::vector<BagStampedPose>& poses, const std::filesystem::path& bag,
                         std::string_view topic, std::size_t& dropped_duplicates);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline rosbag

@@ -19,6 +19,9 @@
 #include "evaluator/core/input_error.h"
 
 namespace slamsweep::evaluator {
+inline namespace formats {
+inline namespace rosbag {
+
 namespace {
 
 constexpr const char* kTfTopic = "/tf";
@@ -30,11 +33,11 @@ constexpr const char* kTfStaticTopic = "/tf_static";
 
 /// Opens the bag or explains why not. librosbag's own messages ("Error opening file", "Bag
 /// unindexed") are kept after ours, since they tell a truncated bag from a foreign file.
-void Open(const std::filesystem::path& path, rosbag::Bag& bag) {
+void Open(const std::filesystem::path& path, ::rosbag::Bag& bag) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) Fail(path, "no such bag file");
   try {
-    bag.open(path.string(), rosbag::bagmode::Read);
+    bag.open(path.string(), ::rosbag::bagmode::Read);
   } catch (const ros::Exception& e) {
     Fail(path, std::string("not a readable ROS1 bag (") + e.what() + ")");
   }
@@ -45,9 +48,9 @@ struct TopicIndex {
   std::map<std::string, std::string> md5_by_type;
 };
 
-std::map<std::string, TopicIndex> IndexTopics(rosbag::View& view) {  // rosbag::View is not const-correct
+std::map<std::string, TopicIndex> IndexTopics(::rosbag::View& view) {  // ::rosbag::View is not const-correct
   std::map<std::string, TopicIndex> topics;
-  for (const rosbag::ConnectionInfo* connection : view.getConnections()) {
+  for (const ::rosbag::ConnectionInfo* connection : view.getConnections()) {
     topics[connection->topic].md5_by_type[connection->datatype] = connection->md5sum;
   }
   return topics;
@@ -121,7 +124,7 @@ void AppendTransforms(const tf2_msgs::TFMessage& message, double record_s, std::
 }
 
 template <typename Message>
-boost::shared_ptr<Message> Instantiate(const std::filesystem::path& bag, const rosbag::MessageInstance& message,
+boost::shared_ptr<Message> Instantiate(const std::filesystem::path& bag, const ::rosbag::MessageInstance& message,
                                        std::size_t index) {
   boost::shared_ptr<Message> decoded = message.instantiate<Message>();
   // RequireTopic checked every connection already; this guards against a corrupt index.
@@ -135,13 +138,13 @@ boost::shared_ptr<Message> Instantiate(const std::filesystem::path& bag, const r
 }  // namespace
 
 BagSummary ReadBagSummary(const std::filesystem::path& path) {
-  rosbag::Bag bag;
+  ::rosbag::Bag bag;
   Open(path, bag);
   BagSummary summary;
   try {
-    rosbag::View all(bag);
+    ::rosbag::View all(bag);
     for (const auto& [topic, index] : IndexTopics(all)) {
-      rosbag::View on_topic(bag, rosbag::TopicQuery(topic));
+      ::rosbag::View on_topic(bag, ::rosbag::TopicQuery(topic));
       summary.topics.push_back(BagTopic{topic, JoinTypes(index), on_topic.size()});
     }
     summary.message_count = all.size();
@@ -156,13 +159,13 @@ BagSummary ReadBagSummary(const std::filesystem::path& path) {
 }
 
 BagMessages ReadBagMessages(const std::filesystem::path& path, const BagRequest& request) {
-  rosbag::Bag bag;
+  ::rosbag::Bag bag;
   Open(path, bag);
   BagMessages messages;
   std::size_t index = 0;
   std::string topic;
   try {
-    rosbag::View index_view(bag);
+    ::rosbag::View index_view(bag);
     const std::map<std::string, TopicIndex> topics = IndexTopics(index_view);
     std::vector<std::string> wanted;
     if (!request.scan_topic.empty()) {
@@ -186,8 +189,8 @@ BagMessages ReadBagMessages(const std::filesystem::path& path, const BagRequest&
     }
     if (wanted.empty()) return messages;
 
-    rosbag::View view(bag, rosbag::TopicQuery(wanted));
-    for (const rosbag::MessageInstance& message : view) {
+    ::rosbag::View view(bag, ::rosbag::TopicQuery(wanted));
+    for (const ::rosbag::MessageInstance& message : view) {
       topic = message.getTopic();
       const double record_s = Seconds(message.getTime());
       // One topic may serve two roles (odometry read from the reference topic is an error the
@@ -216,4 +219,6 @@ BagMessages ReadBagMessages(const std::filesystem::path& path, const BagRequest&
   return messages;
 }
 
+}  // namespace rosbag
+}  // namespace formats
 }  // namespace slamsweep::evaluator

@@ -9,7 +9,10 @@
 #include <string>
 #include <vector>
 
+// Spelled the C++17 way: the ROS message library, which is C++17, includes this header.
 namespace slamsweep::evaluator {
+inline namespace formats {
+inline namespace rosbag {
 
 /// The ROS message types the reader understands, as ROS names them.
 inline constexpr const char* kLaserScanType = "sensor_msgs/LaserScan";
@@ -98,4 +101,6 @@ BagSummary ReadBagSummary(const std::filesystem::path& bag);
 /// cannot be decoded.
 BagMessages ReadBagMessages(const std::filesystem::path& bag, const BagRequest& request);
 
+}  // namespace rosbag
+}  // namespace formats
 }  // namespace slamsweep::evaluator

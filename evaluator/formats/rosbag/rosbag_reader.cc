@@ -10,9 +10,9 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/rosbag/bag_conversions.h"
 #include "evaluator/formats/rosbag/transform_tree.h"
-#include "evaluator/trajectory/interpolation.h"
+#include "evaluator/trajectory_metrics/interpolation.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline rosbag {
 namespace {
 
 std::string Join(const std::vector<std::string>& items) {
@@ -244,4 +244,4 @@ Sequence ReadRosbag(const std::filesystem::path& bag, const RosbagReadOptions& o
   return sequence;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline rosbag

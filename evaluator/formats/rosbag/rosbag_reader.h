@@ -10,7 +10,7 @@
 #include "evaluator/formats/rosbag/bag_messages.h"
 #include "evaluator/sequence/sequence.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline rosbag {
 
 /// How a ROS1 bag with 2D laser scans becomes a Sequence. The defaults read a bag that has one
 /// sensor_msgs/LaserScan topic and either one nav_msgs/Odometry topic or /tf odom -> base_link.
@@ -75,4 +75,4 @@ std::vector<std::string> TopicsOfType(const RosbagInfo& info, std::string_view d
 /// lies within the odometry's span, or a message holds an unusable pose or scan.
 Sequence ReadRosbag(const std::filesystem::path& bag, const RosbagReadOptions& options = {});
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline rosbag

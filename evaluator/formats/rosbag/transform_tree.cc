@@ -3,9 +3,9 @@
 #include <iterator>
 #include <set>
 
-#include "evaluator/trajectory/interpolation.h"
+#include "evaluator/trajectory_metrics/interpolation.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline rosbag {
 
 std::string CanonicalFrame(std::string_view frame) {
   while (!frame.empty() && frame.front() == '/') frame.remove_prefix(1);
@@ -126,4 +126,4 @@ Trajectory TransformTree::Track(std::string_view parent, std::string_view child)
   return track;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline rosbag

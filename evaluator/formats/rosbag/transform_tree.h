@@ -9,7 +9,7 @@
 #include "evaluator/core/pose.h"
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline rosbag {
 
 /// tf's frame names without the leading '/' that ROS1 tf (before tf2) allowed: "/odom" == "odom".
 std::string CanonicalFrame(std::string_view frame);
@@ -64,4 +64,4 @@ class TransformTree {
   std::map<std::string, Edge, std::less<>> edges_;
 };
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline rosbag

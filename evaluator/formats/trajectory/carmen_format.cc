@@ -11,7 +11,7 @@
 #include "evaluator/formats/trajectory/output_file.h"
 #include "evaluator/formats/trajectory/planarity.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 namespace {
 
 /// Why the stamps cannot be used (every reason found, joined), or nothing when they can.
@@ -153,4 +153,4 @@ void WriteCarmenPoses(const Trajectory& trajectory, const std::filesystem::path&
   WriteOutputFile(path, [&](std::ostream& out) { WriteCarmenPoses(trajectory, out); });
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

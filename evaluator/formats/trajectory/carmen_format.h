@@ -9,7 +9,7 @@
 #include "evaluator/core/trajectory.h"
 #include "evaluator/formats/trajectory/carmen_log.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 /// How far a CARMEN log's clock is trusted. Many Radish logs have broken ipc_timestamps:
 /// constant or zero (campus, orebro, belgioioso), printed with 6 significant digits so that
@@ -54,4 +54,4 @@ CarmenPoses ReadCarmenPoses(const std::filesystem::path& path, const CarmenReadO
 void WriteCarmenPoses(const Trajectory& trajectory, std::ostream& out);
 void WriteCarmenPoses(const Trajectory& trajectory, const std::filesystem::path& path);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

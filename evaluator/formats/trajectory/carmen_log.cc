@@ -15,7 +15,7 @@
 #include "evaluator/core/text_file.h"
 #include "evaluator/formats/trajectory/output_file.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 namespace {
 
 constexpr std::string_view kFlaserLayout =
@@ -466,4 +466,4 @@ std::string FormatCarmenRecord(const CarmenOdomRecord& record) {
 
 std::string FormatCarmenRecord(const CarmenParam& param) { return "PARAM " + param.name + ' ' + param.value; }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

@@ -10,7 +10,7 @@
 
 #include "evaluator/core/pose.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 /// Beam layout stated by a ROBOTLASER1 record. FLASER records carry none: CARMEN's old-style
 /// front laser is a 180 degree fan (-90..+90 deg, counter-clockwise) with the beam count of the record.
@@ -95,4 +95,4 @@ std::string FormatCarmenRecord(const CarmenLaserRecord& record);
 std::string FormatCarmenRecord(const CarmenOdomRecord& record);
 std::string FormatCarmenRecord(const CarmenParam& param);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

@@ -11,7 +11,7 @@
 #include "evaluator/core/text_file.h"
 #include "evaluator/formats/trajectory/output_file.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 namespace {
 
 constexpr std::array<std::string_view, 4> kSe2Columns = {"timestamp", "x", "y", "theta"};
@@ -117,4 +117,4 @@ void WriteCsv(const Trajectory& trajectory, const std::filesystem::path& path) {
   WriteOutputFile(path, [&](std::ostream& out) { WriteCsv(trajectory, out); });
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

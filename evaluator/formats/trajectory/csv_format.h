@@ -6,7 +6,7 @@
 
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 /// Comma-separated trajectories with a required header line naming the columns, in any order:
 ///   SE(2): timestamp,x,y,theta              (theta in radians, about +z)
@@ -23,4 +23,4 @@ Trajectory ReadCsv(const std::filesystem::path& path);
 void WriteCsv(const Trajectory& trajectory, std::ostream& out);
 void WriteCsv(const Trajectory& trajectory, const std::filesystem::path& path);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

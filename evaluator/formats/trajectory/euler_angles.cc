@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 Eigen::Quaterniond QuaternionFromRollPitchYaw(const RollPitchYaw& angles) {
   const Eigen::Quaterniond rotation = Eigen::AngleAxisd(angles.yaw_rad, Eigen::Vector3d::UnitZ()) *
@@ -28,4 +28,4 @@ RollPitchYaw RollPitchYawFromQuaternion(const Eigen::Quaterniond& rotation) {
   return angles;
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

@@ -2,7 +2,7 @@
 
 #include <Eigen/Geometry>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 /// Roll, pitch and yaw (radians) of R = Rz(yaw) * Ry(pitch) * Rx(roll): rotations about the
 /// fixed X, then Y, then Z axes. Kuemmerle relations files and MRPT's CPose3D (yaw, pitch,
@@ -19,4 +19,4 @@ Eigen::Quaterniond QuaternionFromRollPitchYaw(const RollPitchYaw& angles);
 /// (gimbal lock) only roll -/+ yaw is defined; yaw is then reported as 0.
 RollPitchYaw RollPitchYawFromQuaternion(const Eigen::Quaterniond& rotation);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

@@ -6,7 +6,7 @@
 #include "evaluator/core/text_file.h"
 #include "evaluator/formats/trajectory/output_file.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 namespace {
 
 constexpr std::string_view kPoseLayout = "r11 r12 r13 tx r21 r22 r23 ty r31 r32 r33 tz";
@@ -106,4 +106,4 @@ void WriteKitti(const Trajectory& trajectory, const std::filesystem::path& poses
   }
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

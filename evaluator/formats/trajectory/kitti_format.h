@@ -7,7 +7,7 @@
 
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 /// KITTI odometry format: one pose per line, the 12 numbers of the row-major 3x4 matrix
 /// [R | t] (r11 r12 r13 tx r21 r22 r23 ty r31 r32 r33 tz), no stamps. Stamps come from a
@@ -38,4 +38,4 @@ void WriteKittiTimes(const Trajectory& trajectory, std::ostream& out);
 void WriteKitti(const Trajectory& trajectory, const std::filesystem::path& poses_path,
                 const std::filesystem::path& times_path = {});
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

@@ -6,7 +6,7 @@
 #include "evaluator/formats/trajectory/output_file.h"
 #include "evaluator/formats/trajectory/planarity.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 namespace {
 
 constexpr std::string_view kIcpLayout = "step x y phi";
@@ -123,4 +123,4 @@ void WriteMrptPath(const Trajectory& trajectory, const std::filesystem::path& pa
   WriteOutputFile(path, [&](std::ostream& out) { WriteMrptPath(trajectory, out, layout); });
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

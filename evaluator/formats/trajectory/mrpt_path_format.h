@@ -9,7 +9,7 @@
 
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 /// The two layouts of `log_estimated_path.txt` written by MRPT's SLAM apps (mrpt 2.x,
 /// libs/apps/src/ICP_SLAM_App.cpp and RBPF_SLAM_App.cpp): one line per processed rawlog
@@ -59,4 +59,4 @@ void WriteMrptPath(const Trajectory& trajectory, std::ostream& out, MrptPathLayo
 void WriteMrptPath(const Trajectory& trajectory, const std::filesystem::path& path,
                    MrptPathLayout layout = MrptPathLayout::kRbpfSlam);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

@@ -6,7 +6,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 void WriteOutputFile(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
   std::ofstream out(path, std::ios::binary);
@@ -32,4 +32,4 @@ void WriteOutputFile(const std::filesystem::path& path, const std::function<void
 
 std::string ShortestText(double value) { return fmt::format("{}", value); }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

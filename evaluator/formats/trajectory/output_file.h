@@ -5,7 +5,7 @@
 #include <ostream>
 #include <string>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 /// Creates (or truncates) `path` and lets `write` fill it. A failure to open or to write is an
 /// InputError naming the path, and the half-written file is removed so no one reads it as whole.
@@ -15,4 +15,4 @@ void WriteOutputFile(const std::filesystem::path& path, const std::function<void
 /// every writer in this folder round-trips doubles bit for bit.
 std::string ShortestText(double value);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

@@ -5,7 +5,7 @@
 
 #include "evaluator/core/input_error.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 void RequirePlanar(const Trajectory& trajectory, std::string_view what, double tolerance) {
   for (std::size_t i = 0; i < trajectory.size(); ++i) {
@@ -19,4 +19,4 @@ void RequirePlanar(const Trajectory& trajectory, std::string_view what, double t
   }
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

@@ -5,7 +5,7 @@
 #include "evaluator/formats/trajectory/euler_angles.h"
 #include "evaluator/formats/trajectory/output_file.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 namespace {
 
 constexpr std::string_view kLayout = "t1 t2 x y z roll pitch yaw";
@@ -49,4 +49,4 @@ void WriteRelations(const Relations& relations, const std::filesystem::path& pat
   WriteOutputFile(path, [&](std::ostream& out) { WriteRelations(relations, out); });
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

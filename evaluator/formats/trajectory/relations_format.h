@@ -6,7 +6,7 @@
 
 #include "evaluator/core/relation.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 /// Kuemmerle et al. (2009) relations files: one relation per line,
 /// `t1 t2 x y z roll pitch yaw` = the pose at t2 in the frame of the pose at t1, with
@@ -20,4 +20,4 @@ Relations ReadRelations(const std::filesystem::path& path);
 void WriteRelations(const Relations& relations, std::ostream& out);
 void WriteRelations(const Relations& relations, const std::filesystem::path& path);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

@@ -6,7 +6,7 @@
 #include "evaluator/core/text_file.h"
 #include "evaluator/formats/trajectory/output_file.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 void WriteSegmentErrorsCsv(const std::vector<SegmentErrorRecord>& records, std::ostream& out) {
   out << kSegmentErrorsHeader << '\n';
@@ -58,4 +58,4 @@ std::vector<SegmentErrorRecord> ReadSegmentErrorsCsv(const std::filesystem::path
   return ParseSegmentErrorsCsv(ReadTextFile(path), path);
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

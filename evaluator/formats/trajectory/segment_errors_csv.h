@@ -5,9 +5,9 @@
 #include <string_view>
 #include <vector>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
-/// One segment of a segment RPE (evaluator/trajectory/segment_rpe.h), as a run folder's
+/// One segment of a segment RPE (evaluator/trajectory_metrics/segment_rpe.h), as a run folder's
 /// rpe_segments.csv keeps it: the report pools these over the runs of a group for its boxplots.
 struct SegmentErrorRecord {
   double length_m = 0.0;
@@ -31,4 +31,4 @@ void WriteSegmentErrorsCsv(const std::vector<SegmentErrorRecord>& records, const
 std::vector<SegmentErrorRecord> ParseSegmentErrorsCsv(std::string_view content, const std::filesystem::path& source);
 std::vector<SegmentErrorRecord> ReadSegmentErrorsCsv(const std::filesystem::path& path);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

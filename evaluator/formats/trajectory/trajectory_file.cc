@@ -7,7 +7,7 @@
 #include "evaluator/formats/trajectory/output_file.h"
 #include "evaluator/formats/trajectory/tum_format.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 namespace {
 
 /// An option meant for another format is a mistake (a wrong file, or a wrong guess by detection);
@@ -98,4 +98,4 @@ void WriteTrajectory(const Trajectory& trajectory, const std::filesystem::path& 
   throw InputError(Located(path, 0, "no trajectory format chosen for writing"));
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

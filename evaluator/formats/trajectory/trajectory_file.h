@@ -9,7 +9,7 @@
 #include "evaluator/formats/trajectory/mrpt_path_format.h"
 #include "evaluator/formats/trajectory/trajectory_format.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 struct TrajectoryReadOptions {
   /// KITTI: the times file (one stamp per pose line). Empty: stamps are the pose index (0, 1, 2 ... s).
@@ -51,4 +51,4 @@ struct TrajectoryWriteOptions {
 void WriteTrajectory(const Trajectory& trajectory, const std::filesystem::path& path,
                      TrajectoryFormat format = TrajectoryFormat::kAuto, const TrajectoryWriteOptions& options = {});
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

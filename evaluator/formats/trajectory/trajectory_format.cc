@@ -11,7 +11,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 namespace {
 
 constexpr std::string_view kTriedFormats =
@@ -163,4 +163,4 @@ TrajectoryFormat FormatForOutputPath(const std::filesystem::path& path) {
                            ".kitti, .log (CARMEN) or log_estimated_path.txt (MRPT), or name the format"));
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

@@ -4,7 +4,7 @@
 #include <optional>
 #include <string_view>
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 enum class TrajectoryFormat { kAuto, kTum, kKitti, kMrptPath, kCarmen, kCsv };
 
@@ -32,4 +32,4 @@ TrajectoryFormat DetectTrajectoryFormat(const std::filesystem::path& path, std::
 /// or ends in .gz (the writers produce plain text).
 TrajectoryFormat FormatForOutputPath(const std::filesystem::path& path);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

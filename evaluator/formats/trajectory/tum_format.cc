@@ -8,7 +8,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 namespace {
 
@@ -82,4 +82,4 @@ void WriteTum(const Trajectory& trajectory, const std::filesystem::path& path) {
   if (!out) throw InputError(Located(path, 0, "write failed"));
 }
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

@@ -6,7 +6,7 @@
 
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator {
+namespace slamsweep::evaluator::inline formats::inline trajectory {
 
 /// TUM RGB-D format: one pose per line, `timestamp tx ty tz qx qy qz qw`; `#` comments.
 /// Quaternions are normalised on read (files carry 9 digits); a line with a quaternion
@@ -18,4 +18,4 @@ Trajectory ReadTum(const std::filesystem::path& path);
 void WriteTum(const Trajectory& trajectory, std::ostream& out);
 void WriteTum(const Trajectory& trajectory, const std::filesystem::path& path);
 
-}  // namespace slamsweep::evaluator
+}  // namespace slamsweep::evaluator::inline formats::inline trajectory

@@ -8,7 +8,7 @@
 #include "evaluator/sequence/carmen_sequence.h"
 #include "evaluator/catalog/catalog.h"
 #include "evaluator/sequence/relations_clock.h"
-#include "evaluator/trajectory/relations_metric.h"
+#include "evaluator/trajectory_metrics/relations_metric.h"
 #include "tests/support/shared_data.h"
 
 namespace slamsweep::evaluator {

@@ -24,7 +24,7 @@
 #include "evaluator/map_metrics/paper_metrics.h"
 #include "evaluator/noise/odometry_noise.h"
 #include "evaluator/sequence/carmen_sequence.h"
-#include "evaluator/trajectory/ape.h"
+#include "evaluator/trajectory_metrics/ape.h"
 #include "orchestrator/adapters/mrpt_adapters.h"
 #include "orchestrator/adapters/mrpt_ini.h"
 #include "tests/evaluator/formats/rawlog/rawlog_test_util.h"

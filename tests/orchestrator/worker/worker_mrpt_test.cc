@@ -13,7 +13,7 @@
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/formats/trajectory/tum_format.h"
 #include "evaluator/sequence_io/sequence_file.h"
-#include "evaluator/trajectory/ape.h"
+#include "evaluator/trajectory_metrics/ape.h"
 #include "orchestrator/adapters/run_inputs.h"
 #include "orchestrator/worker/worker.h"
 #include "tests/orchestrator/worker/run_spec_fixture.h"

@@ -27,7 +27,7 @@
 #include "evaluator/sequence/robot_log.h"
 #include "evaluator/sequence_io/sequence_file.h"
 #include "evaluator/statistics/sign_test.h"
-#include "evaluator/trajectory/ape.h"
+#include "evaluator/trajectory_metrics/ape.h"
 #include "tests/cli/run_cli.h"
 #include "tests/support/shared_data.h"
 

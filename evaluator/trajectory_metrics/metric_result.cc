@@ -1,0 +1,28 @@
+#include "evaluator/trajectory_metrics/metric_result.h"
+
+namespace slamsweep::evaluator::inline trajectory_metrics {
+
+nlohmann::json MetricResult::ToJson() const {
+  nlohmann::json out = statistics;
+  out["metric"] = metric;
+  out["unit"] = unit;
+  out["specification"] = specification;
+  out["pairs"] = pairs;
+  out["reference_unpaired"] = reference_unpaired;
+  out["estimate_unpaired"] = estimate_unpaired;
+  if (alignment) out["alignment"] = evaluator::ToJson(*alignment);
+  return out;
+}
+
+void FinishMetricResult(std::string metric, PoseRelation pose_relation, nlohmann::json specification,
+                        const Association& association, MetricResult& result) {
+  result.metric = std::move(metric);
+  result.unit = std::string(PoseRelationUnit(pose_relation));
+  result.specification = std::move(specification);
+  result.statistics = ComputeStatistics(result.errors);
+  result.pairs = association.reference.size();
+  result.reference_unpaired = association.reference_unpaired;
+  result.estimate_unpaired = association.estimate_unpaired;
+}
+
+}  // namespace slamsweep::evaluator::inline trajectory_metrics
