@@ -20,7 +20,7 @@
 #include "orchestrator/process/interruption.h"
 #include "orchestrator/process/wake_up.h"
 #include "orchestrator/service/auth.h"
-#include "orchestrator/service/queue_states.h"
+#include "orchestrator/run/run_status.h"
 #include "orchestrator/store/results_store.h"
 
 // Last: its <resolv.h> defines `_res`, which breaks Eigen headers included after it.
@@ -29,8 +29,8 @@
 namespace slamsweep::cli {
 namespace {
 
-using orchestrator::service::QueuedRunState;
-using orchestrator::service::QueuedSweepState;
+using orchestrator::QueuedRunState;
+using orchestrator::QueuedSweepState;
 using orchestrator::service::ReportState;
 
 struct SubmitOptions {
@@ -144,10 +144,10 @@ std::size_t DownloadReport(Api& api, std::int64_t id, const std::filesystem::pat
 /// The state a run or sweep of the API's JSON is in; nullopt when it names none (this client
 /// tolerates states it does not know, as it tolerates a missing field).
 std::optional<QueuedRunState> RunState(const nlohmann::json& run) {
-  return orchestrator::service::FindRunState(run.value("state", ""));
+  return orchestrator::FindRunState(run.value("state", ""));
 }
 std::optional<QueuedSweepState> SweepState(const nlohmann::json& sweep) {
-  return orchestrator::service::FindSweepState(sweep.value("state", ""));
+  return orchestrator::FindSweepState(sweep.value("state", ""));
 }
 std::optional<ReportState> SweepReportState(const nlohmann::json& sweep) {
   return orchestrator::service::FindReportState(sweep.value("report", ""));
@@ -163,12 +163,12 @@ void PrintFinishedRuns(const nlohmann::json& runs, std::set<std::string>& report
   std::size_t total = runs.size(), finished = 0;
   for (const auto& run : runs) {
     const std::optional<QueuedRunState> state = RunState(run);
-    if (state && orchestrator::service::HasResult(*state)) ++finished;
+    if (state && orchestrator::HasResult(*state)) ++finished;
   }
   for (const auto& run : runs) {
     const std::optional<QueuedRunState> state = RunState(run);
     const std::string run_id = run.value("run_id", "");
-    if (!state || !orchestrator::service::HasResult(*state) || !reported.insert(run_id).second) continue;
+    if (!state || !orchestrator::HasResult(*state) || !reported.insert(run_id).second) continue;
     std::string detail;
     if (state == QueuedRunState::kFailed) detail = run.value("reason", "");
     if (state == QueuedRunState::kReused) detail = fmt::format("reused from sweep {}", run["reused_from"].dump());
@@ -217,7 +217,7 @@ int Submit(const SubmitOptions& options, const Streams& streams) {
     sweep = GetJson(api, fmt::format("/api/sweeps/{}", id));
     if (sweep.is_null()) break;
     const std::optional<QueuedSweepState> state = SweepState(sweep);
-    const bool finished = state && orchestrator::service::IsFinished(*state);
+    const bool finished = state && orchestrator::IsFinished(*state);
     if (finished && SweepReportState(sweep) != ReportState::kWriting) break;
     orchestrator::SleepUnlessWoken(options.poll_s);
     orchestrator::TakeWakeUpRequest();

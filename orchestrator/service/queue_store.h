@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "orchestrator/service/queue_states.h"
+#include "orchestrator/run/run_status.h"
 #include "orchestrator/store/sqlite_db.h"
 
 namespace slamsweep::orchestrator::service {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "orchestrator/service/queue_states.h"
+#include "orchestrator/run/run_status.h"
 
 namespace slamsweep::orchestrator::service {
 

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-#include "orchestrator/service/queue_states.h"
+#include "orchestrator/run/run_status.h"
 #include "orchestrator/service/sweep_entry.h"
 #include "orchestrator/service/sweep_table.h"
 

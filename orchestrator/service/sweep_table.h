@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "orchestrator/run/run_spec.h"
-#include "orchestrator/service/queue_states.h"
+#include "orchestrator/run/run_status.h"
 #include "orchestrator/service/queue_store.h"
 #include "orchestrator/service/sweep_entry.h"
 #include "orchestrator/service/sweep_views.h"

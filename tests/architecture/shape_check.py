@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Checks three shapes of the code that reviews otherwise lose track of:
-- a run's or a queued run's state is spelled as a string only where its enum is turned into text and back
-  (orchestrator/run/run_status.cc, orchestrator/service/queue_states.cc); everywhere else uses the enums;
+- a run's, a sweep's or a queued run's state is spelled as a string only where its enum is turned into text and
+  back (orchestrator/run/run_status.cc); everywhere else uses the enums;
 - no class is longer than 400 lines, its header and source (x.h and x.cc) counted together;
 - every folder of evaluator/, orchestrator/ and report/ declares its code in a namespace of its own, named by
   its path (evaluator/formats/map: slamsweep::evaluator::formats::map), and in no other.
@@ -13,7 +13,7 @@ import sys
 ROOT = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..")
 TOPS = ["evaluator", "orchestrator", "report", "cli", "slam"]
 STATE_WORDS = re.compile(r'"(ok|failed|running|queued|cancelled|cancelling|unfinished)"')
-STATE_PLACES = {"orchestrator/run/run_status.cc", "orchestrator/service/queue_states.cc"}
+STATE_PLACES = {"orchestrator/run/run_status.cc"}
 CLASS = re.compile(r"^class (\w+)\b[^;]*$")
 MAX_CLASS_LINES = 400
 

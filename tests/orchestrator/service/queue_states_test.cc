@@ -1,5 +1,5 @@
 // The queue's state names: the text the SQLite file and the HTTP API hold, read back to the same state.
-#include "orchestrator/service/queue_states.h"
+#include "orchestrator/run/run_status.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
