@@ -31,7 +31,7 @@ namespace {
 
 using orchestrator::QueuedRunState;
 using orchestrator::QueuedSweepState;
-using orchestrator::service::ReportState;
+using orchestrator::ReportState;
 
 struct SubmitOptions {
   std::string config;
@@ -150,12 +150,12 @@ std::optional<QueuedSweepState> SweepState(const nlohmann::json& sweep) {
   return orchestrator::FindSweepState(sweep.value("state", ""));
 }
 std::optional<ReportState> SweepReportState(const nlohmann::json& sweep) {
-  return orchestrator::service::FindReportState(sweep.value("report", ""));
+  return orchestrator::FindReportState(sweep.value("report", ""));
 }
 
 /// The number of runs in `state` from a sweep's "counts".
 int CountOf(const nlohmann::json& counts, QueuedRunState state) {
-  return counts.value(std::string(orchestrator::service::ToString(state)), 0);
+  return counts.value(std::string(orchestrator::ToString(state)), 0);
 }
 
 /// A line per run that ended since the last call, numbered like `slamsweep run`'s Jenkins lines.
@@ -176,9 +176,8 @@ void PrintFinishedRuns(const nlohmann::json& runs, std::set<std::string>& report
       detail = fmt::format("{:.1f} s", run["wall_s"].get<double>());
     }
     // The state's name padded to one width; a failure in capitals.
-    const std::string label = state == QueuedRunState::kFailed
-                                  ? std::string("FAILED")
-                                  : fmt::format("{:<6}", orchestrator::service::ToString(*state));
+    const std::string label =
+        state == QueuedRunState::kFailed ? std::string("FAILED") : fmt::format("{:<6}", orchestrator::ToString(*state));
     out << fmt::format("{} [{}/{}] {} {} ({})\n", orchestrator::UtcNowIso8601(), finished, total, label, run_id, detail)
         << std::flush;
   }
