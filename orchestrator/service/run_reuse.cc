@@ -15,8 +15,8 @@ std::optional<nlohmann::json> ReusableResult(const RunSpec& run, const std::file
   if (spec->value("run_id", "") != run.run_id) return std::nullopt;
   SweepSettings strict;  // no --rerun failed, no --reuse-stale: only an ok run of the same build counts
   bool stale = false;
-  if (!RecordedRunIsReusable(run, StatusOfResultJson(*stored.result), *spec, strict, stale)) return std::nullopt;
-  if (StatusOfResultJson(*stored.result) != RunStatus::kOk) return std::nullopt;
+  const std::optional<RunStatus> status = StatusOfResultJson(*stored.result);
+  if (status != RunStatus::kOk || !RecordedRunIsReusable(run, status, *spec, strict, stale)) return std::nullopt;
   const auto evaluation = spec->find("evaluation");
   if (evaluation == spec->end() || *evaluation != ToJson(run).at("evaluation")) return std::nullopt;
   return std::move(stored.result);
