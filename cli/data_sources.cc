@@ -38,7 +38,8 @@ ev::Sequence LoadSequenceArgument(const std::string& argument, const CatalogLoca
                                   const ev::SequenceReadOptions& read_options,
                                   std::optional<ev::OdometryMode> odometry) {
   std::error_code error;
-  if (std::filesystem::is_regular_file(argument, error)) {
+  // A file, or a folder (a ROS 2 bag; DetectSequenceFormat says what is missing in one that is not).
+  if (std::filesystem::is_regular_file(argument, error) || std::filesystem::is_directory(argument, error)) {
     ev::SequenceReadOptions options = read_options;
     options.carmen.odometry = odometry.value_or(ev::OdometryMode::kRecorded);
     options.carmen.require_recorded_odometry = odometry.has_value();

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "cli/command.h"
 #include "cli/segment_rpe_output.h"
@@ -13,6 +14,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/trajectory/relations_format.h"
 #include "evaluator/formats/trajectory/trajectory_file.h"
+#include "evaluator/sequence_io/bag_trajectory_file.h"
 #include "evaluator/trajectory_metrics/ape.h"
 #include "evaluator/trajectory_metrics/relations_metric.h"
 #include "evaluator/trajectory_metrics/rpe.h"
@@ -36,21 +38,33 @@ struct PairOptions {
   bool json = false;
 };
 
-/// Reads a trajectory in the given (or detected) format; format notes such as a CARMEN
-/// log's broken clock go to stderr so that --json output stays one object.
+/// Reads a trajectory in the given (or detected) format: a file, or with format bag (or auto) a
+/// topic or tf pair in a ROS 1 or ROS 2 bag, evo's way (BAG:TOPIC, BAG:/tf:PARENT.CHILD). Format notes
+/// such as a CARMEN log's broken clock go to stderr so that --json output stays one object.
 ev::Trajectory ReadForCommand(const std::string& path, const std::string& format, const Streams& streams) {
-  const std::optional<ev::TrajectoryFormat> parsed = ev::ParseTrajectoryFormat(format);
-  if (!parsed) {
-    throw ev::InputError("--ref-format/--est-format '" + format +
-                         "': expected one of auto, tum, kitti, mrpt, carmen, csv");
+  std::vector<std::string> warnings;
+  ev::Trajectory trajectory;
+  if (format == "bag" || (format == "auto" && ev::NamesBagTrajectory(path))) {
+    trajectory = ev::ReadBagTrajectoryArgument(path, warnings);
+  } else {
+    const std::optional<ev::TrajectoryFormat> parsed = ev::ParseTrajectoryFormat(format);
+    if (!parsed) {
+      throw ev::InputError("--ref-format/--est-format '" + format +
+                           "': expected one of auto, tum, kitti, mrpt, carmen, csv, bag");
+    }
+    ev::TrajectoryFile file = ev::ReadTrajectoryFile(path, *parsed);
+    warnings = std::move(file.warnings);
+    trajectory = std::move(file.trajectory);
   }
-  ev::TrajectoryFile file = ev::ReadTrajectoryFile(path, *parsed);
-  for (const std::string& warning : file.warnings) streams.err << "slamsweep: warning: " << warning << "\n";
-  return std::move(file.trajectory);
+  for (const std::string& warning : warnings) streams.err << "slamsweep: warning: " << warning << "\n";
+  return trajectory;
 }
 
 void AddPairOptions(CLI::App& command, PairOptions& options) {
-  command.add_option("REF", options.reference_path, "reference trajectory (TUM, KITTI, CSV, CARMEN log, MRPT path)")
+  command
+      .add_option("REF", options.reference_path,
+                  "reference trajectory (TUM, KITTI, CSV, CARMEN log, MRPT path; in a ROS bag BAG:TOPIC or "
+                  "BAG:/tf:PARENT.CHILD)")
       ->required();
   command.add_option("EST", options.estimate_path, "estimated trajectory")->required();
   command.add_option("--align", options.align, "alignment: none|origin|se2|se3|sim2|sim3")->capture_default_str();
@@ -60,8 +74,10 @@ void AddPairOptions(CLI::App& command, PairOptions& options) {
       ->capture_default_str();
   command.add_option("--t-offset", options.t_offset_s, "time offset added to EST stamps (s)")->capture_default_str();
   command.add_option("--pose-relation", options.pose_relation, "trans (m) or rot-deg (degrees)")->capture_default_str();
-  command.add_option("--ref-format", options.reference_format, "auto|tum|kitti|mrpt|carmen|csv")->capture_default_str();
-  command.add_option("--est-format", options.estimate_format, "auto|tum|kitti|mrpt|carmen|csv")->capture_default_str();
+  command.add_option("--ref-format", options.reference_format, "auto|tum|kitti|mrpt|carmen|csv|bag")
+      ->capture_default_str();
+  command.add_option("--est-format", options.estimate_format, "auto|tum|kitti|mrpt|carmen|csv|bag")
+      ->capture_default_str();
   command.add_flag("--json", options.json, "print one JSON object instead of a table");
 }
 
@@ -176,7 +192,7 @@ void RegisterRelations(CLI::App& eval, const Streams& streams) {
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = eval.add_subcommand("relations", "Kuemmerle et al. relations metric");
-  command->add_option("TRAJ", options->trajectory_path, "estimated trajectory")->required();
+  command->add_option("TRAJ", options->trajectory_path, "estimated trajectory (a file, or BAG:TOPIC)")->required();
   command->add_option("RELATIONS", options->relations_path, "relations file (t1 t2 x y z roll pitch yaw)")->required();
   command->add_option("--t-offset", options->t_offset_s, "time offset added to relation stamps (s)")
       ->capture_default_str();

@@ -15,9 +15,9 @@
 namespace slamsweep::evaluator::inline catalog {
 namespace {
 
-constexpr std::string_view kFormats[] = {"carmen", "rawlog", "rosbag", "simulated"};
-constexpr GroundTruthKind kGroundTruthKinds[] = {GroundTruthKind::kCorrectedPoses, GroundTruthKind::kExact,
-                                                 GroundTruthKind::kRelationsOnly, GroundTruthKind::kNone};
+constexpr std::string_view kFormats[] = {"carmen", "rawlog", "rosbag", "rosbag2", "simulated"};
+
+bool IsBagFormat(std::string_view format) { return format == "rosbag" || format == "rosbag2"; }
 
 /// yaml-cpp marks count lines from 0.
 std::size_t LineOf(const YAML::Node& node) { return static_cast<std::size_t>(node.Mark().line + 1); }
@@ -105,12 +105,64 @@ CorrectedLogLink ParseCorrectedLog(const std::filesystem::path& source, const YA
   return link;
 }
 
+/// The BagChoices field a catalog key names; nullptr for other keys.
+std::string* BagField(BagChoices& bag, std::string_view key) {
+  if (key == "scan_topic") return &bag.scan_topic;
+  if (key == "odometry_topic") return &bag.odometry_topic;
+  if (key == "odom_frame") return &bag.odom_frame;
+  if (key == "base_frame") return &bag.base_frame;
+  if (key == "laser_frame") return &bag.laser_frame;
+  if (key == "reference_topic") return &bag.reference_topic;
+  if (key == "reference_frame") return &bag.reference_frame;
+  return nullptr;
+}
+
+/// Topics and frames belong to bags; a reference recorded in a bag goes with a kind that has poses.
+void CheckBagKeys(const std::filesystem::path& source, const YAML::Node& node, const CatalogEntry& entry,
+                  const YAML::Node& ground_truth_node, const YAML::Node& bag_node) {
+  if (!IsBagFormat(entry.format)) {
+    if (!entry.bag.Empty()) {
+      Fail(source, bag_node,
+           fmt::format("sequence '{}': topics and frames apply to ROS bags (format rosbag or rosbag2), not to "
+                       "format {}",
+                       entry.name, entry.format));
+    }
+    if (entry.ground_truth == GroundTruthKind::kMeasured) {
+      Fail(source, ground_truth_node,
+           fmt::format("sequence '{}': ground_truth measured is a reference recorded in a ROS bag (format rosbag or "
+                       "rosbag2, with reference_topic or reference_frame)",
+                       entry.name));
+    }
+    return;
+  }
+  try {
+    CheckBagChoices(entry.bag);
+  } catch (const InputError& error) {
+    Fail(source, node, fmt::format("sequence '{}': {}", entry.name, error.what()));
+  }
+  if (GroundTruthHasPoses(entry.ground_truth) && !entry.bag.HasReference()) {
+    Fail(source, ground_truth_node,
+         fmt::format("sequence '{}': ground_truth {} needs the reference's source in the bag: reference_topic (e.g. "
+                     "/ground_truth) or reference_frame (e.g. map)",
+                     entry.name, GroundTruthKindName(entry.ground_truth)));
+  }
+  if (!GroundTruthHasPoses(entry.ground_truth) && entry.bag.HasReference()) {
+    Fail(source, ground_truth_node,
+         fmt::format("sequence '{}': reference_topic or reference_frame names a reference, but ground_truth is {}; "
+                     "say what the reference is with ground_truth measured (recorded with the data), corrected_poses "
+                     "or exact",
+                     entry.name, GroundTruthKindName(entry.ground_truth)));
+  }
+}
+
 CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& node) {
   if (!node.IsMap()) Fail(source, node, "sequences: expected each entry to be a map with name, format, ...");
   CatalogEntry entry;
   entry.line = LineOf(node);
   bool has_ground_truth = false;
   YAML::Node odometry_node;
+  YAML::Node ground_truth_node;
+  YAML::Node bag_node;
   for (const auto& item : node) {
     const std::string key = item.first.as<std::string>();
     const YAML::Node& value = item.second;
@@ -120,24 +172,22 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
       entry.format = Scalar(source, value, key);
       if (std::find(std::begin(kFormats), std::end(kFormats), entry.format) == std::end(kFormats)) {
         Fail(source, value,
-             fmt::format("format: expected carmen, rawlog, rosbag or simulated, got '{}'", entry.format));
+             fmt::format("format: expected carmen, rawlog, rosbag, rosbag2 or simulated, got '{}'", entry.format));
       }
     } else if (key == "path") {
       entry.path = Scalar(source, value, key);
     } else if (key == "ground_truth") {
-      const std::string text = Scalar(source, value, key);
-      bool known = false;
-      for (GroundTruthKind kind : kGroundTruthKinds) {
-        if (text == GroundTruthKindName(kind)) {
-          entry.ground_truth = kind;
-          known = true;
-        }
-      }
-      if (!known) {
-        Fail(source, value,
-             fmt::format("ground_truth: expected corrected_poses, exact, relations_only or none, got '{}'", text));
+      try {
+        entry.ground_truth = ParseGroundTruthKind(Scalar(source, value, key));
+      } catch (const InputError& error) {
+        Fail(source, value, error.what());
       }
       has_ground_truth = true;
+      ground_truth_node = value;
+    } else if (std::string* bag_field = BagField(entry.bag, key)) {
+      *bag_field = Scalar(source, value, key);
+      if (bag_field->empty()) Fail(source, value, fmt::format("{}: expected a topic or frame name", key));
+      bag_node = item.first;
     } else if (key == "relations") {
       entry.relations_path = Scalar(source, value, key);
     } else if (key == "reference_map") {
@@ -186,7 +236,8 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
       Fail(source, item.first,
            fmt::format("unknown key '{}' (expected name, format, path, ground_truth, relations, relations_offset_s, "
                        "relations_rate, odometry, max_range_m, stamp_policy, citation, licence, download, simulation, "
-                       "reference_map, corrected_log, notes)",
+                       "reference_map, corrected_log, notes; for bags scan_topic, odometry_topic, odom_frame, "
+                       "base_frame, laser_frame, reference_topic, reference_frame)",
                        key));
     }
   }
@@ -201,6 +252,7 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
   } else if (entry.path.empty()) {
     Fail(source, node, fmt::format("sequence '{}': no path", entry.name));
   }
+  CheckBagKeys(source, node, entry, ground_truth_node, bag_node);
   if (entry.odometry == OdometryMode::kReference && !OdometryModeApplies(entry)) {
     Fail(
         source, odometry_node,
@@ -222,6 +274,22 @@ std::filesystem::path RequireFile(const CatalogEntry& entry, std::string_view wh
   return path;
 }
 
+/// The sequence's own path: a file, or a ROS 2 bag folder with all its files.
+std::filesystem::path RequireSequence(const CatalogEntry& entry, const CatalogVariables& variables) {
+  const std::filesystem::path path = ResolveCatalogPath(entry.path, variables);
+  std::error_code error;
+  if (entry.format != "rosbag2" || !std::filesystem::is_directory(path, error)) {
+    return RequireFile(entry, "file", entry.path, variables);
+  }
+  try {
+    SequenceFiles(path);
+  } catch (const InputError& missing) {
+    throw InputError(fmt::format("catalog sequence '{}': {}{}", entry.name, missing.what(),
+                                 entry.download_hint.empty() ? "" : "; get it from: " + entry.download_hint));
+  }
+  return path;
+}
+
 }  // namespace
 
 bool OdometryModeApplies(const CatalogEntry& entry) {
@@ -230,6 +298,19 @@ bool OdometryModeApplies(const CatalogEntry& entry) {
 
 OdometryMode EffectiveOdometryMode(const CatalogEntry& entry) {
   return OdometryModeApplies(entry) ? entry.odometry.value_or(OdometryMode::kRecorded) : OdometryMode::kRecorded;
+}
+
+GroundTruthKind ParseGroundTruthKind(std::string_view text, std::string_view field) {
+  for (const GroundTruthKind kind : kGroundTruthKinds) {
+    if (text == GroundTruthKindName(kind)) return kind;
+  }
+  throw InputError(
+      fmt::format("{}: expected corrected_poses, exact, measured, relations_only or none, got '{}'", field, text));
+}
+
+bool GroundTruthHasPoses(GroundTruthKind kind) {
+  return kind == GroundTruthKind::kCorrectedPoses || kind == GroundTruthKind::kExact ||
+         kind == GroundTruthKind::kMeasured;
 }
 
 std::string_view GroundTruthKindName(GroundTruthKind kind) {
@@ -242,6 +323,8 @@ std::string_view GroundTruthKindName(GroundTruthKind kind) {
       return "relations_only";
     case GroundTruthKind::kNone:
       return "none";
+    case GroundTruthKind::kMeasured:
+      return "measured";
   }
   return "none";
 }
@@ -333,9 +416,10 @@ Sequence LoadCatalogSequence(const CatalogEntry& entry, const CatalogVariables& 
     sequence.provenance = provenance;
     return sequence;
   }
-  const std::filesystem::path path = RequireFile(entry, "file", entry.path, variables);
+  const std::filesystem::path path = RequireSequence(entry, variables);
   SequenceReadOptions options;
   options.name = entry.name;
+  options.bag = entry.bag;
   options.carmen.max_range_m = entry.max_range_m;
   options.carmen.stamps.policy = ParseStampPolicy(entry.stamp_policy, "stamp_policy");
   options.carmen.odometry = EffectiveOdometryMode(entry);

@@ -1,11 +1,11 @@
-#include "evaluator/formats/rosbag/transform_tree.h"
+#include "evaluator/formats/bag/transform_tree.h"
 
 #include <iterator>
 #include <set>
 
 #include "evaluator/trajectory_metrics/interpolation.h"
 
-namespace slamsweep::evaluator::inline formats::inline rosbag {
+namespace slamsweep::evaluator::inline formats::inline bag {
 
 std::string CanonicalFrame(std::string_view frame) {
   while (!frame.empty() && frame.front() == '/') frame.remove_prefix(1);
@@ -96,6 +96,17 @@ std::optional<Pose> TransformTree::ChainAt(const std::vector<std::string>& frame
   return pose;
 }
 
+std::string TransformTree::FrameList() const {
+  std::set<std::string> frames;
+  for (const auto& [child, edge] : edges_) {
+    frames.insert(child);
+    frames.insert(edge.parent);
+  }
+  std::string list;
+  for (const std::string& frame : frames) list += (list.empty() ? "" : ", ") + frame;
+  return list.empty() ? "(none)" : list;
+}
+
 bool TransformTree::Connected(std::string_view parent, std::string_view child) const {
   return FindPath(CanonicalFrame(parent), CanonicalFrame(child)).has_value();
 }
@@ -126,4 +137,4 @@ Trajectory TransformTree::Track(std::string_view parent, std::string_view child)
   return track;
 }
 
-}  // namespace slamsweep::evaluator::inline formats::inline rosbag
+}  // namespace slamsweep::evaluator::inline formats::inline bag

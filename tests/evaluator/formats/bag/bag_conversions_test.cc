@@ -1,4 +1,4 @@
-#include "evaluator/formats/rosbag/bag_conversions.h"
+#include "evaluator/formats/bag/bag_conversions.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
