@@ -9,12 +9,15 @@
 namespace slamsweep::evaluator::inline formats::inline bag {
 namespace {
 
-std::string KindNames(std::initializer_list<BagMessageKind> kinds) {
+/// The kinds' type names, spelled as the bag spells its types (ROS 2: pkg/msg/Type, ROS 1: pkg/Type).
+std::string KindNames(std::initializer_list<BagMessageKind> kinds, bool ros2) {
   std::string names;
   std::size_t index = 0;
   for (const BagMessageKind kind : kinds) {
     if (index > 0) names += index + 1 == kinds.size() ? " or " : ", ";
-    names += Ros2TypeName(kind);
+    std::string name = Ros2TypeName(kind);
+    if (!ros2) name.erase(name.find("/msg/"), 4);
+    names += name;
     ++index;
   }
   return names;
@@ -47,8 +50,9 @@ const BagTopic& RequireTopic(const std::filesystem::path& bag, const BagSummary&
     throw InputError(fmt::format("{}: no {} topic '{}'; {}", bag.string(), role, topic, DescribeTopics(summary)));
   }
   if (std::find(kinds.begin(), kinds.end(), KindOfDatatype(found->datatype)) == kinds.end()) {
+    const bool ros2 = found->datatype.find("/msg/") != std::string::npos;
     throw InputError(fmt::format("{}: {} topic '{}' holds {}, expected {}", bag.string(), role, topic, found->datatype,
-                                 KindNames(kinds)));
+                                 KindNames(kinds, ros2)));
   }
   return *found;
 }

@@ -4,6 +4,7 @@
 #include <lz4frame.h>
 #include <zstd.h>
 
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 
@@ -14,6 +15,8 @@ namespace {
 
 /// Decompressed data beyond this is refused: a corrupt size must not exhaust memory.
 constexpr std::uint64_t kMaxDecompressedBytes = std::uint64_t{16} << 30;
+/// Reserved up front at most: a stated size is only believed as far as the data bears it out.
+constexpr std::uint64_t kMaxReservedBytes = std::uint64_t{256} << 20;
 
 void CheckSize(std::size_t size, std::optional<std::uint64_t> expected_size, const std::string& where,
                const char* format) {
@@ -29,7 +32,19 @@ void Reserve(std::vector<std::uint8_t>& out, std::optional<std::uint64_t> expect
     throw InputError(fmt::format("{}: states {} bytes of decompressed data, more than the {} GiB slamsweep accepts",
                                  where, *expected_size, kMaxDecompressedBytes >> 30));
   }
-  out.reserve(static_cast<std::size_t>(*expected_size));
+  out.reserve(static_cast<std::size_t>(std::min(*expected_size, kMaxReservedBytes)));
+}
+
+/// Stops inflating as soon as the output passes what the record states, or the overall limit.
+void CheckGrowth(std::size_t size, std::optional<std::uint64_t> expected_size, const std::string& where,
+                 const char* format) {
+  if (expected_size && size > *expected_size) {
+    throw InputError(fmt::format("{}: {} data inflates past the {} bytes the record states", where, format,
+                                 *expected_size));
+  }
+  if (size > kMaxDecompressedBytes) {
+    throw InputError(fmt::format("{}: {} data inflates past {} GiB", where, format, kMaxDecompressedBytes >> 30));
+  }
 }
 
 }  // namespace
@@ -50,9 +65,7 @@ std::vector<std::uint8_t> ZstdDecompress(std::span<const std::uint8_t> compresse
       throw InputError(fmt::format("{}: damaged zstd data ({})", where, ZSTD_getErrorName(last)));
     }
     out.insert(out.end(), buffer.data(), buffer.data() + output.pos);
-    if (out.size() > kMaxDecompressedBytes) {
-      throw InputError(fmt::format("{}: zstd data inflates past {} GiB", where, kMaxDecompressedBytes >> 30));
-    }
+    CheckGrowth(out.size(), expected_size, where, "zstd");
     // Flush what the decoder still holds once the input is used up.
     while (input.pos == input.size && output.pos == output.size) {
       output = ZSTD_outBuffer{buffer.data(), buffer.size(), 0};
@@ -61,6 +74,7 @@ std::vector<std::uint8_t> ZstdDecompress(std::span<const std::uint8_t> compresse
         throw InputError(fmt::format("{}: damaged zstd data ({})", where, ZSTD_getErrorName(last)));
       }
       out.insert(out.end(), buffer.data(), buffer.data() + output.pos);
+      CheckGrowth(out.size(), expected_size, where, "zstd");
     }
   }
   if (last != 0) throw InputError(fmt::format("{}: truncated zstd data (the last frame is incomplete)", where));
@@ -90,9 +104,7 @@ std::vector<std::uint8_t> Lz4FrameDecompress(std::span<const std::uint8_t> compr
     if (produced == 0 && consumed == 0) break;
     position += consumed;
     out.insert(out.end(), buffer.data(), buffer.data() + produced);
-    if (out.size() > kMaxDecompressedBytes) {
-      throw InputError(fmt::format("{}: lz4 data inflates past {} GiB", where, kMaxDecompressedBytes >> 30));
-    }
+    CheckGrowth(out.size(), expected_size, where, "lz4");
   }
   // Output the decoder still holds.
   for (std::size_t produced = buffer.size(); hint != 0 && produced > 0;) {
@@ -103,6 +115,7 @@ std::vector<std::uint8_t> Lz4FrameDecompress(std::span<const std::uint8_t> compr
       throw InputError(fmt::format("{}: damaged lz4 data ({})", where, LZ4F_getErrorName(hint)));
     }
     out.insert(out.end(), buffer.data(), buffer.data() + produced);
+    CheckGrowth(out.size(), expected_size, where, "lz4");
   }
   if (hint != 0) throw InputError(fmt::format("{}: truncated lz4 data (the last frame is incomplete)", where));
   CheckSize(out.size(), expected_size, where, "lz4");

@@ -226,6 +226,30 @@ TEST(PythonBagTest, WrongTypeAndMissingTopicsNameTheTopic) {
               ThrowsMessage<InputError>(HasSubstr("no reference topic '/gt'")));
 }
 
+TEST(PythonBagTest, AReferenceFromPoseStampedOrPoseWithCovarianceStamped) {
+  REQUIRE_PYTHON_BAG(bag, "pose_references.bag");
+  const Sequence pose = ReadRosbag(bag, WithReferenceTopic("/pose_gt"));
+  ASSERT_TRUE(pose.reference.has_value());
+  ASSERT_EQ(pose.reference->size(), 2u);
+  EXPECT_EQ(pose.reference->stamps_s()[1], 3.0);
+  ExpectPlanar(pose.reference->poses()[0], 5.0, 1.0, 0.5);
+  ExpectPlanar(pose.reference->poses()[1], 6.0, 2.0, 1.0);
+  const Sequence amcl = ReadRosbag(bag, WithReferenceTopic("/amcl"));
+  ASSERT_TRUE(amcl.reference.has_value());
+  ExpectPlanar(amcl.reference->poses()[1], -6.0, -2.0, -1.0);
+  // The same topics as trajectories, evo's way (BAG:TOPIC).
+  std::vector<std::string> warnings;
+  EXPECT_EQ(ReadRosbagTrajectory(bag, "/amcl", warnings).size(), 2u);
+  EXPECT_EQ(ReadRosbagTrajectory(bag, "/odom", warnings).size(), 3u);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_THAT([&] { ReadRosbag(bag, WithReferenceTopic("/scan")); },
+              ThrowsMessage<InputError>(HasSubstr(
+                  "reference topic '/scan' holds sensor_msgs/LaserScan, expected nav_msgs/Odometry, "
+                  "geometry_msgs/PoseStamped or geometry_msgs/PoseWithCovarianceStamped")));
+  EXPECT_THAT([&] { ReadRosbagTrajectory(bag, "/scan", warnings); },
+              ThrowsMessage<InputError>(HasSubstr("trajectory topic '/scan' holds sensor_msgs/LaserScan")));
+}
+
 TEST(PythonBagTest, NoOdometryAtAllIsAnError) {
   REQUIRE_PYTHON_BAG(bag, "scans_only.bag");
   EXPECT_THAT([&] { ReadRosbag(bag); },

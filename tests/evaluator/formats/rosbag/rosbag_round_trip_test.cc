@@ -238,15 +238,15 @@ TEST(BagChoicesTest, ContradictionsNameTheOptions) {
   BagReadOptions both;
   both.choices.reference_topic = "/gt";
   both.choices.reference_frame = "map";
-  EXPECT_THAT([&] { CheckBagReadOptions(both); },
+  EXPECT_THAT([&] { CheckBagChoices(both.choices); },
               ThrowsMessage<InputError>(AllOf(HasSubstr("reference_topic"), HasSubstr("reference_frame"))));
   BagReadOptions same;
   same.choices.odometry_topic = same.choices.reference_topic = "/odom";
-  EXPECT_THAT([&] { CheckBagReadOptions(same); }, ThrowsMessage<InputError>(HasSubstr("odometry_topic")));
+  EXPECT_THAT([&] { CheckBagChoices(same.choices); }, ThrowsMessage<InputError>(HasSubstr("odometry_topic")));
   BagReadOptions no_base;
   no_base.choices.base_frame = "/";
-  EXPECT_THAT([&] { CheckBagReadOptions(no_base); }, ThrowsMessage<InputError>(HasSubstr("base_frame")));
-  EXPECT_NO_THROW(CheckBagReadOptions(BagReadOptions{}));
+  EXPECT_THAT([&] { CheckBagChoices(no_base.choices); }, ThrowsMessage<InputError>(HasSubstr("base_frame")));
+  EXPECT_NO_THROW(CheckBagChoices(BagChoices{}));
 }
 
 }  // namespace
