@@ -453,8 +453,7 @@ void RegisterRelationsClock(CLI::App& data, const Streams& streams) {
         "{:.3f} s (half the readings' median spacing), {} within 10 ms; residual rms {:.4f} s, max {:.4f} s; the rate "
         "takes up {:.4f} s of drift over the relations' span\n",
         readings.raw ? "laser records'" : "ODOM readings'", fit.rate, fit.offset_s, fit.matched, fit.stamps,
-        fit.tolerance_s, fit.matched_within_10ms, fit.rms_residual_s,
-        fit.max_abs_residual_s, fit.drift_over_span_s);
+        fit.tolerance_s, fit.matched_within_10ms, fit.rms_residual_s, fit.max_abs_residual_s, fit.drift_over_span_s);
     if (inside.size() < relations.size()) {
       streams.out << fmt::format(
           "{} of the {} relations lie inside the log under this map: the fits below weigh those (the log holds part "

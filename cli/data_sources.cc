@@ -35,8 +35,7 @@ CatalogLocation FindCatalog(const std::string& catalog_option) {
 }
 
 ev::Sequence LoadSequenceArgument(const std::string& argument, const CatalogLocation& location,
-                                  const ev::SequenceReadOptions& read_options,
-                                  std::optional<ev::OdometryMode> odometry,
+                                  const ev::SequenceReadOptions& read_options, std::optional<ev::OdometryMode> odometry,
                                   std::optional<ev::GroundTruthKind> ground_truth) {
   std::error_code error;
   if (std::filesystem::is_regular_file(argument, error)) {

@@ -443,8 +443,7 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
       });
       sequence.relations_outside_log += before - sequence.relations->size();
       std::size_t unmatched = 0;
-      const double tolerance_s =
-          options.relations_match_tolerance_s.value_or(0.5 * MedianSpacingS(recorded_stamps_s));
+      const double tolerance_s = options.relations_match_tolerance_s.value_or(0.5 * MedianSpacingS(recorded_stamps_s));
       sequence.relations =
           MapRelationsOntoRecords(std::move(*sequence.relations), recorded_stamps_s, stamps_s, tolerance_s, unmatched);
       if (unmatched > 0) {
@@ -462,11 +461,11 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
     sequence.odometry_readings = RawLogReadings(log);
     if (sequence.odometry_readings.empty() || !ReadingsHoldScanStamps(sequence.odometry_readings, stamps_s)) {
       sequence.odometry_readings = Trajectory();
-      sequence.warnings.push_back(Located(
-          source, 0,
-          fmt::format("{} ODOM records not used: their stamps do not increase through the scans' stamps; the "
-                      "odometry is the laser records' own, one pose per scan",
-                      log.odometry.size())));
+      sequence.warnings.push_back(
+          Located(source, 0,
+                  fmt::format("{} ODOM records not used: their stamps do not increase through the scans' stamps; the "
+                              "odometry is the laser records' own, one pose per scan",
+                              log.odometry.size())));
     }
   }
   KeepRelationsInsideLog(sequence);

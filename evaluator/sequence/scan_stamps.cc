@@ -58,10 +58,9 @@ std::vector<double> Retimed(std::span<const double> recorded, const std::vector<
   const std::size_t last = kept.back();
   const double head_step =
       kept.size() > 1 ? (recorded[kept[1]] - recorded[first]) / static_cast<double>(kept[1] - first) : step_s;
-  const double tail_step =
-      kept.size() > 1 ? (recorded[last] - recorded[kept[kept.size() - 2]]) /
-                            static_cast<double>(last - kept[kept.size() - 2])
-                      : step_s;
+  const double tail_step = kept.size() > 1 ? (recorded[last] - recorded[kept[kept.size() - 2]]) /
+                                                 static_cast<double>(last - kept[kept.size() - 2])
+                                           : step_s;
   for (std::size_t j = 0; j < first; ++j) stamps[j] = recorded[first] - head_step * static_cast<double>(first - j);
   for (std::size_t j = last + 1; j < recorded.size(); ++j) {
     stamps[j] = recorded[last] + tail_step * static_cast<double>(j - last);

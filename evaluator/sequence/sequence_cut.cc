@@ -56,13 +56,13 @@ Sequence KeepTimeSpan(Sequence sequence, double from_s, double to_s) {
   if (begin != sequence.scans.begin()) --begin;  // the last scan at or before from_s
   auto end = std::lower_bound(begin, sequence.scans.end(), to_s, by_stamp);
   if (end != sequence.scans.end()) ++end;  // through the first scan at or after to_s
-  const bool misses = sequence.scans.empty() || to_s < sequence.scans.front().stamp_s ||
-                      from_s > sequence.scans.back().stamp_s;
+  const bool misses =
+      sequence.scans.empty() || to_s < sequence.scans.front().stamp_s || from_s > sequence.scans.back().stamp_s;
   if (misses || begin == end) {
-    throw InputError(fmt::format(
-        "sequence '{}': no scan between {:.6f} and {:.6f} s (its scans span {:.6f} to {:.6f} s)", sequence.name,
-        from_s, to_s, sequence.scans.empty() ? 0.0 : sequence.scans.front().stamp_s,
-        sequence.scans.empty() ? 0.0 : sequence.scans.back().stamp_s));
+    throw InputError(
+        fmt::format("sequence '{}': no scan between {:.6f} and {:.6f} s (its scans span {:.6f} to {:.6f} s)",
+                    sequence.name, from_s, to_s, sequence.scans.empty() ? 0.0 : sequence.scans.front().stamp_s,
+                    sequence.scans.empty() ? 0.0 : sequence.scans.back().stamp_s));
   }
   const auto first = static_cast<std::size_t>(begin - sequence.scans.begin());
   const auto count = static_cast<std::size_t>(end - begin);

@@ -104,10 +104,10 @@ void AddRelations(std::vector<FlatMetric>& metrics, const ev::RelationsResult& r
   const double outside = static_cast<double>(outside_log);
   for (const char* name : {"relations_trans", "relations_rot"}) {
     const bool trans = name == std::string_view("relations_trans");
-    metrics.push_back({name, "mean", trans ? result.translation_abs_mean_m : result.rotation_abs_mean_deg,
-                       trans ? "m" : "deg"});
-    metrics.push_back({name, "std", trans ? result.translation_abs_std_m : result.rotation_abs_std_deg,
-                       trans ? "m" : "deg"});
+    metrics.push_back(
+        {name, "mean", trans ? result.translation_abs_mean_m : result.rotation_abs_mean_deg, trans ? "m" : "deg"});
+    metrics.push_back(
+        {name, "std", trans ? result.translation_abs_std_m : result.rotation_abs_std_deg, trans ? "m" : "deg"});
     metrics.push_back({name, "n", used, "count"});
     metrics.push_back({name, "not_covered", not_covered, "count"});
     metrics.push_back({name, "outside_log", outside, "count"});

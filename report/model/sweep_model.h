@@ -113,7 +113,7 @@ struct SequenceModel {
   std::string key;
   /// For headings: "intel, noise odo-low".
   std::string title;
-  bool has_reference = false;                    ///< some run has a trajectory metric
+  bool has_reference = false;  ///< some run has a trajectory metric
   /// The relations the runs were scored on: inside the (cut) log, and of the relations file outside it
   /// (a log of part of a run; shown as "outside the log", never as missed). From the first run that has them.
   std::optional<std::size_t> relations_inside_log;

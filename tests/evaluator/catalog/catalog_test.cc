@@ -254,10 +254,9 @@ TEST(CatalogTest, ARelationsWindowIsTwoStampsInOrderAndNeedsRelations) {
                 ParseCatalog(std::string(kMinimal) + "    relations: r\n    relations_window: [2, 1]\n", "c.yaml");
               }),
               HasSubstr("c.yaml:8: relations_window: expected from < to"));
-  EXPECT_THAT(ErrorOf([] {
-                ParseCatalog(std::string(kMinimal) + "    relations: r\n    relations_window: 5\n", "c.yaml");
-              }),
-              HasSubstr("relations_window: expected [from, to]"));
+  EXPECT_THAT(
+      ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    relations: r\n    relations_window: 5\n", "c.yaml"); }),
+      HasSubstr("relations_window: expected [from, to]"));
   EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    relations_window: [1, 2]\n", "c.yaml"); }),
               HasSubstr("relations_window without relations"));
   EXPECT_THAT(ErrorOf([] { ParseGroundTruthKind("corrected", "--ground-truth"); }),
