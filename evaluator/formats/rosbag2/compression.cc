@@ -39,8 +39,8 @@ void Reserve(std::vector<std::uint8_t>& out, std::optional<std::uint64_t> expect
 void CheckGrowth(std::size_t size, std::optional<std::uint64_t> expected_size, const std::string& where,
                  const char* format) {
   if (expected_size && size > *expected_size) {
-    throw InputError(fmt::format("{}: {} data inflates past the {} bytes the record states", where, format,
-                                 *expected_size));
+    throw InputError(
+        fmt::format("{}: {} data inflates past the {} bytes the record states", where, format, *expected_size));
   }
   if (size > kMaxDecompressedBytes) {
     throw InputError(fmt::format("{}: {} data inflates past {} GiB", where, format, kMaxDecompressedBytes >> 30));

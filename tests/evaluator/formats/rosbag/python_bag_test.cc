@@ -243,9 +243,9 @@ TEST(PythonBagTest, AReferenceFromPoseStampedOrPoseWithCovarianceStamped) {
   EXPECT_EQ(ReadRosbagTrajectory(bag, "/odom", warnings).size(), 3u);
   EXPECT_TRUE(warnings.empty());
   EXPECT_THAT([&] { ReadRosbag(bag, WithReferenceTopic("/scan")); },
-              ThrowsMessage<InputError>(HasSubstr(
-                  "reference topic '/scan' holds sensor_msgs/LaserScan, expected nav_msgs/Odometry, "
-                  "geometry_msgs/PoseStamped or geometry_msgs/PoseWithCovarianceStamped")));
+              ThrowsMessage<InputError>(
+                  HasSubstr("reference topic '/scan' holds sensor_msgs/LaserScan, expected nav_msgs/Odometry, "
+                            "geometry_msgs/PoseStamped or geometry_msgs/PoseWithCovarianceStamped")));
   EXPECT_THAT([&] { ReadRosbagTrajectory(bag, "/scan", warnings); },
               ThrowsMessage<InputError>(HasSubstr("trajectory topic '/scan' holds sensor_msgs/LaserScan")));
 }
