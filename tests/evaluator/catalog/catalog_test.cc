@@ -296,117 +296,116 @@ TEST(CatalogTest, ABagFolderMustHoldItsMetadataAndSplitFiles) {
                      "  relative_file_paths:\n    - run1_0.mcap\n");
   EXPECT_THAT(ErrorOf([&] { LoadCatalogSequence(entry, none); }),
               HasSubstr("split file run1_0.mcap named by metadata.yaml is missing"));
+}
 
-  // ground_truth says what a CARMEN log's logged pose is: the reference of a corrected log, the odometry of a
-  // raw one (relations_only, none), which then has no reference to be flagged against.
-  TEST(CatalogTest, ACarmenLogUnderRelationsOnlyOrNoneIsRaw) {
-    testing::TempDir dir;
-    std::string log;
-    for (int i = 0; i < 5; ++i) {
-      log += "FLASER 180";
-      for (int b = 0; b < 180; ++b) log += " 2.0";
-      log += " " + std::to_string(0.1 * i) + " 0 0 " + std::to_string(0.1 * i) + " 0 0 " + std::to_string(i) +
-             " nohost " + std::to_string(i) + "\n";
-    }
-    testing::WriteFile(dir / "a.log", log);
-    const CatalogVariables variables{{"ROOT", dir.path().string()}};
-    CatalogEntry entry = ParseCatalog(kMinimal, "c.yaml").entries.at(0);
-    for (GroundTruthKind raw : {GroundTruthKind::kNone, GroundTruthKind::kRelationsOnly}) {
-      entry.ground_truth = raw;
-      EXPECT_FALSE(LoggedPoseIsReference(entry));
-      const Sequence sequence = LoadCatalogSequence(entry, variables);
-      EXPECT_FALSE(sequence.reference.has_value()) << GroundTruthKindName(raw);
-      EXPECT_FALSE(OdometryEqualsReference(sequence));
-    }
-    entry.ground_truth = GroundTruthKind::kCorrectedPoses;
-    EXPECT_TRUE(LoggedPoseIsReference(entry));
-    const Sequence corrected = LoadCatalogSequence(entry, variables);
-    ASSERT_TRUE(corrected.reference.has_value());
-    EXPECT_TRUE(OdometryEqualsReference(corrected)) << "a corrected log without an ODOM stream: flagged, not hidden";
+// ground_truth says what a CARMEN log's logged pose is: the reference of a corrected log, the odometry of a
+// raw one (relations_only, none), which then has no reference to be flagged against.
+TEST(CatalogTest, ACarmenLogUnderRelationsOnlyOrNoneIsRaw) {
+  testing::TempDir dir;
+  std::string log;
+  for (int i = 0; i < 5; ++i) {
+    log += "FLASER 180";
+    for (int b = 0; b < 180; ++b) log += " 2.0";
+    log += " " + std::to_string(0.1 * i) + " 0 0 " + std::to_string(0.1 * i) + " 0 0 " + std::to_string(i) +
+           " nohost " + std::to_string(i) + "\n";
   }
+  testing::WriteFile(dir / "a.log", log);
+  const CatalogVariables variables{{"ROOT", dir.path().string()}};
+  CatalogEntry entry = ParseCatalog(kMinimal, "c.yaml").entries.at(0);
+  for (GroundTruthKind raw : {GroundTruthKind::kNone, GroundTruthKind::kRelationsOnly}) {
+    entry.ground_truth = raw;
+    EXPECT_FALSE(LoggedPoseIsReference(entry));
+    const Sequence sequence = LoadCatalogSequence(entry, variables);
+    EXPECT_FALSE(sequence.reference.has_value()) << GroundTruthKindName(raw);
+    EXPECT_FALSE(OdometryEqualsReference(sequence));
+  }
+  entry.ground_truth = GroundTruthKind::kCorrectedPoses;
+  EXPECT_TRUE(LoggedPoseIsReference(entry));
+  const Sequence corrected = LoadCatalogSequence(entry, variables);
+  ASSERT_TRUE(corrected.reference.has_value());
+  EXPECT_TRUE(OdometryEqualsReference(corrected)) << "a corrected log without an ODOM stream: flagged, not hidden";
+}
 
-  TEST(CatalogTest, ARelationsWindowIsTwoStampsInOrderAndNeedsRelations) {
-    const Catalog catalog = ParseCatalog(
-        std::string(kMinimal) + "    relations: r.relations\n    relations_window: [100.5, 200]\n", "c.yaml");
-    ASSERT_TRUE(catalog.entries.at(0).relations_window_s.has_value());
-    EXPECT_EQ((*catalog.entries.at(0).relations_window_s)[0], 100.5);
-    EXPECT_EQ((*catalog.entries.at(0).relations_window_s)[1], 200.0);
-    EXPECT_THAT(ErrorOf([] {
-                  ParseCatalog(std::string(kMinimal) + "    relations: r\n    relations_window: [2, 1]\n", "c.yaml");
-                }),
-                HasSubstr("c.yaml:8: relations_window: expected from < to"));
-    EXPECT_THAT(
-        ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    relations: r\n    relations_window: 5\n", "c.yaml"); }),
-        HasSubstr("relations_window: expected [from, to]"));
-    EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    relations_window: [1, 2]\n", "c.yaml"); }),
-                HasSubstr("relations_window without relations"));
-    EXPECT_THAT(ErrorOf([] { ParseGroundTruthKind("corrected", "--ground-truth"); }),
-                HasSubstr("--ground-truth: expected one of corrected_poses, exact, relations_only, none"));
-  }
+TEST(CatalogTest, ARelationsWindowIsTwoStampsInOrderAndNeedsRelations) {
+  const Catalog catalog = ParseCatalog(
+      std::string(kMinimal) + "    relations: r.relations\n    relations_window: [100.5, 200]\n", "c.yaml");
+  ASSERT_TRUE(catalog.entries.at(0).relations_window_s.has_value());
+  EXPECT_EQ((*catalog.entries.at(0).relations_window_s)[0], 100.5);
+  EXPECT_EQ((*catalog.entries.at(0).relations_window_s)[1], 200.0);
+  EXPECT_THAT(ErrorOf([] {
+                ParseCatalog(std::string(kMinimal) + "    relations: r\n    relations_window: [2, 1]\n", "c.yaml");
+              }),
+              HasSubstr("c.yaml:8: relations_window: expected from < to"));
+  EXPECT_THAT(
+      ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    relations: r\n    relations_window: 5\n", "c.yaml"); }),
+      HasSubstr("relations_window: expected [from, to]"));
+  EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    relations_window: [1, 2]\n", "c.yaml"); }),
+              HasSubstr("relations_window without relations"));
+  EXPECT_THAT(ErrorOf([] { ParseGroundTruthKind("corrected", "--ground-truth"); }),
+              HasSubstr("--ground-truth: expected one of corrected_poses, exact, measured, relations_only, none"));
+}
 
-  TEST(CatalogTest, AnEntryMayNameAReferenceMap) {
-    const Catalog catalog =
-        ParseCatalog(std::string(kMinimal) + "    reference_map: ${SHARED}/maps/a.yaml\n", "c.yaml");
-    EXPECT_EQ(catalog.entries.at(0).reference_map_path, "${SHARED}/maps/a.yaml");
-    EXPECT_TRUE(ParseCatalog(kMinimal, "c.yaml").entries.at(0).reference_map_path.empty());
-  }
+TEST(CatalogTest, AnEntryMayNameAReferenceMap) {
+  const Catalog catalog = ParseCatalog(std::string(kMinimal) + "    reference_map: ${SHARED}/maps/a.yaml\n", "c.yaml");
+  EXPECT_EQ(catalog.entries.at(0).reference_map_path, "${SHARED}/maps/a.yaml");
+  EXPECT_TRUE(ParseCatalog(kMinimal, "c.yaml").entries.at(0).reference_map_path.empty());
+}
 
-  TEST(CatalogTest, MissingFileNamesEntryPathAndWhereToGetIt) {
-    const Catalog catalog = ParseCatalog(kMinimal, "c.yaml");
-    const std::string error = ErrorOf([&] { LoadCatalogSequence(catalog.entries[0], {{"ROOT", "/nowhere"}}); });
-    EXPECT_THAT(error, HasSubstr("catalog sequence 'a'"));
-    EXPECT_THAT(error, HasSubstr("/nowhere/a.log is missing"));
-    EXPECT_THAT(error, HasSubstr("get it from: example.org/a"));
-    EXPECT_THAT(ErrorOf([&] { LoadCatalogSequence(catalog.entries[0], {}); }), HasSubstr("unknown variable ${ROOT}"));
-    EXPECT_THAT(ErrorOf([&] { FindCatalogEntry(catalog, "b"); }),
-                HasSubstr("no sequence named 'b' in the catalog c.yaml (known: a)"));
-  }
+TEST(CatalogTest, MissingFileNamesEntryPathAndWhereToGetIt) {
+  const Catalog catalog = ParseCatalog(kMinimal, "c.yaml");
+  const std::string error = ErrorOf([&] { LoadCatalogSequence(catalog.entries[0], {{"ROOT", "/nowhere"}}); });
+  EXPECT_THAT(error, HasSubstr("catalog sequence 'a'"));
+  EXPECT_THAT(error, HasSubstr("/nowhere/a.log is missing"));
+  EXPECT_THAT(error, HasSubstr("get it from: example.org/a"));
+  EXPECT_THAT(ErrorOf([&] { LoadCatalogSequence(catalog.entries[0], {}); }), HasSubstr("unknown variable ${ROOT}"));
+  EXPECT_THAT(ErrorOf([&] { FindCatalogEntry(catalog, "b"); }),
+              HasSubstr("no sequence named 'b' in the catalog c.yaml (known: a)"));
+}
 
-  TEST(CatalogTest, Fr079HasItsRelationsOnTheLogsClock) {
-    SLAMSWEEP_REQUIRE_SHARED(relations, "datasets/fr079/fr079.relations");
-    const Catalog catalog = ReadCatalog(ShippedCatalog());
-    const CatalogEntry& entry = FindCatalogEntry(catalog, "fr079");
-    EXPECT_NE(entry.relations_rate, 1.0);  // the relations' clock runs at another rate (the fitted map)
-    EXPECT_FALSE(entry.notes.empty());     // how the map was fitted, and its residual
-    const Sequence sequence = LoadCatalogSequence(entry, Shared());
-    ASSERT_TRUE(sequence.relations.has_value());
-    EXPECT_EQ(sequence.relations->size(), 1685u);
-    // Every relation falls inside the log's span once mapped.
-    for (const Relation& relation : *sequence.relations) {
-      ASSERT_GE(std::min(relation.t1_s, relation.t2_s), sequence.odometry_readings.stamps_s().front());
-      ASSERT_LE(std::max(relation.t1_s, relation.t2_s), sequence.odometry_readings.stamps_s().back());
-    }
+TEST(CatalogTest, Fr079HasItsRelationsOnTheLogsClock) {
+  SLAMSWEEP_REQUIRE_SHARED(relations, "datasets/fr079/fr079.relations");
+  const Catalog catalog = ReadCatalog(ShippedCatalog());
+  const CatalogEntry& entry = FindCatalogEntry(catalog, "fr079");
+  EXPECT_NE(entry.relations_rate, 1.0);  // the relations' clock runs at another rate (the fitted map)
+  EXPECT_FALSE(entry.notes.empty());     // how the map was fitted, and its residual
+  const Sequence sequence = LoadCatalogSequence(entry, Shared());
+  ASSERT_TRUE(sequence.relations.has_value());
+  EXPECT_EQ(sequence.relations->size(), 1685u);
+  // Every relation falls inside the log's span once mapped.
+  for (const Relation& relation : *sequence.relations) {
+    ASSERT_GE(std::min(relation.t1_s, relation.t2_s), sequence.odometry_readings.stamps_s().front());
+    ASSERT_LE(std::max(relation.t1_s, relation.t2_s), sequence.odometry_readings.stamps_s().back());
   }
+}
 
-  TEST(CatalogTest, DenseIntelTakesTheCorrectedLogsClockReferenceAndRelations) {
-    SLAMSWEEP_REQUIRE_SHARED(rawlog, "datasets/intel/intel-mrpt-every5.rawlog.gz");
-    if (!RawlogSupported()) {
-      if (testing::RunningInCi()) FAIL() << "MRPT not built";
-      GTEST_SKIP() << "MRPT not built";
-    }
-    const Sequence dense =
-        LoadCatalogSequence(FindCatalogEntry(ReadCatalog(ShippedCatalog()), "intel-dense"), Shared());
-    const Sequence intel = LoadCatalogSequence(FindCatalogEntry(ReadCatalog(ShippedCatalog()), "intel"), Shared());
-    // Three times the corrected log's density, on its clock: the scans' stamps are readings' stamps.
-    EXPECT_GT(dense.scans.size(), 2700u);
-    ASSERT_TRUE(dense.reference.has_value());
-    ASSERT_TRUE(dense.relations.has_value());
-    EXPECT_EQ(dense.relations->size(), intel.relations->size());
-    const std::vector<double>& readings = intel.odometry_readings.stamps_s();
-    for (const LaserScan& scan : dense.scans) {
-      ASSERT_TRUE(std::binary_search(readings.begin(), readings.end(), scan.stamp_s)) << scan.stamp_s;
-    }
-    // Scans both logs hold (the same stamp) have identical ranges: the time map is right.
-    std::size_t shared = 0;
-    std::size_t k = 0;
-    for (const LaserScan& scan : intel.scans) {
-      while (k < dense.scans.size() && dense.scans[k].stamp_s < scan.stamp_s) ++k;
-      if (k == dense.scans.size() || dense.scans[k].stamp_s != scan.stamp_s) continue;
-      ++shared;
-      ASSERT_EQ(dense.scans[k].ranges_m, scan.ranges_m) << scan.stamp_s;
-    }
-    EXPECT_GT(shared, 150u);  // PROVENANCE.txt: 174 of the 910 scans are in both
+TEST(CatalogTest, DenseIntelTakesTheCorrectedLogsClockReferenceAndRelations) {
+  SLAMSWEEP_REQUIRE_SHARED(rawlog, "datasets/intel/intel-mrpt-every5.rawlog.gz");
+  if (!RawlogSupported()) {
+    if (testing::RunningInCi()) FAIL() << "MRPT not built";
+    GTEST_SKIP() << "MRPT not built";
   }
+  const Sequence dense = LoadCatalogSequence(FindCatalogEntry(ReadCatalog(ShippedCatalog()), "intel-dense"), Shared());
+  const Sequence intel = LoadCatalogSequence(FindCatalogEntry(ReadCatalog(ShippedCatalog()), "intel"), Shared());
+  // Three times the corrected log's density, on its clock: the scans' stamps are readings' stamps.
+  EXPECT_GT(dense.scans.size(), 2700u);
+  ASSERT_TRUE(dense.reference.has_value());
+  ASSERT_TRUE(dense.relations.has_value());
+  EXPECT_EQ(dense.relations->size(), intel.relations->size());
+  const std::vector<double>& readings = intel.odometry_readings.stamps_s();
+  for (const LaserScan& scan : dense.scans) {
+    ASSERT_TRUE(std::binary_search(readings.begin(), readings.end(), scan.stamp_s)) << scan.stamp_s;
+  }
+  // Scans both logs hold (the same stamp) have identical ranges: the time map is right.
+  std::size_t shared = 0;
+  std::size_t k = 0;
+  for (const LaserScan& scan : intel.scans) {
+    while (k < dense.scans.size() && dense.scans[k].stamp_s < scan.stamp_s) ++k;
+    if (k == dense.scans.size() || dense.scans[k].stamp_s != scan.stamp_s) continue;
+    ++shared;
+    ASSERT_EQ(dense.scans[k].ranges_m, scan.ranges_m) << scan.stamp_s;
+  }
+  EXPECT_GT(shared, 150u);  // PROVENANCE.txt: 174 of the 910 scans are in both
+}
 
 }  // namespace
 }  // namespace slamsweep::evaluator
