@@ -227,7 +227,8 @@ TEST(RunSpecTest, RejectsUnknownAndMistypedFieldsByPath) {
 
   json format = kDesignExample;
   format["sequence"]["format"] = "bag";
-  EXPECT_THAT(ErrorOf(format), HasSubstr("run.json: sequence.format: expected carmen, rawlog, rosbag or simulated"));
+  EXPECT_THAT(ErrorOf(format),
+              HasSubstr("run.json: sequence.format: expected carmen, rawlog, rosbag, rosbag2 or simulated"));
 
   json noise = kDesignExample;
   noise["noise"]["odometry"] = {{"alpha1", -1.0}};
@@ -299,6 +300,8 @@ TEST(RunSpecTest, ABagsTopicsFramesAndMeasuredKindRoundTripAndAreWrittenOnlyWhen
     EXPECT_FALSE(before["sequence"].contains(key)) << key;  // run ids of entries without them stay the same
   }
   spec.sequence.entry.format = "rosbag2";
+  spec.sequence.entry.path = "bags/run1";
+  spec.sequence.entry.simulation = nullptr;
   spec.sequence.entry.ground_truth = evaluator::GroundTruthKind::kMeasured;
   spec.sequence.entry.bag.scan_topic = "/scan_front";
   spec.sequence.entry.bag.base_frame = "base_footprint";

@@ -17,6 +17,10 @@ and the bad ones the error tests read:
     unknown_encoding.db3 /scan serialised as json
     xcdr2.db3            /scan with an XCDR2 encapsulation header (00 07)
     short_message.db3    a /scan message cut after 20 bytes
+Or, for MCAP split files another writer made from LOG (FOLDER/NAME_0.mcap .. NAME_<PARTS-1>.mcap, each a
+contiguous slice of LOG's records, /tf_static in the first), the rest of a bag folder around them:
+    /usr/bin/python3 make_ros2_bags.py --mcap-folder LOG FOLDER PARTS [FILE]
+metadata.yaml (version 9, storage mcap) and, with FILE, rosbag2's per-file zstd (NAME_K.mcap.zstd).
 """
 import math
 import os
@@ -251,5 +255,27 @@ def main(log, out):
               [(t, ns, d[:20] if i == scans[1] else d) for i, (t, ns, d) in enumerate(rows)])
 
 
+def mcap_folder(log, folder, parts, mode):
+    records, max_range = read_carmen(log)
+    name = os.path.basename(os.path.normpath(folder))
+    files = []
+    for part in range(parts):
+        first, last = part * len(records) // parts, (part + 1) * len(records) // parts
+        rows = messages(records, max_range)
+        rows = (rows[:1] if part == 0 else []) + rows[1 + first:1 + last]
+        path = os.path.join(folder, f"{name}_{part}.mcap")
+        if mode == "FILE":
+            with open(path, "rb") as source, open(path + ".zstd", "wb") as target:
+                target.write(zstandard.ZstdCompressor().compress(source.read()))
+            os.remove(path)
+            path += ".zstd"
+        files.append((os.path.basename(path), rows))
+    write_metadata(folder, 9, files, [row for _, rows in files for row in rows], storage="mcap",
+                   compression=("zstd", mode) if mode else ("", ""))
+
+
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    if sys.argv[1] == "--mcap-folder":
+        mcap_folder(sys.argv[2], sys.argv[3], int(sys.argv[4]), sys.argv[5] if len(sys.argv) > 5 else "")
+    else:
+        main(sys.argv[1], sys.argv[2])

@@ -62,6 +62,45 @@ TEST(NpmWrittenBagTest, AChunkOfAnUnknownCompressionNamesIt) {
                                               HasSubstr("unknown compression 'brotli' (expected none, zstd or lz4)"))));
 }
 
+// A bag folder of MCAP split files as rosbag2 records them: the npm writer's two halves of the log (/tf_static in
+// the first) in a folder with Python's metadata.yaml (version 9, storage mcap), plain and compressed per file
+// with zstd (NAME_K.mcap.zstd, compression_mode FILE): the same scans and odometry as the log.
+TEST(NpmWrittenBagTest, AnMcapFolderSplitInTwoPlainOrCompressedPerFile) {
+  REQUIRE_CARMEN_FIXTURE();
+  REQUIRE_NPM_TOOLS();
+  const std::filesystem::path log = testing::RawCarmenLog().log;
+  const Sequence from_log = ReadSequence(log);
+  const std::filesystem::path single = testing::FixtureDir() / "mcap_whole.mcap";
+  testing::RunBagTool("write-carmen '" + log.string() + "' '" + single.string() + "' --compression lz4");
+  const Rosbag2Bag whole(single);
+  ASSERT_EQ(whole.Summary().topics.size(), 3u);
+  for (const std::string mode : {"", "FILE"}) {
+    const std::string name = mode.empty() ? "mcap_split" : "mcap_split_zstd";
+    const std::filesystem::path folder = testing::FixtureDir() / name;
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    for (int part = 0; part < 2; ++part) {
+      testing::RunBagTool("write-carmen '" + log.string() + "' '" +
+                          (folder / (name + "_" + std::to_string(part) + ".mcap")).string() +
+                          "' --compression lz4 --part " + std::to_string(part) + "/2");
+    }
+    ASSERT_EQ(testing::RunCommand(std::string(SLAMSWEEP_SYSTEM_PYTHON) + " '" + SLAMSWEEP_ROS2_BAGS_SCRIPT +
+                                      "' --mcap-folder '" + log.string() + "' '" + folder.string() + "' 2 " + mode,
+                                  folder.parent_path() / (name + ".log")),
+              "");
+    ASSERT_EQ(std::filesystem::exists(folder / (name + "_1.mcap.zstd")), !mode.empty()) << name;
+    const Rosbag2Bag bag(folder);
+    ASSERT_EQ(bag.Summary().topics.size(), 3u) << name;
+    for (std::size_t i = 0; i < 3; ++i) {
+      EXPECT_EQ(bag.Summary().topics[i].topic, whole.Summary().topics[i].topic) << name;
+      EXPECT_EQ(bag.Summary().topics[i].message_count, whole.Summary().topics[i].message_count) << name;
+    }
+    const Sequence from_bag = ReadSequence(folder);
+    testing::ExpectSameRobotData(from_log, from_bag);
+    EXPECT_TRUE(from_bag.warnings.empty()) << from_bag.warnings.front();
+  }
+}
+
 /// A robot log's scans and odometry as written and the npm reader's decoding of them.
 class OurBagsReadByNpmTest : public ::testing::Test {
  protected:

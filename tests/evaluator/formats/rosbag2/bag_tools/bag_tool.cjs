@@ -186,7 +186,10 @@ function readCarmen(path) {
 }
 
 async function writeCarmen(logPath, outPath, options) {
-  const { records, maxRange } = readCarmen(logPath);
+  const { records: all, maxRange } = readCarmen(logPath);
+  // One split file of a bag split in options.parts: the records of its slice; /tf_static in the first alone.
+  const from = Math.floor((options.part * all.length) / options.parts);
+  const records = all.slice(from, Math.floor(((options.part + 1) * all.length) / options.parts));
   let compressChunk;
   if (options.compression === "zstd") {
     const zstd = require("@foxglove/wasm-zstd");
@@ -223,8 +226,8 @@ async function writeCarmen(logPath, outPath, options) {
       data: ch.serialise.writeMessage(message) });
   };
   const zero36 = new Array(36).fill(0);
-  const first = records[0].time;
-  await add(tfStatic, first, {
+  const first = all[0].time;
+  if (options.part === 0) await add(tfStatic, first, {
     transforms: [{
       header: { stamp: { sec: first.sec, nanosec: first.nanosec }, frame_id: "base_link" }, child_frame_id: "laser",
       transform: { translation: { x: 0, y: 0, z: 0 }, rotation: { x: 0, y: 0, z: 0, w: 1 } },
@@ -257,16 +260,17 @@ async function main() {
   const [command, ...args] = process.argv.slice(2);
   if (command === "dump") return dump(args[0], args.slice(1));
   if (command === "write-carmen") {
-    const options = { compression: "none", noChunks: false, noSummary: false };
+    const options = { compression: "none", noChunks: false, noSummary: false, part: 0, parts: 1 };
     for (let i = 2; i < args.length; ++i) {
       if (args[i] === "--compression") options.compression = args[++i];
       else if (args[i] === "--no-chunks") options.noChunks = true;
       else if (args[i] === "--no-summary") options.noSummary = true;
+      else if (args[i] === "--part") [options.part, options.parts] = args[++i].split("/").map(Number);
       else throw new Error(`unknown option ${args[i]}`);
     }
     return writeCarmen(args[0], args[1], options);
   }
-  throw new Error("usage: bag_tool.cjs dump BAG [TOPIC...] | write-carmen LOG OUT [options]");
+  throw new Error("usage: bag_tool.cjs dump BAG [TOPIC...] | write-carmen LOG OUT [--compression C] [--no-chunks] [--no-summary] [--part K/N]");
 }
 
 main().catch((error) => {
