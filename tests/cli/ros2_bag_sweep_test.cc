@@ -23,7 +23,7 @@ std::string ReadAll(const std::filesystem::path& path) {
   return text.str();
 }
 
-int Run(const std::string& arguments, const std::filesystem::path& log) {
+int RunSlamsweep(const std::string& arguments, const std::filesystem::path& log) {
   return std::system((std::string(SLAMSWEEP_BINARY) + " " + arguments + " > '" + log.string() + "' 2>&1").c_str());
 }
 
@@ -45,14 +45,14 @@ TEST(Ros2BagSweepTest, BagsWrittenFromACarmenLogScoreAsTheLogDoes) {
   const std::filesystem::path log = testing::RawCarmenLog().log;
   for (const std::string storage : {"mcap", "sqlite3"}) {
     const std::filesystem::path out = dir / ("convert_" + storage + ".out");
-    ASSERT_EQ(Run("data convert '" + log.string() + "' --to rosbag2 --storage " + storage + " -o '" +
-                      (dir / ("bag_" + storage)).string() + "'",
-                  out),
+    ASSERT_EQ(RunSlamsweep("data convert '" + log.string() + "' --to rosbag2 --storage " + storage + " -o '" +
+                               (dir / ("bag_" + storage)).string() + "'",
+                           out),
               0)
         << ReadAll(out);
   }
   // A reference map for the map-against-reference scores: the corrected intel map.
-  ASSERT_EQ(Run("data map intel -o '" + (dir / "reference.yaml").string() + "'", dir / "map.out"), 0)
+  ASSERT_EQ(RunSlamsweep("data map intel -o '" + (dir / "reference.yaml").string() + "'", dir / "map.out"), 0)
       << ReadAll(dir / "map.out");
   // A program reading the CARMEN input: its odometry as its trajectory.
   const std::filesystem::path program = testing::WriteFile(
@@ -82,7 +82,7 @@ TEST(Ros2BagSweepTest, BagsWrittenFromACarmenLogScoreAsTheLogDoes) {
                              "}\n"
                              "  - {name: bag-sqlite3, format: rosbag2, path: bag_sqlite3, " +
                              sequence_keys + "}\n");
-  ASSERT_EQ(Run("run '" + sweep.string() + "' --no-report", dir / "run.out"), 0) << ReadAll(dir / "run.out");
+  ASSERT_EQ(RunSlamsweep("run '" + sweep.string() + "' --no-report", dir / "run.out"), 0) << ReadAll(dir / "run.out");
 
   const nlohmann::json summary = nlohmann::json::parse(ReadAll(dir / "out" / "summary.json"));
   std::map<std::string, std::map<std::string, nlohmann::json>> runs;  // algorithm -> sequence -> run
