@@ -9,7 +9,9 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
+#include "evaluator/formats/trajectory/relations_format.h"
 #include "evaluator/sequence/corrected_log_clock.h"
+#include "evaluator/sequence/relation_stamps.h"
 #include "evaluator/sequence/sequence_cut.h"
 #include "evaluator/simulation/simulated_sequence.h"
 
@@ -307,6 +309,44 @@ std::filesystem::path RequireSequence(const CatalogEntry& entry, const CatalogVa
   return path;
 }
 
+/// The relations of a sequence whose reader takes none (a rawlog, a ROS bag): as a raw CARMEN log's, their
+/// stamps (on the entry's clock once shifted) name scans, and each moves onto the scan whose stamp is
+/// nearest within half the median scan spacing; relations outside the entry's window or the scans' span
+/// are counted outside the log.
+void AddRelationsOnScans(Sequence& sequence, const std::filesystem::path& relations_path, const CatalogEntry& entry) {
+  Relations relations = ReadRelations(relations_path);
+  const std::size_t read = relations.size();
+  if (entry.relations_window_s) {
+    const auto [from_s, to_s] = *entry.relations_window_s;
+    std::erase_if(relations, [&](const Relation& relation) {
+      return std::min(relation.t1_s, relation.t2_s) < from_s || std::max(relation.t1_s, relation.t2_s) > to_s;
+    });
+  }
+  for (Relation& relation : relations) {
+    relation.t1_s = entry.relations_rate * relation.t1_s + entry.relations_offset_s;
+    relation.t2_s = entry.relations_rate * relation.t2_s + entry.relations_offset_s;
+  }
+  std::vector<double> stamps_s;
+  for (const LaserScan& scan : sequence.scans) stamps_s.push_back(scan.stamp_s);
+  if (!stamps_s.empty()) {
+    const auto [low, high] = std::minmax_element(stamps_s.begin(), stamps_s.end());
+    std::erase_if(relations, [&](const Relation& relation) {
+      return std::min(relation.t1_s, relation.t2_s) < *low || std::max(relation.t1_s, relation.t2_s) > *high;
+    });
+  }
+  sequence.relations_outside_log += read - relations.size();
+  std::size_t unmatched = 0;
+  const double tolerance_s = 0.5 * MedianSpacingS(stamps_s);
+  sequence.relations = MapRelationsOntoRecords(std::move(relations), stamps_s, stamps_s, tolerance_s, unmatched);
+  if (unmatched > 0) {
+    sequence.warnings.push_back(
+        Located(relations_path, 0,
+                fmt::format("{} of {} relation stamps lie farther than {:.3f} s from every scan of {} and keep their "
+                            "own time",
+                            unmatched, 2 * sequence.relations->size(), tolerance_s, entry.path)));
+  }
+}
+
 /// The entry's provenance where the reader found none, its relations window's cut, and its relations
 /// outside the log counted.
 Sequence Finished(Sequence sequence, const CatalogEntry& entry) {
@@ -489,7 +529,9 @@ Sequence LoadCatalogSequence(const CatalogEntry& entry, const CatalogVariables& 
   options.carmen.relations_path = relations_path;
   options.carmen.relations_offset_s = entry.relations_offset_s;
   options.carmen.relations_rate = entry.relations_rate;
-  return Finished(ReadSequence(path, options), entry);
+  Sequence sequence = ReadSequence(path, options);
+  if (relations_path && entry.format != "carmen") AddRelationsOnScans(sequence, *relations_path, entry);
+  return Finished(std::move(sequence), entry);
 }
 
 }  // namespace slamsweep::evaluator::inline catalog

@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -27,20 +28,36 @@ int RunSlamsweep(const std::string& arguments, const std::filesystem::path& log)
   return std::system((std::string(SLAMSWEEP_BINARY) + " " + arguments + " > '" + log.string() + "' 2>&1").c_str());
 }
 
-/// The program's input file of a run (the one file in its input folder), without a CARMEN log's first
-/// line, which names the sequence.
-std::string ProgramInput(const std::filesystem::path& run_dir) {
+/// The program's input files of a run (its input folder), by extension: the sequence's name, which they
+/// hold in a CARMEN log's first line and in a rawlog's name in the ini, is taken out. "(no input)" for a
+/// program that reads none (the odometry adapter).
+std::map<std::string, std::string> ProgramInputs(const std::filesystem::path& run_dir, const std::string& sequence) {
+  std::map<std::string, std::string> inputs;
+  if (!std::filesystem::exists(run_dir / "input")) return {{"", "(no input)"}};
   for (const auto& entry : std::filesystem::recursive_directory_iterator(run_dir / "input")) {
     if (!entry.is_regular_file()) continue;
-    const std::string text = ReadAll(entry.path());
-    return text.starts_with("#") ? text.substr(text.find('\n') + 1) : text;
+    std::string text = ReadAll(entry.path());
+    if (text.starts_with("#")) text = text.substr(text.find('\n') + 1);
+    for (std::size_t at = text.find(sequence + "."); at != std::string::npos; at = text.find(sequence + ".", at)) {
+      text.replace(at, sequence.size(), "SEQUENCE");
+    }
+    inputs[entry.path().extension().string()] = text;
   }
-  return "(no input file)";
+  return inputs;
+}
+
+/// Where two inputs first differ, "" when they are the same (inputs may be binary: a rawlog).
+std::string FirstDifference(const std::string& a, const std::string& b) {
+  if (a == b) return "";
+  const auto [in_a, in_b] = std::mismatch(a.begin(), a.end(), b.begin(), b.end());
+  return "sizes " + std::to_string(a.size()) + " and " + std::to_string(b.size()) + ", first difference at byte " +
+         std::to_string(in_a - a.begin());
 }
 
 TEST(Ros2BagSweepTest, BagsWrittenFromACarmenLogScoreAsTheLogDoes) {
   REQUIRE_CARMEN_FIXTURE();
   SLAMSWEEP_REQUIRE_SHARED(intel, "datasets/intel/intel-corrected.log.gz");
+  SLAMSWEEP_REQUIRE_SHARED(relations, "datasets/intel/intel.relations");
   testing::TempDir dir;
   const std::filesystem::path log = testing::RawCarmenLog().log;
   for (const std::string storage : {"mcap", "sqlite3"}) {
@@ -61,7 +78,10 @@ TEST(Ros2BagSweepTest, BagsWrittenFromACarmenLogScoreAsTheLogDoes) {
       "sort -u -k1,1 -g > \"$2/trajectory.tum\"\n");
   std::filesystem::permissions(program, std::filesystem::perms::owner_all | std::filesystem::perms::others_read |
                                             std::filesystem::perms::others_exec);
-  const std::string sequence_keys = "ground_truth: none, reference_map: reference.yaml";
+  // Scored against the map and against Kuemmerle's relations within the log's 150 scans (the relations are
+  // on the raw log's clock: the shipped catalog's offset, configs/datasets.yaml).
+  const std::string sequence_keys = "ground_truth: relations_only, relations: '" + relations.string() +
+                                    "', relations_offset_s: -976052857.337, reference_map: reference.yaml";
   const std::filesystem::path sweep =
       testing::WriteFile(dir / "sweep.yaml",
                          "name: ros2-parity\noutput: out\niterations: 1\nseed: 3\n"
@@ -97,15 +117,22 @@ TEST(Ros2BagSweepTest, BagsWrittenFromACarmenLogScoreAsTheLogDoes) {
     for (const std::string bag : {"bag-mcap", "bag-sqlite3"}) {
       const nlohmann::json& from_bag = by_sequence.at(bag);
       EXPECT_EQ(from_bag.at("metrics"), carmen.at("metrics")) << algorithm << " on " << bag;
-      EXPECT_EQ(ProgramInput(from_bag.at("run_dir").get<std::string>()),
-                ProgramInput(carmen.at("run_dir").get<std::string>()))
-          << algorithm << " on " << bag;
+      // summary.json names run folders relative to the sweep's output.
+      const auto bag_inputs = ProgramInputs(dir / "out" / from_bag.at("run_dir").get<std::string>(), bag);
+      const auto log_inputs = ProgramInputs(dir / "out" / carmen.at("run_dir").get<std::string>(), "carmen");
+      ASSERT_EQ(bag_inputs.size(), log_inputs.size()) << algorithm << " on " << bag;
+      for (const auto& [extension, text] : log_inputs) {
+        EXPECT_EQ(FirstDifference(bag_inputs.at(extension), text), "")
+            << algorithm << " on " << bag << ": " << extension;
+      }
     }
     EXPECT_FALSE(carmen.at("metrics").empty()) << algorithm;
   }
-  // The scores compared include the maps against the reference map.
-  EXPECT_TRUE(runs.at("icp-slam").at("carmen").at("metrics").contains("map_iou_occupied"))
-      << runs.at("icp-slam").at("carmen").dump();
+  // The scores compared include the maps against the reference map and the relations.
+  for (const char* metric : {"map_iou_occupied", "relations_trans", "relations_rot"}) {
+    EXPECT_TRUE(runs.at("icp-slam").at("carmen").at("metrics").contains(metric))
+        << metric << ": " << runs.at("icp-slam").at("carmen").dump();
+  }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/sequence/flaser_fan.h"
 
 namespace slamsweep::evaluator::inline formats::inline bag {
 
@@ -65,6 +66,16 @@ LaserScan ToLaserScan(const BagScan& scan) {
   out.stamp_s = MessageStamp(scan.stamp_s, scan.record_s);
   out.angle_min_rad = scan.angle_min_rad;
   out.angle_increment_rad = scan.angle_increment_rad;
+  // A LaserScan's fan is float32: the float rounding of a fan CARMEN's SICK layouts give the beam count is
+  // that fan, so a log written to a bag reads back to the log's fan (and programs get the same input).
+  if (scan.ranges_m.size() >= 2) {
+    const BeamFan fan = FlaserBeamFan(scan.ranges_m.size());
+    if (fan.known_layout && static_cast<float>(fan.angle_min_rad) == scan.angle_min_rad &&
+        static_cast<float>(fan.angle_increment_rad) == scan.angle_increment_rad) {
+      out.angle_min_rad = fan.angle_min_rad;
+      out.angle_increment_rad = fan.angle_increment_rad;
+    }
+  }
   out.range_min_m = scan.range_min_m;
   out.range_max_m = scan.range_max_m;
   out.ranges_m.reserve(scan.ranges_m.size());

@@ -35,7 +35,8 @@ struct RosTime {
 RosTime ToRosTime(double stamp_s, std::string_view where);
 
 /// A scan's fields as they are; NaN and +-inf ranges become range_max_m (no return). The sensor
-/// pose is left at identity.
+/// pose is left at identity. A fan stored as the float rounding of a CARMEN SICK layout's of its
+/// beam count (FlaserBeamFan) is that layout's fan in double.
 LaserScan ToLaserScan(const BagScan& scan);
 
 /// The stamp a message is placed at: header.stamp, or the record time when the header has none (0).
