@@ -12,34 +12,32 @@ std::string CanonicalFrame(std::string_view frame) {
   return std::string(frame);
 }
 
-bool TransformTree::AddStatic(std::string_view parent, std::string_view child, const Pose& pose) {
+TransformTree::Edge* TransformTree::EdgeFor(std::string_view parent, std::string_view child, bool is_static) {
   const std::string parent_frame = CanonicalFrame(parent);
   const std::string child_frame = CanonicalFrame(child);
-  if (parent_frame == child_frame) return false;
+  if (parent_frame == child_frame) return nullptr;
   const auto [it, inserted] = edges_.try_emplace(child_frame);
   Edge& edge = it->second;
   if (inserted) {
     edge.parent = parent_frame;
-    edge.is_static = true;
-  } else if (edge.parent != parent_frame || !edge.is_static) {
-    return false;
+    edge.is_static = is_static;
+  } else if (edge.parent != parent_frame || edge.is_static != is_static) {
+    return nullptr;
   }
-  edge.fixed = pose;
+  return &edge;
+}
+
+bool TransformTree::AddStatic(std::string_view parent, std::string_view child, const Pose& pose) {
+  Edge* edge = EdgeFor(parent, child, true);
+  if (edge == nullptr) return false;
+  edge->fixed = pose;
   return true;
 }
 
 bool TransformTree::AddSample(std::string_view parent, std::string_view child, double stamp_s, const Pose& pose) {
-  const std::string parent_frame = CanonicalFrame(parent);
-  const std::string child_frame = CanonicalFrame(child);
-  if (parent_frame == child_frame) return false;
-  const auto [it, inserted] = edges_.try_emplace(child_frame);
-  Edge& edge = it->second;
-  if (inserted) {
-    edge.parent = parent_frame;
-  } else if (edge.parent != parent_frame || edge.is_static) {
-    return false;
-  }
-  edge.samples.insert_or_assign(stamp_s, pose);
+  Edge* edge = EdgeFor(parent, child, false);
+  if (edge == nullptr) return false;
+  edge->samples.insert_or_assign(stamp_s, pose);
   return true;
 }
 

@@ -61,6 +61,9 @@ class TransformTree {
   };
   std::optional<Path> FindPath(const std::string& parent, const std::string& child) const;
   std::optional<Pose> EdgeAt(const Edge& edge, double stamp_s, bool clamp) const;
+  /// The edge from `parent` to `child` of that kind, made when new; nullptr when the frames are the same or
+  /// `child` already hangs from another parent or by another kind (AddStatic's and AddSample's false).
+  Edge* EdgeFor(std::string_view parent, std::string_view child, bool is_static);
   std::optional<Pose> ChainAt(const std::vector<std::string>& frames, double stamp_s, bool clamp) const;
 
   /// Keyed by child frame.
