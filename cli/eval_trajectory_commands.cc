@@ -110,9 +110,9 @@ void RegisterApe(CLI::App& eval, const Streams& streams) {
     ape_options.pose_relation = ev::ParsePoseRelation(options->pose_relation);
     ape_options.association = ToAssociation(*options);
     ape_options.alignment = ToAlignment(*options);
-    ev::Trajectory reference = ReadForCommand(options->reference_path, options->reference_format, streams);
-    ev::Trajectory estimate = ReadForCommand(options->estimate_path, options->estimate_format, streams);
-    PrintMetric(ev::Ape(ape_options).Compute(std::move(reference), std::move(estimate)), options->json, streams.out);
+    const ev::Trajectory reference = ReadForCommand(options->reference_path, options->reference_format, streams);
+    const ev::Trajectory estimate = ReadForCommand(options->estimate_path, options->estimate_format, streams);
+    PrintMetric(ev::Ape(ape_options).Compute(reference, estimate), options->json, streams.out);
   });
 }
 

@@ -89,18 +89,9 @@ const char* ReadFiniteNumber(const char* first, const char* last, double& value)
   return exact.ptr;
 }
 
-std::size_t EstimateLineCount(std::string_view content) {
-  // The mean length of the first lines, with a margin: a vector reserved from it rarely grows.
-  constexpr std::size_t kSampleLines = 64;
-  std::size_t lines = 0;
-  std::size_t sampled = 0;
-  while (lines < kSampleLines && sampled < content.size()) {
-    const std::size_t newline = content.find('\n', sampled);
-    sampled = newline == std::string_view::npos ? content.size() : newline + 1;
-    ++lines;
-  }
-  if (sampled == 0) return 0;
-  return content.size() / sampled * lines * 5 / 4 + lines;
+std::size_t CountLines(std::string_view content) {
+  const std::size_t newlines = static_cast<std::size_t>(std::count(content.begin(), content.end(), '\n'));
+  return newlines + (!content.empty() && content.back() != '\n' ? 1 : 0);
 }
 
 std::vector<std::string_view> SplitFields(std::string_view line, std::string_view separators) {
