@@ -7,6 +7,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -90,8 +91,17 @@ const char* ReadFiniteNumber(const char* first, const char* last, double& value)
 }
 
 std::size_t CountLines(std::string_view content) {
-  const std::size_t newlines = static_cast<std::size_t>(std::count(content.begin(), content.end(), '\n'));
-  return newlines + (!content.empty() && content.back() != '\n' ? 1 : 0);
+  // memchr jumps from newline to newline (vectorised in glibc), several times faster than a byte loop.
+  std::size_t lines = 0;
+  const char* cursor = content.data();
+  const char* const end = cursor + content.size();
+  while (cursor < end) {
+    const void* newline = std::memchr(cursor, '\n', static_cast<std::size_t>(end - cursor));
+    ++lines;
+    if (newline == nullptr) break;
+    cursor = static_cast<const char*>(newline) + 1;
+  }
+  return lines;
 }
 
 std::vector<std::string_view> SplitFields(std::string_view line, std::string_view separators) {
