@@ -86,8 +86,7 @@ Alignment AlignPairs(std::size_t n, const ReferenceAt& reference_at, const Estim
                      const AlignmentOptions& options) {
   if (n == 0) throw InputError("alignment: no associated pairs to align");
   if (options.mode == AlignmentMode::kOrigin) return OriginAlignment(reference_at(0), estimate_at(0));
-  const std::size_t used =
-      options.n_to_align == -1 ? n : std::min(n, static_cast<std::size_t>(options.n_to_align));
+  const std::size_t used = options.n_to_align == -1 ? n : std::min(n, static_cast<std::size_t>(options.n_to_align));
   const bool with_scale = options.mode == AlignmentMode::kSim2 || options.mode == AlignmentMode::kSim3;
   const bool planar = options.mode == AlignmentMode::kSe2 || options.mode == AlignmentMode::kSim2;
   return planar ? Umeyama<2>(used, estimate_at, reference_at, with_scale)

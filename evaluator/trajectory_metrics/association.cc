@@ -46,7 +46,8 @@ class NearestStamp {
     }
     order_.resize(n);
     std::iota(order_.begin(), order_.end(), std::size_t{0});
-    std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) { return shifted[a] < shifted[b]; });
+    std::stable_sort(order_.begin(), order_.end(),
+                     [&](std::size_t a, std::size_t b) { return shifted[a] < shifted[b]; });
     owned_.resize(n);
     for (std::size_t k = 0; k < n; ++k) owned_[k] = shifted[order_[k]];
     sorted_ = owned_;

@@ -85,7 +85,8 @@ SegmentRpeResult SegmentRpe::Compute(const Trajectory& reference, const Trajecto
   for (const double length : options_.lengths_m) {
     SegmentLengthResult segments;
     segments.length_m = length;
-    segments.pairs = FindPairs(paired_reference.trajectory(), {length, DeltaUnit::kMeters, true, options_.relative_tolerance});
+    segments.pairs =
+        FindPairs(paired_reference.trajectory(), {length, DeltaUnit::kMeters, true, options_.relative_tolerance});
     for (const auto [i, j] : segments.pairs) {
       const Pose error = Relative(Relative(q[i], q[j]), Relative(p[i], p[j]));
       const double translation = error.position.norm();

@@ -30,8 +30,7 @@ Relations ParseRelations(std::string_view content, const std::filesystem::path& 
   // Lines of eight finite numbers take the quick path; any other line is read field by field, which names
   // what is wrong with it.
   ForEachNumberLine<8>(
-      content,
-      [&](const std::array<double, 8>& v, std::string_view, std::size_t) { add(v); },
+      content, [&](const std::array<double, 8>& v, std::string_view, std::size_t) { add(v); },
       [&](std::string_view line, std::size_t line_number) {
         const TextRecord record(source, line_number, SplitFields(line, " \t\r"));
         if (record.size() != 8) {

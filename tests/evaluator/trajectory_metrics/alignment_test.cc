@@ -67,8 +67,8 @@ TEST(AlignmentTest, ByIndicesEqualsTheAlignmentOfThePairedCopiesBitForBit) {
   }
   const Trajectory reference_copy = reference.Subset(pairs.reference_ids);
   const Trajectory estimate_copy = estimate.Subset(pairs.estimate_ids);
-  for (AlignmentMode mode : {AlignmentMode::kOrigin, AlignmentMode::kSe2, AlignmentMode::kSe3, AlignmentMode::kSim2,
-                             AlignmentMode::kSim3}) {
+  for (AlignmentMode mode :
+       {AlignmentMode::kOrigin, AlignmentMode::kSe2, AlignmentMode::kSe3, AlignmentMode::kSim2, AlignmentMode::kSim3}) {
     for (int n_to_align : {-1, 10}) {
       const AlignmentOptions options{mode, n_to_align};
       const Alignment by_indices = *ComputeAlignment(reference, estimate, pairs, options);
