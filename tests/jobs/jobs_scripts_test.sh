@@ -533,18 +533,28 @@ check_quickstart() {
 
 # --- speed: the nightly's speed stage, end to end on two cases ---------------------------------------------
 
+# run_speed_stage NAME COMMAND...: runs a speed stage's script (output to $work/last.log) and leaves its exit
+# status in $status. 3 is a slow verdict, which a loaded CI machine may give: the wiring is what is checked, not
+# the speed, so 0 and 3 pass and anything else fails (return 1).
+run_speed_stage() {
+  local name=$1
+  shift
+  status=0
+  "$@" >"$work/last.log" 2>&1 || status=$?
+  tail -8 "$work/last.log"
+  if ((status == 0 || status == 3)); then
+    pass "$name exit $status (0 no verdict against it, 3 slow)"
+  else
+    fail "$name exited $status"
+    return 1
+  fi
+}
+
 check_speed() {
   cd "$work"
   local status=0
-  BENCH_RUNS=1 BENCH_ONLY='^(version|eval-ape-1k)$' "$jobs_dir/speed-check.sh" speed >"$work/last.log" 2>&1 || status=$?
-  tail -8 "$work/last.log"
-  # 3 would be a missed target on a loaded CI machine: the wiring is what is checked here, not the speed.
-  if ((status == 0 || status == 3)); then
-    pass "speed-check.sh exit $status (0 met, 3 missed)"
-  else
-    fail "speed-check.sh exited $status"
-    return
-  fi
+  run_speed_stage speed-check.sh env BENCH_RUNS=1 BENCH_ONLY='^(version|eval-ape-1k)$' \
+    "$jobs_dir/speed-check.sh" speed || return
   [[ -s speed/table.md ]] && pass "speed/table.md written" || fail "speed/table.md missing"
   if python3 - speed/summary.json <<'EOF'
 import json, sys
@@ -584,16 +594,9 @@ EOF
 check_paired_speed() {
   cd "$work"
   local status=0
-  SPEED_BASELINE_BIN="$SLAMSWEEP_BIN" BENCH_RUNS=6 BENCH_ONLY='^eval-ape-se3-100k$' \
-    "$jobs_dir/paired-speed-check.sh" same >"$work/last.log" 2>&1 || status=$?
-  tail -6 "$work/last.log"
-  # 3 here would be a false alarm of the rank test (alpha 0.01) on a noisy machine: the wiring is what is checked.
-  if ((status == 0 || status == 3)); then
-    pass "paired-speed-check.sh exit $status on the same program twice"
-  else
-    fail "paired-speed-check.sh exited $status"
-    return
-  fi
+  # The same program twice: 3 would be a false alarm of the rank test (alpha 0.01) on a noisy machine.
+  run_speed_stage "paired-speed-check.sh on the same program twice" env SPEED_BASELINE_BIN="$SLAMSWEEP_BIN" \
+    BENCH_RUNS=6 BENCH_ONLY='^eval-ape-se3-100k$' "$jobs_dir/paired-speed-check.sh" same || return
   if python3 - same/verdict.json same/samples.json <<'EOF'
 import json, sys
 verdict = json.load(open(sys.argv[1]))
