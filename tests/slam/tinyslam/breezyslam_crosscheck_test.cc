@@ -192,8 +192,8 @@ TEST(TinySlamCrossCheckTest, BothTinySlamsAgainstTheWheelsOnTheFullRateIntelLog)
   const double odometry = relations_error(robot.odometry);
   const double breezy = relations_error(RunBreezySlam(robot));
   const double tiny = relations_error(RunTinySlam(input, dir / "tiny"));
-  std::cout << "[ tinySLAM ] intel-full-rate, relations error: BreezySLAM " << breezy << " m, slam-constructor "
-            << tiny << " m, odometry " << odometry << " m\n";
+  std::cout << "[ tinySLAM ] intel-full-rate, relations error: BreezySLAM " << breezy << " m, slam-constructor " << tiny
+            << " m, odometry " << odometry << " m\n";
   EXPECT_GT(breezy, odometry) << "the independent tinySLAM now beats the wheels on the full-rate log: "
                                  "slam-constructor's miss there may be our driver's";
   EXPECT_GT(tiny, 0.0);
