@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "evaluator/core/huge_pages.h"
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
 #include "evaluator/formats/trajectory/euler_angles.h"
@@ -18,6 +19,7 @@ constexpr std::array<std::string_view, 8> kFieldNames = {"t1", "t2", "x", "y", "
 Relations ParseRelations(std::string_view content, const std::filesystem::path& source) {
   Relations relations;
   relations.reserve(CountLines(content));
+  AdviseHugePages(relations);
   // v: t1 t2 x y z roll pitch yaw
   const auto add = [&](const std::array<double, 8>& v) {
     Relation relation;
