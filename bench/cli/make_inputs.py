@@ -11,8 +11,12 @@
                 doors, furniture and speckle, unknown outside a margin.
 
 Deterministic (fixed seeds); a file that already exists is kept, so a rerun costs nothing.
-Usage: make_inputs.py OUT_DIR
+Usage: make_inputs.py OUT_DIR [--files NAME ...]
+  --files  write only the inputs these file names belong to (a TUM pair, a map with its .pgm/.yaml/.png,
+           a relations file), e.g. what the selected benchmark cases read: the 1,000,000-pose pair alone
+           takes minutes of Python.
 """
+import argparse
 import math
 import os
 import random
@@ -136,15 +140,24 @@ def write_map(directory, side):
 
 
 def main():
-    if len(sys.argv) != 2:
-        sys.exit("usage: make_inputs.py OUT_DIR")
-    directory = sys.argv[1]
+    parser = argparse.ArgumentParser(usage="make_inputs.py OUT_DIR [--files NAME ...]")
+    parser.add_argument("directory")
+    parser.add_argument("--files", nargs="*", default=None)
+    args = parser.parse_args()
+    directory = args.directory
+
+    def wanted(*names):
+        return args.files is None or any(name in args.files for name in names)
+
     os.makedirs(directory, exist_ok=True)
     for count in (1000, 100_000, 1_000_000):
-        write_tum_pair(directory, count)
-    write_relations(directory, 100_000)
+        if wanted(f"tum-{count}-ref.tum", f"tum-{count}-est.tum"):
+            write_tum_pair(directory, count)
+    if wanted("relations-100000.txt"):
+        write_relations(directory, 100_000)
     for side in (200, 2000):
-        write_map(directory, side)
+        if wanted(f"map-{side}.yaml", f"map-{side}.pgm", f"map-{side}.png"):
+            write_map(directory, side)
 
 
 if __name__ == "__main__":
