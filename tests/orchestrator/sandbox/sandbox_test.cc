@@ -11,6 +11,8 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -253,12 +255,28 @@ TEST_F(SandboxedProcessTest, OnlyTheSystemAndTheGivenFoldersExistInAnOwnNamespac
   std::ofstream(dir_ / "secret.txt") << "truth\n";
   const ProcessOutcome outcome =
       Run("ls / | tr '\\n' ' '; echo; for p in " + (dir_ / "secret.txt").string() +
-          " /home /root /var /etc/shadow; do [ -e $p ] && echo VISIBLE $p; done; "
+          " /etc/shadow /etc/ssh; do [ -e $p ] && echo VISIBLE $p; done; "
+          "for f in /home /root /var; do [ -e $f ] && echo LISTED $f $(ls -A $f); done; "
           "echo pids $(ls /proc | grep -c '^[0-9]'); grep -c : /proc/net/dev; id -u; "
           "grep CapEff /proc/self/status; echo x > /etc/x 2>/dev/null && echo WROTE-ETC; true");
   EXPECT_TRUE(outcome.ok()) << outcome.reason << Log();
   const std::string log = Log();
   EXPECT_EQ(log.find("VISIBLE"), std::string::npos) << log;
+  // Nothing of the host's home, root or service folders: where process 1 or raw/ lies in one (a checkout
+  // under /var/tmp or /home), only the folder leading to it exists there.
+  std::istringstream lines(log);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string word, folder;
+    if (!(words >> word >> folder) || word != "LISTED") continue;
+    std::set<std::string> leading;
+    for (const fs::path& bound : {sandbox_.init_program, dir_ / "raw"}) {
+      const fs::path relative = bound.lexically_relative(folder);
+      if (!relative.empty() && *relative.begin() != "..") leading.insert(relative.begin()->string());
+    }
+    EXPECT_FALSE(leading.empty()) << folder << " exists with nothing bound in it: " << line;
+    for (std::string entry; words >> entry;) EXPECT_TRUE(leading.count(entry)) << folder << " shows " << entry;
+  }
   EXPECT_EQ(log.find("WROTE-ETC"), std::string::npos) << log;
   // The shell, a subshell or two, ls and the sandbox's process 1: a handful, not the host's.
   EXPECT_NE(log.find("pids "), std::string::npos) << log;
