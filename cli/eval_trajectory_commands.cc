@@ -1,11 +1,13 @@
 // `slamsweep eval ape|rpe|relations`: flags follow evo's names with dashes.
 #include <fmt/format.h>
 
+#include <future>
 #include <memory>
 #include <optional>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/command.h"
@@ -38,26 +40,53 @@ struct PairOptions {
   bool json = false;
 };
 
-/// Reads a trajectory in the given (or detected) format: a file, or with format bag (or auto) a
-/// topic or tf pair in a ROS 1 or ROS 2 bag, evo's way (BAG:TOPIC, BAG:/tf:PARENT.CHILD). Format notes
-/// such as a CARMEN log's broken clock go to stderr so that --json output stays one object.
-ev::Trajectory ReadForCommand(const std::string& path, const std::string& format, const Streams& streams) {
-  std::vector<std::string> warnings;
-  ev::Trajectory trajectory;
-  if (format == "bag" || (format == "auto" && ev::NamesBagTrajectory(path))) {
-    trajectory = ev::ReadBagTrajectoryArgument(path, warnings);
-  } else {
-    const std::optional<ev::TrajectoryFormat> parsed = ev::ParseTrajectoryFormat(format);
-    if (!parsed) {
-      throw ev::InputError("--ref-format/--est-format '" + format +
-                           "': expected one of auto, tum, kitti, mrpt, carmen, csv, bag");
-    }
-    ev::TrajectoryFile file = ev::ReadTrajectoryFile(path, *parsed);
-    warnings = std::move(file.warnings);
-    trajectory = std::move(file.trajectory);
+/// Whether a trajectory argument names a topic or tf pair in a ROS 1 or ROS 2 bag, evo's way (BAG:TOPIC,
+/// BAG:/tf:PARENT.CHILD): format bag, or auto and a name of that form.
+bool IsBagTrajectory(const std::string& path, const std::string& format) {
+  return format == "bag" || (format == "auto" && ev::NamesBagTrajectory(path));
+}
+
+ev::TrajectoryFormat ParseFormatOption(const std::string& format) {
+  const std::optional<ev::TrajectoryFormat> parsed = ev::ParseTrajectoryFormat(format);
+  if (!parsed) {
+    throw ev::InputError("--ref-format/--est-format '" + format +
+                         "': expected one of auto, tum, kitti, mrpt, carmen, csv, bag");
   }
-  for (const std::string& warning : warnings) streams.err << "slamsweep: warning: " << warning << "\n";
-  return trajectory;
+  return *parsed;
+}
+
+/// A trajectory argument read: a file in the given (or detected) format, or a trajectory in a bag.
+ev::TrajectoryFile ReadTrajectoryArgument(const std::string& path, const std::string& format) {
+  if (!IsBagTrajectory(path, format)) return ev::ReadTrajectoryFile(path, ParseFormatOption(format));
+  ev::TrajectoryFile file;
+  file.trajectory = ev::ReadBagTrajectoryArgument(path, file.warnings);
+  return file;
+}
+
+/// Format notes such as a CARMEN log's broken clock go to stderr so that --json output stays one object.
+ev::Trajectory TrajectoryWithNotes(ev::TrajectoryFile file, const Streams& streams) {
+  for (const std::string& warning : file.warnings) streams.err << "slamsweep: warning: " << warning << "\n";
+  return std::move(file.trajectory);
+}
+
+/// Reads a trajectory argument (ReadTrajectoryArgument).
+ev::Trajectory ReadForCommand(const std::string& path, const std::string& format, const Streams& streams) {
+  return TrajectoryWithNotes(ReadTrajectoryArgument(path, format), streams);
+}
+
+/// The reference and the estimate of an ape or rpe command, read at once: the estimate on a thread of its own
+/// (parsing the files is most of an eval command's time). Errors and notes come as reading one after the other
+/// would give them, the reference's first.
+std::pair<ev::Trajectory, ev::Trajectory> ReadPairForCommand(const PairOptions& options, const Streams& streams) {
+  if (!IsBagTrajectory(options.reference_path, options.reference_format)) {
+    ParseFormatOption(options.reference_format);  // a bad option before the estimate's errors
+  }
+  std::future<ev::TrajectoryFile> estimate = std::async(std::launch::async, [&options] {
+    return ReadTrajectoryArgument(options.estimate_path, options.estimate_format);
+  });
+  ev::Trajectory reference =
+      TrajectoryWithNotes(ReadTrajectoryArgument(options.reference_path, options.reference_format), streams);
+  return {std::move(reference), TrajectoryWithNotes(estimate.get(), streams)};
 }
 
 void AddPairOptions(CLI::App& command, PairOptions& options) {
@@ -126,9 +155,8 @@ void RegisterApe(CLI::App& eval, const Streams& streams) {
     ape_options.pose_relation = ev::ParsePoseRelation(options->pose_relation);
     ape_options.association = ToAssociation(*options);
     ape_options.alignment = ToAlignment(*options);
-    ev::Trajectory reference = ReadForCommand(options->reference_path, options->reference_format, streams);
-    ev::Trajectory estimate = ReadForCommand(options->estimate_path, options->estimate_format, streams);
-    PrintMetric(ev::Ape(ape_options).Compute(std::move(reference), std::move(estimate)), options->json, streams.out);
+    const auto [reference, estimate] = ReadPairForCommand(*options, streams);
+    PrintMetric(ev::Ape(ape_options).Compute(reference, estimate), options->json, streams.out);
   });
 }
 
@@ -160,8 +188,7 @@ void RegisterRpe(CLI::App& eval, const Streams& streams) {
             "--segments: give no --align, --pose-relation, --all-pairs or --pairs-from-reference; "
             "segments are chosen on the reference and report translation and rotation");
       }
-      const ev::Trajectory reference = ReadForCommand(options->reference_path, options->reference_format, streams);
-      const ev::Trajectory estimate = ReadForCommand(options->estimate_path, options->estimate_format, streams);
+      const auto [reference, estimate] = ReadPairForCommand(*options, streams);
       PrintSegmentRpe(reference, estimate, ParseSegmentsOption(*segments), ToAssociation(*options), options->json,
                       streams.out);
       return;
@@ -177,8 +204,7 @@ void RegisterRpe(CLI::App& eval, const Streams& streams) {
     rpe_options.all_pairs = *all_pairs;
     rpe_options.association = ToAssociation(*options);
     rpe_options.alignment = ToAlignment(*options);
-    const ev::Trajectory reference = ReadForCommand(options->reference_path, options->reference_format, streams);
-    const ev::Trajectory estimate = ReadForCommand(options->estimate_path, options->estimate_format, streams);
+    const auto [reference, estimate] = ReadPairForCommand(*options, streams);
     PrintMetric(ev::Rpe(rpe_options).Compute(reference, estimate), options->json, streams.out);
   });
 }
@@ -200,8 +226,11 @@ void RegisterRelations(CLI::App& eval, const Streams& streams) {
   command->callback([options, streams] {
     ev::RelationsOptions relations_options;
     relations_options.t_offset_s = options->t_offset_s;
+    // The relations file is read on a thread of its own while the trajectory is read here.
+    std::future<ev::Relations> relations_read =
+        std::async(std::launch::async, [options] { return ev::ReadRelations(options->relations_path); });
     const ev::Trajectory estimate = ReadForCommand(options->trajectory_path, "auto", streams);
-    const ev::Relations relations = ev::ReadRelations(options->relations_path);
+    const ev::Relations relations = relations_read.get();
     const ev::RelationsResult result = ev::RelationsMetric(relations_options).Compute(estimate, relations);
     const nlohmann::json j = result.ToJson();
     if (options->json) {
