@@ -27,6 +27,7 @@
 #include "evaluator/sequence/odometry_mode.h"
 #include "evaluator/sequence/recorded_odometry.h"
 #include "evaluator/sequence/relations_clock.h"
+#include "evaluator/sequence_io/bag_trajectory_file.h"
 #include "evaluator/sequence_io/sequence_file.h"
 #include "evaluator/sequence_io/robot_log_file.h"
 #include "evaluator/simulation/simulated_sequence.h"
@@ -72,12 +73,26 @@ struct SourceOptions {
 };
 
 void AddSourceOptions(CLI::App& command, SourceOptions& options) {
-  command.add_option("SOURCE", options.source, "sequence file (CARMEN, rawlog, ROS bag) or catalog name")->required();
+  command
+      .add_option("SOURCE", options.source,
+                  "sequence (CARMEN log, rawlog, ROS 1 bag, ROS 2 bag folder or .db3/.mcap file) or catalog name")
+      ->required();
   command.add_option("--catalog", options.catalog, "dataset catalog (default: configs/datasets.yaml)");
-  command.add_option("--scan-topic", options.read.scan_topic, "ROS bag: the sensor_msgs/LaserScan topic");
-  command.add_option("--odometry-topic", options.read.odometry_topic, "ROS bag: the nav_msgs/Odometry topic");
-  command.add_option("--reference-topic", options.read.reference_topic,
-                     "ROS bag: a nav_msgs/Odometry topic with ground truth");
+  ev::BagChoices& bag = options.read.bag;
+  command.add_option("--scan-topic", bag.scan_topic,
+                     "ROS bags: the sensor_msgs/LaserScan topic (default: the only one)");
+  command.add_option("--odometry-topic", bag.odometry_topic,
+                     "ROS bags: the nav_msgs/Odometry topic (default: the only one, else /tf odom -> base_link)");
+  command.add_option("--odom-frame", bag.odom_frame,
+                     "ROS bags: odometry from /tf this frame -> base frame (default odom)");
+  command.add_option("--base-frame", bag.base_frame, "ROS bags: the robot's frame (default base_link)");
+  command.add_option("--laser-frame", bag.laser_frame,
+                     "ROS bags: the laser's frame for its mount in /tf_static (default: each scan's header.frame_id)");
+  command.add_option("--reference-topic", bag.reference_topic,
+                     "ROS bags: a reference recorded with the data: nav_msgs/Odometry, geometry_msgs/PoseStamped or "
+                     "PoseWithCovarianceStamped");
+  command.add_option("--reference-frame", bag.reference_frame,
+                     "ROS bags: a reference from /tf: the base frame's pose in this frame (e.g. map)");
   command
       .add_option("--odometry", options.odometry,
                   "recorded | reference: the robot's odometry rebuilt from a corrected log's ODOM stream (an error "
@@ -161,12 +176,22 @@ void RegisterConvert(CLI::App& data, const Streams& streams) {
     std::string range_noise;
     std::uint64_t seed = 1;
     std::string reference_out;
+    std::string storage = "mcap";
   };
   auto options = std::make_shared<Options>();
-  CLI::App* command = data.add_subcommand("convert", "write a sequence for SLAM programs, optionally with noise");
+  CLI::App* command = data.add_subcommand(
+      "convert",
+      "write a sequence for SLAM programs, optionally with noise; or a trajectory in a bag (BAG:TOPIC, "
+      "BAG:/tf:PARENT.CHILD) as TUM");
   AddSourceOptions(*command, options->input);
-  command->add_option("--to", options->to, "rawlog | carmen | tum")->required();
-  command->add_option("-o,--output", options->output, "output file")->required();
+  command
+      ->add_option("--to", options->to,
+                   "rawlog | carmen | tum | rosbag2 (a bag folder: /scan, /odom, /tf, /tf_static, and the reference "
+                   "as /ground_truth)")
+      ->required();
+  command->add_option("-o,--output", options->output, "output file (rosbag2: a new folder)")->required();
+  command->add_option("--storage", options->storage, "rosbag2: mcap (default) or sqlite3 (ROS 2 Humble's schema)")
+      ->check(CLI::IsMember({"mcap", "sqlite3"}));
   command->add_option("--odometry-noise", options->odometry_noise,
                       "alpha1,alpha2,alpha3,alpha4 of the odometry motion model (variances per step)");
   command->add_option("--drift", options->drift_rad_per_m, "systematic heading drift (rad per metre travelled)");
@@ -178,6 +203,18 @@ void RegisterConvert(CLI::App& data, const Streams& streams) {
                       "also write the reference trajectory (TUM) here; keep it away from the SLAM program");
   command->callback([options, streams] {
     const ev::SequenceWriteFormat format = ev::ParseSequenceWriteFormat(options->to, "--to");
+    std::error_code error;
+    if (!std::filesystem::exists(options->input.source, error) && ev::NamesBagTrajectory(options->input.source)) {
+      if (format != ev::SequenceWriteFormat::kTum) {
+        throw ev::InputError(options->input.source + ": a trajectory in a bag converts --to tum only");
+      }
+      std::vector<std::string> warnings;
+      const ev::Trajectory trajectory = ev::ReadBagTrajectoryArgument(options->input.source, warnings);
+      for (const std::string& warning : warnings) streams.err << "slamsweep: warning: " << warning << "\n";
+      ev::WriteTum(trajectory, options->output);
+      streams.out << "wrote " << options->output << " (" << trajectory.size() << " poses)\n";
+      return;
+    }
     ev::Sequence sequence = LoadSource(options->input);
 
     ev::OdometryNoise odometry_noise;
@@ -217,7 +254,13 @@ void RegisterConvert(CLI::App& data, const Streams& streams) {
       sequence.scans = ev::ApplyRangeNoise(sequence.scans, range_noise, ev::DeriveSeed(options->seed, 1));
     }
     // Only scans and odometry go into a program's input; the reference goes to its own file, on request.
-    ev::WriteRobotLog(ev::RobotLogOf(sequence), options->output, format);
+    // A ROS 2 bag is a dataset for ROS 2 tools: it carries the reference as /ground_truth.
+    if (format == ev::SequenceWriteFormat::kRosbag2) {
+      ev::WriteRosbag2Folder(ev::RobotLogOf(sequence), sequence.reference, options->output,
+                             ev::ParseRosbag2Storage(options->storage));
+    } else {
+      ev::WriteRobotLog(ev::RobotLogOf(sequence), options->output, format);
+    }
     if (!options->reference_out.empty()) {
       if (!sequence.reference) {
         throw ev::InputError(options->input.source + ": --reference-out: the sequence has no reference trajectory");
@@ -237,8 +280,10 @@ void RegisterConvert(CLI::App& data, const Streams& streams) {
     record["range_noise_seed"] = ev::DeriveSeed(options->seed, 1);
     const std::filesystem::path noise_path = options->output + ".noise.json";
     ev::WriteOutputFile(noise_path, [&](std::ostream& out) { out << record.dump(2) << "\n"; });
-    streams.out << "wrote " << options->output << " (" << sequence.scans.size() << " scans) and " << noise_path.string()
-                << "\n";
+    streams.out << "wrote " << options->output << " (" << sequence.scans.size() << " scans"
+                << (format == ev::SequenceWriteFormat::kRosbag2 && sequence.reference ? ", reference as /ground_truth"
+                                                                                      : "")
+                << ") and " << noise_path.string() << "\n";
   });
 }
 

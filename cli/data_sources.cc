@@ -38,7 +38,8 @@ ev::Sequence LoadSequenceArgument(const std::string& argument, const CatalogLoca
                                   const ev::SequenceReadOptions& read_options, std::optional<ev::OdometryMode> odometry,
                                   std::optional<ev::GroundTruthKind> ground_truth) {
   std::error_code error;
-  if (std::filesystem::is_regular_file(argument, error)) {
+  // A file, or a folder (a ROS 2 bag; DetectSequenceFormat says what is missing in one that is not).
+  if (std::filesystem::is_regular_file(argument, error) || std::filesystem::is_directory(argument, error)) {
     ev::SequenceReadOptions options = read_options;
     if (ground_truth) {
       ev::CatalogEntry declared;

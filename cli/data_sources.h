@@ -22,8 +22,8 @@ struct CatalogLocation {
 /// The location from the environment and the build defaults; `catalog_option` wins when not empty.
 CatalogLocation FindCatalog(const std::string& catalog_option);
 
-/// A sequence named on the command line: an existing file (any format ReadSequence knows), else a
-/// catalog name. Neither is an InputError naming the argument and the catalog's names.
+/// A sequence named on the command line: an existing file or ROS 2 bag folder (any format ReadSequence
+/// knows), else a catalog name. Neither is an InputError naming the argument and the catalog's names.
 /// `read_options` apply to a file argument (catalog entries carry their own). `odometry`, when set,
 /// is the odometry mode asked for explicitly (a corrected log without an ODOM stream is then an
 /// error naming the line); unset, a file is read as the catalog reads its entries by default: with

@@ -8,6 +8,7 @@
 #include <ostream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "cli/command.h"
 #include "cli/segment_rpe_output.h"
@@ -15,6 +16,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/trajectory/relations_format.h"
 #include "evaluator/formats/trajectory/trajectory_file.h"
+#include "evaluator/sequence_io/bag_trajectory_file.h"
 #include "evaluator/trajectory_metrics/ape.h"
 #include "evaluator/trajectory_metrics/relations_metric.h"
 #include "evaluator/trajectory_metrics/rpe.h"
@@ -38,13 +40,27 @@ struct PairOptions {
   bool json = false;
 };
 
+/// Whether a trajectory argument names a topic or tf pair in a ROS 1 or ROS 2 bag, evo's way (BAG:TOPIC,
+/// BAG:/tf:PARENT.CHILD): format bag, or auto and a name of that form.
+bool IsBagTrajectory(const std::string& path, const std::string& format) {
+  return format == "bag" || (format == "auto" && ev::NamesBagTrajectory(path));
+}
+
 ev::TrajectoryFormat ParseFormatOption(const std::string& format) {
   const std::optional<ev::TrajectoryFormat> parsed = ev::ParseTrajectoryFormat(format);
   if (!parsed) {
     throw ev::InputError("--ref-format/--est-format '" + format +
-                         "': expected one of auto, tum, kitti, mrpt, carmen, csv");
+                         "': expected one of auto, tum, kitti, mrpt, carmen, csv, bag");
   }
   return *parsed;
+}
+
+/// A trajectory argument read: a file in the given (or detected) format, or a trajectory in a bag.
+ev::TrajectoryFile ReadTrajectoryArgument(const std::string& path, const std::string& format) {
+  if (!IsBagTrajectory(path, format)) return ev::ReadTrajectoryFile(path, ParseFormatOption(format));
+  ev::TrajectoryFile file;
+  file.trajectory = ev::ReadBagTrajectoryArgument(path, file.warnings);
+  return file;
 }
 
 /// Format notes such as a CARMEN log's broken clock go to stderr so that --json output stays one object.
@@ -53,27 +69,31 @@ ev::Trajectory TrajectoryWithNotes(ev::TrajectoryFile file, const Streams& strea
   return std::move(file.trajectory);
 }
 
-/// Reads a trajectory in the given (or detected) format.
+/// Reads a trajectory argument (ReadTrajectoryArgument).
 ev::Trajectory ReadForCommand(const std::string& path, const std::string& format, const Streams& streams) {
-  const ev::TrajectoryFormat parsed = ParseFormatOption(format);
-  return TrajectoryWithNotes(ev::ReadTrajectoryFile(path, parsed), streams);
+  return TrajectoryWithNotes(ReadTrajectoryArgument(path, format), streams);
 }
 
 /// The reference and the estimate of an ape or rpe command, read at once: the estimate on a thread of its own
 /// (parsing the files is most of an eval command's time). Errors and notes come as reading one after the other
 /// would give them, the reference's first.
 std::pair<ev::Trajectory, ev::Trajectory> ReadPairForCommand(const PairOptions& options, const Streams& streams) {
-  const ev::TrajectoryFormat reference_format = ParseFormatOption(options.reference_format);
+  if (!IsBagTrajectory(options.reference_path, options.reference_format)) {
+    ParseFormatOption(options.reference_format);  // a bad option before the estimate's errors
+  }
   std::future<ev::TrajectoryFile> estimate = std::async(std::launch::async, [&options] {
-    return ev::ReadTrajectoryFile(options.estimate_path, ParseFormatOption(options.estimate_format));
+    return ReadTrajectoryArgument(options.estimate_path, options.estimate_format);
   });
   ev::Trajectory reference =
-      TrajectoryWithNotes(ev::ReadTrajectoryFile(options.reference_path, reference_format), streams);
+      TrajectoryWithNotes(ReadTrajectoryArgument(options.reference_path, options.reference_format), streams);
   return {std::move(reference), TrajectoryWithNotes(estimate.get(), streams)};
 }
 
 void AddPairOptions(CLI::App& command, PairOptions& options) {
-  command.add_option("REF", options.reference_path, "reference trajectory (TUM, KITTI, CSV, CARMEN log, MRPT path)")
+  command
+      .add_option("REF", options.reference_path,
+                  "reference trajectory (TUM, KITTI, CSV, CARMEN log, MRPT path; in a ROS bag BAG:TOPIC or "
+                  "BAG:/tf:PARENT.CHILD)")
       ->required();
   command.add_option("EST", options.estimate_path, "estimated trajectory")->required();
   command.add_option("--align", options.align, "alignment: none|origin|se2|se3|sim2|sim3")->capture_default_str();
@@ -83,8 +103,10 @@ void AddPairOptions(CLI::App& command, PairOptions& options) {
       ->capture_default_str();
   command.add_option("--t-offset", options.t_offset_s, "time offset added to EST stamps (s)")->capture_default_str();
   command.add_option("--pose-relation", options.pose_relation, "trans (m) or rot-deg (degrees)")->capture_default_str();
-  command.add_option("--ref-format", options.reference_format, "auto|tum|kitti|mrpt|carmen|csv")->capture_default_str();
-  command.add_option("--est-format", options.estimate_format, "auto|tum|kitti|mrpt|carmen|csv")->capture_default_str();
+  command.add_option("--ref-format", options.reference_format, "auto|tum|kitti|mrpt|carmen|csv|bag")
+      ->capture_default_str();
+  command.add_option("--est-format", options.estimate_format, "auto|tum|kitti|mrpt|carmen|csv|bag")
+      ->capture_default_str();
   command.add_flag("--json", options.json, "print one JSON object instead of a table");
 }
 
@@ -196,7 +218,7 @@ void RegisterRelations(CLI::App& eval, const Streams& streams) {
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = eval.add_subcommand("relations", "Kuemmerle et al. relations metric");
-  command->add_option("TRAJ", options->trajectory_path, "estimated trajectory")->required();
+  command->add_option("TRAJ", options->trajectory_path, "estimated trajectory (a file, or BAG:TOPIC)")->required();
   command->add_option("RELATIONS", options->relations_path, "relations file (t1 t2 x y z roll pitch yaw)")->required();
   command->add_option("--t-offset", options->t_offset_s, "time offset added to relation stamps (s)")
       ->capture_default_str();

@@ -16,6 +16,8 @@ build_packages=(
   # libraries (README "Dependencies" says why each is there)
   libeigen3-dev libopencv-dev nlohmann-json3-dev libyaml-cpp-dev libspdlog-dev libfmt-dev
   libcli11-dev zlib1g-dev libdeflate-dev libsqlite3-dev libboost-dev libboost-filesystem-dev libssl-dev
+  # ROS 2 bags: MCAP chunks and rosbag2 compression (libzstd), MCAP lz4 chunks (liblz4's frame API)
+  libzstd-dev liblz4-dev
   # PNG maps without OpenCV's imgcodecs (libpng-dev); numbers of trajectory files (libfast-float-dev)
   libpng-dev libfast-float-dev
   # `slamsweep serve` and `submit`: the HTTP server and client (cpp-httplib)
@@ -37,7 +39,7 @@ run_programs=(gnuplot-nox mrpt-apps mrpt-common bubblewrap)
 # missing here fails it) and run_programs; the package names are Debian 12's.
 runtime_packages=(
   libstdc++6 zlib1g libboost-filesystem1.74.0 libboost-iostreams1.74.0 libdeflate0 libfmt9 libssl3 libyaml-cpp0.7
-  libspdlog1.10 libsqlite3-0 libcpp-httplib0.11 libgif7 libpng16-16 libopencv-core406 libopencv-imgproc406
+  libspdlog1.10 libsqlite3-0 libzstd1 liblz4-1 libcpp-httplib0.11 libgif7 libpng16-16 libopencv-core406 libopencv-imgproc406
   libmrpt-obs2.5 librosbag-storage4d libroscpp-serialization0d librostime1d libcpp-common0d libseccomp2
   # the Cartographer driver (Ceres, linked statically, brings ATLAS's BLAS and LAPACK: libceres-dev
   # depends on libatlas-base-dev)
@@ -48,8 +50,9 @@ runtime_packages=(
 packages=(
   "${build_packages[@]}"
   "${run_programs[@]}"
-  # headless Chromium checks the report in tests; python3-* write the test bags
-  chromium python3-rosbag python3-sensor-msgs python3-nav-msgs python3-tf2-msgs
+  # headless Chromium checks the report in tests; python3-* write the test bags (ROS 1 bags; ROS 2 bags
+  # with rosbag2's zstd compression: python3-zstandard)
+  chromium python3-rosbag python3-sensor-msgs python3-nav-msgs python3-tf2-msgs python3-zstandard
   # tests and benchmarks (ccache: scripts/build.sh's compiler cache, so the test command's build of a fresh
   # clone compiles only what changed; hyperfine: bench/cli, whole-process times); python3-scipy is the
   # independent reference for the Spearman rank correlation of the metric validity study and the

@@ -13,6 +13,8 @@ read -r -a roster <<< "${SLAMSWEEP_ROSTER:-gmapping slam-constructor hector bree
 "$root/scripts/install-slam.sh" "${roster[@]}"
 # The Jenkinsfiles' linter (npm-groovy-lint with Debian's Java runtime) for tests/jobs.
 "$root/scripts/install-groovy-lint.sh" >/dev/null
+# The independent MCAP/CDR readers and writers the ROS 2 bag tests check against (pinned npm packages).
+"$root/scripts/install-bag-tools.sh" >/dev/null
 "$root/scripts/build.sh"
 cd "${SLAMSWEEP_BUILD_DIR:-$root/build}"
 # Label docker (scripts/docker-check.sh: root, a Docker daemon, about 45 minutes) is the nightly job's.

@@ -9,16 +9,18 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
+#include "evaluator/formats/trajectory/relations_format.h"
 #include "evaluator/sequence/corrected_log_clock.h"
+#include "evaluator/sequence/relation_stamps.h"
 #include "evaluator/sequence/sequence_cut.h"
 #include "evaluator/simulation/simulated_sequence.h"
 
 namespace slamsweep::evaluator::inline catalog {
 namespace {
 
-constexpr std::string_view kFormats[] = {"carmen", "rawlog", "rosbag", "simulated"};
-constexpr GroundTruthKind kGroundTruthKinds[] = {GroundTruthKind::kCorrectedPoses, GroundTruthKind::kExact,
-                                                 GroundTruthKind::kRelationsOnly, GroundTruthKind::kNone};
+constexpr std::string_view kFormats[] = {"carmen", "rawlog", "rosbag", "rosbag2", "simulated"};
+
+bool IsBagFormat(std::string_view format) { return format == "rosbag" || format == "rosbag2"; }
 
 /// yaml-cpp marks count lines from 0.
 std::size_t LineOf(const YAML::Node& node) { return static_cast<std::size_t>(node.Mark().line + 1); }
@@ -117,12 +119,64 @@ CorrectedLogLink ParseCorrectedLog(const std::filesystem::path& source, const YA
   return link;
 }
 
+/// The BagChoices field a catalog key names; nullptr for other keys.
+std::string* BagField(BagChoices& bag, std::string_view key) {
+  if (key == "scan_topic") return &bag.scan_topic;
+  if (key == "odometry_topic") return &bag.odometry_topic;
+  if (key == "odom_frame") return &bag.odom_frame;
+  if (key == "base_frame") return &bag.base_frame;
+  if (key == "laser_frame") return &bag.laser_frame;
+  if (key == "reference_topic") return &bag.reference_topic;
+  if (key == "reference_frame") return &bag.reference_frame;
+  return nullptr;
+}
+
+/// Topics and frames belong to bags; a reference recorded in a bag goes with a kind that has poses.
+void CheckBagKeys(const std::filesystem::path& source, const YAML::Node& node, const CatalogEntry& entry,
+                  const YAML::Node& ground_truth_node, const YAML::Node& bag_node) {
+  if (!IsBagFormat(entry.format)) {
+    if (!entry.bag.Empty()) {
+      Fail(source, bag_node,
+           fmt::format("sequence '{}': topics and frames apply to ROS bags (format rosbag or rosbag2), not to "
+                       "format {}",
+                       entry.name, entry.format));
+    }
+    if (entry.ground_truth == GroundTruthKind::kMeasured) {
+      Fail(source, ground_truth_node,
+           fmt::format("sequence '{}': ground_truth measured is a reference recorded in a ROS bag (format rosbag or "
+                       "rosbag2, with reference_topic or reference_frame)",
+                       entry.name));
+    }
+    return;
+  }
+  try {
+    CheckBagChoices(entry.bag);
+  } catch (const InputError& error) {
+    Fail(source, node, fmt::format("sequence '{}': {}", entry.name, error.what()));
+  }
+  if (GroundTruthHasPoses(entry.ground_truth) && !entry.bag.HasReference()) {
+    Fail(source, ground_truth_node,
+         fmt::format("sequence '{}': ground_truth {} needs the reference's source in the bag: reference_topic (e.g. "
+                     "/ground_truth) or reference_frame (e.g. map)",
+                     entry.name, GroundTruthKindName(entry.ground_truth)));
+  }
+  if (!GroundTruthHasPoses(entry.ground_truth) && entry.bag.HasReference()) {
+    Fail(source, ground_truth_node,
+         fmt::format("sequence '{}': reference_topic or reference_frame names a reference, but ground_truth is {}; "
+                     "say what the reference is with ground_truth measured (recorded with the data), corrected_poses "
+                     "or exact",
+                     entry.name, GroundTruthKindName(entry.ground_truth)));
+  }
+}
+
 CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& node) {
   if (!node.IsMap()) Fail(source, node, "sequences: expected each entry to be a map with name, format, ...");
   CatalogEntry entry;
   entry.line = LineOf(node);
   bool has_ground_truth = false;
   YAML::Node odometry_node;
+  YAML::Node ground_truth_node;
+  YAML::Node bag_node;
   for (const auto& item : node) {
     const std::string key = item.first.as<std::string>();
     const YAML::Node& value = item.second;
@@ -132,7 +186,7 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
       entry.format = Scalar(source, value, key);
       if (std::find(std::begin(kFormats), std::end(kFormats), entry.format) == std::end(kFormats)) {
         Fail(source, value,
-             fmt::format("format: expected carmen, rawlog, rosbag or simulated, got '{}'", entry.format));
+             fmt::format("format: expected carmen, rawlog, rosbag, rosbag2 or simulated, got '{}'", entry.format));
       }
     } else if (key == "path") {
       entry.path = Scalar(source, value, key);
@@ -143,6 +197,11 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
         Fail(source, value, error.what());
       }
       has_ground_truth = true;
+      ground_truth_node = value;
+    } else if (std::string* bag_field = BagField(entry.bag, key)) {
+      *bag_field = Scalar(source, value, key);
+      if (bag_field->empty()) Fail(source, value, fmt::format("{}: expected a topic or frame name", key));
+      bag_node = item.first;
     } else if (key == "relations") {
       entry.relations_path = Scalar(source, value, key);
     } else if (key == "reference_map") {
@@ -193,7 +252,8 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
       Fail(source, item.first,
            fmt::format("unknown key '{}' (expected name, format, path, ground_truth, relations, relations_offset_s, "
                        "relations_rate, relations_window, odometry, max_range_m, stamp_policy, citation, licence, "
-                       "download, simulation, reference_map, corrected_log, notes)",
+                       "download, simulation, reference_map, corrected_log, notes; for bags scan_topic, "
+                       "odometry_topic, odom_frame, base_frame, laser_frame, reference_topic, reference_frame)",
                        key));
     }
   }
@@ -208,6 +268,7 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
   } else if (entry.path.empty()) {
     Fail(source, node, fmt::format("sequence '{}': no path", entry.name));
   }
+  CheckBagKeys(source, node, entry, ground_truth_node, bag_node);
   if (entry.relations_window_s && entry.relations_path.empty()) {
     Fail(source, node, fmt::format("sequence '{}': relations_window without relations", entry.name));
   }
@@ -230,6 +291,60 @@ std::filesystem::path RequireFile(const CatalogEntry& entry, std::string_view wh
                                  entry.download_hint.empty() ? "" : "; get it from: " + entry.download_hint));
   }
   return path;
+}
+
+/// The sequence's own path: a file, or a ROS 2 bag folder with all its files.
+std::filesystem::path RequireSequence(const CatalogEntry& entry, const CatalogVariables& variables) {
+  const std::filesystem::path path = ResolveCatalogPath(entry.path, variables);
+  std::error_code error;
+  if (entry.format != "rosbag2" || !std::filesystem::is_directory(path, error)) {
+    return RequireFile(entry, "file", entry.path, variables);
+  }
+  try {
+    SequenceFiles(path);
+  } catch (const InputError& missing) {
+    throw InputError(fmt::format("catalog sequence '{}': {}{}", entry.name, missing.what(),
+                                 entry.download_hint.empty() ? "" : "; get it from: " + entry.download_hint));
+  }
+  return path;
+}
+
+/// The relations of a sequence whose reader takes none (a rawlog, a ROS bag): as a raw CARMEN log's, their
+/// stamps (on the entry's clock once shifted) name scans, and each moves onto the scan whose stamp is
+/// nearest within half the median scan spacing; relations outside the entry's window or the scans' span
+/// are counted outside the log.
+void AddRelationsOnScans(Sequence& sequence, const std::filesystem::path& relations_path, const CatalogEntry& entry) {
+  Relations relations = ReadRelations(relations_path);
+  const std::size_t read = relations.size();
+  if (entry.relations_window_s) {
+    const auto [from_s, to_s] = *entry.relations_window_s;
+    std::erase_if(relations, [&](const Relation& relation) {
+      return std::min(relation.t1_s, relation.t2_s) < from_s || std::max(relation.t1_s, relation.t2_s) > to_s;
+    });
+  }
+  for (Relation& relation : relations) {
+    relation.t1_s = entry.relations_rate * relation.t1_s + entry.relations_offset_s;
+    relation.t2_s = entry.relations_rate * relation.t2_s + entry.relations_offset_s;
+  }
+  std::vector<double> stamps_s;
+  for (const LaserScan& scan : sequence.scans) stamps_s.push_back(scan.stamp_s);
+  if (!stamps_s.empty()) {
+    const auto [low, high] = std::minmax_element(stamps_s.begin(), stamps_s.end());
+    std::erase_if(relations, [&](const Relation& relation) {
+      return std::min(relation.t1_s, relation.t2_s) < *low || std::max(relation.t1_s, relation.t2_s) > *high;
+    });
+  }
+  sequence.relations_outside_log += read - relations.size();
+  std::size_t unmatched = 0;
+  const double tolerance_s = 0.5 * MedianSpacingS(stamps_s);
+  sequence.relations = MapRelationsOntoRecords(std::move(relations), stamps_s, stamps_s, tolerance_s, unmatched);
+  if (unmatched > 0) {
+    sequence.warnings.push_back(
+        Located(relations_path, 0,
+                fmt::format("{} of {} relation stamps lie farther than {:.3f} s from every scan of {} and keep their "
+                            "own time",
+                            unmatched, 2 * sequence.relations->size(), tolerance_s, entry.path)));
+  }
 }
 
 /// The entry's provenance where the reader found none, its relations window's cut, and its relations
@@ -261,6 +376,11 @@ OdometryMode EffectiveOdometryMode(const CatalogEntry& entry) {
   return OdometryModeApplies(entry) ? entry.odometry.value_or(OdometryMode::kRecorded) : OdometryMode::kRecorded;
 }
 
+bool GroundTruthHasPoses(GroundTruthKind kind) {
+  return kind == GroundTruthKind::kCorrectedPoses || kind == GroundTruthKind::kExact ||
+         kind == GroundTruthKind::kMeasured;
+}
+
 std::string_view GroundTruthKindName(GroundTruthKind kind) {
   switch (kind) {
     case GroundTruthKind::kCorrectedPoses:
@@ -271,6 +391,8 @@ std::string_view GroundTruthKindName(GroundTruthKind kind) {
       return "relations_only";
     case GroundTruthKind::kNone:
       return "none";
+    case GroundTruthKind::kMeasured:
+      return "measured";
   }
   return "none";
 }
@@ -371,9 +493,10 @@ Sequence LoadCatalogSequence(const CatalogEntry& entry, const CatalogVariables& 
     sequence.provenance = provenance;
     return sequence;
   }
-  const std::filesystem::path path = RequireFile(entry, "file", entry.path, variables);
+  const std::filesystem::path path = RequireSequence(entry, variables);
   SequenceReadOptions options;
   options.name = entry.name;
+  options.bag = entry.bag;
   options.carmen.max_range_m = entry.max_range_m;
   options.carmen.logged_pose_is_reference = LoggedPoseIsReference(entry);
   options.carmen.relations_window_s = entry.relations_window_s;
@@ -406,7 +529,9 @@ Sequence LoadCatalogSequence(const CatalogEntry& entry, const CatalogVariables& 
   options.carmen.relations_path = relations_path;
   options.carmen.relations_offset_s = entry.relations_offset_s;
   options.carmen.relations_rate = entry.relations_rate;
-  return Finished(ReadSequence(path, options), entry);
+  Sequence sequence = ReadSequence(path, options);
+  if (relations_path && entry.format != "carmen") AddRelationsOnScans(sequence, *relations_path, entry);
+  return Finished(std::move(sequence), entry);
 }
 
 }  // namespace slamsweep::evaluator::inline catalog

@@ -26,9 +26,10 @@ enum class GroundTruthKind {
   kExact,           ///< the true poses (simulated sequences)
   kRelationsOnly,   ///< Kuemmerle et al. relations and nothing else
   kNone,
+  kMeasured,  ///< a reference recorded with the data (a bag's reference_topic or reference_frame)
 };
 
-/// "corrected_poses", "exact", "relations_only", "none".
+/// "corrected_poses", "exact", "relations_only", "none", "measured".
 std::string_view GroundTruthKindName(GroundTruthKind kind);
 /// Inverse of GroundTruthKindName; InputError naming `option` and the accepted names otherwise.
 GroundTruthKind ParseGroundTruthKind(std::string_view text, std::string_view option = "ground_truth");
@@ -49,9 +50,9 @@ struct CorrectedLogLink {
 /// One named sequence of configs/datasets.yaml. Paths may hold ${VARIABLE}s (see ResolveCatalogPath).
 struct CatalogEntry {
   std::string name;
-  /// "carmen", "rawlog", "rosbag" or "simulated".
+  /// "carmen", "rawlog", "rosbag", "rosbag2" or "simulated".
   std::string format;
-  /// The file (empty for simulated sequences).
+  /// The file, or a ROS 2 bag's folder (empty for simulated sequences).
   std::string path;
   GroundTruthKind ground_truth = GroundTruthKind::kNone;
   /// Kuemmerle et al. relations, and the clock map that brings their stamps onto the log's clock:
@@ -85,6 +86,11 @@ struct CatalogEntry {
   /// rendered from the reference poses; empty: rendered (orchestrator/reference_map). Truth:
   /// only the worker reads it, after the program has exited.
   std::string reference_map_path;
+  /// ROS 1 and ROS 2 bags: topics and frames (keys scan_topic, odometry_topic, odom_frame, base_frame,
+  /// laser_frame, reference_topic, reference_frame). A reference (reference_topic or reference_frame)
+  /// goes with a ground_truth that has poses (measured, corrected_poses or exact), and such a kind
+  /// needs one.
+  BagChoices bag;
   /// Line of the entry in the catalog file (from 1), for messages.
   std::size_t line = 0;
 };
@@ -93,6 +99,15 @@ struct Catalog {
   std::filesystem::path source;
   std::vector<CatalogEntry> entries;
 };
+
+/// The kinds, in the order messages list them.
+inline constexpr GroundTruthKind kGroundTruthKinds[] = {GroundTruthKind::kCorrectedPoses, GroundTruthKind::kExact,
+                                                        GroundTruthKind::kMeasured, GroundTruthKind::kRelationsOnly,
+                                                        GroundTruthKind::kNone};
+
+/// Whether the kind scores against reference poses (ATE, RPE, a rendered reference map): corrected_poses,
+/// exact, measured.
+bool GroundTruthHasPoses(GroundTruthKind kind);
 
 /// Whether a program's odometry on this entry can be the reference: a CARMEN log whose logged poses
 /// are the corrected poses (ground_truth corrected_poses). Only there does the odometry mode matter.

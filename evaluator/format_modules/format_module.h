@@ -1,32 +1,36 @@
 #pragma once
 // The calls between slamsweep and its format modules: shared objects (slamsweep-rawlog.so for MRPT
-// rawlogs, slamsweep-rosbag.so for ROS1 bags) that are loaded only when a file in their format is
-// read or written, so that MRPT, ROS and the libraries they pull in are not loaded, relocated and
-// initialised by every slamsweep process. Both sides are built from the same tree by the same
-// compiler; the version and the layout fingerprint refuse a module left from another build.
+// rawlogs, slamsweep-rosbag.so for ROS 1 bags, slamsweep-rosbag2.so for ROS 2 bags) that are loaded
+// only when a file in their format is read or written, so that MRPT, ROS, SQLite and the libraries
+// they pull in are not loaded, relocated and initialised by every slamsweep process. Both sides are built from the same
+// tree by the same compiler; the version and the layout fingerprint refuse a module left from another build.
 #include <cstddef>
 #include <exception>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/rawlog/rawlog_reader.h"
 #include "evaluator/formats/rawlog/rawlog_writer.h"
 #include "evaluator/formats/rosbag/rosbag_reader.h"
+#include "evaluator/formats/rosbag2/rosbag2_writer.h"
 #include "evaluator/sequence/robot_log.h"
 #include "evaluator/sequence/sequence.h"
 
 namespace slamsweep::evaluator::inline format_modules {
 
 /// Raise when a call or a type passed below changes in a way the sizes do not show.
-inline constexpr int kFormatModuleVersion = 1;
+inline constexpr int kFormatModuleVersion = 2;
 
 /// The sizes of every type that crosses the boundary, folded into one number.
 constexpr std::size_t FormatModuleLayout() {
   std::size_t fingerprint = 0;
   for (std::size_t size :
        {sizeof(Sequence), sizeof(RobotLog), sizeof(RawlogReadOptions), sizeof(RawlogWriteOptions),
-        sizeof(RawlogSummary), sizeof(RosbagReadOptions), sizeof(std::string), sizeof(std::filesystem::path)}) {
+        sizeof(RawlogSummary), sizeof(BagReadOptions), sizeof(Trajectory), sizeof(std::optional<Trajectory>),
+        sizeof(std::vector<std::string>), sizeof(std::string), sizeof(std::filesystem::path)}) {
     fingerprint = fingerprint * 1000003u + size;
   }
   return fingerprint;
@@ -69,7 +73,23 @@ struct RawlogModule {
 struct RosbagModule {
   int version = kFormatModuleVersion;
   std::size_t layout = FormatModuleLayout();
-  ModuleOutcome (*read)(const std::filesystem::path& path, const RosbagReadOptions& options, Sequence& sequence);
+  ModuleOutcome (*read)(const std::filesystem::path& path, const BagReadOptions& options, Sequence& sequence);
+  /// A trajectory in the bag: "TOPIC" or "/tf:PARENT.CHILD" (ReadRosbagTrajectory).
+  ModuleOutcome (*read_trajectory)(const std::filesystem::path& path, const std::string& selector,
+                                   Trajectory& trajectory, std::vector<std::string>& warnings);
+};
+
+/// What slamsweep-rosbag2.so's entry point `slamsweep_rosbag2_module` returns.
+struct Rosbag2Module {
+  int version = kFormatModuleVersion;
+  std::size_t layout = FormatModuleLayout();
+  ModuleOutcome (*read)(const std::filesystem::path& path, const BagReadOptions& options, Sequence& sequence);
+  ModuleOutcome (*read_trajectory)(const std::filesystem::path& path, const std::string& selector,
+                                   Trajectory& trajectory, std::vector<std::string>& warnings);
+  ModuleOutcome (*write)(const RobotLog& log, const std::optional<Trajectory>& reference,
+                         const std::filesystem::path& path, Rosbag2StorageKind storage);
+  /// The bag's files, checked to exist (Rosbag2Files).
+  ModuleOutcome (*files)(const std::filesystem::path& path, std::vector<std::filesystem::path>& files);
 };
 
 }  // namespace slamsweep::evaluator::inline format_modules
@@ -78,4 +98,5 @@ extern "C" {
 /// The entry points the loader looks up (dlsym) in each module.
 const slamsweep::evaluator::RawlogModule* slamsweep_rawlog_module();
 const slamsweep::evaluator::RosbagModule* slamsweep_rosbag_module();
+const slamsweep::evaluator::Rosbag2Module* slamsweep_rosbag2_module();
 }

@@ -94,6 +94,13 @@ ModuleSlot<RosbagModule>& RosbagSlot() {
   return slot;
 }
 
+ModuleSlot<Rosbag2Module>& Rosbag2Slot() {
+  // Always built: its libraries (SQLite, zstd, lz4) are slamsweep's own build dependencies.
+  static ModuleSlot<Rosbag2Module> slot("ROS 2 bag support", true, "slamsweep-rosbag2.so", "slamsweep_rosbag2_module",
+                                        "");
+  return slot;
+}
+
 template <typename Calls>
 const Calls& Require(ModuleSlot<Calls>& slot, const std::filesystem::path& file) {
   std::string why_not;
@@ -107,6 +114,8 @@ const Calls& Require(ModuleSlot<Calls>& slot, const std::filesystem::path& file)
 const RawlogModule& LoadRawlogModule(const std::filesystem::path& file) { return Require(RawlogSlot(), file); }
 
 const RosbagModule& LoadRosbagModule(const std::filesystem::path& file) { return Require(RosbagSlot(), file); }
+
+const Rosbag2Module& LoadRosbag2Module(const std::filesystem::path& file) { return Require(Rosbag2Slot(), file); }
 
 bool RawlogModuleAvailable() {
   std::string why_not;

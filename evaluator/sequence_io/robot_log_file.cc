@@ -20,6 +20,11 @@ namespace {
 constexpr double kFanToleranceRad = 1e-9;
 constexpr double kMountToleranceM = 1e-9;
 
+/// The fan's angle, also when stored as float32 (a ROS LaserScan's angles): the float nearest to it.
+bool IsFanAngle(double fan_rad, double scan_rad) {
+  return std::abs(fan_rad - scan_rad) < kFanToleranceRad || static_cast<float>(fan_rad) == scan_rad;
+}
+
 /// The float's shortest decimal text read back as double, so that FormatCarmenRecord (which writes
 /// doubles exactly) writes "1.23" for 1.23f instead of its 17-digit double expansion.
 double ShortestFloatAsDouble(float value) {
@@ -34,9 +39,9 @@ bool IsFlaserFan(const LaserScan& scan) {
   if (scan.BeamCount() < 2) return false;
   const BeamFan fan = FlaserBeamFan(scan.BeamCount());
   const Pose& mount = scan.sensor_pose_on_robot;
-  return fan.known_layout && std::abs(fan.angle_min_rad - scan.angle_min_rad) < kFanToleranceRad &&
-         std::abs(fan.angle_increment_rad - scan.angle_increment_rad) < kFanToleranceRad &&
-         mount.position.norm() < kMountToleranceM && RotationAngleRad(mount.orientation) < kFanToleranceRad;
+  return fan.known_layout && IsFanAngle(fan.angle_min_rad, scan.angle_min_rad) &&
+         IsFanAngle(fan.angle_increment_rad, scan.angle_increment_rad) && mount.position.norm() < kMountToleranceM &&
+         RotationAngleRad(mount.orientation) < kFanToleranceRad;
 }
 
 std::vector<double> RangesAsWritten(const LaserScan& scan) {
@@ -56,16 +61,18 @@ std::string_view SequenceWriteFormatName(SequenceWriteFormat format) {
       return "carmen";
     case SequenceWriteFormat::kTum:
       return "tum";
+    case SequenceWriteFormat::kRosbag2:
+      return "rosbag2";
   }
   return "unknown";
 }
 
 SequenceWriteFormat ParseSequenceWriteFormat(std::string_view text, std::string_view option) {
-  for (SequenceWriteFormat format :
-       {SequenceWriteFormat::kRawlog, SequenceWriteFormat::kCarmen, SequenceWriteFormat::kTum}) {
+  for (SequenceWriteFormat format : {SequenceWriteFormat::kRawlog, SequenceWriteFormat::kCarmen,
+                                     SequenceWriteFormat::kTum, SequenceWriteFormat::kRosbag2}) {
     if (text == SequenceWriteFormatName(format)) return format;
   }
-  throw InputError(fmt::format("{}: expected rawlog, carmen or tum, got '{}'", option, text));
+  throw InputError(fmt::format("{}: expected rawlog, carmen, tum or rosbag2, got '{}'", option, text));
 }
 
 std::string FormatCarmenLog(const RobotLog& log) {
@@ -146,7 +153,16 @@ void WriteRobotLog(const RobotLog& log, const std::filesystem::path& path, Seque
       ValidateRobotLog(log);
       WriteTum(log.odometry, path);
       return;
+    case SequenceWriteFormat::kRosbag2:
+      // A program's input: never a reference.
+      WriteRosbag2Folder(log, std::nullopt, path, Rosbag2StorageKind::kMcap);
+      return;
   }
+}
+
+void WriteRosbag2Folder(const RobotLog& log, const std::optional<Trajectory>& reference,
+                        const std::filesystem::path& folder, Rosbag2StorageKind storage) {
+  ThrowIfFailed(LoadRosbag2Module(folder).write(log, reference, folder, storage));
 }
 
 }  // namespace slamsweep::evaluator::inline sequence_io

@@ -17,6 +17,13 @@ namespace {
 
 bool EndsWith(const std::string& text, std::string_view suffix) { return text.ends_with(suffix); }
 
+/// A ROS 2 storage file by its name (.db3, .mcap, also compressed whole: .zstd) or the MCAP magic.
+bool LooksLikeRosbag2File(const std::filesystem::path& path, std::string_view head) {
+  std::string name = path.filename().string();
+  if (EndsWith(name, ".zstd")) name.resize(name.size() - 5);
+  return EndsWith(name, ".db3") || EndsWith(name, ".mcap") || head.starts_with("\x89MCAP0\r\n");
+}
+
 /// Up to `count` bytes of the file's content, inflated when it is gzip.
 std::string PeekContent(const std::filesystem::path& path, std::size_t count) {
   struct GzCloser {
@@ -69,15 +76,18 @@ std::string_view SequenceFormatName(SequenceFormat format) {
       return "rawlog";
     case SequenceFormat::kRosbag:
       return "rosbag";
+    case SequenceFormat::kRosbag2:
+      return "rosbag2";
   }
   return "unknown";
 }
 
 SequenceFormat ParseSequenceFormat(std::string_view text, std::string_view option) {
-  for (SequenceFormat format : {SequenceFormat::kCarmen, SequenceFormat::kRawlog, SequenceFormat::kRosbag}) {
+  for (SequenceFormat format :
+       {SequenceFormat::kCarmen, SequenceFormat::kRawlog, SequenceFormat::kRosbag, SequenceFormat::kRosbag2}) {
     if (text == SequenceFormatName(format)) return format;
   }
-  throw InputError(fmt::format("{}: expected carmen, rawlog or rosbag, got '{}'", option, text));
+  throw InputError(fmt::format("{}: expected carmen, rawlog, rosbag or rosbag2, got '{}'", option, text));
 }
 
 bool RawlogSupported() { return RawlogModuleAvailable(); }
@@ -86,11 +96,17 @@ bool RosbagSupported() { return RosbagModuleAvailable(); }
 
 SequenceFormat DetectSequenceFormat(const std::filesystem::path& path) {
   std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    // A folder is a ROS 2 bag; one without metadata.yaml is reported by its reader.
+    return SequenceFormat::kRosbag2;
+  }
   if (!std::filesystem::is_regular_file(path, error)) {
-    throw InputError(Located(path, 0, "no such file (expected a sequence: CARMEN log, MRPT rawlog or ROS bag)"));
+    throw InputError(Located(
+        path, 0, "no such file (expected a sequence: CARMEN log, MRPT rawlog, ROS 1 bag or ROS 2 bag folder or file)"));
   }
   std::string name = path.filename().string();
   if (EndsWith(name, ".bag")) return SequenceFormat::kRosbag;
+  if (LooksLikeRosbag2File(path, "")) return SequenceFormat::kRosbag2;
   if (EndsWith(name, ".gz")) name.resize(name.size() - 3);
   if (EndsWith(name, ".rawlog")) return SequenceFormat::kRawlog;
   for (std::string_view suffix : {".log", ".clf"}) {
@@ -98,11 +114,24 @@ SequenceFormat DetectSequenceFormat(const std::filesystem::path& path) {
   }
   const std::string head = PeekContent(path, 4096);
   if (head.starts_with("#ROSBAG")) return SequenceFormat::kRosbag;
+  if (LooksLikeRosbag2File(path, head)) return SequenceFormat::kRosbag2;
   if (LooksLikeCarmen(head)) return SequenceFormat::kCarmen;
   if (HasGzipMagic(path)) return SequenceFormat::kRawlog;
   throw InputError(Located(path, 0,
                            "unknown sequence format: expected a CARMEN log (.log, .clf, optionally .gz), an "
-                           "MRPT rawlog (.rawlog) or a ROS1 bag (.bag)"));
+                           "MRPT rawlog (.rawlog), a ROS 1 bag (.bag) or a ROS 2 bag (a folder with "
+                           "metadata.yaml, a .db3 or .mcap file)"));
+}
+
+std::vector<std::filesystem::path> SequenceFiles(const std::filesystem::path& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    std::vector<std::filesystem::path> files;
+    ThrowIfFailed(LoadRosbag2Module(path).files(path, files));
+    return files;
+  }
+  if (!std::filesystem::is_regular_file(path, error)) throw InputError(Located(path, 0, "no such file"));
+  return {path};
 }
 
 Sequence ReadSequence(const std::filesystem::path& path, const SequenceReadOptions& options) {
@@ -123,13 +152,14 @@ Sequence ReadSequence(const std::filesystem::path& path, const SequenceReadOptio
     }
     case SequenceFormat::kRosbag: {
       const RosbagModule& module = LoadRosbagModule(path);
-      RosbagReadOptions rosbag;
-      rosbag.name = options.name;
-      rosbag.scan_topic = options.scan_topic;
-      rosbag.odometry_topic = options.odometry_topic;
-      rosbag.reference_topic = options.reference_topic;
       Sequence sequence;
-      ThrowIfFailed(module.read(path, rosbag, sequence));
+      ThrowIfFailed(module.read(path, BagReadOptions{options.name, options.bag, std::nullopt}, sequence));
+      return sequence;
+    }
+    case SequenceFormat::kRosbag2: {
+      Sequence sequence;
+      ThrowIfFailed(
+          LoadRosbag2Module(path).read(path, BagReadOptions{options.name, options.bag, std::nullopt}, sequence));
       return sequence;
     }
   }

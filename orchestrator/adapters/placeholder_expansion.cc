@@ -61,7 +61,8 @@ std::string InputExtension(std::string_view input_format) {
   if (input_format == "rawlog") return ".rawlog";
   if (input_format == "carmen") return ".log";
   if (input_format == "tum") return ".tum";
-  throw ev::InputError("algorithm.command.input_format: expected rawlog, carmen or tum, got '" +
+  if (input_format == "rosbag2") return "";  // a bag folder, named like the sequence
+  throw ev::InputError("algorithm.command.input_format: expected rawlog, carmen, tum or rosbag2, got '" +
                        std::string(input_format) + "'");
 }
 

@@ -29,11 +29,12 @@ const evaluator::CatalogEntry& LookUp(const std::filesystem::path& file, const Y
                      name));
 }
 
-/// A path of `entry` with variables replaced, made absolute against `base`, and required to exist.
+/// A path of `entry` with variables replaced, made absolute against `base`, and required to exist (a
+/// ROS 2 bag's folder with its metadata.yaml and split files, when `bag_folder_allowed`).
 std::string ResolveExisting(const std::filesystem::path& file, const YAML::Node& node, const std::string& path,
                             const evaluator::CatalogEntry& entry, std::string_view what, const std::string& text,
                             const std::filesystem::path& base, const evaluator::CatalogVariables& variables,
-                            const InputPolicy& policy) {
+                            const InputPolicy& policy, bool bag_folder_allowed = false) {
   std::filesystem::path resolved;
   try {
     resolved = evaluator::ResolveCatalogPath(text, variables);
@@ -42,8 +43,20 @@ std::string ResolveExisting(const std::filesystem::path& file, const YAML::Node&
   }
   if (resolved.is_relative()) resolved = base / resolved;
   resolved = resolved.lexically_normal();
+  // A folder written with a trailing '/' is still the folder (its parent is what the sandbox hides).
+  if (!resolved.has_filename() && resolved.has_parent_path()) resolved = resolved.parent_path();
   RequireAllowedPath(policy, file, node, path, fmt::format("sequence {}", what), resolved);
   std::error_code error;
+  if (bag_folder_allowed && std::filesystem::is_directory(resolved, error)) {
+    try {
+      evaluator::SequenceFiles(resolved);
+    } catch (const evaluator::InputError& missing) {
+      FailAt(file, node,
+             fmt::format("{}: sequence '{}': {}{}", path, entry.name, missing.what(),
+                         entry.download_hint.empty() ? "" : "; get it from: " + entry.download_hint));
+    }
+    return resolved.string();
+  }
   if (!std::filesystem::is_regular_file(resolved, error)) {
     FailAt(file, node,
            fmt::format("{}: sequence '{}': expected its {} {}, got no such file{}", path, entry.name, what,
@@ -126,7 +139,8 @@ SequenceSpec ParseSequenceConfig(const std::filesystem::path& file, YAML::Node n
     FailExpected(file, node, path, "a catalog name, {catalog: NAME, ...} or an inline sequence entry");
   }
   if (spec.entry.format != "simulated") {
-    spec.entry.path = ResolveExisting(file, node, path, spec.entry, "file", spec.entry.path, base, variables, policy);
+    spec.entry.path = ResolveExisting(file, node, path, spec.entry, "file", spec.entry.path, base, variables, policy,
+                                      spec.entry.format == "rosbag2");
   }
   if (!spec.entry.relations_path.empty()) {
     spec.entry.relations_path = ResolveExisting(file, node, path, spec.entry, "relations file",

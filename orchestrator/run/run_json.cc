@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <string_view>
@@ -22,6 +23,17 @@ namespace {
 
 using evaluator::InputError;
 using evaluator::JsonFields;
+
+/// A bag entry's topic and frame keys with their fields (written only when set, so that the run ids
+/// of entries without them stay what they were).
+template <typename Choices>
+auto BagFields(Choices& bag) {
+  return std::array{
+      std::pair{"scan_topic", &bag.scan_topic},          std::pair{"odometry_topic", &bag.odometry_topic},
+      std::pair{"odom_frame", &bag.odom_frame},          std::pair{"base_frame", &bag.base_frame},
+      std::pair{"laser_frame", &bag.laser_frame},        std::pair{"reference_topic", &bag.reference_topic},
+      std::pair{"reference_frame", &bag.reference_frame}};
+}
 using nlohmann::json;
 
 constexpr std::string_view kFile = "run.json: ";
@@ -292,6 +304,9 @@ json ToJson(const evaluator::CatalogEntry& entry) {
                                 {"every", entry.corrected_log->every}};
   }
   if (!entry.notes.empty()) out["notes"] = entry.notes;
+  for (const auto& [key, value] : BagFields(entry.bag)) {
+    if (!value->empty()) out[key] = *value;
+  }
   return out;
 }
 
@@ -338,6 +353,7 @@ evaluator::CatalogEntry CatalogEntryFromJson(const json& value, const std::strin
     entry.corrected_log = link;
   }
   entry.notes = fields.Text("notes", "");
+  for (const auto& [key, value] : BagFields(entry.bag)) *value = fields.Text(key, "");
   fields.Finish();
   if (!window.is_null()) {
     if (!window.is_array() || window.size() != 2 || !window[0].is_number() || !window[1].is_number() ||
@@ -348,10 +364,10 @@ evaluator::CatalogEntry CatalogEntryFromJson(const json& value, const std::strin
   }
 
   if (entry.name.empty()) throw InputError(Join(path, "name") + ": expected a non-empty name");
-  constexpr std::string_view kFormats[] = {"carmen", "rawlog", "rosbag", "simulated"};
+  constexpr std::string_view kFormats[] = {"carmen", "rawlog", "rosbag", "rosbag2", "simulated"};
   if (std::find(std::begin(kFormats), std::end(kFormats), entry.format) == std::end(kFormats)) {
-    throw InputError(Join(path, "format") + ": expected carmen, rawlog, rosbag or simulated, got \"" + entry.format +
-                     "\"");
+    throw InputError(Join(path, "format") + ": expected carmen, rawlog, rosbag, rosbag2 or simulated, got \"" +
+                     entry.format + "\"");
   }
   entry.ground_truth = evaluator::ParseGroundTruthKind(ground_truth, Join(path, "ground_truth"));
   if (entry.max_range_m && !(*entry.max_range_m > 0.0)) {

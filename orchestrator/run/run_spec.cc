@@ -15,8 +15,7 @@ namespace slamsweep::orchestrator::inline run {
 using nlohmann::json;
 
 bool ThresholdApplies(const Threshold& threshold, const evaluator::CatalogEntry& entry) {
-  const bool has_trajectory = entry.ground_truth == evaluator::GroundTruthKind::kCorrectedPoses ||
-                              entry.ground_truth == evaluator::GroundTruthKind::kExact;
+  const bool has_trajectory = evaluator::GroundTruthHasPoses(entry.ground_truth);
   const std::string& metric = threshold.metric;
   if (metric.starts_with("ape_") || metric.starts_with("rpe_") || metric.starts_with("segment_")) return has_trajectory;
   if (metric.starts_with("relations_")) return !entry.relations_path.empty();

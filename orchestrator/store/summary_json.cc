@@ -9,14 +9,25 @@ namespace {
 
 using nlohmann::json;
 
-/// What ATE and RPE measure against, by the sequence's ground_truth kind.
-std::string ReferenceMeaning(const json& ground_truth) {
-  const std::string kind = ground_truth.is_string() ? ground_truth.get<std::string>() : "";
+std::string TextOr(const json& value, const std::string& fallback) {
+  return value.is_string() ? value.get<std::string>() : fallback;
+}
+
+/// What ATE and RPE measure against, by the sequence's ground_truth kind (run.json's spec).
+std::string ReferenceMeaning(const json& spec) {
+  const std::string kind = TextOr(Nested(spec, "sequence", "ground_truth"), "");
   if (kind == "corrected_poses") {
     return "corrected log: ATE and RPE are agreement with the corrected log (GMapping's output); the relations "
            "error is the score against independent truth";
   }
   if (kind == "exact") return "exact ground truth (simulated)";
+  if (kind == "measured") {
+    const std::string topic = TextOr(Nested(spec, "sequence", "reference_topic"), "");
+    const std::string frame = TextOr(Nested(spec, "sequence", "reference_frame"), "");
+    const std::string source = !topic.empty() ? "topic " + topic : !frame.empty() ? "tf frame " + frame : "the bag";
+    return "measured: a reference recorded with the data (" + source +
+           "); ATE and RPE are agreement with it, as good as the system that measured it";
+  }
   if (kind == "relations_only") return "relations only";
   return "none";
 }
@@ -59,7 +70,7 @@ json SummarizeRun(const RunRecord& run) {
       {"peak_rss_kb", FieldOrNull(result, "peak_rss_kb")},
       {"run_dir", run.run_dir},
       {"ground_truth", Nested(spec, "sequence", "ground_truth")},
-      {"reference", ReferenceMeaning(Nested(spec, "sequence", "ground_truth"))},
+      {"reference", ReferenceMeaning(spec)},
       {"odometry", OdometryModeOfRunJson(spec)},
       {"reference_floor", FieldOrNull(result, "reference_floor")},
       {"metrics", std::move(metrics)},

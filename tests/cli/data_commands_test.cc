@@ -109,7 +109,8 @@ TEST(DataInfoCommandTest, AFileDeclaredRawHasNoReferenceAndItsStampFactsAreShown
   EXPECT_EQ(nlohmann::json::parse(corrected.out).at("odometry"), "reference");
   const auto wrong = RunCli({"data", "info", (dir / "raw.clf").string(), "--ground-truth", "raw"});
   EXPECT_EQ(wrong.exit_code, 2);
-  EXPECT_THAT(wrong.err, HasSubstr("--ground-truth: expected one of corrected_poses, exact, relations_only, none"));
+  EXPECT_THAT(wrong.err,
+              HasSubstr("--ground-truth: expected one of corrected_poses, exact, measured, relations_only, none"));
 }
 
 // The full-rate intel entry: a raw log read on its own clock, with the relations inside it.

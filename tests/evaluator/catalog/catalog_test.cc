@@ -17,6 +17,7 @@
 namespace slamsweep::evaluator {
 namespace {
 
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 
 using slamsweep::testing::ErrorOf;
@@ -201,7 +202,7 @@ TEST(CatalogTest, UnknownKeysAndBadValuesNameFileAndLine) {
                 ParseCatalog("sequences:\n  - name: a\n    format: vhs\n    path: x\n    ground_truth: none\n",
                              "c.yaml");
               }),
-              HasSubstr("c.yaml:3: format: expected carmen, rawlog, rosbag or simulated, got 'vhs'"));
+              HasSubstr("c.yaml:3: format: expected carmen, rawlog, rosbag, rosbag2 or simulated, got 'vhs'"));
   EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + std::string(kMinimal).substr(11), "c.yaml"); }),
               HasSubstr("c.yaml:7: sequence 'a' is listed twice"));
   EXPECT_THAT(ErrorOf([] { ParseCatalog("sequences:\n  - name: a\n    format: carmen\n    path: x\n", "c.yaml"); }),
@@ -214,6 +215,87 @@ TEST(CatalogTest, UnknownKeysAndBadValuesNameFileAndLine) {
               }),
               HasSubstr("c.yaml:5: "));
   EXPECT_THAT(ErrorOf([] { ParseCatalog("sequences: [\n", "c.yaml"); }), HasSubstr("c.yaml:"));
+}
+
+constexpr const char* kBag =
+    "sequences:\n"
+    "  - name: run1\n"
+    "    format: rosbag2\n"
+    "    path: bags/run1\n";
+
+TEST(CatalogTest, ABagEntryNamesItsTopicsFramesAndMeasuredReference) {
+  const Catalog catalog = ParseCatalog(std::string(kBag) +
+                                           "    ground_truth: measured\n"
+                                           "    reference_topic: /ground_truth\n"
+                                           "    scan_topic: /scan_front\n"
+                                           "    odometry_topic: /wheel_odom\n"
+                                           "    base_frame: base_footprint\n"
+                                           "    laser_frame: front_laser\n",
+                                       "c.yaml");
+  const CatalogEntry& entry = catalog.entries.at(0);
+  EXPECT_EQ(entry.ground_truth, GroundTruthKind::kMeasured);
+  EXPECT_EQ(GroundTruthKindName(entry.ground_truth), "measured");
+  EXPECT_TRUE(GroundTruthHasPoses(entry.ground_truth));
+  EXPECT_EQ(entry.bag.reference_topic, "/ground_truth");
+  EXPECT_EQ(entry.bag.scan_topic, "/scan_front");
+  EXPECT_EQ(entry.bag.odometry_topic, "/wheel_odom");
+  EXPECT_EQ(entry.bag.BaseFrame(), "base_footprint");
+  EXPECT_EQ(entry.bag.OdomFrame(), "odom");
+  EXPECT_EQ(entry.bag.laser_frame, "front_laser");
+  const Catalog by_tf =
+      ParseCatalog(std::string(kBag) + "    ground_truth: measured\n    reference_frame: map\n", "c.yaml");
+  EXPECT_EQ(by_tf.entries.at(0).bag.reference_frame, "map");
+  // What the reference is stays the kind's to say: a bag written from a corrected log carries GMapping's poses.
+  const Catalog corrected = ParseCatalog(
+      std::string(kBag) + "    ground_truth: corrected_poses\n    reference_topic: /ground_truth\n", "c.yaml");
+  EXPECT_EQ(corrected.entries.at(0).ground_truth, GroundTruthKind::kCorrectedPoses);
+  EXPECT_EQ(ParseCatalog(std::string(kBag) + "    ground_truth: none\n", "c.yaml").entries.at(0).bag, BagChoices{});
+}
+
+TEST(CatalogTest, BagKeysAndTheMeasuredKindAreCheckedAgainstEachOther) {
+  EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kBag) + "    ground_truth: measured\n", "c.yaml"); }),
+              HasSubstr("c.yaml:5: sequence 'run1': ground_truth measured needs the reference's source in the bag: "
+                        "reference_topic (e.g. /ground_truth) or reference_frame (e.g. map)"));
+  EXPECT_THAT(
+      ErrorOf([] { ParseCatalog(std::string(kBag) + "    ground_truth: none\n    reference_topic: /gt\n", "c.yaml"); }),
+      HasSubstr("c.yaml:5: sequence 'run1': reference_topic or reference_frame names a reference, but ground_truth "
+                "is none"));
+  EXPECT_THAT(ErrorOf([] {
+                ParseCatalog(std::string(kBag) +
+                                 "    ground_truth: measured\n    reference_topic: /gt\n    reference_frame: map\n",
+                             "c.yaml");
+              }),
+              HasSubstr("exclude each other"));
+  EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    scan_topic: /scan\n", "c.yaml"); }),
+              HasSubstr("c.yaml:7: sequence 'a': topics and frames apply to ROS bags (format rosbag or rosbag2), not "
+                        "to format carmen"));
+  EXPECT_THAT(ErrorOf([] {
+                ParseCatalog("sequences:\n  - name: a\n    format: carmen\n    path: x\n    ground_truth: measured\n",
+                             "c.yaml");
+              }),
+              HasSubstr("c.yaml:5: sequence 'a': ground_truth measured is a reference recorded in a ROS bag"));
+  EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kBag) + "    ground_truth: guessed\n", "c.yaml"); }),
+              HasSubstr("c.yaml:5: ground_truth: expected one of corrected_poses, exact, measured, relations_only, "
+                        "none, got 'guessed'"));
+  EXPECT_THAT(
+      ErrorOf([] { ParseCatalog(std::string(kBag) + "    ground_truth: none\n    scan_topic: \"\"\n", "c.yaml"); }),
+      HasSubstr("c.yaml:6: scan_topic: expected a topic or frame name"));
+}
+
+TEST(CatalogTest, ABagFolderMustHoldItsMetadataAndSplitFiles) {
+  testing::TempDir dir;
+  std::filesystem::create_directories(dir / "bags" / "run1");
+  const Catalog catalog = ParseCatalog(std::string(kBag) + "    ground_truth: none\n", dir / "c.yaml");
+  const CatalogVariables none;
+  CatalogEntry entry = catalog.entries.at(0);
+  entry.path = (dir / "bags" / "run1").string();
+  EXPECT_THAT(ErrorOf([&] { LoadCatalogSequence(entry, none); }),
+              AllOf(HasSubstr("catalog sequence 'run1'"), HasSubstr("no metadata.yaml in the folder")));
+  testing::WriteFile(dir / "bags" / "run1" / "metadata.yaml",
+                     "rosbag2_bagfile_information:\n  version: 5\n  storage_identifier: mcap\n"
+                     "  relative_file_paths:\n    - run1_0.mcap\n");
+  EXPECT_THAT(ErrorOf([&] { LoadCatalogSequence(entry, none); }),
+              HasSubstr("split file run1_0.mcap named by metadata.yaml is missing"));
 }
 
 // ground_truth says what a CARMEN log's logged pose is: the reference of a corrected log, the odometry of a
@@ -260,7 +342,7 @@ TEST(CatalogTest, ARelationsWindowIsTwoStampsInOrderAndNeedsRelations) {
   EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    relations_window: [1, 2]\n", "c.yaml"); }),
               HasSubstr("relations_window without relations"));
   EXPECT_THAT(ErrorOf([] { ParseGroundTruthKind("corrected", "--ground-truth"); }),
-              HasSubstr("--ground-truth: expected one of corrected_poses, exact, relations_only, none"));
+              HasSubstr("--ground-truth: expected one of corrected_poses, exact, measured, relations_only, none"));
 }
 
 TEST(CatalogTest, AnEntryMayNameAReferenceMap) {

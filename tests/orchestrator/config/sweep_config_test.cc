@@ -11,6 +11,7 @@
 namespace slamsweep::orchestrator {
 namespace {
 
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 
 /// A catalog with one CARMEN log that exists, one whose file is missing and one simulated entry.
@@ -332,7 +333,36 @@ algorithms: [{name: odo, adapter: odometry}]
 sequences:
   - {name: here, format: bag, path: data/log.carmen, ground_truth: none}
 )"),
-              HasSubstr("sweep.yaml:4: format: expected carmen, rawlog, rosbag or simulated, got 'bag'"));
+              HasSubstr("sweep.yaml:4: format: expected carmen, rawlog, rosbag, rosbag2 or simulated, got 'bag'"));
+}
+
+TEST_F(SweepConfigTest, ARos2BagFolderIsCheckedWithItsMetadataAndSplitFiles) {
+  const std::string sweep = R"(name: x
+algorithms: [{name: odo, adapter: odometry}]
+sequences:
+  - {name: run1, format: rosbag2, path: bags/run1/, ground_truth: measured, reference_topic: /ground_truth}
+)";
+  std::filesystem::create_directories(dir_ / "bags/run1");
+  EXPECT_THAT(ErrorOf(sweep), AllOf(HasSubstr(Located(4, 5) + "sequences[0]: sequence 'run1': "),
+                                    HasSubstr("no metadata.yaml in the folder")));
+  testing::WriteFile(dir_ / "bags/run1/metadata.yaml",
+                     "rosbag2_bagfile_information:\n  version: 5\n  storage_identifier: mcap\n"
+                     "  relative_file_paths: [run1_0.mcap, run1_1.mcap]\n");
+  testing::WriteFile(dir_ / "bags/run1/run1_0.mcap", "");
+  EXPECT_THAT(ErrorOf(sweep), HasSubstr("split file run1_1.mcap named by metadata.yaml is missing"));
+  testing::WriteFile(dir_ / "bags/run1/run1_1.mcap", "");
+  const SweepConfig config = Parse(sweep);
+  // The folder, without its trailing '/': the sandbox hides its parent like any sequence file's folder.
+  EXPECT_EQ(config.sequences[0].entry.path, (dir_.path() / "bags/run1").string());
+  EXPECT_EQ(config.sequences[0].entry.ground_truth, evaluator::GroundTruthKind::kMeasured);
+  EXPECT_EQ(config.sequences[0].entry.bag.reference_topic, "/ground_truth");
+  // A folder is no CARMEN log.
+  EXPECT_THAT(ErrorOf(R"(name: x
+algorithms: [{name: odo, adapter: odometry}]
+sequences:
+  - {name: run1, format: carmen, path: bags/run1, ground_truth: none}
+)"),
+              HasSubstr("expected its file"));
 }
 
 TEST_F(SweepConfigTest, AReferenceMapIsResolvedAndMustExist) {

@@ -227,7 +227,8 @@ TEST(RunSpecTest, RejectsUnknownAndMistypedFieldsByPath) {
 
   json format = kDesignExample;
   format["sequence"]["format"] = "bag";
-  EXPECT_THAT(ErrorOf(format), HasSubstr("run.json: sequence.format: expected carmen, rawlog, rosbag or simulated"));
+  EXPECT_THAT(ErrorOf(format),
+              HasSubstr("run.json: sequence.format: expected carmen, rawlog, rosbag, rosbag2 or simulated"));
 
   json noise = kDesignExample;
   noise["noise"]["odometry"] = {{"alpha1", -1.0}};
@@ -283,6 +284,50 @@ TEST(RunSpecTest, AReferenceMapIsWrittenOnlyWhenSet) {
   const json out = ToJson(spec);
   EXPECT_EQ(out["sequence"]["reference_map"], "/data/intel-reference.yaml");
   EXPECT_EQ(RunSpecFromJson(out).sequence.entry.reference_map_path, "/data/intel-reference.yaml");
+}
+
+}  // namespace
+}  // namespace slamsweep::orchestrator
+
+namespace slamsweep::orchestrator {
+namespace {
+
+TEST(RunSpecTest, ABagsTopicsFramesAndMeasuredKindRoundTripAndAreWrittenOnlyWhenSet) {
+  RunSpec spec = FullSpec();
+  const json before = ToJson(spec);
+  for (const char* key : {"scan_topic", "odometry_topic", "odom_frame", "base_frame", "laser_frame", "reference_topic",
+                          "reference_frame"}) {
+    EXPECT_FALSE(before["sequence"].contains(key)) << key;  // run ids of entries without them stay the same
+  }
+  spec.sequence.entry.format = "rosbag2";
+  spec.sequence.entry.path = "bags/run1";
+  spec.sequence.entry.simulation = nullptr;
+  spec.sequence.entry.ground_truth = evaluator::GroundTruthKind::kMeasured;
+  spec.sequence.entry.bag.scan_topic = "/scan_front";
+  spec.sequence.entry.bag.base_frame = "base_footprint";
+  spec.sequence.entry.bag.reference_topic = "/ground_truth";
+  const json out = ToJson(spec);
+  EXPECT_EQ(out["sequence"]["ground_truth"], "measured");
+  EXPECT_EQ(out["sequence"]["scan_topic"], "/scan_front");
+  EXPECT_EQ(out["sequence"]["reference_topic"], "/ground_truth");
+  EXPECT_FALSE(out["sequence"].contains("laser_frame"));
+  const RunSpec back = RunSpecFromJson(out);
+  EXPECT_EQ(back.sequence.entry.format, "rosbag2");
+  EXPECT_EQ(back.sequence.entry.ground_truth, evaluator::GroundTruthKind::kMeasured);
+  EXPECT_EQ(back.sequence.entry.bag, spec.sequence.entry.bag);
+}
+
+TEST(RunSpecTest, TrajectoryThresholdsApplyToAMeasuredReference) {
+  evaluator::CatalogEntry entry;
+  entry.format = "rosbag2";
+  const Threshold ape{"ape_trans", "rmse", 0.5, std::nullopt};
+  const Threshold map{"map_iou_occupied", "value", std::nullopt, 0.5};
+  entry.ground_truth = evaluator::GroundTruthKind::kNone;
+  EXPECT_FALSE(ThresholdApplies(ape, entry));
+  EXPECT_FALSE(ThresholdApplies(map, entry));
+  entry.ground_truth = evaluator::GroundTruthKind::kMeasured;
+  EXPECT_TRUE(ThresholdApplies(ape, entry));
+  EXPECT_TRUE(ThresholdApplies(map, entry));
 }
 
 }  // namespace

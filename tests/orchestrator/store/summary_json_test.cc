@@ -79,6 +79,23 @@ TEST(SummaryJsonTest, ListsEveryRunWithFlatMetricsUnitsAndCounts) {
   EXPECT_EQ(files, 1u);
 }
 
+TEST(SummaryJsonTest, AMeasuredReferenceSaysWhereItWasRecorded) {
+  slamsweep::testing::TempDir dir;
+  ResultsStore store = ResultsStore::Open(dir / "results.sqlite");
+  json spec = MakeSpec("bag-run", "icp-slam", "run1");
+  spec["sequence"] = {
+      {"name", "run1"}, {"format", "rosbag2"}, {"ground_truth", "measured"}, {"reference_topic", "/ground_truth"}};
+  store.RecordRun(1, spec, MakeOkResult("bag-run"), "runs/bag-run");
+  const auto file = dir / "summary.json";
+  WriteSummaryJson(store.Runs(), ValidityStudyOf(store.Runs()), file);
+  const json summary = ReadJson(file);
+  const json& run = summary.at("runs").at(0);
+  EXPECT_EQ(run.at("ground_truth"), "measured");
+  EXPECT_EQ(run.at("reference"),
+            "measured: a reference recorded with the data (topic /ground_truth); ATE and RPE are agreement with it, "
+            "as good as the system that measured it");
+}
+
 TEST(SummaryJsonTest, EmptyStoreAndGarbledTextStillGiveValidJson) {
   slamsweep::testing::TempDir dir;
   WriteSummaryJson({}, {}, dir / "summary.json");

@@ -20,6 +20,7 @@
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/formats/trajectory/segment_errors_csv.h"
 #include "evaluator/formats/trajectory/tum_format.h"
+#include "evaluator/sequence_io/robot_log_file.h"
 #include "orchestrator/adapters/run_inputs.h"
 #include "orchestrator/worker/program_sandbox.h"
 #include "tests/orchestrator/worker/run_spec_fixture.h"
@@ -378,6 +379,30 @@ TEST_F(WorkerTest, TheReferenceMapIsOutOfTheProgramsReachUntilItHasExited) {
       }
     }
   }
+}
+
+// A ROS 2 bag with a reference recorded in it (ground_truth measured) is truth: its folder is out of
+// the program's reach like a corrected log's, and the run is scored against the bag's /ground_truth.
+TEST_F(WorkerTest, ABagFolderWithAMeasuredReferenceIsOutOfTheProgramsReach) {
+  const RunInputs inputs = PrepareRunInputs(spec_);
+  slamsweep::testing::TempDir datasets;
+  const fs::path folder = datasets / "floor_bag";
+  ev::WriteRosbag2Folder(inputs.robot, inputs.truth.reference, folder, ev::Rosbag2StorageKind::kMcap);
+  spec_.sequence.entry.format = "rosbag2";
+  spec_.sequence.entry.path = folder.string();
+  spec_.sequence.entry.simulation = nullptr;
+  spec_.sequence.entry.ground_truth = ev::GroundTruthKind::kMeasured;
+  spec_.sequence.entry.bag.reference_topic = "/ground_truth";
+  const std::string probes = "cat '" + (folder / "metadata.yaml").string() +
+                             "' >/dev/null 2>&1 && echo READ-METADATA\n" + "cat '" +
+                             (folder / "floor_bag_0.mcap").string() + "' >/dev/null 2>&1 && echo READ-BAG\n" + "ls '" +
+                             datasets.path().string() + "' >/dev/null 2>&1 && echo LIST-DATASETS\n";
+  UseProgram("{\n" + probes + "} > \"$1/seen.txt\"\n" + kWriteOutputs);
+  const nlohmann::json result = Run();
+  ASSERT_EQ(result["status"], "ok") << result.dump(2);
+  EXPECT_EQ(ReadText(run_dir_ / "raw" / "seen.txt"), "");
+  // The estimate is the bag's reference moved 0.3 m: its APE is exactly that.
+  EXPECT_NEAR(Metric(result, "ape_trans", "rmse"), kShiftM, 1e-9);
 }
 
 TEST_F(WorkerTest, TheProgramSeesWhatItDeclaresAndItsInputButNoResultsAndNoReferenceFiles) {

@@ -1,15 +1,15 @@
 #pragma once
 
 // Writes ROS1 bags with librosbag (rosbag::Bag) for round-trip tests. Compiled as C++17 like
-// evaluator/formats/rosbag/bag_messages.cc (ROS1 message headers are not C++20), so this header
-// speaks only in the plain types of bag_messages.h.
+// evaluator/formats/rosbag/ros1_bag_io.cc (ROS1 message headers are not C++20), so this header
+// speaks only in the plain types of evaluator/formats/bag/bag_messages.h.
 
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "evaluator/formats/rosbag/bag_messages.h"
+#include "evaluator/formats/bag/bag_messages.h"
 
 namespace slamsweep::testing {
 

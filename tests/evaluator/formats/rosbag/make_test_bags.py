@@ -9,7 +9,7 @@ import sys
 
 import genpy
 import rosbag
-from geometry_msgs.msg import TransformStamped
+from geometry_msgs.msg import PoseStamped, PoseWithCovarianceStamped, TransformStamped
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
 from tf2_msgs.msg import TFMessage
@@ -110,12 +110,33 @@ def scans_only(path):
         write(bag, '/scan', scan(1.0, 'base_link', [1.0] * 5), 1.0)
 
 
+def pose_references(path):
+    """/scan and /odom, and a reference twice: as PoseStamped (/pose_gt) and PoseWithCovarianceStamped (/amcl)."""
+    with rosbag.Bag(path, 'w') as bag:
+        for t, x in [(1.0, 0.0), (2.0, 1.0), (3.0, 2.0)]:
+            write(bag, '/odom', odometry(t, x, 0.0, 0.0), t)
+        for t in [1.5, 2.5]:
+            write(bag, '/scan', scan(t, 'base_link', [1.0] * 5), t)
+        for t, x, y, yaw in [(1.0, 5.0, 1.0, 0.5), (3.0, 6.0, 2.0, 1.0)]:
+            pose = PoseStamped()
+            pose.header.stamp, pose.header.frame_id = stamp(t), 'map'
+            pose.pose.position.x, pose.pose.position.y = x, y
+            yaw_quaternion(pose.pose.orientation, yaw)
+            write(bag, '/pose_gt', pose, t)
+            amcl = PoseWithCovarianceStamped()
+            amcl.header.stamp, amcl.header.frame_id = stamp(t), 'map'
+            amcl.pose.pose.position.x, amcl.pose.pose.position.y = -x, -y
+            yaw_quaternion(amcl.pose.pose.orientation, -yaw)
+            write(bag, '/amcl', amcl, t)
+
+
 def main():
     out = sys.argv[1]
     basic(os.path.join(out, 'basic.bag'))
     tf_odometry(os.path.join(out, 'tf_odometry.bag'))
     two_of_each(os.path.join(out, 'two_of_each.bag'))
     scans_only(os.path.join(out, 'scans_only.bag'))
+    pose_references(os.path.join(out, 'pose_references.bag'))
 
 
 if __name__ == '__main__':

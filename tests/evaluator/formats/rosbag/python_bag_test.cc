@@ -11,6 +11,9 @@
 #include <optional>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/formats/bag/bag_sequence.h"
+#include "evaluator/formats/bag/bag_topics.h"
+#include "evaluator/formats/rosbag/ros1_bag_io.h"
 #include "evaluator/formats/rosbag/rosbag_reader.h"
 #include "tests/support/shared_data.h"
 
@@ -75,15 +78,15 @@ void ExpectPlanar(const Pose& pose, double x_m, double y_m, double yaw_rad) {
   EXPECT_NEAR(NormalizeAngleRad(pose.Yaw() - yaw_rad), 0.0, 1e-12);
 }
 
-RosbagReadOptions WithReferenceTopic(const std::string& topic) {
-  RosbagReadOptions options;
-  options.reference_topic = topic;
+BagReadOptions WithReferenceTopic(const std::string& topic) {
+  BagReadOptions options;
+  options.choices.reference_topic = topic;
   return options;
 }
 
 TEST(PythonBagTest, InspectListsTopics) {
   REQUIRE_PYTHON_BAG(bag, "basic.bag");
-  const RosbagInfo info = InspectRosbag(bag);
+  const BagSummary info = ReadRos1BagSummary(bag);
   ASSERT_EQ(info.topics.size(), 4u);
   EXPECT_EQ(info.topics[0].topic, "/ground_truth");
   EXPECT_EQ(info.topics[0].message_count, 5u);
@@ -145,8 +148,8 @@ TEST(PythonBagTest, ScansOdometryMountAndReference) {
 
 TEST(PythonBagTest, OdometryAndReferenceFromOldStyleTf) {
   REQUIRE_PYTHON_BAG(bag, "tf_odometry.bag");
-  RosbagReadOptions options;
-  options.reference_frame = "map";
+  BagReadOptions options;
+  options.choices.reference_frame = "map";
   const Sequence sequence = ReadRosbag(bag, options);
   EXPECT_TRUE(sequence.warnings.empty()) << sequence.warnings.front();
   ASSERT_EQ(sequence.scans.size(), 2u);
@@ -166,8 +169,8 @@ TEST(PythonBagTest, OdometryAndReferenceFromOldStyleTf) {
 
 TEST(PythonBagTest, MissingReferenceFrameIsAnError) {
   REQUIRE_PYTHON_BAG(bag, "tf_odometry.bag");
-  RosbagReadOptions options;
-  options.reference_frame = "world";
+  BagReadOptions options;
+  options.choices.reference_frame = "world";
   EXPECT_THAT([&] { ReadRosbag(bag, options); },
               ThrowsMessage<InputError>(AllOf(HasSubstr(bag.string()), HasSubstr("reference_frame 'world'"))));
 }
@@ -177,16 +180,16 @@ TEST(PythonBagTest, AmbiguousScanTopicsAreListed) {
   EXPECT_THAT([&] { ReadRosbag(bag); },
               ThrowsMessage<InputError>(AllOf(HasSubstr(bag.string()), HasSubstr("2 sensor_msgs/LaserScan topics"),
                                               HasSubstr("/scan_front, /scan_rear"), HasSubstr("scan_topic"))));
-  RosbagReadOptions options;
-  options.scan_topic = "/scan_front";
+  BagReadOptions options;
+  options.choices.scan_topic = "/scan_front";
   EXPECT_THAT([&] { ReadRosbag(bag, options); },
               ThrowsMessage<InputError>(AllOf(HasSubstr("2 nav_msgs/Odometry topics"), HasSubstr("/odom_a, /odom_b"))));
 }
 
 TEST(PythonBagTest, ChosenTopicsAreRead) {
   REQUIRE_PYTHON_BAG(bag, "two_of_each.bag");
-  RosbagReadOptions options = WithReferenceTopic("/odom_b");
-  options.scan_topic = "/scan_rear";
+  BagReadOptions options = WithReferenceTopic("/odom_b");
+  options.choices.scan_topic = "/scan_rear";
   const Sequence sequence = ReadRosbag(bag, options);
   ASSERT_EQ(sequence.scans.size(), 2u);
   EXPECT_EQ(sequence.scans[0].ranges_m, std::vector<float>(5, 2.0f));
@@ -198,29 +201,53 @@ TEST(PythonBagTest, ChosenTopicsAreRead) {
 
 TEST(PythonBagTest, WrongTypeAndMissingTopicsNameTheTopic) {
   REQUIRE_PYTHON_BAG(bag, "two_of_each.bag");
-  RosbagReadOptions scan_is_odometry;
-  scan_is_odometry.scan_topic = "/odom_a";
-  scan_is_odometry.odometry_topic = "/odom_b";
+  BagReadOptions scan_is_odometry;
+  scan_is_odometry.choices.scan_topic = "/odom_a";
+  scan_is_odometry.choices.odometry_topic = "/odom_b";
   EXPECT_THAT([&] { ReadRosbag(bag, scan_is_odometry); },
               ThrowsMessage<InputError>(
                   AllOf(HasSubstr(bag.string()), HasSubstr("scan topic '/odom_a' holds nav_msgs/Odometry, expected "
                                                            "sensor_msgs/LaserScan"))));
-  RosbagReadOptions odometry_is_scan;
-  odometry_is_scan.scan_topic = "/scan_front";
-  odometry_is_scan.odometry_topic = "/scan_rear";
+  BagReadOptions odometry_is_scan;
+  odometry_is_scan.choices.scan_topic = "/scan_front";
+  odometry_is_scan.choices.odometry_topic = "/scan_rear";
   EXPECT_THAT([&] { ReadRosbag(bag, odometry_is_scan); },
               ThrowsMessage<InputError>(HasSubstr("odometry topic '/scan_rear' holds sensor_msgs/LaserScan")));
-  RosbagReadOptions missing;
-  missing.scan_topic = "/nope";
-  missing.odometry_topic = "/odom_a";
+  BagReadOptions missing;
+  missing.choices.scan_topic = "/nope";
+  missing.choices.odometry_topic = "/odom_a";
   EXPECT_THAT([&] { ReadRosbag(bag, missing); },
               ThrowsMessage<InputError>(
                   AllOf(HasSubstr("no scan topic '/nope'"), HasSubstr("/scan_front (sensor_msgs/LaserScan)"))));
-  RosbagReadOptions missing_reference = WithReferenceTopic("/gt");
-  missing_reference.scan_topic = "/scan_front";
-  missing_reference.odometry_topic = "/odom_a";
+  BagReadOptions missing_reference = WithReferenceTopic("/gt");
+  missing_reference.choices.scan_topic = "/scan_front";
+  missing_reference.choices.odometry_topic = "/odom_a";
   EXPECT_THAT([&] { ReadRosbag(bag, missing_reference); },
               ThrowsMessage<InputError>(HasSubstr("no reference topic '/gt'")));
+}
+
+TEST(PythonBagTest, AReferenceFromPoseStampedOrPoseWithCovarianceStamped) {
+  REQUIRE_PYTHON_BAG(bag, "pose_references.bag");
+  const Sequence pose = ReadRosbag(bag, WithReferenceTopic("/pose_gt"));
+  ASSERT_TRUE(pose.reference.has_value());
+  ASSERT_EQ(pose.reference->size(), 2u);
+  EXPECT_EQ(pose.reference->stamps_s()[1], 3.0);
+  ExpectPlanar(pose.reference->poses()[0], 5.0, 1.0, 0.5);
+  ExpectPlanar(pose.reference->poses()[1], 6.0, 2.0, 1.0);
+  const Sequence amcl = ReadRosbag(bag, WithReferenceTopic("/amcl"));
+  ASSERT_TRUE(amcl.reference.has_value());
+  ExpectPlanar(amcl.reference->poses()[1], -6.0, -2.0, -1.0);
+  // The same topics as trajectories, evo's way (BAG:TOPIC).
+  std::vector<std::string> warnings;
+  EXPECT_EQ(ReadRosbagTrajectory(bag, "/amcl", warnings).size(), 2u);
+  EXPECT_EQ(ReadRosbagTrajectory(bag, "/odom", warnings).size(), 3u);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_THAT([&] { ReadRosbag(bag, WithReferenceTopic("/scan")); },
+              ThrowsMessage<InputError>(
+                  HasSubstr("reference topic '/scan' holds sensor_msgs/LaserScan, expected nav_msgs/Odometry, "
+                            "geometry_msgs/PoseStamped or geometry_msgs/PoseWithCovarianceStamped")));
+  EXPECT_THAT([&] { ReadRosbagTrajectory(bag, "/scan", warnings); },
+              ThrowsMessage<InputError>(HasSubstr("trajectory topic '/scan' holds sensor_msgs/LaserScan")));
 }
 
 TEST(PythonBagTest, NoOdometryAtAllIsAnError) {

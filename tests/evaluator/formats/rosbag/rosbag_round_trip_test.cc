@@ -7,6 +7,9 @@
 #include <random>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/formats/bag/bag_sequence.h"
+#include "evaluator/formats/bag/bag_topics.h"
+#include "evaluator/formats/rosbag/ros1_bag_io.h"
 #include "evaluator/formats/rosbag/rosbag_reader.h"
 #include "tests/evaluator/formats/rosbag/bag_test_writer.h"
 #include "tests/support/shared_data.h"
@@ -90,21 +93,20 @@ TEST_F(RosbagRoundTripTest, InspectListsTopicsTypesAndCounts) {
     writer.WriteScan("/scan", MakeScan(7.0, {1.0f, 2.0f}));
     writer.WriteOdometry("/odom", MakeOdometry(8.0, 0, 0, 0));
   }
-  const RosbagInfo info = InspectRosbag(path);
-  EXPECT_EQ(info.bag, path);
+  const BagSummary info = ReadRos1BagSummary(path);
   ASSERT_EQ(info.topics.size(), 3u);
   EXPECT_EQ(info.topics[0].topic, "/chatter");
   EXPECT_EQ(info.topics[0].datatype, "std_msgs/String");
   EXPECT_EQ(info.topics[0].message_count, 1u);
   EXPECT_EQ(info.topics[1].topic, "/odom");
-  EXPECT_EQ(info.topics[1].datatype, kOdometryType);
+  EXPECT_EQ(info.topics[1].datatype, "nav_msgs/Odometry");
   EXPECT_EQ(info.topics[2].topic, "/scan");
-  EXPECT_EQ(info.topics[2].datatype, kLaserScanType);
+  EXPECT_EQ(info.topics[2].datatype, "sensor_msgs/LaserScan");
   EXPECT_EQ(info.topics[2].message_count, 2u);
   EXPECT_EQ(info.message_count, 4u);
   EXPECT_EQ(info.start_s, 5.0);
   EXPECT_EQ(info.end_s, 8.0);
-  EXPECT_EQ(TopicsOfType(info, kLaserScanType), std::vector<std::string>{"/scan"});
+  EXPECT_EQ(TopicsOfKind(info, BagMessageKind::kLaserScan), std::vector<std::string>{"/scan"});
 }
 
 TEST_F(RosbagRoundTripTest, ZeroHeaderStampUsesRecordTimeAndUnmountedLaserIsWarned) {
@@ -147,8 +149,8 @@ TEST_F(RosbagRoundTripTest, MountChainFromTfStaticAndOptionsOverride) {
   EXPECT_EQ(mount.position.z(), 0.0);
   EXPECT_NEAR(mount.Yaw(), std::acos(0.0), 1e-12);
 
-  RosbagReadOptions options;
-  options.laser_frame = "plate";
+  BagReadOptions options;
+  options.choices.laser_frame = "plate";
   options.name = "renamed";
   const Sequence overridden = ReadRosbag(path, options);
   EXPECT_EQ(overridden.name, "renamed");
@@ -211,7 +213,7 @@ TEST_F(RosbagRoundTripTest, BagWithoutScansListsItsTopics) {
 
 TEST_F(RosbagRoundTripTest, MissingTruncatedAndForeignFilesAreInputErrors) {
   const auto missing = dir_ / "missing.bag";
-  EXPECT_THAT([&] { InspectRosbag(missing); },
+  EXPECT_THAT([&] { ReadRos1BagSummary(missing); },
               ThrowsMessage<InputError>(AllOf(HasSubstr(missing.string()), HasSubstr("no such bag file"))));
   const auto text = testing::WriteFile(dir_ / "notes.bag", "this is not a bag\n");
   EXPECT_THAT([&] { ReadRosbag(text); },
@@ -227,24 +229,24 @@ TEST_F(RosbagRoundTripTest, MissingTruncatedAndForeignFilesAreInputErrors) {
     const auto cut = dir_ / "cut.bag";
     std::filesystem::copy_file(whole, cut, std::filesystem::copy_options::overwrite_existing);
     std::filesystem::resize_file(cut, keep);
-    EXPECT_THROW(InspectRosbag(cut), InputError) << "kept " << keep << " bytes";
+    EXPECT_THROW(ReadRos1BagSummary(cut), InputError) << "kept " << keep << " bytes";
     EXPECT_THROW(ReadRosbag(cut), InputError) << "kept " << keep << " bytes";
   }
 }
 
-TEST(RosbagReadOptionsTest, ContradictionsNameTheOptions) {
-  RosbagReadOptions both;
-  both.reference_topic = "/gt";
-  both.reference_frame = "map";
-  EXPECT_THAT([&] { CheckRosbagReadOptions(both); },
+TEST(BagChoicesTest, ContradictionsNameTheOptions) {
+  BagReadOptions both;
+  both.choices.reference_topic = "/gt";
+  both.choices.reference_frame = "map";
+  EXPECT_THAT([&] { CheckBagChoices(both.choices); },
               ThrowsMessage<InputError>(AllOf(HasSubstr("reference_topic"), HasSubstr("reference_frame"))));
-  RosbagReadOptions same;
-  same.odometry_topic = same.reference_topic = "/odom";
-  EXPECT_THAT([&] { CheckRosbagReadOptions(same); }, ThrowsMessage<InputError>(HasSubstr("odometry_topic")));
-  RosbagReadOptions no_base;
-  no_base.base_frame = "/";
-  EXPECT_THAT([&] { CheckRosbagReadOptions(no_base); }, ThrowsMessage<InputError>(HasSubstr("base_frame")));
-  EXPECT_NO_THROW(CheckRosbagReadOptions(RosbagReadOptions{}));
+  BagReadOptions same;
+  same.choices.odometry_topic = same.choices.reference_topic = "/odom";
+  EXPECT_THAT([&] { CheckBagChoices(same.choices); }, ThrowsMessage<InputError>(HasSubstr("odometry_topic")));
+  BagReadOptions no_base;
+  no_base.choices.base_frame = "/";
+  EXPECT_THAT([&] { CheckBagChoices(no_base.choices); }, ThrowsMessage<InputError>(HasSubstr("base_frame")));
+  EXPECT_NO_THROW(CheckBagChoices(BagChoices{}));
 }
 
 }  // namespace

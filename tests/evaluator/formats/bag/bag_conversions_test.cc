@@ -1,4 +1,4 @@
-#include "evaluator/formats/rosbag/bag_conversions.h"
+#include "evaluator/formats/bag/bag_conversions.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -30,6 +30,29 @@ TEST(BagConversionsTest, NonFiniteRangesBecomeNoReturn) {
   EXPECT_EQ(out.stamp_s, 3.0);
   EXPECT_EQ(out.angle_min_rad, -1.0);
   EXPECT_EQ(out.angle_increment_rad, 0.5);
+}
+
+// A LaserScan stores its fan in float32. The float rounding of a CARMEN SICK layout's fan for the beam count
+// (180 beams: -90 deg in 1 deg steps) is that fan in double; any other float fan stays as stored.
+TEST(BagConversionsTest, AFloatRoundedSickFanIsTheSickFan) {
+  BagScan scan;
+  scan.range_max_m = 80.0f;
+  scan.ranges_m.assign(180, 2.0f);
+  const double pi = std::acos(-1.0);
+  scan.angle_min_rad = static_cast<float>(-pi / 2);
+  scan.angle_increment_rad = static_cast<float>(pi / 180);
+  ASSERT_NE(static_cast<double>(scan.angle_increment_rad), pi / 180);
+  const LaserScan sick = ToLaserScan(scan);
+  EXPECT_EQ(sick.angle_min_rad, -pi / 2);
+  EXPECT_EQ(sick.angle_increment_rad, pi / 180);
+  scan.ranges_m.assign(181, 2.0f);  // 181 beams cover -90..+90 deg in pi / 180 steps too
+  EXPECT_EQ(ToLaserScan(scan).angle_increment_rad, pi / 180);
+  scan.ranges_m.assign(179, 2.0f);  // no SICK layout: as stored
+  EXPECT_EQ(ToLaserScan(scan).angle_increment_rad, static_cast<double>(static_cast<float>(pi / 180)));
+  scan.ranges_m.assign(180, 2.0f);
+  scan.angle_min_rad = std::nextafter(scan.angle_min_rad, 0.0f);  // a float away from the layout: as stored
+  EXPECT_EQ(ToLaserScan(scan).angle_min_rad, static_cast<double>(scan.angle_min_rad));
+  EXPECT_EQ(ToLaserScan(scan).angle_increment_rad, static_cast<double>(static_cast<float>(pi / 180)));
 }
 
 TEST(BagConversionsTest, ZeroStampFallsBackToRecordTime) {

@@ -1,4 +1,4 @@
-#include "evaluator/formats/rosbag/transform_tree.h"
+#include "evaluator/formats/bag/transform_tree.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,11 @@
-// Compiled as C++17: see bag_messages.h.
-#include "evaluator/formats/rosbag/bag_messages.h"
+// Compiled as C++17: see ros1_bag_io.h.
+#include "evaluator/formats/rosbag/ros1_bag_io.h"
 
 #include <geometry_msgs/Pose.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/Transform.h>
+#include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/exception.h>
 #include <rosbag/bag.h>
@@ -12,6 +15,7 @@
 #include <tf2_msgs/TFMessage.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <set>
 #include <system_error>
@@ -23,9 +27,6 @@ inline namespace formats {
 inline namespace rosbag {
 
 namespace {
-
-constexpr const char* kTfTopic = "/tf";
-constexpr const char* kTfStaticTopic = "/tf_static";
 
 [[noreturn]] void Fail(const std::filesystem::path& bag, const std::string& message) {
   throw InputError(bag.string() + ": " + message);
@@ -72,20 +73,44 @@ std::string ListTopics(const std::map<std::string, TopicIndex>& topics) {
 /// The check ROS itself makes (MessageInstance::isType): the definition's md5 sum, so that a
 /// message recorded under an older name with the same definition (tf/tfMessage) is accepted.
 template <typename Message>
-void RequireTopic(const std::filesystem::path& bag, const std::map<std::string, TopicIndex>& topics,
-                  const std::string& topic, const char* role) {
-  const auto found = topics.find(topic);
-  if (found == topics.end()) Fail(bag, std::string("no ") + role + " topic '" + topic + "'; " + ListTopics(topics));
+bool HasDefinitionOf(const TopicIndex& index) {
   const std::string expected_md5 = ros::message_traits::MD5Sum<Message>::value();
-  for (const auto& [type, md5] : found->second.md5_by_type) {
-    if (md5 != expected_md5) {
-      Fail(bag, std::string(role) + " topic '" + topic + "' holds " + type + ", expected " +
-                    ros::message_traits::DataType<Message>::value());
-    }
+  for (const auto& [type, md5] : index.md5_by_type) {
+    if (md5 != expected_md5) return false;
+  }
+  return true;
+}
+
+const TopicIndex& RequireTopic(const std::filesystem::path& bag, const std::map<std::string, TopicIndex>& topics,
+                               const std::string& topic) {
+  const auto found = topics.find(topic);
+  if (found == topics.end()) Fail(bag, "no topic '" + topic + "'; " + ListTopics(topics));
+  return found->second;
+}
+
+/// How a pose topic's messages are decoded: by the definition its connections carry.
+enum class PoseDefinition { kOdometry, kPoseStamped, kPoseWithCovarianceStamped, kTransformStamped };
+
+PoseDefinition PoseDefinitionOf(const std::filesystem::path& bag, const std::string& topic, const TopicIndex& index) {
+  if (HasDefinitionOf<nav_msgs::Odometry>(index)) return PoseDefinition::kOdometry;
+  if (HasDefinitionOf<geometry_msgs::PoseStamped>(index)) return PoseDefinition::kPoseStamped;
+  if (HasDefinitionOf<geometry_msgs::PoseWithCovarianceStamped>(index))
+    return PoseDefinition::kPoseWithCovarianceStamped;
+  if (HasDefinitionOf<geometry_msgs::TransformStamped>(index)) return PoseDefinition::kTransformStamped;
+  Fail(bag,
+       "topic '" + topic + "' holds " + JoinTypes(index) +
+           ", expected nav_msgs/Odometry, geometry_msgs/PoseStamped, PoseWithCovarianceStamped or TransformStamped");
+}
+
+template <typename Message>
+void RequireDefinition(const std::filesystem::path& bag, const std::string& topic, const TopicIndex& index) {
+  if (!HasDefinitionOf<Message>(index)) {
+    Fail(bag, "topic '" + topic + "' holds " + JoinTypes(index) + ", expected " +
+                  ros::message_traits::DataType<Message>::value());
   }
 }
 
-double Seconds(const ros::Time& time) { return time.toSec(); }
+double Seconds(const ros::Time& time) { return RosTimeSeconds(time.sec, time.nsec); }
 
 BagPose FromPose(const geometry_msgs::Pose& pose) {
   return BagPose{pose.position.x,    pose.position.y,    pose.position.z,   pose.orientation.x,
@@ -116,10 +141,22 @@ BagStampedPose FromOdometry(const nav_msgs::Odometry& odometry, double record_s)
                         FromPose(odometry.pose.pose)};
 }
 
+BagStampedPose FromPoseStamped(const geometry_msgs::PoseStamped& pose, double record_s) {
+  return BagStampedPose{Seconds(pose.header.stamp), record_s, pose.header.frame_id, "", FromPose(pose.pose)};
+}
+
+BagStampedPose FromPoseWithCovariance(const geometry_msgs::PoseWithCovarianceStamped& pose, double record_s) {
+  return BagStampedPose{Seconds(pose.header.stamp), record_s, pose.header.frame_id, "", FromPose(pose.pose.pose)};
+}
+
+BagStampedPose FromTransformStamped(const geometry_msgs::TransformStamped& transform, double record_s) {
+  return BagStampedPose{Seconds(transform.header.stamp), record_s, transform.header.frame_id, transform.child_frame_id,
+                        FromTransform(transform.transform)};
+}
+
 void AppendTransforms(const tf2_msgs::TFMessage& message, double record_s, std::vector<BagStampedPose>& out) {
   for (const geometry_msgs::TransformStamped& transform : message.transforms) {
-    out.push_back(BagStampedPose{Seconds(transform.header.stamp), record_s, transform.header.frame_id,
-                                 transform.child_frame_id, FromTransform(transform.transform)});
+    out.push_back(FromTransformStamped(transform, record_s));
   }
 }
 
@@ -137,7 +174,7 @@ boost::shared_ptr<Message> Instantiate(const std::filesystem::path& bag, const :
 
 }  // namespace
 
-BagSummary ReadBagSummary(const std::filesystem::path& path) {
+BagSummary ReadRos1BagSummary(const std::filesystem::path& path) {
   ::rosbag::Bag bag;
   Open(path, bag);
   BagSummary summary;
@@ -158,7 +195,7 @@ BagSummary ReadBagSummary(const std::filesystem::path& path) {
   return summary;
 }
 
-BagMessages ReadBagMessages(const std::filesystem::path& path, const BagRequest& request) {
+BagMessages ReadRos1BagMessages(const std::filesystem::path& path, const BagRequest& request) {
   ::rosbag::Bag bag;
   Open(path, bag);
   BagMessages messages;
@@ -169,21 +206,20 @@ BagMessages ReadBagMessages(const std::filesystem::path& path, const BagRequest&
     const std::map<std::string, TopicIndex> topics = IndexTopics(index_view);
     std::vector<std::string> wanted;
     if (!request.scan_topic.empty()) {
-      RequireTopic<sensor_msgs::LaserScan>(path, topics, request.scan_topic, "scan");
+      RequireDefinition<sensor_msgs::LaserScan>(path, request.scan_topic,
+                                                RequireTopic(path, topics, request.scan_topic));
       wanted.push_back(request.scan_topic);
     }
-    if (!request.odometry_topic.empty()) {
-      RequireTopic<nav_msgs::Odometry>(path, topics, request.odometry_topic, "odometry");
-      wanted.push_back(request.odometry_topic);
-    }
-    if (!request.reference_topic.empty()) {
-      RequireTopic<nav_msgs::Odometry>(path, topics, request.reference_topic, "reference");
-      wanted.push_back(request.reference_topic);
+    std::map<std::string, PoseDefinition> pose_definitions;
+    for (const std::string& pose_topic : request.pose_topics) {
+      pose_definitions[pose_topic] = PoseDefinitionOf(path, pose_topic, RequireTopic(path, topics, pose_topic));
+      messages.poses[pose_topic];
+      wanted.push_back(pose_topic);
     }
     if (request.read_tf) {
       for (const char* tf_topic : {kTfTopic, kTfStaticTopic}) {
         if (topics.count(tf_topic) == 0) continue;
-        RequireTopic<tf2_msgs::TFMessage>(path, topics, tf_topic, "transform");
+        RequireDefinition<tf2_msgs::TFMessage>(path, tf_topic, topics.at(tf_topic));
         wanted.push_back(tf_topic);
       }
     }
@@ -193,15 +229,27 @@ BagMessages ReadBagMessages(const std::filesystem::path& path, const BagRequest&
     for (const ::rosbag::MessageInstance& message : view) {
       topic = message.getTopic();
       const double record_s = Seconds(message.getTime());
-      // One topic may serve two roles (odometry read from the reference topic is an error the
-      // caller reports; here every role gets its copy).
       if (topic == request.scan_topic) {
         messages.scans.push_back(FromScan(*Instantiate<sensor_msgs::LaserScan>(path, message, index), record_s));
       }
-      if (topic == request.odometry_topic || topic == request.reference_topic) {
-        const BagStampedPose pose = FromOdometry(*Instantiate<nav_msgs::Odometry>(path, message, index), record_s);
-        if (topic == request.odometry_topic) messages.odometry.push_back(pose);
-        if (topic == request.reference_topic) messages.reference.push_back(pose);
+      if (const auto pose = pose_definitions.find(topic); pose != pose_definitions.end()) {
+        std::vector<BagStampedPose>& out = messages.poses[topic];
+        switch (pose->second) {
+          case PoseDefinition::kOdometry:
+            out.push_back(FromOdometry(*Instantiate<nav_msgs::Odometry>(path, message, index), record_s));
+            break;
+          case PoseDefinition::kPoseStamped:
+            out.push_back(FromPoseStamped(*Instantiate<geometry_msgs::PoseStamped>(path, message, index), record_s));
+            break;
+          case PoseDefinition::kPoseWithCovarianceStamped:
+            out.push_back(FromPoseWithCovariance(
+                *Instantiate<geometry_msgs::PoseWithCovarianceStamped>(path, message, index), record_s));
+            break;
+          case PoseDefinition::kTransformStamped:
+            out.push_back(
+                FromTransformStamped(*Instantiate<geometry_msgs::TransformStamped>(path, message, index), record_s));
+            break;
+        }
       }
       if (request.read_tf && (topic == kTfTopic || topic == kTfStaticTopic)) {
         AppendTransforms(*Instantiate<tf2_msgs::TFMessage>(path, message, index), record_s,

@@ -1,45 +1,43 @@
-#include "evaluator/formats/rosbag/transform_tree.h"
+#include "evaluator/formats/bag/transform_tree.h"
 
 #include <iterator>
 #include <set>
 
 #include "evaluator/trajectory_metrics/interpolation.h"
 
-namespace slamsweep::evaluator::inline formats::inline rosbag {
+namespace slamsweep::evaluator::inline formats::inline bag {
 
 std::string CanonicalFrame(std::string_view frame) {
   while (!frame.empty() && frame.front() == '/') frame.remove_prefix(1);
   return std::string(frame);
 }
 
-bool TransformTree::AddStatic(std::string_view parent, std::string_view child, const Pose& pose) {
+TransformTree::Edge* TransformTree::EdgeFor(std::string_view parent, std::string_view child, bool is_static) {
   const std::string parent_frame = CanonicalFrame(parent);
   const std::string child_frame = CanonicalFrame(child);
-  if (parent_frame == child_frame) return false;
+  if (parent_frame == child_frame) return nullptr;
   const auto [it, inserted] = edges_.try_emplace(child_frame);
   Edge& edge = it->second;
   if (inserted) {
     edge.parent = parent_frame;
-    edge.is_static = true;
-  } else if (edge.parent != parent_frame || !edge.is_static) {
-    return false;
+    edge.is_static = is_static;
+  } else if (edge.parent != parent_frame || edge.is_static != is_static) {
+    return nullptr;
   }
-  edge.fixed = pose;
+  return &edge;
+}
+
+bool TransformTree::AddStatic(std::string_view parent, std::string_view child, const Pose& pose) {
+  Edge* edge = EdgeFor(parent, child, true);
+  if (edge == nullptr) return false;
+  edge->fixed = pose;
   return true;
 }
 
 bool TransformTree::AddSample(std::string_view parent, std::string_view child, double stamp_s, const Pose& pose) {
-  const std::string parent_frame = CanonicalFrame(parent);
-  const std::string child_frame = CanonicalFrame(child);
-  if (parent_frame == child_frame) return false;
-  const auto [it, inserted] = edges_.try_emplace(child_frame);
-  Edge& edge = it->second;
-  if (inserted) {
-    edge.parent = parent_frame;
-  } else if (edge.parent != parent_frame || edge.is_static) {
-    return false;
-  }
-  edge.samples.insert_or_assign(stamp_s, pose);
+  Edge* edge = EdgeFor(parent, child, false);
+  if (edge == nullptr) return false;
+  edge->samples.insert_or_assign(stamp_s, pose);
   return true;
 }
 
@@ -96,6 +94,17 @@ std::optional<Pose> TransformTree::ChainAt(const std::vector<std::string>& frame
   return pose;
 }
 
+std::string TransformTree::FrameList() const {
+  std::set<std::string> frames;
+  for (const auto& [child, edge] : edges_) {
+    frames.insert(child);
+    frames.insert(edge.parent);
+  }
+  std::string list;
+  for (const std::string& frame : frames) list += (list.empty() ? "" : ", ") + frame;
+  return list.empty() ? "(none)" : list;
+}
+
 bool TransformTree::Connected(std::string_view parent, std::string_view child) const {
   return FindPath(CanonicalFrame(parent), CanonicalFrame(child)).has_value();
 }
@@ -126,4 +135,4 @@ Trajectory TransformTree::Track(std::string_view parent, std::string_view child)
   return track;
 }
 
-}  // namespace slamsweep::evaluator::inline formats::inline rosbag
+}  // namespace slamsweep::evaluator::inline formats::inline bag

@@ -9,7 +9,7 @@
 #include "evaluator/core/pose.h"
 #include "evaluator/core/trajectory.h"
 
-namespace slamsweep::evaluator::inline formats::inline rosbag {
+namespace slamsweep::evaluator::inline formats::inline bag {
 
 /// tf's frame names without the leading '/' that ROS1 tf (before tf2) allowed: "/odom" == "odom".
 std::string CanonicalFrame(std::string_view frame);
@@ -25,6 +25,9 @@ class TransformTree {
   /// Adds one sample of the pose of `child` in `parent`. Returns false as AddStatic does. Samples may
   /// come in any order; a later sample with the same stamp replaces the earlier one.
   bool AddSample(std::string_view parent, std::string_view child, double stamp_s, const Pose& pose);
+
+  /// Every frame, sorted and joined by ", " ("(none)" for an empty tree): for messages.
+  std::string FrameList() const;
 
   /// True when both frames are in one tree.
   bool Connected(std::string_view parent, std::string_view child) const;
@@ -58,10 +61,13 @@ class TransformTree {
   };
   std::optional<Path> FindPath(const std::string& parent, const std::string& child) const;
   std::optional<Pose> EdgeAt(const Edge& edge, double stamp_s, bool clamp) const;
+  /// The edge from `parent` to `child` of that kind, made when new; nullptr when the frames are the same or
+  /// `child` already hangs from another parent or by another kind (AddStatic's and AddSample's false).
+  Edge* EdgeFor(std::string_view parent, std::string_view child, bool is_static);
   std::optional<Pose> ChainAt(const std::vector<std::string>& frames, double stamp_s, bool clamp) const;
 
   /// Keyed by child frame.
   std::map<std::string, Edge, std::less<>> edges_;
 };
 
-}  // namespace slamsweep::evaluator::inline formats::inline rosbag
+}  // namespace slamsweep::evaluator::inline formats::inline bag
