@@ -20,6 +20,7 @@
 #include "orchestrator/adapters/adapter.h"
 #include "orchestrator/run/run_failure.h"
 #include "orchestrator/adapters/run_inputs.h"
+#include "orchestrator/input_cache/prepared_sequence_cache.h"
 #include "orchestrator/adapters/run_paths.h"
 #include "orchestrator/run/run_json.h"
 #include "orchestrator/phase_times/phase_times.h"
@@ -227,7 +228,7 @@ bool RunProgram(const RunSpec& spec, const RunPaths& paths, const Adapter& adapt
 void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   const std::unique_ptr<Adapter> adapter = MakeAdapter(spec.algorithm.adapter);
   std::optional<PhaseTimer> phase(std::in_place, "inputs");
-  const RunInputs inputs = PrepareRunInputs(spec);
+  const RunInputs inputs = PrepareRunInputs(spec, PreparedInputCacheDir(paths.root));
   result.warnings.insert(result.warnings.end(), inputs.warnings.begin(), inputs.warnings.end());
   result.noise = inputs.noise_record;
   result.odometry_is_reference = inputs.odometry_is_reference;

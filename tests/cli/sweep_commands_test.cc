@@ -198,6 +198,12 @@ TEST(RunCommand, EveryRunPageOffersTheMapBeingBuiltAsAGifThatDecodes) {
     EXPECT_EQ(levels.back(), 254) << gif.dump();
   }
   EXPECT_EQ(pages, 2u);
+  // Both runs share one sequence and cut: it was prepared once, in the sweep's cache of prepared inputs.
+  std::size_t prepared = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "out/prepared_inputs")) {
+    prepared += entry.path().extension() == ".seq" ? 1 : 0;
+  }
+  EXPECT_EQ(prepared, 1u);
 }
 
 TEST(RunCommand, AFailingProgramIsRecordedAndTheSweepExitsOne) {
