@@ -276,6 +276,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   }
 
   // The map-versus-reference scores count the cells of the map file the run folder keeps.
+  phase.emplace("read_map");
   std::optional<ev::OccupancyGrid> written_map;
   try {
     written_map = ev::ReadMap(paths.MapYaml());
@@ -311,6 +312,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   phase.emplace("metrics");
   result.metrics = ComputeRunMetrics(spec.evaluation, metric_inputs);
   RequireCoverage(spec.evaluation, result.metrics);
+  phase.emplace("segments_csv");
   if (result.metrics.segment_errors) {
     // The report's boxplots need every segment; the metrics themselves are already in result.json.
     try {
