@@ -27,8 +27,8 @@ namespace ev = slamsweep::evaluator;
 using nlohmann::json;
 
 /// Raised whenever EncodeSequence's layout or what the key holds changes.
-constexpr int kFormat = 1;
-constexpr std::string_view kMagic = "SLSWPSQ1";
+constexpr int kFormat = 2;
+constexpr std::string_view kMagic = "SLSWPSQ2";
 
 /// The worker's executable: the code that reads, repairs and cuts the sequence.
 std::string ExecutableDigest(const fs::path& memo_dir) {

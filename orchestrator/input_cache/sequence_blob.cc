@@ -148,6 +148,27 @@ std::string EncodeSequence(const ev::Sequence& sequence) {
       out.PoseOf(relation.delta);
     }
   }
+  out.Count(sequence.relations_outside_log);
+  out.Put<std::uint8_t>(sequence.stamp_facts ? 1 : 0);
+  if (sequence.stamp_facts) {
+    // Field by field: a struct's padding would make equal sequences differ in bytes.
+    const ev::StampFacts& facts = *sequence.stamp_facts;
+    out.Put(static_cast<std::int32_t>(facts.outcome));
+    out.Count(facts.records);
+    out.Count(facts.steps_back);
+    out.Count(facts.duplicates);
+    out.Put(facts.largest_step_back_s);
+    out.Count(facts.changed);
+    out.Put(facts.largest_change_s);
+    out.Put<std::uint8_t>(facts.order_check ? 1 : 0);
+    if (facts.order_check) {
+      const ev::RecordOrderCheck& check = *facts.order_check;
+      for (const std::size_t count : {check.steps, check.scans_closer_in_file_order, check.scans_closer_in_stamp_order,
+                                      check.odometry_shorter_in_file_order, check.odometry_shorter_in_stamp_order}) {
+        out.Count(count);
+      }
+    }
+  }
   return out.Take();
 }
 
@@ -180,6 +201,31 @@ ev::Sequence DecodeSequence(std::string_view bytes) {
       relation.delta = in.PoseOf();
     }
     sequence.relations = std::move(relations);
+  }
+  sequence.relations_outside_log = in.Count(0);
+  if (in.Get<std::uint8_t>() != 0) {
+    ev::StampFacts facts;
+    const auto outcome = in.Get<std::int32_t>();
+    if (outcome < static_cast<std::int32_t>(ev::StampOutcome::kRecorded) ||
+        outcome > static_cast<std::int32_t>(ev::StampOutcome::kRecordOrder)) {
+      throw ev::InputError("prepared sequence: damaged (unknown stamp outcome)");
+    }
+    facts.outcome = static_cast<ev::StampOutcome>(outcome);
+    facts.records = in.Count(0);
+    facts.steps_back = in.Count(0);
+    facts.duplicates = in.Count(0);
+    facts.largest_step_back_s = in.Get<double>();
+    facts.changed = in.Count(0);
+    facts.largest_change_s = in.Get<double>();
+    if (in.Get<std::uint8_t>() != 0) {
+      ev::RecordOrderCheck check;
+      for (std::size_t* count : {&check.steps, &check.scans_closer_in_file_order, &check.scans_closer_in_stamp_order,
+                                 &check.odometry_shorter_in_file_order, &check.odometry_shorter_in_stamp_order}) {
+        *count = in.Count(0);
+      }
+      facts.order_check = check;
+    }
+    sequence.stamp_facts = facts;
   }
   in.End();
   return sequence;

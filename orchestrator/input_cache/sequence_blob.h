@@ -8,7 +8,7 @@
 namespace slamsweep::orchestrator::inline input_cache {
 
 /// What a run takes from its prepared sequence (name, scans, odometry, odometry readings, reference,
-/// relations, warnings) as bytes, every number bit for bit (this machine's byte order: the bytes are a
+/// relations and how many lie outside the log, warnings, stamp facts) as bytes, every number bit for bit (this machine's byte order: the bytes are a
 /// cache, never an exchange format). Provenance and the reference map are not kept: no run reads them.
 std::string EncodeSequence(const evaluator::Sequence& sequence);
 

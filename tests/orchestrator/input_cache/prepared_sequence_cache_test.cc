@@ -1,6 +1,7 @@
 #include "orchestrator/input_cache/prepared_sequence_cache.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cstring>
 #include <fstream>
@@ -9,6 +10,7 @@
 
 #include "evaluator/catalog/catalog.h"
 #include "evaluator/core/input_error.h"
+#include "evaluator/sequence/scan_stamps.h"
 #include "evaluator/sequence_io/sequence_file.h"
 #include "orchestrator/adapters/run_inputs.h"
 #include "orchestrator/build_identity/file_digest.h"
@@ -71,6 +73,11 @@ void ExpectSameForRuns(const ev::Sequence& a, const ev::Sequence& b) {
       ExpectSamePose((*a.relations)[i].delta, (*b.relations)[i].delta, "relation " + std::to_string(i));
     }
   }
+  EXPECT_EQ(a.relations_outside_log, b.relations_outside_log);
+  ASSERT_EQ(a.stamp_facts.has_value(), b.stamp_facts.has_value());
+  if (a.stamp_facts) {
+    EXPECT_EQ(ev::StampFactsJson(*a.stamp_facts), ev::StampFactsJson(*b.stamp_facts));
+  }
 }
 
 /// A run of the odometry baseline on a catalog entry of configs/datasets.yaml, its paths resolved.
@@ -111,8 +118,12 @@ TEST(SequenceBlobTest, ARawLogWithoutReferenceComesBackBitForBit) {
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-raw-scans-0-5504.clf.gz");
   ev::SequenceReadOptions options;
   options.name = "raw";
-  const ev::Sequence sequence = CutSequence(ev::ReadSequence(log, options), 40);
+  options.carmen.logged_pose_is_reference = false;  // a raw log: the logged pose is the odometry
+  options.carmen.stamps.repair = ev::StampRepair::kRetime;
+  const ev::Sequence sequence = CutSequence(ev::ReadSequence(log, options), 400);
   ASSERT_FALSE(sequence.reference.has_value());
+  // The raw log's late stamps are re-timed and their order weighed: facts every run records.
+  ASSERT_TRUE(sequence.stamp_facts.has_value());
   ExpectSameForRuns(DecodeSequence(EncodeSequence(sequence)), sequence);
 }
 
