@@ -66,8 +66,8 @@ void ReplaceFile(const fs::path& file, std::string_view content) {
 std::string MemoisedSha256(const fs::path& file, const fs::path& memo_dir) {
   struct stat info {};
   if (::stat(file.c_str(), &info) != 0) {
-    throw evaluator::InputError(file.string() + ": cannot read the file to compute its digest: " +
-                                std::strerror(errno));
+    throw evaluator::InputError(file.string() +
+                                ": cannot read the file to compute its digest: " + std::strerror(errno));
   }
   const std::string identity = fmt::format(
       "{}\n{} {} {} {}.{:09} {}.{:09}\n", fs::absolute(file).lexically_normal().string(), info.st_dev, info.st_ino,

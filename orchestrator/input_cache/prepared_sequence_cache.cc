@@ -42,8 +42,8 @@ std::string ExecutableDigest(const fs::path& memo_dir) {
 std::string SafeName(std::string_view text) {
   std::string safe;
   for (const char c : text.substr(0, 48)) {
-    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
-                       c == '_' || c == '.';
+    const bool plain =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.';
     safe.push_back(plain ? c : '_');
   }
   return safe.empty() || safe.front() == '.' ? "s" + safe : safe;

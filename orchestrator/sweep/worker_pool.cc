@@ -152,9 +152,9 @@ void WorkerPool::Start(const RunSpec& run, const std::filesystem::path& run_dir)
   }
   const double timeout_s = run.algorithm.timeout_s + worker_overhead_s_;
   const Clock::time_point now = Clock::now();
-  worker->job = Job{run.run_id, now,
-                    now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout_s)),
-                    timeout_s};
+  worker->job =
+      Job{run.run_id, now, now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout_s)),
+          timeout_s};
 }
 
 void WorkerPool::Finish(Worker& worker, WorkerEnding ending) {
@@ -267,8 +267,8 @@ void WorkerPool::Poll() {
     if (worker.job && worker.stopping == Worker::Stopping::kNo) until = std::min(until, worker.job->deadline);
     if (worker.stopping != Worker::Stopping::kNo && !worker.killed) until = std::min(until, worker.kill_at);
   }
-  const auto wait_ns = std::max<std::int64_t>(
-      0, std::chrono::duration_cast<std::chrono::nanoseconds>(until - Clock::now()).count());
+  const auto wait_ns =
+      std::max<std::int64_t>(0, std::chrono::duration_cast<std::chrono::nanoseconds>(until - Clock::now()).count());
   timespec timeout = {static_cast<time_t>(wait_ns / 1000000000), static_cast<long>(wait_ns % 1000000000)};
   // The signals the supervisor handles are blocked outside this call and open inside it only (ProcessSet's
   // way), so one that arrives after the last check still ends this wait.

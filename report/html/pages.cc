@@ -403,9 +403,9 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
   if (!artifacts.animation.empty()) {
     Html caption = E("Map being built (stage maps)");
     if (artifacts.gif) caption += E("; as a GIF: ") + Link(dir + "stages.gif", E("stages.gif"));
-    images += Element("figure", "map",
-                      Image(dir + artifacts.animation, "the map being built", "animation") +
-                          Element("figcaption", "", caption));
+    images += Element(
+        "figure", "map",
+        Image(dir + artifacts.animation, "the map being built", "animation") + Element("figcaption", "", caption));
   } else if (artifacts.gif) {
     images += Element("figure", "map",
                       Image(dir + "stages.gif", "the map being built", "animation") +

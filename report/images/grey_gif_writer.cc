@@ -170,8 +170,7 @@ GifWriteOutcome WriteGreyGif(std::size_t frame_count, const std::function<GreyFr
     const std::unique_ptr<ColorMapObject, decltype(&GifFreeMapObject)> colours(
         GifMakeMapObject(palette.entries, palette.colours.data()), &GifFreeMapObject);
     if (!colours) throw std::runtime_error("cannot write GIF " + name + ": out of memory for a palette");
-    if (EGifPutImageDesc(file.get(), rect.left, rect.top, rect.width, rect.height, false, colours.get()) ==
-        GIF_ERROR) {
+    if (EGifPutImageDesc(file.get(), rect.left, rect.top, rect.width, rect.height, false, colours.get()) == GIF_ERROR) {
       fail("image descriptor", file->Error);
     }
     indices.resize(static_cast<std::size_t>(rect.width));

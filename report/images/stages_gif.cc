@@ -230,8 +230,9 @@ void WriteFittedGif(StageFrames& stages, const std::filesystem::path& gif, const
   std::error_code error;
   // giflib creates its file for its owner alone; a report's files are for everyone who may read the folder.
   namespace fs = std::filesystem;
-  fs::permissions(temp.path, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
-                                 fs::perms::others_read, error);
+  fs::permissions(temp.path,
+                  fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read,
+                  error);
   std::filesystem::rename(temp.path, gif, error);
   if (error) throw std::runtime_error("cannot move the GIF into place at " + gif.string() + ": " + error.message());
 }

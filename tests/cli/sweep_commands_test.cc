@@ -158,8 +158,8 @@ TEST(RunCommand, WritesResultsJUnitAndReportAndSkipsFinishedRunsTheSecondTime) {
 /// What Pillow (tests/cli/gif_frames.py, python3-pil) reads from a GIF; null with `why` when it cannot.
 nlohmann::json ReadGifWithPillow(const std::filesystem::path& gif, std::string& why) {
   slamsweep::testing::TempDir dir;
-  const std::string command = "/usr/bin/python3 '" + Repo("tests/cli/gif_frames.py") + "' '" + gif.string() +
-                              "' > '" + (dir / "out.json").string() + "' 2> '" + (dir / "err.txt").string() + "'";
+  const std::string command = "/usr/bin/python3 '" + Repo("tests/cli/gif_frames.py") + "' '" + gif.string() + "' > '" +
+                              (dir / "out.json").string() + "' 2> '" + (dir / "err.txt").string() + "'";
   if (std::system(command.c_str()) != 0) {
     why = "python3 with Pillow (apt-get install python3-pil) could not read " + gif.string() + ": " +
           evaluator::ReadTextFile(dir / "err.txt");

@@ -36,7 +36,7 @@ class FakeArtwork : public Artwork {
   std::vector<MapComparisonJob> map_comparisons;  ///< every job given to MapComparison
   std::atomic<int> gifs{0};
   std::mutex stages_mutex;
-  std::vector<std::filesystem::path> stages;  ///< every stage image given to StagesGif
+  std::vector<std::filesystem::path> stages;      ///< every stage image given to StagesGif
   std::vector<std::filesystem::path> animations;  ///< every animation given to StagesGifFromAnimation
   std::atomic<int> thumbnails{0};
   std::atomic<int> overlays{0};

@@ -202,8 +202,8 @@ cv::Mat AnimatedGreyPngReader::DecodeFrame(const Frame& frame, cv::Mat& opaque) 
   const std::unique_ptr<libdeflate_decompressor, FreeDecompressor> decompressor(libdeflate_alloc_decompressor());
   if (!decompressor) throw InputError(source_ + ": out of memory");
   std::size_t produced = 0;
-  const libdeflate_result result = libdeflate_zlib_decompress(decompressor.get(), compressed.data(),
-                                                              compressed.size(), raw.data(), raw.size(), &produced);
+  const libdeflate_result result = libdeflate_zlib_decompress(decompressor.get(), compressed.data(), compressed.size(),
+                                                              raw.data(), raw.size(), &produced);
   if (result != LIBDEFLATE_SUCCESS || produced != raw.size()) {
     throw InputError(source_ + ": image data that does not inflate to " + std::to_string(raw.size()) + " bytes");
   }

@@ -167,7 +167,8 @@ std::string EncodeCompactGreyPng(const cv::Mat& grey) {
     identity[static_cast<std::size_t>(level)] = static_cast<std::uint8_t>(level);
   std::string png(kSignature);
   PutChunk(png, "IHDR", Header(grey.cols, grey.rows, 8, 0));
-  PutChunk(png, "IDAT", Zlib(NewCompressor().get(), PackedRows(8, grey, cv::Rect(0, 0, grey.cols, grey.rows), identity)));
+  PutChunk(png, "IDAT",
+           Zlib(NewCompressor().get(), PackedRows(8, grey, cv::Rect(0, 0, grey.cols, grey.rows), identity)));
   PutChunk(png, "IEND", "");
   return png;
 }
@@ -277,8 +278,8 @@ std::string EncodeAnimatedGreyPng(const std::vector<cv::Mat>& frames, const Anim
     const cv::Rect& rect = rects[i];
     const bool over = blend_over && i > 0;
     PutChunk(png, "fcTL", FrameControl(sequence++, rect, delay, over));
-    const std::string data =
-        Zlib(compressor.get(), PackedRows(bit_depth, frames[i], rect, index_of, over ? &frames[i - 1] : nullptr, unchanged));
+    const std::string data = Zlib(
+        compressor.get(), PackedRows(bit_depth, frames[i], rect, index_of, over ? &frames[i - 1] : nullptr, unchanged));
     if (i == 0) {
       PutChunk(png, "IDAT", data);
     } else {

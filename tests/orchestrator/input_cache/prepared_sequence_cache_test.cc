@@ -242,7 +242,8 @@ TEST(PreparedSequenceCacheTest, TheKeyFollowsTheLogsContentNotItsName) {
   // What is said about the data is not the data.
   RunSpec cited = spec;
   cited.sequence.entry.citation = "someone else";
-  EXPECT_EQ(PreparedSequenceKey(cited, dir / "cache")["sequence"], PreparedSequenceKey(spec, dir / "cache")["sequence"]);
+  EXPECT_EQ(PreparedSequenceKey(cited, dir / "cache")["sequence"],
+            PreparedSequenceKey(spec, dir / "cache")["sequence"]);
 }
 
 TEST(DigestMemoTest, AFileJustWrittenIsDigestedEveryTimeAndNeverRemembered) {

@@ -45,7 +45,8 @@ std::optional<std::string> RunPython(const std::string& script, const std::vecto
 json WriteAndDecodeWithPillow(const json& spec, std::string& png, std::string& why) {
   slamsweep::testing::TempDir dir;
   slamsweep::testing::WriteFile(dir / "spec.json", spec.dump());
-  if (!RunPython(SLAMSWEEP_APNG_WRITER, {(dir / "spec.json").string(), (dir / "out.png").string()}, why)) return nullptr;
+  if (!RunPython(SLAMSWEEP_APNG_WRITER, {(dir / "spec.json").string(), (dir / "out.png").string()}, why))
+    return nullptr;
   png = ReadBytes(dir / "out.png");
   const std::optional<std::string> decoded = RunPython(SLAMSWEEP_APNG_READER, {(dir / "out.png").string()}, why);
   if (!decoded) return nullptr;
@@ -112,14 +113,38 @@ TEST(AnimatedGreyPngReaderTest, FollowsEveryFilterDisposeAndBlendOperationAndTra
       {"palette", {0, 205, 254, 100}},
       {"transparent", 3},
       {"frames",
-       {{{"x", 0}, {"y", 0}, {"w", 5}, {"h", 3}, {"dispose", 0}, {"blend", 0}, {"filter", 4},
+       {{{"x", 0},
+         {"y", 0},
+         {"w", 5},
+         {"h", 3},
+         {"dispose", 0},
+         {"blend", 0},
+         {"filter", 4},
          {"indices", {1, 1, 1, 1, 1, 1, 2, 2, 1, 0, 1, 1, 1, 1, 1}}},
-        {{"x", 1}, {"y", 1}, {"w", 2}, {"h", 2}, {"dispose", 2}, {"blend", 0}, {"filter", 3},
+        {{"x", 1},
+         {"y", 1},
+         {"w", 2},
+         {"h", 2},
+         {"dispose", 2},
+         {"blend", 0},
+         {"filter", 3},
          {"indices", {0, 0, 2, 0}}},
         {{"x", 0}, {"y", 0}, {"w", 2}, {"h", 1}, {"dispose", 1}, {"blend", 0}, {"filter", 1}, {"indices", {0, 2}}},
-        {{"x", 2}, {"y", 0}, {"w", 3}, {"h", 3}, {"dispose", 0}, {"blend", 0}, {"filter", 2},
+        {{"x", 2},
+         {"y", 0},
+         {"w", 3},
+         {"h", 3},
+         {"dispose", 0},
+         {"blend", 0},
+         {"filter", 2},
          {"indices", {0, 0, 2, 2, 0, 2, 1, 1, 2}}},
-        {{"x", 0}, {"y", 0}, {"w", 5}, {"h", 3}, {"dispose", 0}, {"blend", 1}, {"filter", 0},
+        {{"x", 0},
+         {"y", 0},
+         {"w", 5},
+         {"h", 3},
+         {"dispose", 0},
+         {"blend", 1},
+         {"filter", 0},
          {"indices", {3, 3, 0, 3, 3, 3, 3, 3, 3, 2, 3, 3, 3, 3, 3}}}}}};
   ExpectFramesAsPillowComposesThem(spec);
 }
