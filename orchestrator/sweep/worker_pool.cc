@@ -21,6 +21,7 @@
 #include "orchestrator/process/interruption.h"
 #include "orchestrator/process/outcome_reason.h"
 #include "orchestrator/process/signal_wakeup.h"
+#include "orchestrator/process/socket_send.h"
 #include "orchestrator/process/wake_up.h"
 #include "orchestrator/sweep/worker_environment.h"
 #include "orchestrator/worker/worker.h"
@@ -54,17 +55,6 @@ std::vector<char*> Pointers(std::vector<std::string>& strings) {
   for (std::string& text : strings) pointers.push_back(text.data());
   pointers.push_back(nullptr);
   return pointers;
-}
-
-bool SendLine(int fd, const std::string& line) {
-  std::size_t sent = 0;
-  while (sent < line.size()) {
-    const ssize_t n = ::send(fd, line.data() + sent, line.size() - sent, MSG_NOSIGNAL);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    sent += static_cast<std::size_t>(n);
-  }
-  return true;
 }
 
 }  // namespace
@@ -141,11 +131,11 @@ WorkerPool::Worker& WorkerPool::IdleWorker() {
 void WorkerPool::Start(const RunSpec& run, const std::filesystem::path& run_dir) {
   const std::string line = run_dir.string() + "\n";
   Worker* worker = &IdleWorker();
-  if (!SendLine(worker->channel, line)) {
+  if (!SendAll(worker->channel, line)) {
     // It died while idle: a new worker takes the run.
     Bury(*worker);
     worker = &IdleWorker();
-    if (!SendLine(worker->channel, line)) {
+    if (!SendAll(worker->channel, line)) {
       Bury(*worker);
       throw std::runtime_error("the worker " + worker_program_.string() + " ended before it took a run");
     }

@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "orchestrator/process/socket_send.h"
 #include "orchestrator/worker/worker.h"
 
 namespace slamsweep::orchestrator::inline worker {
@@ -35,17 +36,6 @@ std::optional<std::string> ReadLine(int fd, std::string& buffer) {
     if (n <= 0) return std::nullopt;
     buffer.append(chunk, static_cast<std::size_t>(n));
   }
-}
-
-bool SendAll(int fd, const std::string& text) {
-  std::size_t sent = 0;
-  while (sent < text.size()) {
-    const ssize_t n = ::send(fd, text.data() + sent, text.size() - sent, MSG_NOSIGNAL);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    sent += static_cast<std::size_t>(n);
-  }
-  return true;
 }
 
 /// CPU seconds of this process and of its children it has waited for.
