@@ -38,6 +38,10 @@ class TimedArtwork final : public slamsweep::report::Artwork {
                  const slamsweep::report::GifSettings& settings) override {
     Timed(gifs_us, [&] { inner_->StagesGif(stages, gif, settings); });
   }
+  void StagesGifFromAnimation(const fs::path& animation, const fs::path& gif,
+                              const slamsweep::report::GifSettings& settings) override {
+    Timed(gifs_us, [&] { inner_->StagesGifFromAnimation(animation, gif, settings); });
+  }
   void Thumbnail(const fs::path& map, const fs::path& png, int max_side_px) override {
     Timed(thumbnails_us, [&] { inner_->Thumbnail(map, png, max_side_px); });
   }

@@ -19,6 +19,7 @@
 #include "orchestrator/slurm/slurm_executor.h"
 #include "orchestrator/sweep/local_executor.h"
 #include "orchestrator/sweep/sweep_runner.h"
+#include "orchestrator/sweep/worker_pool.h"
 #include "orchestrator/worker/program_sandbox.h"
 #include "orchestrator/run/run_status.h"
 
@@ -94,7 +95,8 @@ int Run(const RunOptions& options, const Streams& streams, const std::string& co
     // One job array holds every run; Slurm decides how many run at once.
     settings.jobs = std::max<std::size_t>(1, sweep.runs.size());
   } else {
-    executor = std::make_unique<orchestrator::LocalExecutor>(orchestrator::WorkerProgram());
+    // One long-lived worker per slot takes the runs one after another (each program still in its own sandbox).
+    executor = std::make_unique<orchestrator::WorkerPool>(orchestrator::WorkerProgram());
   }
   const bool smart = &streams.out == &std::cout && orchestrator::IsSmartTerminal(STDOUT_FILENO);
   auto status = orchestrator::MakeStatus(streams.out, smart, display_slots);

@@ -11,6 +11,7 @@
 #include "evaluator/noise/range_noise.h"
 #include "evaluator/catalog/catalog.h"
 #include "evaluator/sequence/sequence_cut.h"
+#include "orchestrator/input_cache/prepared_sequence_cache.h"
 
 namespace slamsweep::orchestrator::inline adapters {
 
@@ -55,15 +56,28 @@ nlohmann::json ApplyRunNoise(ev::Sequence& sequence, const NoiseSpec& noise, std
 
 bool OdometryIsReference(const ev::Sequence& sequence) { return ev::OdometryEqualsReference(sequence); }
 
-RunInputs PrepareRunInputs(const RunSpec& spec) {
-  // run.json holds resolved paths: no ${VARIABLE} is left to expand.
-  ev::Sequence sequence = ev::LoadCatalogSequence(spec.sequence.entry, {});
-  if (spec.sequence.max_scans) sequence = CutSequence(std::move(sequence), *spec.sequence.max_scans);
-  ev::ValidateSequence(sequence);
+RunInputs PrepareRunInputs(const RunSpec& spec, const std::filesystem::path& cache_dir) {
+  const auto prepare = [&spec] {
+    // run.json holds resolved paths: no ${VARIABLE} is left to expand.
+    ev::Sequence read = ev::LoadCatalogSequence(spec.sequence.entry, {});
+    if (spec.sequence.max_scans) read = CutSequence(std::move(read), *spec.sequence.max_scans);
+    ev::ValidateSequence(read);
+    return read;
+  };
+  std::string cache_problem;
+  ev::Sequence sequence;
+  if (cache_dir.empty()) {
+    sequence = prepare();
+  } else {
+    PreparedSequence prepared = LoadOrPrepareSequence(spec, cache_dir, prepare);
+    sequence = std::move(prepared.sequence);
+    cache_problem = std::move(prepared.cache_problem);
+  }
   RunInputs inputs;
   inputs.noise_record = ApplyRunNoise(sequence, spec.noise, spec.seed);
   inputs.odometry_is_reference = OdometryIsReference(sequence);
   inputs.warnings = std::move(sequence.warnings);
+  if (!cache_problem.empty()) inputs.warnings.push_back("prepared inputs not cached: " + cache_problem);
   inputs.truth.reference = std::move(sequence.reference);
   inputs.truth.relations = std::move(sequence.relations);
   inputs.truth.relations_outside_log = sequence.relations_outside_log;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -64,8 +65,10 @@ nlohmann::json ApplyRunNoise(evaluator::Sequence& sequence, const NoiseSpec& noi
 bool OdometryIsReference(const evaluator::Sequence& sequence);
 
 /// Loads the run's sequence (LoadCatalogSequence: paths in run.json are already resolved), cuts
-/// and noises it, and splits it into the program's part and the truth. Every problem is an
-/// InputError naming the sequence or the field.
-RunInputs PrepareRunInputs(const RunSpec& spec);
+/// and noises it, and splits it into the program's part and the truth. With a `cache_dir`
+/// (PreparedInputCacheDir), the sequence read, cut and checked is taken from the sweep's cache of
+/// prepared inputs (orchestrator/input_cache), made there by the first run that needs it; noise is
+/// always the run's own. Every problem is an InputError naming the sequence or the field.
+RunInputs PrepareRunInputs(const RunSpec& spec, const std::filesystem::path& cache_dir = {});
 
 }  // namespace slamsweep::orchestrator::inline adapters

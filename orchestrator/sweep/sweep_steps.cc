@@ -2,6 +2,9 @@
 
 #include <unistd.h>
 
+#include <optional>
+
+#include "orchestrator/phase_times/phase_times.h"
 #include "orchestrator/store/result_files.h"
 #include "orchestrator/run/run_folder.h"
 #include "orchestrator/run/run_json.h"
@@ -81,6 +84,7 @@ std::optional<FinishedRun> RecordWorkerEnding(const RunSpec& run, const WorkerEn
                                               const std::filesystem::path& output_dir, ResultsStore& store,
                                               std::int64_t sweep_id) {
   const std::filesystem::path run_dir = RunFolder(output_dir, run.run_id);
+  std::optional<PhaseTimer> phase(std::in_place, "record_read");
   StoredResult stored = ReadRunResult(run_dir);
   if (!stored.result && ending.interrupted) {
     // Interrupted before its result existed: nothing half-done may look like a result.
@@ -90,7 +94,9 @@ std::optional<FinishedRun> RecordWorkerEnding(const RunSpec& run, const WorkerEn
   nlohmann::json result = stored.result ? std::move(*stored.result)
                                         : MissingResult(run, ending.reason + " (" + stored.problem + ")", false);
   if (!stored.result) WriteJsonAtomically(run_dir / "result.json", result);
+  phase.emplace("record_store");
   store.RecordRun(sweep_id, ToJson(run), result, std::filesystem::path("runs") / run.run_id);
+  phase.reset();
   FinishedRun finished;
   finished.run_id = run.run_id;
   finished.ok = StatusOfResultJson(result) == RunStatus::kOk;

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/phase_times/phase_times.h"
 #include "orchestrator/run/run_failure.h"
 #include "evaluator/map_metrics/paper_metrics.h"
 #include "evaluator/map_compare/map_compare.h"
@@ -164,7 +165,9 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
   RunMetrics out;
   // The estimate-to-reference transform of the ATE: the map-versus-reference scores place the map with it.
   std::optional<ev::Alignment> ape_alignment;
+  std::optional<PhaseTimer> phase;
   if (inputs.estimate && inputs.reference) {
+    phase.emplace("metrics_trajectory");
     Attempt(out, "coverage", [&] {
       out.coverage = ev::ComputeCoverage(*inputs.reference, *inputs.estimate);
       out.details["coverage"] = out.coverage->ToJson();
@@ -192,11 +195,13 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
         AddStatistics(out, name, ev::Rpe(options).Compute(*inputs.reference, *inputs.estimate));
       });
     }
+    phase.emplace("metrics_segment_rpe");
     if (!evaluation.rpe_segments_m || !evaluation.rpe_segments_m->empty()) {
       Attempt(out, "segment_rpe",
               [&] { AddSegmentRpe(out, evaluation, association, *inputs.reference, *inputs.estimate); });
     }
   }
+  phase.emplace("metrics_relations");
   if (inputs.estimate && inputs.relations) {
     // Relations as the only reference: the coverage gate counts them (none covered until shown otherwise).
     if (!inputs.reference) out.relations_coverage = RelationsCoverage{0, inputs.relations->size()};
@@ -222,6 +227,7 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
       out.reference_floor_details["outside_log"] = inputs.relations_outside_log;
     });
   }
+  phase.emplace("metrics_paper_map");
   if (inputs.map) {
     Attempt(out, "paper_map", [&] {
       ev::PaperMetricsOptions paper_options;
@@ -247,6 +253,7 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
       }
     });
   }
+  phase.emplace("metrics_map_compare");
   if (inputs.map && inputs.reference_map) {
     Attempt(out, "map_compare", [&] {
       ev::MapCompareOptions options;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 
 #include <opencv2/core.hpp>
 
@@ -10,6 +11,7 @@
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/formats/trajectory/output_file.h"
 #include "evaluator/formats/trajectory/tum_format.h"
+#include "orchestrator/phase_times/phase_times.h"
 
 namespace slamsweep::orchestrator::inline worker {
 
@@ -48,10 +50,12 @@ std::vector<cv::Mat> OnCommonCanvas(const std::vector<cv::Mat>& stages) {
 nlohmann::json WriteRunOutputs(const RunPaths& paths, const CollectedOutputs& collected,
                                const ev::Trajectory* reference) {
   nlohmann::json outputs = nlohmann::json::object();
+  std::optional<PhaseTimer> phase(std::in_place, "outputs_map");
   ev::MapWriteOptions map_options;
   map_options.trinary_png = true;
   ev::WriteMapServer(collected.map, paths.MapYaml(), map_options);
   outputs["map"] = paths.MapYaml().filename().string();
+  phase.emplace("outputs_trajectories");
   if (collected.trajectory) {
     ev::WriteTum(*collected.trajectory, paths.TrajectoryTum());
     outputs["trajectory"] = paths.TrajectoryTum().filename().string();
@@ -62,6 +66,7 @@ nlohmann::json WriteRunOutputs(const RunPaths& paths, const CollectedOutputs& co
   }
 
   // One file for every stage: each change of the map is stored once, not once per stage image.
+  phase.emplace("outputs_stages");
   outputs["stages"] = nlohmann::json::array();
   if (!collected.stages.empty()) {
     ev::WriteBinaryFile(paths.StageAnimation(), ev::EncodeAnimatedGreyPng(OnCommonCanvas(collected.stages)));

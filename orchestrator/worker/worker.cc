@@ -20,6 +20,7 @@
 #include "orchestrator/adapters/adapter.h"
 #include "orchestrator/run/run_failure.h"
 #include "orchestrator/adapters/run_inputs.h"
+#include "orchestrator/input_cache/prepared_sequence_cache.h"
 #include "orchestrator/adapters/run_paths.h"
 #include "orchestrator/run/run_json.h"
 #include "orchestrator/phase_times/phase_times.h"
@@ -227,7 +228,7 @@ bool RunProgram(const RunSpec& spec, const RunPaths& paths, const Adapter& adapt
 void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   const std::unique_ptr<Adapter> adapter = MakeAdapter(spec.algorithm.adapter);
   std::optional<PhaseTimer> phase(std::in_place, "inputs");
-  const RunInputs inputs = PrepareRunInputs(spec);
+  const RunInputs inputs = PrepareRunInputs(spec, PreparedInputCacheDir(paths.root));
   result.warnings.insert(result.warnings.end(), inputs.warnings.begin(), inputs.warnings.end());
   result.noise = inputs.noise_record;
   result.sequence = inputs.sequence_record;
@@ -276,6 +277,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   }
 
   // The map-versus-reference scores count the cells of the map file the run folder keeps.
+  phase.emplace("read_map");
   std::optional<ev::OccupancyGrid> written_map;
   try {
     written_map = ev::ReadMap(paths.MapYaml());
@@ -312,6 +314,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   phase.emplace("metrics");
   result.metrics = ComputeRunMetrics(spec.evaluation, metric_inputs);
   RequireCoverage(spec.evaluation, result.metrics);
+  phase.emplace("segments_csv");
   if (result.metrics.segment_errors) {
     // The report's boxplots need every segment; the metrics themselves are already in result.json.
     try {

@@ -69,6 +69,9 @@ class Artwork {
   /// An animated GIF of the stage maps, in order.
   virtual void StagesGif(const std::vector<std::filesystem::path>& stage_pngs, const std::filesystem::path& gif,
                          const GifSettings& settings) = 0;
+  /// The same GIF from the worker's stage animation (one animated PNG of every stage map).
+  virtual void StagesGifFromAnimation(const std::filesystem::path& animation, const std::filesystem::path& gif,
+                                      const GifSettings& settings) = 0;
   /// A PNG of the map image (PGM or PNG) whose longer side is at most `max_side_px`.
   virtual void Thumbnail(const std::filesystem::path& map_image, const std::filesystem::path& png, int max_side_px) = 0;
   /// The estimated trajectory (and the reference, when `reference_tum` is not empty) over the map.

@@ -401,9 +401,11 @@ std::string RenderRunPage(const SiteData& site, std::size_t run) {
   });
   Html images;
   if (!artifacts.animation.empty()) {
-    images += Element("figure", "map",
-                      Image(dir + artifacts.animation, "the map being built", "animation") +
-                          Element("figcaption", "", E("Map being built (stage maps)")));
+    Html caption = E("Map being built (stage maps)");
+    if (artifacts.gif) caption += E("; as a GIF: ") + Link(dir + "stages.gif", E("stages.gif"));
+    images += Element(
+        "figure", "map",
+        Image(dir + artifacts.animation, "the map being built", "animation") + Element("figcaption", "", caption));
   } else if (artifacts.gif) {
     images += Element("figure", "map",
                       Image(dir + "stages.gif", "the map being built", "animation") +

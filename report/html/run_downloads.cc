@@ -16,9 +16,9 @@ namespace fs = std::filesystem;
 
 // Files of a run folder (orchestrator/DESIGN.md) offered for download, in display order. Fixed
 // names only: paths named inside result.json are not trusted to stay inside the run folder.
-constexpr const char* kDownloads[] = {"map.png",       "map.pgm",     "map.yaml",    "trajectory.tum",
-                                      "reference.tum", "map.geojson", "stages.png",  "log.txt",
-                                      "command.txt",   "run.json",    "result.json", "rpe_segments.csv"};
+constexpr const char* kDownloads[] = {
+    "map.png",    "map.pgm", "map.yaml",    "trajectory.tum", "reference.tum", "map.geojson",     "stages.png",
+    "stages.gif", "log.txt", "command.txt", "run.json",       "result.json",   "rpe_segments.csv"};
 
 bool IsSafeRelative(const std::string& text) {
   const fs::path path(text);

@@ -77,11 +77,22 @@ void PlanRunImages(const SweepModel& model, const ReportLayout& layout, const fs
                         n(error);
                       }});
     }
+    if (!artifacts->animation.empty()) {
+      // The page plays the worker's animated PNG; the GIF of the same frames is its download.
+      const fs::path animation = run_out / artifacts->animation;
+      jobs.push_back({[=] { artwork->StagesGifFromAnimation(animation, run_out / "stages.gif", options.gif); },
+                      [artifacts, run_out, n = note("Map-building GIF (stages.gif)")](const std::string& error) {
+                        artifacts->gif = error.empty() && IsRegularFileNoFollow(run_out / "stages.gif");
+                        if (artifacts->gif) AddDownload(*artifacts, "stages.gif");
+                        n(error);
+                      }});
+    }
     std::vector<fs::path> stages = artifacts->animation.empty() ? StagePaths(run) : std::vector<fs::path>();
     if (!stages.empty()) {
       jobs.push_back({[=] { artwork->StagesGif(stages, run_out / "stages.gif", options.gif); },
                       [artifacts, run_out, n = note("Map-building animation")](const std::string& error) {
                         artifacts->gif = error.empty() && IsRegularFileNoFollow(run_out / "stages.gif");
+                        if (artifacts->gif) AddDownload(*artifacts, "stages.gif");
                         n(error);
                       }});
     }

@@ -45,6 +45,14 @@ class StandardArtwork final : public Artwork {
     WriteStagesGif(stage_pngs, gif, options);
   }
 
+  void StagesGifFromAnimation(const std::filesystem::path& animation, const std::filesystem::path& gif,
+                              const GifSettings& settings) override {
+    GifOptions options;
+    options.max_side_px = settings.max_side_px;
+    options.max_bytes = settings.max_bytes;
+    WriteStagesGifFromAnimation(animation, gif, options);
+  }
+
   void Thumbnail(const std::filesystem::path& map_image, const std::filesystem::path& png, int max_side_px) override {
     WriteThumbnail(map_image, png, max_side_px);
   }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace slamsweep::report::inline images {
 namespace {
@@ -41,6 +42,44 @@ FrameRect ChangedRect(const cv::Mat& previous, const cv::Mat& current) {
   }
   if (bottom < 0) return {0, 0, 1, 1};
   return {left, top, right - left + 1, bottom - top + 1};
+}
+
+/// A frame's own palette: the grey levels its rectangle draws, in ascending order, and after them the
+/// transparent entry that pixels unchanged since the frame before get (they keep what is under them), so
+/// that a map's unchanged cells cost next to nothing and a trinary map is coded on 2 bits, not 8. Padded to
+/// a power of two (GIF's rule). Without room for a transparent entry (all 256 levels drawn), none.
+struct FramePalette {
+  std::array<GifPixelType, 256> index_of{};
+  std::vector<GifColorType> colours;
+  int entries = 0;
+  int transparent = NO_TRANSPARENT_COLOR;
+};
+
+FramePalette PaletteOf(const cv::Mat& image, const FrameRect& rect, const cv::Mat* previous) {
+  std::array<bool, 256> drawn{};
+  for (int r = rect.top; r < rect.top + rect.height; ++r) {
+    const uchar* row = image.ptr<uchar>(r) + rect.left;
+    const uchar* before = previous != nullptr ? previous->ptr<uchar>(r) + rect.left : nullptr;
+    for (int c = 0; c < rect.width; ++c) {
+      if (before == nullptr || before[c] != row[c]) drawn[row[c]] = true;
+    }
+  }
+  FramePalette palette;
+  for (int level = 0; level < 256; ++level) {
+    if (!drawn[static_cast<std::size_t>(level)]) continue;
+    palette.index_of[static_cast<std::size_t>(level)] = static_cast<GifPixelType>(palette.colours.size());
+    const auto grey = static_cast<GifByteType>(level);
+    palette.colours.push_back(GifColorType{grey, grey, grey});
+  }
+  if (previous != nullptr && palette.colours.size() < 256) {
+    palette.transparent = static_cast<int>(palette.colours.size());
+    palette.colours.push_back(GifColorType{0, 0, 0});
+  }
+  // At least 2 entries (1 bit), a power of two.
+  palette.entries = 2;
+  while (palette.entries < static_cast<int>(palette.colours.size())) palette.entries *= 2;
+  palette.colours.resize(static_cast<std::size_t>(palette.entries), GifColorType{0, 0, 0});
+  return palette;
 }
 
 std::string GifErrorText(int code) {
@@ -93,15 +132,8 @@ GifWriteOutcome WriteGreyGif(std::size_t frame_count, const std::function<GreyFr
   if (!file) fail("open", error);
   EGifSetGifVersion(file.get(), true);
 
-  std::array<GifColorType, 256> greys{};
-  for (int v = 0; v < 256; ++v) {
-    greys[v] = GifColorType{static_cast<GifByteType>(v), static_cast<GifByteType>(v), static_cast<GifByteType>(v)};
-  }
-  const std::unique_ptr<ColorMapObject, decltype(&GifFreeMapObject)> palette(GifMakeMapObject(256, greys.data()),
-                                                                             &GifFreeMapObject);
-  if (!palette) throw std::runtime_error("cannot write GIF " + name + ": out of memory for the palette");
-
-  if (EGifPutScreenDesc(file.get(), size.width, size.height, 8, 0, palette.get()) == GIF_ERROR) {
+  // No global palette: each frame has its own (below), of the grey levels it draws.
+  if (EGifPutScreenDesc(file.get(), size.width, size.height, 8, 0, nullptr) == GIF_ERROR) {
     fail("screen descriptor", file->Error);
   }
   // NETSCAPE2.0 application extension: sub-block {1, loop count 0 = forever (little endian)}.
@@ -114,6 +146,7 @@ GifWriteOutcome WriteGreyGif(std::size_t frame_count, const std::function<GreyFr
     fail("loop extension", file->Error);
   }
 
+  std::vector<GifPixelType> indices;
   for (std::size_t i = 0; i < frame_count; ++i) {
     if (i > 0) {
       previous = std::move(current);
@@ -122,24 +155,34 @@ GifWriteOutcome WriteGreyGif(std::size_t frame_count, const std::function<GreyFr
     ValidateFrame(current, i, size);
     const cv::Mat& image = current.image;
     const FrameRect rect = i == 0 ? FrameRect{0, 0, image.cols, image.rows} : ChangedRect(previous.image, image);
+    const FramePalette palette = PaletteOf(image, rect, i == 0 ? nullptr : &previous.image);
     GraphicsControlBlock control{};
     control.DisposalMode = DISPOSE_DO_NOT;
     control.UserInputFlag = false;
     control.DelayTime = current.delay_cs;
-    control.TransparentColor = NO_TRANSPARENT_COLOR;
+    control.TransparentColor = palette.transparent;
     GifByteType control_bytes[4];
     const std::size_t control_size = EGifGCBToExtension(&control, control_bytes);
     if (EGifPutExtension(file.get(), GRAPHICS_EXT_FUNC_CODE, static_cast<int>(control_size), control_bytes) ==
         GIF_ERROR) {
       fail("graphics control block", file->Error);
     }
-    if (EGifPutImageDesc(file.get(), rect.left, rect.top, rect.width, rect.height, false, nullptr) == GIF_ERROR) {
+    const std::unique_ptr<ColorMapObject, decltype(&GifFreeMapObject)> colours(
+        GifMakeMapObject(palette.entries, palette.colours.data()), &GifFreeMapObject);
+    if (!colours) throw std::runtime_error("cannot write GIF " + name + ": out of memory for a palette");
+    if (EGifPutImageDesc(file.get(), rect.left, rect.top, rect.width, rect.height, false, colours.get()) == GIF_ERROR) {
       fail("image descriptor", file->Error);
     }
+    indices.resize(static_cast<std::size_t>(rect.width));
     for (int r = rect.top; r < rect.top + rect.height; ++r) {
-      // giflib takes a non-const pointer but does not write through it.
-      auto* row = const_cast<GifPixelType*>(image.ptr<GifPixelType>(r) + rect.left);
-      if (EGifPutLine(file.get(), row, rect.width) == GIF_ERROR) fail("pixels", file->Error);
+      const uchar* row = image.ptr<uchar>(r) + rect.left;
+      const uchar* before = i == 0 ? nullptr : previous.image.ptr<uchar>(r) + rect.left;
+      for (int c = 0; c < rect.width; ++c) {
+        indices[static_cast<std::size_t>(c)] = before != nullptr && palette.transparent >= 0 && before[c] == row[c]
+                                                   ? static_cast<GifPixelType>(palette.transparent)
+                                                   : palette.index_of[row[c]];
+      }
+      if (EGifPutLine(file.get(), indices.data(), rect.width) == GIF_ERROR) fail("pixels", file->Error);
     }
     if (give_up_above_bytes && i + 1 < frame_count) {
       // What stdio has flushed so far: at most one buffer short of the truth, enough for a cap.

@@ -16,11 +16,12 @@ struct GreyFrame {
   int delay_cs = 10;
 };
 
-/// Writes `frames` (all of one size) as a looping GIF89a with giflib: a global 256-level grey
-/// palette (palette index = grey value, so no quantisation), the NETSCAPE2.0 loop-forever
-/// extension, and a graphics control block per frame for its delay. Each frame after the first
-/// stores only the rectangle that differs from the previous one (disposal "do not dispose"):
-/// a map being built changes little between stages, and this keeps the file small.
+/// Writes `frames` (all of one size) as a looping GIF89a with giflib: the NETSCAPE2.0 loop-forever
+/// extension and a graphics control block per frame for its delay. Each frame after the first
+/// stores only the rectangle that differs from the previous one (disposal "do not dispose"), with
+/// a palette of its own: the grey levels it draws (exactly, no quantisation) and a transparent
+/// entry for the pixels of the rectangle that did not change. A map being built changes little
+/// between stages and has three grey levels: this keeps the file small.
 /// With `give_up_above_bytes`, writing stops as soon as the file has grown past that size (checked
 /// after each frame), leaving an incomplete file: a caller fitting a size cap learns early, from the
 /// frames written so far, how far off it is, instead of encoding hundreds of frames in vain.

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/formats/map/animated_png_reader.h"
 #include "evaluator/formats/map/image_file.h"
 #include "report/images/area_shrink.h"
 #include "report/images/frame_selection.h"
@@ -48,12 +49,28 @@ cv::Size CanvasSize(const std::vector<std::filesystem::path>& paths) {
   return canvas;
 }
 
+/// The union of the known cells (plus the metrics' 2-cell margin) inside `canvas`; the whole canvas when
+/// nothing is known.
+cv::Rect GrownKnownWindow(const cv::Rect& known, cv::Size canvas) {
+  constexpr int kMarginPx = 2;
+  const cv::Rect whole(0, 0, canvas.width, canvas.height);
+  if (known.empty()) return whole;
+  const cv::Rect grown(known.x - kMarginPx, known.y - kMarginPx, known.width + 2 * kMarginPx,
+                       known.height + 2 * kMarginPx);
+  return grown & whole;
+}
+
+/// Adds a frame's known cells to `known`.
+void AddKnownCells(const cv::Mat& frame, cv::Rect& known) {
+  const cv::Rect box = cv::boundingRect(frame != kUnknownGrey);
+  known = known.empty() ? box : (box.empty() ? known : (known | box));
+}
+
 /// Stages of one size share one frame of the world: the canvas rule crops them all to the union of
 /// their known cells (plus the metrics' 2-cell margin), so the animation shows the map, not the
 /// program's padding, at the scale of every other map in the report. Stages of different sizes carry
 /// no origin to align them by, so they are not cropped. Returns the whole canvas when nothing is known.
 cv::Rect CommonKnownWindow(const std::vector<std::filesystem::path>& paths, cv::Size canvas) {
-  constexpr int kMarginPx = 2;
   const cv::Rect whole(0, 0, canvas.width, canvas.height);
   cv::Rect known;
   for (const auto& path : paths) {
@@ -63,34 +80,39 @@ cv::Rect CommonKnownWindow(const std::vector<std::filesystem::path>& paths, cv::
   for (const auto& path : paths) {
     const cv::Mat stage = evaluator::ReadGreyImageFile(path);
     if (stage.size() != canvas) return whole;
-    const cv::Rect box = cv::boundingRect(stage != kUnknownGrey);
-    known = known.empty() ? box : (box.empty() ? known : (known | box));
+    AddKnownCells(stage, known);
   }
-  if (known.empty()) return whole;
-  const cv::Rect grown(known.x - kMarginPx, known.y - kMarginPx, known.width + 2 * kMarginPx,
-                       known.height + 2 * kMarginPx);
-  return grown & whole;
+  return GrownKnownWindow(known, canvas);
 }
 
-/// The stages, each read only when first needed (a size cap may leave most of a long list out),
-/// put on the common canvas, cropped to CommonKnownWindow and shrunk to max_side_px, then kept.
+/// The frames a GIF is made of, each cropped to the common known window and shrunk to max_side_px.
 class StageFrames {
  public:
-  StageFrames(const std::vector<std::filesystem::path>& paths, int max_side_px)
+  virtual ~StageFrames() = default;
+  virtual std::size_t size() const = 0;
+  /// Longer side of a frame before any further shrinking.
+  virtual int SidePx() const = 0;
+  virtual const cv::Mat& At(std::size_t index) = 0;
+};
+
+/// Stage images, each read only when first needed (a size cap may leave most of a long list out),
+/// put on the common canvas, cropped to CommonKnownWindow and shrunk to max_side_px, then kept.
+class StageFileFrames final : public StageFrames {
+ public:
+  StageFileFrames(const std::vector<std::filesystem::path>& paths, int max_side_px)
       : paths_(paths),
         canvas_size_(CanvasSize(paths)),
         window_(CommonKnownWindow(paths, canvas_size_)),
         max_side_px_(max_side_px),
         frames_(paths.size()) {}
 
-  std::size_t size() const { return paths_.size(); }
-  /// Longer side of a frame before any further shrinking.
-  int SidePx() const {
+  std::size_t size() const override { return paths_.size(); }
+  int SidePx() const override {
     const cv::Size size = ShrunkSize(window_.size(), max_side_px_);
     return std::max(size.width, size.height);
   }
 
-  const cv::Mat& At(std::size_t index) {
+  const cv::Mat& At(std::size_t index) override {
     cv::Mat& frame = frames_[index];
     if (!frame.empty()) return frame;
     const std::filesystem::path& path = paths_[index];
@@ -113,6 +135,27 @@ class StageFrames {
   cv::Size canvas_size_;
   cv::Rect window_;
   int max_side_px_;
+  std::vector<cv::Mat> frames_;
+};
+
+/// The frames of a stage animation (an animated PNG, every frame on one canvas), decoded twice: once for
+/// the known window, once to keep each frame cropped and shrunk, so no full-size frame is held but one.
+class AnimationFrames final : public StageFrames {
+ public:
+  AnimationFrames(const std::filesystem::path& animation, int max_side_px) {
+    const evaluator::AnimatedGreyPngReader reader = evaluator::OpenAnimatedGreyPng(animation);
+    cv::Rect known;
+    reader.ForEachFrame([&](std::size_t, const cv::Mat& canvas) { AddKnownCells(canvas, known); });
+    const cv::Rect window = GrownKnownWindow(known, reader.Size());
+    reader.ForEachFrame(
+        [&](std::size_t, const cv::Mat& canvas) { frames_.push_back(ShrinkToFit(canvas(window), max_side_px)); });
+  }
+
+  std::size_t size() const override { return frames_.size(); }
+  int SidePx() const override { return std::max(frames_.front().cols, frames_.front().rows); }
+  const cv::Mat& At(std::size_t index) override { return frames_[index]; }
+
+ private:
   std::vector<cv::Mat> frames_;
 };
 
@@ -144,12 +187,10 @@ void ValidateGifOptions(const GifOptions& options) {
   }
 }
 
-void WriteStagesGif(const std::vector<std::filesystem::path>& stage_images, const std::filesystem::path& gif,
-                    const GifOptions& options) {
-  ValidateGifOptions(options);
-  if (stage_images.empty()) throw InputError(evaluator::Located(gif, 0, "no stage images to animate"));
-  StageFrames stages(stage_images, options.max_side_px);
+namespace {
 
+/// The GIF of `stages`, fitted under options.max_bytes (WriteStagesGif's rules).
+void WriteFittedGif(StageFrames& stages, const std::filesystem::path& gif, const GifOptions& options) {
   std::vector<std::size_t> indices = EvenlySpacedIndices(stages.size(), stages.size());
   int side_px = stages.SidePx();
   const TempFileGuard temp{std::filesystem::path(gif).concat(".tmp")};
@@ -187,8 +228,30 @@ void WriteStagesGif(const std::vector<std::filesystem::path>& stage_images, cons
     }
   }
   std::error_code error;
+  // giflib creates its file for its owner alone; a report's files are for everyone who may read the folder.
+  namespace fs = std::filesystem;
+  fs::permissions(temp.path,
+                  fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read,
+                  error);
   std::filesystem::rename(temp.path, gif, error);
   if (error) throw std::runtime_error("cannot move the GIF into place at " + gif.string() + ": " + error.message());
+}
+
+}  // namespace
+
+void WriteStagesGif(const std::vector<std::filesystem::path>& stage_images, const std::filesystem::path& gif,
+                    const GifOptions& options) {
+  ValidateGifOptions(options);
+  if (stage_images.empty()) throw InputError(evaluator::Located(gif, 0, "no stage images to animate"));
+  StageFileFrames stages(stage_images, options.max_side_px);
+  WriteFittedGif(stages, gif, options);
+}
+
+void WriteStagesGifFromAnimation(const std::filesystem::path& animation, const std::filesystem::path& gif,
+                                 const GifOptions& options) {
+  ValidateGifOptions(options);
+  AnimationFrames stages(animation, options.max_side_px);
+  WriteFittedGif(stages, gif, options);
 }
 
 }  // namespace slamsweep::report::inline images

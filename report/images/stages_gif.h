@@ -40,4 +40,11 @@ void ValidateGifOptions(const GifOptions& options);
 void WriteStagesGif(const std::vector<std::filesystem::path>& stage_images, const std::filesystem::path& gif,
                     const GifOptions& options);
 
+/// The same GIF from a stage animation (the worker's stages.png: an animated PNG whose frames are the stage maps on
+/// one canvas, as evaluator/formats/map/animated_png_reader.h reads it): every frame cropped to the union of the
+/// known cells, shrunk and fitted under max_bytes by the rules above. Throws InputError naming the file when it
+/// cannot be read or is not a grey animated PNG, and for bad options.
+void WriteStagesGifFromAnimation(const std::filesystem::path& animation, const std::filesystem::path& gif,
+                                 const GifOptions& options);
+
 }  // namespace slamsweep::report::inline images

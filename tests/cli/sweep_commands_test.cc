@@ -155,6 +155,57 @@ TEST(RunCommand, WritesResultsJUnitAndReportAndSkipsFinishedRunsTheSecondTime) {
   EXPECT_THAT(again.out, HasSubstr("0 ok, 0 failed, 2 done earlier"));
 }
 
+/// What Pillow (tests/cli/gif_frames.py, python3-pil) reads from a GIF; null with `why` when it cannot.
+nlohmann::json ReadGifWithPillow(const std::filesystem::path& gif, std::string& why) {
+  slamsweep::testing::TempDir dir;
+  const std::string command = "/usr/bin/python3 '" + Repo("tests/cli/gif_frames.py") + "' '" + gif.string() + "' > '" +
+                              (dir / "out.json").string() + "' 2> '" + (dir / "err.txt").string() + "'";
+  if (std::system(command.c_str()) != 0) {
+    why = "python3 with Pillow (apt-get install python3-pil) could not read " + gif.string() + ": " +
+          evaluator::ReadTextFile(dir / "err.txt");
+    return nullptr;
+  }
+  return ReadJson(dir / "out.json");
+}
+
+TEST(RunCommand, EveryRunPageOffersTheMapBeingBuiltAsAGifThatDecodes) {
+  ASSERT_TRUE(kWorkerProgramSet);
+  slamsweep::testing::TempDir dir;
+  const auto run = RunCli({"run", SmallSweep(dir, false).string()});
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  std::size_t pages = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "out/report/runs")) {
+    if (entry.path().extension() != ".html") continue;
+    ++pages;
+    const std::string page = evaluator::ReadTextFile(entry.path());
+    // The worker's animation is played; its GIF is offered beside it.
+    const std::filesystem::path folder = dir / "out/report/runs" / entry.path().stem();
+    EXPECT_THAT(page, HasSubstr(entry.path().stem().string() + "/stages.png")) << entry.path();
+    EXPECT_THAT(page, HasSubstr(entry.path().stem().string() + "/stages.gif")) << entry.path();
+    ASSERT_TRUE(std::filesystem::is_regular_file(folder / "stages.gif")) << folder;
+    EXPECT_LE(std::filesystem::file_size(folder / "stages.gif"), 2u << 20) << "the GIF cap";
+    std::string why;
+    const nlohmann::json gif = ReadGifWithPillow(folder / "stages.gif", why);
+    if (gif.is_null()) SLAMSWEEP_SKIP_OR_FAIL_IN_CI(why);
+    EXPECT_EQ(gif["format"], "GIF");
+    EXPECT_EQ(gif["frames"], 4) << "one frame per stage (evaluation.stages: 4)";
+    EXPECT_EQ(gif["loop"], 0) << "loops forever";
+    EXPECT_LE(std::max(gif["width"].get<int>(), gif["height"].get<int>()), 480);
+    // The finished map: occupied (0) and free (254) cells at its darkest and lightest.
+    const std::vector<int> levels = gif["last_frame_levels"];
+    ASSERT_FALSE(levels.empty());
+    EXPECT_EQ(levels.front(), 0) << gif.dump();
+    EXPECT_EQ(levels.back(), 254) << gif.dump();
+  }
+  EXPECT_EQ(pages, 2u);
+  // Both runs share one sequence and cut: it was prepared once, in the sweep's cache of prepared inputs.
+  std::size_t prepared = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "out/prepared_inputs")) {
+    prepared += entry.path().extension() == ".seq" ? 1 : 0;
+  }
+  EXPECT_EQ(prepared, 1u);
+}
+
 TEST(RunCommand, AFailingProgramIsRecordedAndTheSweepExitsOne) {
   slamsweep::testing::TempDir dir;
   const auto run = RunCli({"run", SmallSweep(dir, true).string(), "--no-report"});

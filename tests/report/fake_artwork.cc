@@ -71,12 +71,9 @@ MapComparisonDrawn FakeArtwork::MapComparison(const MapComparisonJob& job) {
   return drawn;
 }
 
-void FakeArtwork::StagesGif(const std::vector<fs::path>& stage_pngs, const fs::path& gif, const GifSettings&) {
-  if (stage_pngs.empty()) throw std::runtime_error("no stages");
-  {
-    std::lock_guard lock(stages_mutex);
-    stages.insert(stages.end(), stage_pngs.begin(), stage_pngs.end());
-  }
+namespace {
+
+void WriteTinyGif(const fs::path& gif) {
   // The smallest valid GIF89a: one 1x1 frame.
   static const unsigned char kGif[] = {0x47, 0x49, 0x46, 0x38, 0x39, 0x61, 0x01, 0x00, 0x01, 0x00, 0x80,
                                        0x00, 0x00, 0xff, 0xff, 0xff, 0x00, 0x00, 0x00, 0x21, 0xf9, 0x04,
@@ -84,6 +81,27 @@ void FakeArtwork::StagesGif(const std::vector<fs::path>& stage_pngs, const fs::p
                                        0x00, 0x01, 0x00, 0x00, 0x02, 0x02, 0x44, 0x01, 0x00, 0x3b};
   std::ofstream out(gif, std::ios::binary);
   out.write(reinterpret_cast<const char*>(kGif), sizeof kGif);
+}
+
+}  // namespace
+
+void FakeArtwork::StagesGif(const std::vector<fs::path>& stage_pngs, const fs::path& gif, const GifSettings&) {
+  if (stage_pngs.empty()) throw std::runtime_error("no stages");
+  {
+    std::lock_guard lock(stages_mutex);
+    stages.insert(stages.end(), stage_pngs.begin(), stage_pngs.end());
+  }
+  WriteTinyGif(gif);
+  ++gifs;
+}
+
+void FakeArtwork::StagesGifFromAnimation(const fs::path& animation, const fs::path& gif, const GifSettings&) {
+  if (!fs::is_regular_file(animation)) throw std::runtime_error("no animation at " + animation.string());
+  {
+    std::lock_guard lock(stages_mutex);
+    animations.push_back(animation);
+  }
+  WriteTinyGif(gif);
   ++gifs;
 }
 

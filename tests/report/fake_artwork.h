@@ -21,6 +21,8 @@ class FakeArtwork : public Artwork {
   MapComparisonDrawn MapComparison(const MapComparisonJob& job) override;
   void StagesGif(const std::vector<std::filesystem::path>& stage_pngs, const std::filesystem::path& gif,
                  const GifSettings& settings) override;
+  void StagesGifFromAnimation(const std::filesystem::path& animation, const std::filesystem::path& gif,
+                              const GifSettings& settings) override;
   void Thumbnail(const std::filesystem::path& map_image, const std::filesystem::path& png, int max_side_px) override;
   void TrajectoryOverlay(const std::filesystem::path& map_yaml, const std::filesystem::path& estimate_tum,
                          const std::filesystem::path& reference_tum, const std::filesystem::path& png,
@@ -34,7 +36,8 @@ class FakeArtwork : public Artwork {
   std::vector<MapComparisonJob> map_comparisons;  ///< every job given to MapComparison
   std::atomic<int> gifs{0};
   std::mutex stages_mutex;
-  std::vector<std::filesystem::path> stages;  ///< every stage image given to StagesGif
+  std::vector<std::filesystem::path> stages;      ///< every stage image given to StagesGif
+  std::vector<std::filesystem::path> animations;  ///< every animation given to StagesGifFromAnimation
   std::atomic<int> thumbnails{0};
   std::atomic<int> overlays{0};
   std::atomic<int> overlays_with_reference{0};

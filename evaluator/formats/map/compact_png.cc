@@ -39,14 +39,21 @@ void PutChunk(std::string& out, std::string_view type, std::string_view data) {
   PutU32(out, crc);
 }
 
-std::string Zlib(const std::string& raw) {
-  struct Free {
-    void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
-  };
-  const std::unique_ptr<libdeflate_compressor, Free> compressor(libdeflate_alloc_compressor(kDeflateLevel));
+struct FreeCompressor {
+  void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
+};
+using Compressor = std::unique_ptr<libdeflate_compressor, FreeCompressor>;
+
+// One compressor for every stream of a file: allocating it is most of the cost of a small frame.
+Compressor NewCompressor() {
+  Compressor compressor(libdeflate_alloc_compressor(kDeflateLevel));
   if (!compressor) throw InputError("PNG encoding: out of memory");
-  std::string out(libdeflate_zlib_compress_bound(compressor.get(), raw.size()), '\0');
-  const std::size_t size = libdeflate_zlib_compress(compressor.get(), raw.data(), raw.size(), out.data(), out.size());
+  return compressor;
+}
+
+std::string Zlib(libdeflate_compressor* compressor, const std::string& raw) {
+  std::string out(libdeflate_zlib_compress_bound(compressor, raw.size()), '\0');
+  const std::size_t size = libdeflate_zlib_compress(compressor, raw.data(), raw.size(), out.data(), out.size());
   if (size == 0) throw InputError("PNG encoding: compression failed");
   out.resize(size);
   return out;
@@ -160,7 +167,8 @@ std::string EncodeCompactGreyPng(const cv::Mat& grey) {
     identity[static_cast<std::size_t>(level)] = static_cast<std::uint8_t>(level);
   std::string png(kSignature);
   PutChunk(png, "IHDR", Header(grey.cols, grey.rows, 8, 0));
-  PutChunk(png, "IDAT", Zlib(PackedRows(8, grey, cv::Rect(0, 0, grey.cols, grey.rows), identity)));
+  PutChunk(png, "IDAT",
+           Zlib(NewCompressor().get(), PackedRows(8, grey, cv::Rect(0, 0, grey.cols, grey.rows), identity)));
   PutChunk(png, "IEND", "");
   return png;
 }
@@ -203,7 +211,8 @@ std::optional<std::string> EncodePalettePng(const cv::Mat& bgr) {
   std::string png(kSignature);
   PutChunk(png, "IHDR", Header(bgr.cols, bgr.rows, bit_depth, 3));
   PutChunk(png, "PLTE", palette);
-  PutChunk(png, "IDAT", Zlib(PackedRows(bit_depth, indices, cv::Rect(0, 0, bgr.cols, bgr.rows), identity)));
+  PutChunk(png, "IDAT",
+           Zlib(NewCompressor().get(), PackedRows(bit_depth, indices, cv::Rect(0, 0, bgr.cols, bgr.rows), identity)));
   PutChunk(png, "IEND", "");
   return png;
 }
@@ -263,13 +272,14 @@ std::string EncodeAnimatedGreyPng(const std::vector<cv::Mat>& frames, const Anim
     PutChunk(png, "tRNS", alpha);
   }
   std::uint32_t sequence = 0;
+  const Compressor compressor = NewCompressor();
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const int delay = i + 1 == frames.size() ? timing.last_frame_delay_cs : timing.frame_delay_cs;
     const cv::Rect& rect = rects[i];
     const bool over = blend_over && i > 0;
     PutChunk(png, "fcTL", FrameControl(sequence++, rect, delay, over));
-    const std::string data =
-        Zlib(PackedRows(bit_depth, frames[i], rect, index_of, over ? &frames[i - 1] : nullptr, unchanged));
+    const std::string data = Zlib(
+        compressor.get(), PackedRows(bit_depth, frames[i], rect, index_of, over ? &frames[i - 1] : nullptr, unchanged));
     if (i == 0) {
       PutChunk(png, "IDAT", data);
     } else {

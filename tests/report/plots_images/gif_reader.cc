@@ -34,15 +34,6 @@ DecodedGif DecodeGif(const std::filesystem::path& path) {
   }
   decoded.width = gif->SWidth;
   decoded.height = gif->SHeight;
-  const ColorMapObject* global = gif->SColorMap;
-  if (global == nullptr || global->ColorCount != 256) ADD_FAILURE() << "expected a 256-entry global palette";
-  for (int v = 0; global != nullptr && v < global->ColorCount; ++v) {
-    const GifColorType c = global->Colors[v];
-    if (c.Red != v || c.Green != v || c.Blue != v) {
-      ADD_FAILURE() << "palette entry " << v << " is not grey " << v;
-      break;
-    }
-  }
   cv::Mat canvas(decoded.height, decoded.width, CV_8UC1, cv::Scalar(0));
   for (int i = 0; i < gif->ImageCount; ++i) {
     const SavedImage& image = gif->SavedImages[i];
@@ -55,11 +46,32 @@ DecodedGif DecodeGif(const std::filesystem::path& path) {
       }
     }
     GraphicsControlBlock control{};
+    control.TransparentColor = NO_TRANSPARENT_COLOR;
     decoded.delays_cs.push_back(DGifSavedExtensionToGCB(gif, i, &control) == GIF_OK ? control.DelayTime : -1);
     const GifImageDesc& desc = image.ImageDesc;
+    // The frame's own palette, else the file's; every colour must be grey. Transparent pixels keep what is
+    // under them (disposal "do not dispose" is the only one our GIFs use).
+    const ColorMapObject* palette = desc.ColorMap != nullptr ? desc.ColorMap : gif->SColorMap;
+    if (palette == nullptr) {
+      ADD_FAILURE() << "frame " << i << " has no palette";
+      break;
+    }
+    for (int v = 0; v < palette->ColorCount; ++v) {
+      const GifColorType c = palette->Colors[v];
+      if (v != control.TransparentColor && (c.Red != c.Green || c.Red != c.Blue)) {
+        ADD_FAILURE() << "frame " << i << ": palette entry " << v << " is not grey";
+        break;
+      }
+    }
     for (int r = 0; r < desc.Height; ++r) {
       for (int c = 0; c < desc.Width; ++c) {
-        canvas.at<uchar>(desc.Top + r, desc.Left + c) = image.RasterBits[r * desc.Width + c];
+        const int index = image.RasterBits[r * desc.Width + c];
+        if (index == control.TransparentColor) continue;
+        if (index >= palette->ColorCount) {
+          ADD_FAILURE() << "frame " << i << ": index " << index << " past the palette";
+          continue;
+        }
+        canvas.at<uchar>(desc.Top + r, desc.Left + c) = palette->Colors[index].Red;
       }
     }
     decoded.canvases.push_back(canvas.clone());

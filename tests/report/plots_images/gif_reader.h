@@ -13,7 +13,7 @@ struct DecodedGif {
   bool loops_forever = false;
   /// Frame delays (1/100 s) from the graphics control blocks.
   std::vector<int> delays_cs;
-  /// The full canvas after each frame is drawn (palette index = grey in our GIFs, checked).
+  /// The full canvas after each frame is drawn (every palette colour grey, checked).
   std::vector<cv::Mat> canvases;
 };
 

@@ -65,6 +65,32 @@ TEST(WriteStagesGifTest, OneFramePerStageWithDelaysAndLoop) {
   EXPECT_FALSE(std::filesystem::exists(dir / "map.gif.tmp"));
 }
 
+TEST(WriteStagesGifTest, UnchangedCellsAreTransparentAndATrinaryMapIsCodedOnTwoBits) {
+  // 24 stages of a 400 x 400 map with scattered walls that grows by a band each stage: every frame's
+  // rectangle holds the whole known part, of which only the new band changed.
+  testing::TempDir dir;
+  std::vector<GreyFrame> frames;
+  cv::Mat map(400, 400, CV_8UC1, cv::Scalar(205));
+  for (int stage = 0; stage < 24; ++stage) {
+    for (int row = 0; row < 400; ++row) {
+      for (int col = 16 * stage; col < 16 * stage + 16; ++col) {
+        map.at<uchar>(row, col) = (row * 7919 + col * 104729) % 13 == 0 ? 0 : 254;
+      }
+    }
+    map.at<uchar>(399, 0) = stage % 2 == 0 ? 0 : 254;  // a cell that flips: the rectangle spans the map
+    frames.push_back({map.clone(), 15});
+  }
+  const GifWriteOutcome written = WriteGreyGif(frames, dir / "map.gif");
+  const gif_check::DecodedGif gif = gif_check::DecodeGif(dir / "map.gif");
+  ASSERT_EQ(gif.canvases.size(), frames.size());
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    EXPECT_EQ(cv::norm(gif.canvases[i], frames[i].image, cv::NORM_INF), 0.0) << "frame " << i;
+  }
+  // Coded as the new bands alone at 2 bits a pixel would take 24 x 16 x 400 / 4 bytes before LZW;
+  // 8-bit codes over every frame's whole rectangle took several times that.
+  EXPECT_LT(written.bytes, 24u * 16u * 400u / 4u);
+}
+
 TEST(WriteStagesGifTest, ShrinksToMaxSideWithAreaInterpolation) {
   testing::TempDir dir;
   const auto stages = WriteStages(dir.path(), 3, 960, /*known_corner=*/true);
