@@ -23,6 +23,18 @@ constexpr std::array kRoster = {
     RosterAlgorithm{"hector", "hector", "Hector SLAM (hector_slam_lib)", "BSD", Seeding::kDeterministic},
     RosterAlgorithm{"cartographer", "cartographer", "Cartographer", "Apache-2.0", Seeding::kDeterministic,
                     "slamsweep-slam-cartographer.lua", "configuration_files"},
+    // Beyond the paper: slam_toolbox's Karto and LaMa, each linked as the LGPL shared library its licence asks
+    // for (lib/slamsweep beside the driver).
+    RosterAlgorithm{"slam-toolbox", "slam-toolbox", "slam_toolbox (Karto Mapper, Ceres solver)",
+                    "LGPL-3.0 (Karto) and LGPL-2.1 (Ceres solver plugin), as the shared library "
+                    "libslam_toolbox_karto.so",
+                    Seeding::kDeterministic},
+    RosterAlgorithm{"lama", "lama", "LaMa Slam2D (iris_lama)",
+                    "BSD-3-Clause; libiris_lama.so, a shared library, compiles Eigen's Amd.h (LGPL-2.1)",
+                    Seeding::kDeterministic},
+    RosterAlgorithm{"lama-pf", "lama", "LaMa PFSlam2D (iris_lama)",
+                    "BSD-3-Clause; libiris_lama.so, a shared library, compiles Eigen's Amd.h (LGPL-2.1)",
+                    Seeding::kSeeded},
 };
 
 }  // namespace

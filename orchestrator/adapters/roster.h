@@ -13,7 +13,7 @@
 
 namespace slamsweep::orchestrator::inline adapters {
 
-/// One algorithm of the paper's roster: a driver program slamsweep-slam-<name> (slam/<name>/) built
+/// One algorithm of the roster: a driver program slamsweep-slam-<name> (slam/<name>/) built
 /// against an upstream that scripts/install-slam.sh installed (recipe scripts/slam/<upstream>.sh).
 struct RosterAlgorithm {
   std::string_view name;      ///< the adapter name in a sweep: gmapping, tinyslam, ...
@@ -29,7 +29,8 @@ struct RosterAlgorithm {
   std::string_view upstream_config_dir = "";
 };
 
-/// GMapping, tinySLAM, vinySLAM, Hector SLAM and Cartographer, in the paper's order.
+/// GMapping, tinySLAM, vinySLAM, Hector SLAM and Cartographer, in the paper's order, then slam_toolbox, LaMa's
+/// Slam2D and LaMa's PFSlam2D.
 std::span<const RosterAlgorithm> Roster();
 
 /// The roster algorithm whose adapter name is `name`, or nullptr.
