@@ -38,10 +38,7 @@ class Slam2D : public Algorithm {
       outputs.AddPose(i, scan.stamp_s, MovedByOdometry(key_pose, key_odometry, odometry));
       if (outputs.StageDue(i) && i + 1 < robot.scans.size()) outputs.WriteStage(i, LamaMap(*slam.getOccupancyMap()));
     }
-    outputs.ReplaceTrajectory(TrajectoryFromKeyPoses(robot, key_poses));
-    const evaluator::OccupancyGrid map = LamaMap(*slam.getOccupancyMap());
-    outputs.WriteStage(robot.scans.size() - 1, map);
-    outputs.WriteFinal(map);
+    WriteLamaResult(robot, key_poses, *slam.getOccupancyMap(), outputs);
   }
 
  private:

@@ -54,10 +54,7 @@ class PfSlam2D : public Algorithm {
     }
     std::map<double, evaluator::Pose> key_poses;
     for (std::size_t k = 0; k < update_stamps.size(); ++k) key_poses[update_stamps[k]] = ToPose(best.poses[k]);
-    outputs.ReplaceTrajectory(TrajectoryFromKeyPoses(robot, key_poses));
-    const evaluator::OccupancyGrid map = LamaMap(*slam.getOccupancyMap());
-    outputs.WriteStage(robot.scans.size() - 1, map);
-    outputs.WriteFinal(map);
+    WriteLamaResult(robot, key_poses, *slam.getOccupancyMap(), outputs);
   }
 
  private:

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "evaluator/core/input_error.h"
+#include "slam/common/key_pose_trajectory.h"
 
 namespace slamsweep::slam::lama_driver {
 
@@ -49,6 +50,14 @@ evaluator::OccupancyGrid LamaMap(const lama::FrequencyOccupancyMap& map) {
     }
   });
   return grid;
+}
+
+void WriteLamaResult(const evaluator::RobotLog& robot, const std::map<double, evaluator::Pose>& key_poses,
+                     const lama::FrequencyOccupancyMap& map, DriverOutputs& outputs) {
+  outputs.ReplaceTrajectory(TrajectoryFromKeyPoses(robot, key_poses));
+  const evaluator::OccupancyGrid grid = LamaMap(map);
+  outputs.WriteStage(robot.scans.size() - 1, grid);
+  outputs.WriteFinal(grid);
 }
 
 lama::Pose2D LamaPose(const evaluator::Pose& pose) {

@@ -10,6 +10,8 @@
 #include "evaluator/core/laser_scan.h"
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/core/pose.h"
+#include "evaluator/sequence/robot_log.h"
+#include "slam/common/driver_io.h"
 #include "slam/common/parameters.h"
 
 // What the LaMa drivers (slam/lama: Slam2D, slam/lama_pf: PFSlam2D) share, the way iris_lama_ros's nodes do it.
@@ -30,6 +32,11 @@ lama::PointCloudXYZ::Ptr LamaCloud(const evaluator::LaserScan& scan, const ScanO
 /// LaMa's occupancy map as the nodes publish it: the cells of its allocated patches, each free (p = 0),
 /// occupied (p = 1) or else unknown, on LaMa's cells; an empty map gives one unknown cell.
 evaluator::OccupancyGrid LamaMap(const lama::FrequencyOccupancyMap& map);
+
+/// The end of a LaMa run: the trajectory from the poses at the updates (odometry between them) replaces the one
+/// written scan by scan, and the map is the last stage and the final map.
+void WriteLamaResult(const evaluator::RobotLog& robot, const std::map<double, evaluator::Pose>& key_poses,
+                     const lama::FrequencyOccupancyMap& map, DriverOutputs& outputs);
 
 lama::Pose2D LamaPose(const evaluator::Pose& pose);
 evaluator::Pose ToPose(const lama::Pose2D& pose);
