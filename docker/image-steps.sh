@@ -27,7 +27,7 @@ roster() {
   # The build cache of install-slam.sh is this layer's scratch: only the installed prefix stays.
   local cache
   cache=$(mktemp -d)
-  read -r -a names <<<"${SLAMSWEEP_ROSTER:-gmapping slam-constructor hector cartographer}"
+  read -r -a names <<<"${SLAMSWEEP_ROSTER:-gmapping slam-constructor hector cartographer slam-toolbox lama}"
   SLAMSWEEP_PEERS_CACHE=$cache "$root/scripts/install-slam.sh" "${from[@]}" "${names[@]}"
   rm -rf "$cache"
   clean_apt

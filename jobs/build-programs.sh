@@ -22,7 +22,7 @@ mkdir -p "$root"
 # with the workspace while building; the packed tree leaves .git out).
 jobs_run git clone --quiet --shared --no-checkout "$SLAMSWEEP_ROOT" "$root/src"
 jobs_run git -C "$root/src" checkout --quiet --detach "$commit"
-read -r -a roster <<< "${SLAMSWEEP_ROSTER:-gmapping slam-constructor hector breezyslam cartographer}"
+read -r -a roster <<< "${SLAMSWEEP_ROSTER:-gmapping slam-constructor hector breezyslam cartographer slam-toolbox lama}"
 jobs_run "$root/src/scripts/install-slam.sh" "${roster[@]}"
 SLAMSWEEP_BUILD_DIR="$root/build" jobs_run "$root/src/scripts/build.sh"
 jobs_log "built $root/build/slamsweep"

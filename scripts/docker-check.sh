@@ -2,7 +2,7 @@
 # The Docker image built and run for real, as a lab administrator would deploy it: installs Debian's
 # docker.io, debootstrap and docker-compose when missing, starts a private daemon when none runs
 # (docker/daemon.sh), builds the image (docker/build-image.sh) and checks in containers:
-#   - `slamsweep --version`, `slamsweep algorithms` (all five roster algorithms installed, Cartographer's
+#   - `slamsweep --version`, `slamsweep algorithms` (all eight roster algorithms installed, Cartographer's
 #     options readable), every installed program's libraries present, no compiler in the image;
 #   - the quick-start sweep with the shared data read-only and a results volume: every run ok, its report
 #     and junit.xml copied to the host;
@@ -144,7 +144,7 @@ else
   fail "slamsweep --version failed: $version"
 fi
 in_image "$tag" algorithms >"$out/algorithms.txt" 2>&1 || true
-for algorithm in gmapping tinyslam vinyslam hector cartographer; do
+for algorithm in gmapping tinyslam vinyslam hector cartographer slam-toolbox lama lama-pf; do
   if grep -qE "^$algorithm +\[installed\]" "$out/algorithms.txt"; then
     pass "slamsweep algorithms: $algorithm installed"
   else
@@ -216,8 +216,8 @@ timed submit "$slamsweep" submit "$root/tests/docker/service_sweep.yaml" --serve
 tail -n 3 "$out/service/submit.log"
 ((status == 0)) && pass "slamsweep submit --wait from the host: every roster driver ran ok in the container" ||
   fail "submit --wait exited $status (see $out/service/submit.log; service log: compose logs serve)"
-[[ $(grep -c '<testcase ' "$out/service/junit.xml" 2>/dev/null) == 6 ]] &&
-  pass "the service's junit.xml has the 6 runs" || fail "the service's junit.xml is missing or lacks runs"
+[[ $(grep -c '<testcase ' "$out/service/junit.xml" 2>/dev/null) == 9 ]] &&
+  pass "the service's junit.xml has the 9 runs" || fail "the service's junit.xml is missing or lacks runs"
 compose logs --no-color serve >"$out/service/serve.log" 2>&1 || true
 grep -q "sandboxes have no /proc here" "$out/service/serve.log" &&
   pass "serve probed once: its programs' sandboxes have no /proc in this container" ||
@@ -233,14 +233,14 @@ kept=$(in_image -v "${project}_results:/results" --entrypoint /bin/sh "$tag" -c 
 echo "$kept" >"$out/service/volume.txt"
 [[ "$kept" == *queue.sqlite*summary.json* ]] && pass "the results volume outlives down (queue and results kept)" ||
   fail "the results volume lost the service's data: $kept"
-# The five roster drivers ran sandboxed without /proc (the odometry baseline runs no program): every
-# result.json in the volume that has a sandbox says so (the data folder holds 12 for the 6 runs here).
+# The eight roster drivers ran sandboxed without /proc (the odometry baseline runs no program): every
+# result.json in the volume that has a sandbox says so (the data folder holds 18 for the 9 runs here).
 counts=$(tail -n 1 <<<"$kept")
 sandboxed=$(awk '{ print $2 }' <<<"$counts")
 no_proc=$(awk '{ print $4 }' <<<"$counts")
-[[ "$sandboxed" =~ ^[0-9]+$ ]] && ((sandboxed >= 5 && no_proc == sandboxed)) &&
+[[ "$sandboxed" =~ ^[0-9]+$ ]] && ((sandboxed >= 8 && no_proc == sandboxed)) &&
   pass "the programs' results in the volume ($sandboxed result.json) all say their sandbox had no /proc" ||
-  fail "the service's results in the volume: $counts (expected every sandboxed run without /proc, at least 5)"
+  fail "the service's results in the volume: $counts (expected every sandboxed run without /proc, at least 8)"
 
 step "the sandbox's hostile program as a SLAM program in a container"
 # The sandbox's own test (a real sweep whose command-adapter program tries to escape), run inside the

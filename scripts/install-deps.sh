@@ -44,6 +44,8 @@ runtime_packages=(
   # the Cartographer driver (Ceres, linked statically, brings ATLAS's BLAS and LAPACK: libceres-dev
   # depends on libatlas-base-dev)
   libabsl20220623 libcholmod3 libcxsparse3 libgoogle-glog0v6 liblua5.3-0 libprotobuf32 libatlas3-base liblapack3
+  # the slam_toolbox driver's libslam_toolbox_karto.so (Ceres linked statically, as above; its Karto needs these)
+  libboost-serialization1.74.0 libtbb12
   "${run_programs[@]}"
 )
 

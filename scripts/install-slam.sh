@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # The slam_* variables come from the sourced recipe (scripts/slam/NAME.sh).
 # shellcheck disable=SC2154
-# Builds the paper's SLAM roster from pinned upstream sources into a prefix the drivers
+# Builds the SLAM roster from pinned upstream sources into a prefix the drivers
 # (slam/<algorithm>/) build against and the adapters read their manifests from.
 #
 # usage: scripts/install-slam.sh [--prefix DIR] [--from DIR] [--packages-only] [NAME...]
-#   NAME     gmapping slam-constructor breezyslam hector cartographer (default: all of them)
+#   NAME     gmapping slam-constructor breezyslam hector cartographer slam-toolbox lama (default: all of them)
 #   --from   a folder holding the pinned tarballs (../shared/peers); each is checked against the
 #            SHA-256 pinned in its recipe. Without it, and when ../shared/peers is absent, the
 #            sources come from the upstream repository at the pinned commit (git verifies the commit).
@@ -15,16 +15,17 @@
 #
 # Each upstream has a recipe, scripts/slam/<NAME>.sh: where it comes from, its licence, the Debian
 # packages its build needs (installed through scripts/install-deps.sh) and slam_build, which builds
-# the unpacked sources into a folder. Builds are cached outside the clone, in
-# ${SLAMSWEEP_PEERS_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/slamsweep/peers}/<NAME>-<tarball sha256:16>-<recipe sha256:8>,
+# the unpacked sources into a folder; files of ours a build uses (slam-toolbox's stand-in headers) sit in the
+# recipe's folder scripts/slam/<NAME>/, which slam_build finds as $slam_files. Builds are cached outside the
+# clone, in ${SLAMSWEEP_PEERS_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/slamsweep/peers}/<NAME>-<tarball sha256:16>-<recipe sha256:8>,
 # so CI on a fresh clone rebuilds nothing that a previous run built from the same tarball and recipe;
-# a changed recipe (a patch, a flag) is a new key, never a stale build. Installing copies the cached
-# build to <prefix>/<NAME> and writes <prefix>/share/slamsweep/slam/<NAME>.json, the manifest the
+# a changed recipe (a patch, a flag, a file of its folder) is a new key, never a stale build. Installing
+# copies the cached build to <prefix>/<NAME> and writes <prefix>/share/slamsweep/slam/<NAME>.json, the manifest the
 # driver build and `slamsweep algorithms` read. Idempotent: an installed manifest with the same key
 # is left alone.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-all_names=(gmapping slam-constructor breezyslam hector cartographer)
+all_names=(gmapping slam-constructor breezyslam hector cartographer slam-toolbox lama)
 
 prefix=${SLAMSWEEP_SLAM_PREFIX:-$root/slam-prefix}
 from=""
@@ -35,7 +36,7 @@ while (($# > 0)); do
     --prefix) prefix=${2:?--prefix needs a folder}; shift 2 ;;
     --from) from=${2:?--from needs a folder}; shift 2 ;;
     --packages-only) packages_only=1; shift ;;
-    -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
+    -h|--help) sed -n '4,25p' "$0"; exit 0 ;;
     -*) echo "install-slam: unknown option '$1' (expected --prefix DIR, --from DIR, NAME...)" >&2; exit 2 ;;
     *) names+=("$1"); shift ;;
   esac
@@ -72,17 +73,31 @@ fetch_sources() {
   fi
 }
 
+# The first 8 hex digits of the recipe's SHA-256; with a recipe folder, of the recipe's and each file's digest
+# (sorted by path), so that an edit of a stand-in header is a new build.
+recipe_checksum() {
+  local recipe=$1 folder=$2
+  if [[ ! -d "$folder" ]]; then
+    sha256sum "$recipe" | cut -c1-8
+    return
+  fi
+  { sha256sum "$recipe" | cut -d' ' -f1
+    (cd "$folder" && find . -type f -print0 | LC_ALL=C sort -z | xargs -0 sha256sum)
+  } | sha256sum | cut -c1-8
+}
+
 install_one() {
   local name=$1 recipe="$root/scripts/slam/$1.sh"
   [[ -f "$recipe" ]] || { echo "install-slam: unknown algorithm '$name' (expected one of: ${all_names[*]})" >&2; return 2; }
   # shellcheck source=/dev/null
   source "$recipe"
   local recipe_sum manifest key
+  slam_files="$root/scripts/slam/$name"
   if ((packages_only)); then
     ((${#slam_packages[@]} == 0)) || "$root/scripts/install-deps.sh" "${slam_packages[@]}"
     return 0
   fi
-  recipe_sum=$(sha256sum "$recipe" | cut -c1-8)
+  recipe_sum=$(recipe_checksum "$recipe" "$slam_files")
   key="$name-${slam_sha256:0:16}-$recipe_sum"
   manifest="$prefix/share/slamsweep/slam/$name.json"
   if [[ -f "$manifest" ]] && grep -q "\"key\": \"$key\"" "$manifest" && [[ -d "$prefix/$name" ]]; then

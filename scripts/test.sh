@@ -4,12 +4,13 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
-# The paper's whole roster from the pinned sources (../shared/peers when present, else upstream at
-# the pinned commits), cached outside the clone (~/.cache/slamsweep): seconds when already built;
-# Cartographer's first build takes about 5 minutes on 2 cores. Every roster test covers all five.
-# BreezySLAM is only the independent tinySLAM that tests/slam/tinyslam cross-checks against.
-# SLAMSWEEP_ROSTER picks another set (a CI run without all five fails RosterSweepTest).
-read -r -a roster <<< "${SLAMSWEEP_ROSTER:-gmapping slam-constructor hector breezyslam cartographer}"
+# The whole roster from the pinned sources (../shared/peers when present, else upstream at the pinned
+# commits), cached outside the clone (~/.cache/slamsweep): seconds when already built; from an empty cache
+# Cartographer's first build takes about 5 minutes on 2 cores; slam_toolbox's Karto adds about 80 CPU seconds and
+# LaMa about 250 (docs/roster-beyond-the-paper.md). Every roster test covers all eight algorithms (the paper's five,
+# slam-toolbox, lama, lama-pf). BreezySLAM is only the independent tinySLAM that tests/slam/tinyslam
+# cross-checks against. SLAMSWEEP_ROSTER picks another set (a CI run without all of them fails RosterSweepTest).
+read -r -a roster <<< "${SLAMSWEEP_ROSTER:-gmapping slam-constructor hector breezyslam cartographer slam-toolbox lama}"
 "$root/scripts/install-slam.sh" "${roster[@]}"
 # The Jenkinsfiles' linter (npm-groovy-lint with Debian's Java runtime) for tests/jobs.
 "$root/scripts/install-groovy-lint.sh" >/dev/null

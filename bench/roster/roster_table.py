@@ -10,7 +10,8 @@ import sys
 from collections import defaultdict
 
 UPSTREAM = {"gmapping": "gmapping", "tinyslam": "slam-constructor", "vinyslam": "slam-constructor",
-            "hector": "hector", "cartographer": "cartographer"}
+            "hector": "hector", "cartographer": "cartographer", "slam-toolbox": "slam-toolbox", "lama": "lama",
+            "lama-pf": "lama"}
 
 
 def mean_std(values):

@@ -77,7 +77,7 @@ Seeding SeedingOf(const AlgorithmSpec& algorithm) {
 void ThrowUnknownAdapter(std::string_view name) {
   throw ev::InputError(
       "algorithm.adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command, odometry, gmapping, "
-      "tinyslam, vinyslam, hector or cartographer, got '" +
+      "tinyslam, vinyslam, hector, cartographer, slam-toolbox, lama or lama-pf, got '" +
       std::string(name) + "'");
 }
 

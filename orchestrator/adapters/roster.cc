@@ -23,6 +23,18 @@ constexpr std::array kRoster = {
     RosterAlgorithm{"hector", "hector", "Hector SLAM (hector_slam_lib)", "BSD", Seeding::kDeterministic},
     RosterAlgorithm{"cartographer", "cartographer", "Cartographer", "Apache-2.0", Seeding::kDeterministic,
                     "slamsweep-slam-cartographer.lua", "configuration_files"},
+    // Beyond the paper: slam_toolbox's Karto and LaMa, each linked as the LGPL shared library its licence asks
+    // for (lib/slamsweep beside the driver).
+    RosterAlgorithm{"slam-toolbox", "slam-toolbox", "slam_toolbox (Karto Mapper, Ceres solver)",
+                    "LGPL-3.0 (Karto) and LGPL-2.1 (Ceres solver plugin), as the shared library "
+                    "libslam_toolbox_karto.so",
+                    Seeding::kDeterministic, "", "", "libslam_toolbox_karto.so"},
+    RosterAlgorithm{"lama", "lama", "LaMa Slam2D (iris_lama)",
+                    "BSD-3-Clause; libiris_lama.so, a shared library, compiles Eigen's Amd.h (LGPL-2.1)",
+                    Seeding::kDeterministic, "", "", "libiris_lama.so"},
+    RosterAlgorithm{"lama-pf", "lama", "LaMa PFSlam2D (iris_lama)",
+                    "BSD-3-Clause; libiris_lama.so, a shared library, compiles Eigen's Amd.h (LGPL-2.1)",
+                    Seeding::kSeeded, "", "", "libiris_lama.so"},
 };
 
 }  // namespace
@@ -80,6 +92,14 @@ fs::path RosterUpstreamConfigDir(const RosterAlgorithm& algorithm) {
   return RosterPrefix() / upstream / "share" / upstream / dir;
 }
 
+fs::path RosterSharedLibrary(const RosterAlgorithm& algorithm) {
+  if (algorithm.shared_library.empty()) return {};
+  const std::string library(algorithm.shared_library);
+  const fs::path beside = RosterDriver(algorithm).parent_path() / library;
+  if (fs::is_regular_file(beside)) return beside;
+  return RosterPrefix() / std::string(algorithm.upstream) / "lib" / library;
+}
+
 std::vector<fs::path> RosterProgramReads(const RosterAlgorithm& algorithm) {
   std::vector<fs::path> reads = {fs::absolute(RosterPrefix()).lexically_normal()};
   // The driver's configuration beside it (Cartographer's Lua options), found from the driver's own path.
@@ -90,12 +110,25 @@ std::vector<fs::path> RosterProgramReads(const RosterAlgorithm& algorithm) {
   if (const fs::path upstream = RosterUpstreamConfigDir(algorithm); !upstream.empty()) {
     reads.push_back(fs::absolute(upstream).lexically_normal());
   }
+  // The library an installed driver loads from beside itself, where the sandbox shows nothing but the driver.
+  if (const fs::path library = RosterSharedLibrary(algorithm); !library.empty()) {
+    reads.push_back(fs::absolute(library).lexically_normal());
+  }
   return reads;
 }
 
 std::vector<fs::path> RosterProgramFiles(const RosterAlgorithm& algorithm) {
   const fs::path driver = RosterDriver(algorithm);
   std::vector<fs::path> files = {driver};
+  if (const fs::path library = RosterSharedLibrary(algorithm); !library.empty()) {
+    if (!fs::is_regular_file(library)) {
+      throw evaluator::InputError(
+          "algorithm.adapter " + std::string(algorithm.name) + ": " + library.string() +
+          " missing (the upstream's shared library the driver links): scripts/install-slam.sh " +
+          std::string(algorithm.upstream) + " && scripts/build.sh");
+    }
+    files.push_back(library);
+  }
   if (!algorithm.config_file.empty()) {
     const fs::path config = driver.parent_path() / algorithm.config_file;
     if (!fs::is_regular_file(config)) {

@@ -13,7 +13,7 @@
 
 namespace slamsweep::orchestrator::inline adapters {
 
-/// One algorithm of the paper's roster: a driver program slamsweep-slam-<name> (slam/<name>/) built
+/// One algorithm of the roster: a driver program slamsweep-slam-<name> (slam/<name>/) built
 /// against an upstream that scripts/install-slam.sh installed (recipe scripts/slam/<upstream>.sh).
 struct RosterAlgorithm {
   std::string_view name;      ///< the adapter name in a sweep: gmapping, tinyslam, ...
@@ -27,9 +27,13 @@ struct RosterAlgorithm {
   /// PREFIX/share/slamsweep/<upstream>/<dir>, in a build under the roster prefix's
   /// <upstream>/share/<upstream>/<dir>. Every file in it is part of the build identity.
   std::string_view upstream_config_dir = "";
+  /// The LGPL shared library the driver links ("" for none): beside the installed driver (RUNPATH $ORIGIN), in a
+  /// build under the roster prefix's <upstream>/lib. Readable in the sandbox and part of the build identity.
+  std::string_view shared_library = "";
 };
 
-/// GMapping, tinySLAM, vinySLAM, Hector SLAM and Cartographer, in the paper's order.
+/// GMapping, tinySLAM, vinySLAM, Hector SLAM and Cartographer, in the paper's order, then slam_toolbox, LaMa's
+/// Slam2D and LaMa's PFSlam2D.
 std::span<const RosterAlgorithm> Roster();
 
 /// The roster algorithm whose adapter name is `name`, or nullptr.
@@ -49,13 +53,17 @@ std::filesystem::path RosterDriver(const RosterAlgorithm& algorithm);
 /// driver follows: the installation's copy, else the upstream's build prefix. Empty when it has none.
 std::filesystem::path RosterUpstreamConfigDir(const RosterAlgorithm& algorithm);
 
+/// The shared library the driver loads (shared_library): beside the driver when there, else under the roster
+/// prefix. Empty when it has none.
+std::filesystem::path RosterSharedLibrary(const RosterAlgorithm& algorithm);
+
 /// What the driver reads besides its input: the installed upstreams (libraries, Cartographer's
-/// configuration files) and its config_file beside it (Cartographer's Lua options).
+/// configuration files), its config_file beside it (Cartographer's Lua options) and its shared library.
 std::vector<std::filesystem::path> RosterProgramReads(const RosterAlgorithm& algorithm);
 
-/// The files a run of the driver executes or reads as configuration: the driver, its config_file
-/// beside it, every file of its upstream_config_dir, and the upstream's install manifest (which names
-/// the pinned commit). Throws InputError naming a missing one and how to install it.
+/// The files a run of the driver executes or reads as configuration: the driver, its shared library, its
+/// config_file beside it, every file of its upstream_config_dir, and the upstream's install manifest (which
+/// names the pinned commit). Throws InputError naming a missing one and how to install it.
 std::vector<std::filesystem::path> RosterProgramFiles(const RosterAlgorithm& algorithm);
 
 /// <prefix>/share/slamsweep/slam/<upstream>.json, written by install-slam.sh (upstream, commit,

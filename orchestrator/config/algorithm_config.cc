@@ -16,8 +16,9 @@
 namespace slamsweep::orchestrator::inline config {
 namespace {
 
-constexpr std::string_view kAdapters[] = {"mrpt-icp-slam", "mrpt-rbpf-slam", "command", "odometry",    "gmapping",
-                                          "tinyslam",      "vinyslam",       "hector",  "cartographer"};
+constexpr std::string_view kAdapters[] = {"mrpt-icp-slam", "mrpt-rbpf-slam", "command",  "odometry",
+                                          "gmapping",      "tinyslam",       "vinyslam", "hector",
+                                          "cartographer",  "slam-toolbox",   "lama",     "lama-pf"};
 constexpr std::string_view kInputFormats[] = {"rawlog", "carmen", "tum", "rosbag2"};
 constexpr std::string_view kTrajectoryFormats[] = {"tum", "kitti", "csv", "mrpt", "carmen"};
 constexpr std::string_view kMapFormats[] = {"map_server", "mrpt", "pgm"};

@@ -26,6 +26,12 @@ Pose2 Compose(const Pose2& a, const Pose2& d) {
 
 }  // namespace
 
+evaluator::Pose MovedByOdometry(const evaluator::Pose& key_pose, const evaluator::Pose& key_odometry,
+                                const evaluator::Pose& odometry) {
+  const Pose2 moved = Compose(Of(key_pose), Between(Of(key_odometry), Of(odometry)));
+  return evaluator::Pose::Planar(moved.x, moved.y, moved.theta);
+}
+
 evaluator::Trajectory TrajectoryFromKeyPoses(const evaluator::RobotLog& robot,
                                              const std::map<double, evaluator::Pose>& key_poses) {
   evaluator::Trajectory trajectory;

@@ -54,11 +54,12 @@ const nlohmann::json* GroupOf(const nlohmann::json& summary, const std::string& 
 }
 
 TEST(RosterSweepTest, CiBuildsTheRosterItPromises) {
-  // CI builds the whole roster, Cartographer included, from ../shared/peers (scripts/test.sh). A CI
-  // run without one of them would test nothing about it.
+  // CI builds the whole roster, Cartographer, slam_toolbox and LaMa included, from ../shared/peers
+  // (scripts/test.sh). A CI run without one of them would test nothing about it.
   if (!slamsweep::testing::RunningInCi()) GTEST_SKIP() << "only checked under CI=true";
   const std::vector<std::string> built = BuiltRoster();
-  for (const std::string name : {"gmapping", "tinyslam", "vinyslam", "hector", "cartographer"}) {
+  for (const std::string name :
+       {"gmapping", "tinyslam", "vinyslam", "hector", "cartographer", "slam-toolbox", "lama", "lama-pf"}) {
     EXPECT_NE(std::find(built.begin(), built.end(), name), built.end()) << name << " driver not built";
   }
 }
@@ -221,7 +222,8 @@ TEST(RosterSweepTest, AlgorithmsListsEveryAdapterWithWhatIsInstalled) {
     ASSERT_TRUE(by_adapter.contains(adapter)) << adapter << "\n" << run.out;
   }
   const std::vector<std::string> built = BuiltRoster();
-  for (const std::string name : {"gmapping", "tinyslam", "vinyslam", "hector", "cartographer"}) {
+  for (const std::string name :
+       {"gmapping", "tinyslam", "vinyslam", "hector", "cartographer", "slam-toolbox", "lama", "lama-pf"}) {
     const nlohmann::json& entry = by_adapter.at(name);
     const bool is_built = std::find(built.begin(), built.end(), name) != built.end();
     EXPECT_EQ(entry.at("installed").get<bool>(), is_built) << entry.dump();

@@ -146,7 +146,7 @@ TEST(MrptAdapterTest, MissingOutputsAndTemplatesAreNamed) {
 
 TEST(MakeAdapterTest, KnowsEveryAdapterAndListsThemOtherwise) {
   for (const char* name : {"mrpt-icp-slam", "mrpt-rbpf-slam", "command", "odometry", "gmapping", "tinyslam", "vinyslam",
-                           "hector", "cartographer"}) {
+                           "hector", "cartographer", "slam-toolbox", "lama", "lama-pf"}) {
     EXPECT_NE(MakeAdapter(name), nullptr) << name;
   }
   try {
@@ -155,8 +155,8 @@ TEST(MakeAdapterTest, KnowsEveryAdapterAndListsThemOtherwise) {
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what())
                   .find("algorithm.adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command, "
-                        "odometry, gmapping, tinyslam, vinyslam, hector or cartographer, got "
-                        "'gfs_nogui'"),
+                        "odometry, gmapping, tinyslam, vinyslam, hector, cartographer, slam-toolbox, lama or "
+                        "lama-pf, got 'gfs_nogui'"),
               std::string::npos)
         << error.what();
   }

@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -50,11 +51,13 @@ void WriteExecutable(const fs::path& path) {
   fs::permissions(path, fs::perms::owner_all);
 }
 
-TEST(RosterTest, ListsThePapersFiveWithTheirUpstreams) {
+TEST(RosterTest, ListsThePapersFiveThenTheThreeBeyondItWithTheirUpstreams) {
   std::vector<std::string> names;
   for (const RosterAlgorithm& algorithm : Roster()) names.emplace_back(algorithm.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"gmapping", "tinyslam", "vinyslam", "hector", "cartographer"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"gmapping", "tinyslam", "vinyslam", "hector", "cartographer",
+                                             "slam-toolbox", "lama", "lama-pf"}));
   EXPECT_EQ(FindRosterAlgorithm("vinyslam")->upstream, "slam-constructor");
+  EXPECT_EQ(FindRosterAlgorithm("lama-pf")->upstream, "lama");
   EXPECT_EQ(FindRosterAlgorithm("icp-slam"), nullptr);
   // Every roster name is an adapter a sweep can use.
   for (const RosterAlgorithm& algorithm : Roster()) EXPECT_NO_THROW(MakeAdapter(algorithm.name)) << algorithm.name;
@@ -208,12 +211,53 @@ TEST(RosterAdapterTest, CartographersLuaFileIsPartOfItsBuildIdentity) {
   EXPECT_NE(BuildSignature(runs[0].build), after_ours);
 }
 
+TEST(RosterAdapterTest, TheSharedLibraryBesideAnInstalledDriverIsReadableAndPartOfItsBuildIdentity) {
+  const slamsweep::testing::TempDir dir;
+  const RosterEnvironment environment(dir / "roster");
+  WriteExecutable(dir / "roster" / "bin" / "slamsweep-slam-lama");
+  slamsweep::testing::WriteFile(dir / "roster" / "prefix" / "share" / "slamsweep" / "slam" / "lama.json",
+                                "{\"commit\": \"fd60e55\"}");
+  const RosterAlgorithm& lama = *FindRosterAlgorithm("lama");
+  // A build: the library under the roster prefix, where the driver's RUNPATH points; missing, no plan.
+  const fs::path built = dir / "roster" / "prefix" / "lama" / "lib" / "libiris_lama.so";
+  EXPECT_EQ(RosterSharedLibrary(lama), built);
+  try {
+    ProgramFilesOf(Algorithm("lama"));
+    FAIL() << "a driver without its shared library must not be planned";
+  } catch (const evaluator::InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("libiris_lama.so missing"));
+    EXPECT_THAT(error.what(), HasSubstr("scripts/install-slam.sh lama"));
+  }
+  // An installation: the library beside the driver (RUNPATH $ORIGIN), which the sandbox shows by name only.
+  const fs::path beside = dir / "roster" / "bin" / "libiris_lama.so";
+  slamsweep::testing::WriteFile(beside, "version 1");
+  EXPECT_EQ(RosterSharedLibrary(lama), beside);
+  const std::vector<fs::path> reads = RosterProgramReads(lama);
+  EXPECT_NE(std::find(reads.begin(), reads.end(), beside), reads.end());
+  const std::vector<fs::path> files = ProgramFilesOf(Algorithm("lama"));
+  EXPECT_NE(std::find(files.begin(), files.end(), beside), files.end());
+  // A relinked library is another build.
+  std::vector<RunSpec> runs(1);
+  runs[0].algorithm = Algorithm("lama");
+  StampBuildIdentity(runs);
+  const std::string before = BuildSignature(runs[0].build);
+  slamsweep::testing::WriteFile(beside, "version 2");
+  StampBuildIdentity(runs);
+  EXPECT_NE(BuildSignature(runs[0].build), before);
+  // The paper's five link their upstreams statically: nothing to show.
+  EXPECT_TRUE(RosterSharedLibrary(*FindRosterAlgorithm("hector")).empty());
+}
+
 TEST(RosterAdapterTest, TheRandomisedAlgorithmsAreSeeded) {
   // GMapping's particle filter and slam-constructor's Monte-Carlo scan matcher draw random numbers.
   EXPECT_EQ(SeedingOf(Algorithm("gmapping")), Seeding::kSeeded);
   EXPECT_EQ(SeedingOf(Algorithm("tinyslam")), Seeding::kSeeded);
   EXPECT_EQ(SeedingOf(Algorithm("vinyslam")), Seeding::kSeeded);
   EXPECT_EQ(SeedingOf(Algorithm("hector")), Seeding::kDeterministic);
+  // LaMa's particle filter draws; Karto and LaMa's Slam2D do not.
+  EXPECT_EQ(SeedingOf(Algorithm("lama-pf")), Seeding::kSeeded);
+  EXPECT_EQ(SeedingOf(Algorithm("lama")), Seeding::kDeterministic);
+  EXPECT_EQ(SeedingOf(Algorithm("slam-toolbox")), Seeding::kDeterministic);
 }
 
 }  // namespace

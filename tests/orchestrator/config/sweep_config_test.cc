@@ -386,7 +386,7 @@ TEST_F(SweepConfigTest, AdaptersAndCommandDeclarationsAreChecked) {
   EXPECT_THAT(ErrorOf("name: x\nalgorithms:\n  - {name: a, adapter: gfs_nogui}\nsequences: [lab]\n"),
               HasSubstr(Located(3, 24) +
                         "algorithms[0].adapter: expected mrpt-icp-slam, mrpt-rbpf-slam, command, odometry, gmapping, "
-                        "tinyslam, vinyslam, hector or cartographer, got 'gfs_nogui'"));
+                        "tinyslam, vinyslam, hector, cartographer, slam-toolbox, lama or lama-pf, got 'gfs_nogui'"));
   EXPECT_THAT(ErrorOf("name: x\nalgorithms:\n  - {name: a, adapter: command}\nsequences: [lab]\n"),
               HasSubstr(Located(3, 5) + "algorithms[0].command: missing"));
   EXPECT_THAT(ErrorOf(R"(name: x
