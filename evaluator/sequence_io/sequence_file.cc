@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/sequence_io/contained_read.h"
 #include "evaluator/sequence_io/format_modules.h"
 
 namespace slamsweep::evaluator::inline sequence_io {
@@ -117,9 +118,8 @@ Sequence ReadSequence(const std::filesystem::path& path, const SequenceReadOptio
       RawlogReadOptions rawlog;
       rawlog.name = options.name;
       rawlog.stamps = options.rawlog_stamps;
-      Sequence sequence;
-      ThrowIfFailed(module.read(path, rawlog, sequence));
-      return sequence;
+      return ReadContained(path, "MRPT's rawlog reader", LimitsForContent(ContentBytes(path)),
+                           [&](Sequence& sequence) { return module.read(path, rawlog, sequence); });
     }
     case SequenceFormat::kRosbag: {
       const RosbagModule& module = LoadRosbagModule(path);
@@ -128,9 +128,8 @@ Sequence ReadSequence(const std::filesystem::path& path, const SequenceReadOptio
       rosbag.scan_topic = options.scan_topic;
       rosbag.odometry_topic = options.odometry_topic;
       rosbag.reference_topic = options.reference_topic;
-      Sequence sequence;
-      ThrowIfFailed(module.read(path, rosbag, sequence));
-      return sequence;
+      return ReadContained(path, "librosbag", LimitsForContent(ContentBytes(path)),
+                           [&](Sequence& sequence) { return module.read(path, rosbag, sequence); });
     }
   }
   throw InputError(Located(path, 0, "unknown sequence format"));
