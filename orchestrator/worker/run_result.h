@@ -34,6 +34,8 @@ struct RunResult {
   std::vector<std::string> warnings;
   /// The noise applied to the program's input and its seeds (RunInputs::noise_record).
   nlohmann::json noise;
+  /// What the sequence is like (RunInputs::sequence_record): "stamps" when the reader records them.
+  nlohmann::json sequence = nlohmann::json::object();
   /// The program's odometry was the reference (RunInputs::odometry_is_reference); absent when the
   /// inputs were never prepared.
   std::optional<bool> odometry_is_reference;

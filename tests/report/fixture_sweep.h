@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -26,6 +27,11 @@ struct FixtureRun {
   std::string reason = "killed by SIGSEGV";  ///< used when !ok
   bool with_reference = true;                ///< reference.tum written (and the ATE, when ape_rmse_m is set)
   std::optional<double> ape_rmse_m;
+  /// The relations metric (mean, and the counts the worker writes: n, not_covered, outside_log).
+  std::optional<double> relations_mean_m;
+  std::size_t relations_used = 0;
+  std::size_t relations_not_covered = 0;
+  std::size_t relations_outside_log = 0;
   std::optional<double> occupied_ratio;
   std::optional<double> corners;
   std::optional<double> enclosed_areas;
