@@ -27,7 +27,7 @@ struct Finished {
 
 /// Runs `argv` with stdout and stderr to files in `dir`, waits, and returns its exit code and the peak RSS
 /// of it and the children it waited for.
-Finished Run(const std::vector<std::string>& argv, const std::filesystem::path& dir) {
+Finished RunToEnd(const std::vector<std::string>& argv, const std::filesystem::path& dir) {
   const std::filesystem::path err = dir / "stderr.txt";
   const pid_t pid = ::fork();
   if (pid == 0) {
@@ -58,7 +58,7 @@ TEST_P(RawlogMutantsTest, IsRejectedWithAClearMessageWithoutGigabytes) {
   const std::string relative = std::string("fuzz/rawlog-mutants/") + GetParam();
   SLAMSWEEP_REQUIRE_SHARED(mutant, relative);
   testing::TempDir dir;
-  const Finished finished = Run({SLAMSWEEP_BINARY, "data", "info", mutant.string(), "--json"}, dir.path());
+  const Finished finished = RunToEnd({SLAMSWEEP_BINARY, "data", "info", mutant.string(), "--json"}, dir.path());
   EXPECT_EQ(finished.exit_code, 2) << finished.stderr_text;
   EXPECT_NE(finished.stderr_text.find(mutant.string()), std::string::npos) << finished.stderr_text;
   EXPECT_NE(finished.stderr_text.find("cannot be read"), std::string::npos) << finished.stderr_text;

@@ -31,16 +31,19 @@ ev::BagStampedPose Planar(double stamp_s, const char* frame, const char* child, 
 
 SLAMSWEEP_FUZZ_SEEDS(seeds) {
   const ev::RobotLog log = fuzz::SeedLog(5, 61, std::numbers::pi);
+  // The simulation starts at 0 s; a bag's times start after ros::TIME_MIN, so the seeds start at 1000 s.
+  constexpr double kStart_s = 1000.0;
   const std::filesystem::path odometry_bag = seeds.folder() / "odometry.bag";
   const std::filesystem::path tf_bag = seeds.folder() / "tf.bag";
   {
     slamsweep::testing::BagTestWriter with_odometry(odometry_bag);
     slamsweep::testing::BagTestWriter with_tf(tf_bag);
-    with_tf.WriteTransforms("/tf_static", {Planar(log.scans.front().stamp_s, "base_link", "laser", 0.1, 0, 0)});
+    with_tf.WriteTransforms("/tf_static",
+                            {Planar(kStart_s + log.scans.front().stamp_s, "base_link", "laser", 0.1, 0, 0)});
     for (std::size_t i = 0; i < log.scans.size(); ++i) {
       const ev::LaserScan& scan = log.scans[i];
       ev::BagScan message;
-      message.stamp_s = scan.stamp_s;
+      message.stamp_s = kStart_s + scan.stamp_s;
       message.frame_id = "laser";
       message.angle_min_rad = static_cast<float>(scan.angle_min_rad);
       message.angle_increment_rad = static_cast<float>(scan.angle_increment_rad);
@@ -51,13 +54,13 @@ SLAMSWEEP_FUZZ_SEEDS(seeds) {
       message.ranges_m = scan.ranges_m;
       const ev::Pose& pose = log.odometry.poses()[i];
       const ev::BagStampedPose odometry =
-          Planar(scan.stamp_s, "odom", "base_link", pose.position.x(), pose.position.y(), pose.Yaw());
+          Planar(kStart_s + scan.stamp_s, "odom", "base_link", pose.position.x(), pose.position.y(), pose.Yaw());
       with_odometry.WriteScan("/scan", message);
       with_odometry.WriteOdometry("/odom", odometry);
       with_tf.WriteScan("/scan", message);
       with_tf.WriteTransforms("/tf", {odometry});
     }
-    with_odometry.WriteText("/chatter", log.scans.front().stamp_s, "a topic the reader does not read");
+    with_odometry.WriteText("/chatter", kStart_s + log.scans.front().stamp_s, "a topic the reader does not read");
   }
   for (const std::filesystem::path& bag : {odometry_bag, tf_bag}) {
     seeds.Add(bag.filename().string(), fuzz::FileBytes(bag));
