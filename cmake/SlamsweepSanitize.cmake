@@ -26,6 +26,11 @@ if(SLAMSWEEP_SANITIZE)
   endforeach()
   # Every error stops the program (a test fails instead of printing and passing); line tables name the places.
   add_compile_options(-fsanitize=${SLAMSWEEP_SANITIZE} -fno-sanitize-recover=all -fno-omit-frame-pointer -g1)
+  # -O1 (after the build type's -O3, so it wins): fewer calls inlined away, so a report's stack names the
+  # functions it went through, at a speed the suite can still run at. The fuzz build keeps -O3 (executions/s).
+  if(NOT SLAMSWEEP_FUZZ)
+    add_compile_options(-O1)
+  endif()
   add_link_options(-fsanitize=${SLAMSWEEP_SANITIZE})
   # The runtime options and the suppressions (third-party libraries only, each explained there) are compiled
   # into every program and module, so that a program started by a test, a job or another program has them.
