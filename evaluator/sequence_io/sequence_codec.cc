@@ -25,7 +25,7 @@ class Writer {
   void Array(const std::vector<T>& values) {
     static_assert(std::is_trivially_copyable_v<T>);
     Count(values.size());
-    out_.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+    if (!values.empty()) out_.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
   }
   void Pose(const evaluator::Pose& pose) {
     Plain(pose.position.x());
@@ -71,7 +71,8 @@ class Reader {
   std::vector<T> Array() {
     const std::size_t count = Count(sizeof(T));
     std::vector<T> values(count);
-    std::memcpy(values.data(), Take(count * sizeof(T)), count * sizeof(T));
+    // An empty vector's data() may be null, and memcpy with a null pointer is undefined even for 0 bytes.
+    if (count > 0) std::memcpy(values.data(), Take(count * sizeof(T)), count * sizeof(T));
     return values;
   }
   evaluator::Pose Pose() {
