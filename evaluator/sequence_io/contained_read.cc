@@ -14,6 +14,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <mutex>
@@ -76,9 +77,28 @@ int child_pipe = -1;
 /// AddressSanitizer ends the process when an allocation fails (where std::bad_alloc would be thrown): a
 /// refused allocation is then reported as the memory limit, like std::bad_alloc without the sanitizer. Any
 /// other report goes on to end the process, which the parent reports as a failure of ours.
+/// When the runtime's own mmap fails while it reports, it dies without a description ("ERROR: Failed to mmap");
+/// then the data segment at its limit says it was the memory limit. Raw reads into the stack: the heap is full.
+bool DataSegmentAtItsLimit() {
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_DATA, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return false;
+  const int fd = ::open("/proc/self/status", O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  std::array<char, 4096> text{};
+  const ssize_t size = ::read(fd, text.data(), text.size() - 1);
+  ::close(fd);
+  if (size <= 0) return false;
+  const char* line = std::strstr(text.data(), "VmData:");
+  if (line == nullptr) return false;
+  const std::uintmax_t data_bytes = std::strtoull(line + 7, nullptr, 10) * 1024;
+  constexpr std::uintmax_t kHeadroom = std::uintmax_t{64} << 20;  // what a failed report may have left unused
+  return data_bytes + kHeadroom >= limit.rlim_cur;
+}
+
 void ReportMemoryLimitOnDeath() {
   const std::string_view report = __asan_get_report_description();
-  if (report == "out-of-memory" || report == "allocation-size-too-big" || report == "rss-limit-exceeded") {
+  if (report == "out-of-memory" || report == "allocation-size-too-big" || report == "rss-limit-exceeded" ||
+      (report.empty() && DataSegmentAtItsLimit())) {
     const char status = static_cast<char>(ChildStatus::kOutOfMemory);
     if (::write(child_pipe, &status, 1) == 1) ::_exit(0);
   }
