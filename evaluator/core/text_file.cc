@@ -25,8 +25,10 @@ std::string QuoteField(std::string_view text) {
   return "'" + shown + "'";
 }
 
-// zlib's streaming inflate, for data libdeflate refused: it says how far the data was good.
-std::string ReadGzipStreaming(const std::filesystem::path& path) {
+// zlib's streaming inflate, for data libdeflate refused: it says how far the data was good, or that it
+// inflates beyond the cap.
+std::string ReadGzipStreaming(const std::filesystem::path& path, std::size_t compressed_bytes) {
+  const std::size_t cap = GzipInflateCap(compressed_bytes);
   struct GzCloser {
     void operator()(gzFile_s* file) const { gzclose(file); }
   };
@@ -42,6 +44,9 @@ std::string ReadGzipStreaming(const std::filesystem::path& path) {
       throw InputError(Located(path, 0, std::string("corrupt gzip data: ") + message));
     }
     if (read == 0) break;
+    if (static_cast<std::size_t>(read) > cap - content.size()) {
+      throw InputError(Located(path, 0, GzipInflateCapMessage(compressed_bytes)));
+    }
     content.append(buffer, static_cast<std::size_t>(read));
   }
   int code = 0;
@@ -66,7 +71,7 @@ TextFileContent ReadTextFileContent(const std::filesystem::path& path) {
   if (!file) throw InputError(Located(path, 0, "cannot open file for reading"));
   if (!HasGzipMagic(file->bytes())) return TextFileContent(std::move(*file));
   if (std::optional<std::string> text = InflateWholeGzip(file->bytes())) return TextFileContent(std::move(*text));
-  return TextFileContent(ReadGzipStreaming(path));
+  return TextFileContent(ReadGzipStreaming(path, file->bytes().size()));
 }
 
 std::string ReadTextFile(const std::filesystem::path& path) {

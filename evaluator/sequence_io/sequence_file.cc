@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/sequence_io/contained_read.h"
 #include "evaluator/sequence_io/format_modules.h"
 
 namespace slamsweep::evaluator::inline sequence_io {
@@ -146,17 +147,17 @@ Sequence ReadSequence(const std::filesystem::path& path, const SequenceReadOptio
       RawlogReadOptions rawlog;
       rawlog.name = options.name;
       rawlog.stamps = options.rawlog_stamps;
-      Sequence sequence;
-      ThrowIfFailed(module.read(path, rawlog, sequence));
-      return sequence;
+      return ReadContained(path, "MRPT's rawlog reader", LimitsForContent(ContentBytes(path)),
+                           [&](Sequence& sequence) { return module.read(path, rawlog, sequence); });
     }
     case SequenceFormat::kRosbag: {
       const RosbagModule& module = LoadRosbagModule(path);
-      Sequence sequence;
-      ThrowIfFailed(module.read(path, BagReadOptions{options.name, options.bag, std::nullopt}, sequence));
-      return sequence;
+      const BagReadOptions bag{options.name, options.bag, std::nullopt};
+      return ReadContained(path, "librosbag", LimitsForContent(ContentBytes(path)),
+                           [&](Sequence& sequence) { return module.read(path, bag, sequence); });
     }
     case SequenceFormat::kRosbag2: {
+      // Our own reader (MCAP, sqlite3 and CDR checked against the bytes left): read in this process.
       Sequence sequence;
       ThrowIfFailed(
           LoadRosbag2Module(path).read(path, BagReadOptions{options.name, options.bag, std::nullopt}, sequence));

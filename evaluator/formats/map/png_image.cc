@@ -1,5 +1,6 @@
 #include "evaluator/formats/map/png_image.h"
 
+#include <fmt/format.h>
 #include <png.h>
 #include <zlib.h>
 
@@ -190,6 +191,15 @@ cv::Mat DecodePng(std::string_view bytes, const std::filesystem::path& source) {
   });
   if (!header_read) corrupt();
   if (bit_depth == 16) fail("16-bit samples; expected an 8-bit image, as map_server reads");
+  // The pixels are deflate data, which inflates at most 1032 times: a header that claims more rows of pixels
+  // than the whole file could inflate to is refused before anything is allocated for them.
+  const std::uint64_t pixel_bytes = std::uint64_t{height} * (std::uint64_t{png_get_rowbytes(png, info)} + 1);
+  if (pixel_bytes > 1032 * std::uint64_t{bytes.size()}) {
+    fail(
+        fmt::format("the header claims {} x {} pixels ({} bytes of pixel data), more than the file's {} bytes "
+                    "can hold compressed",
+                    width, height, pixel_bytes, bytes.size()));
+  }
   channels = ChannelsFor(png, info, color_type);
   const bool pixels_read = RunPngStep(png, [&] {
     // The transformations OpenCV's decoder applies, with R, G, B kept in file order (no BGR swap).

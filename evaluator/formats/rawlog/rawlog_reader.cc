@@ -9,11 +9,15 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <array>
 #include <exception>
+#include <fstream>
 #include <map>
+#include <new>
 #include <optional>
 #include <vector>
 
+#include "evaluator/core/gzip_inflate.h"
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/rawlog/mrpt_conversions.h"
 
@@ -86,6 +90,13 @@ std::string ExceptionText(const char* what) {
   return message.empty() ? location : message;
 }
 
+bool IsGzipFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::array<char, 2> magic{};
+  in.read(magic.data(), 2);
+  return HasGzipMagic(std::string_view(magic.data(), static_cast<std::size_t>(in.gcount())));
+}
+
 std::string ClassName(const mrpt::serialization::CSerializable& object) { return object.GetRuntimeClass()->className; }
 
 void TakeObservation(const mrpt::obs::CObservation::Ptr& observation, const RawlogReadOptions& options,
@@ -142,10 +153,16 @@ ReadState ReadObjects(const std::filesystem::path& path, const RawlogReadOptions
   }
   if (!opened) throw InputError(Located(path, 0, "cannot open the rawlog: " + error));
   auto archive = mrpt::serialization::archiveFrom(stream);
+  // MRPT inflates gzip data as it reads: the cap of every reader of slamsweep applies to what it has inflated.
+  const std::size_t file_bytes = static_cast<std::size_t>(std::filesystem::file_size(path, missing));
+  const bool gzip = IsGzipFile(path);
   ReadState state;
   std::size_t object_index = 0;
   while (true) {
     const uint64_t position = stream.getPosition();
+    if (gzip && position > GzipInflateCap(file_bytes)) {
+      throw InputError(Located(path, 0, GzipInflateCapMessage(file_bytes)));
+    }
     mrpt::serialization::CSerializable::Ptr object;
     try {
       object = archive.ReadObject();
@@ -153,6 +170,12 @@ ReadState ReadObjects(const std::filesystem::path& path, const RawlogReadOptions
       // End of file between objects is the normal end; inside one it is a truncated file.
       if (stream.getPosition() == position) break;
       throw InputError(Located(path, 0, fmt::format("truncated rawlog: object {} ends early", object_index)));
+    } catch (const std::bad_alloc&) {
+      // MRPT allocates what an object declares before reading it; the process reading is limited in memory.
+      throw InputError(Located(path, 0,
+                               fmt::format("object {} cannot be read: it declares more data than memory allows for a "
+                                           "file of this size (the file is damaged or hostile)",
+                                           object_index)));
     } catch (const std::exception& failure) {
       // MRPT rethrows an end of file met inside a nested object as a plain exception saying "(EOF?)".
       const std::string cause = ExceptionText(failure.what());

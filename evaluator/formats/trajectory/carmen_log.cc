@@ -369,6 +369,9 @@ void InflateAndParse(const std::string& compressed, const std::filesystem::path&
     consumed += avail_in - z.stream.avail_in;
     const std::size_t fresh = avail_out - z.stream.avail_out;
     produced += fresh;
+    if (produced > GzipInflateCap(compressed.size())) {
+      throw InputError(Located(path, 0, GzipInflateCapMessage(compressed.size())));
+    }
     const std::size_t filled = held + fresh;
     const std::string_view text(window.data(), filled);
     const std::size_t last_newline = text.rfind('\n');

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
+#include <cstdint>
 #include <string>
 
 namespace slamsweep::evaluator {
@@ -54,6 +55,35 @@ TEST(GzipInflateTest, DamagedDataGivesNothingSoThatTheCallerCanSayWhere) {
   EXPECT_EQ(InflateWholeGzip(""), std::nullopt);
   EXPECT_TRUE(HasGzipMagic(member));
   EXPECT_FALSE(HasGzipMagic("\x1f"));
+}
+
+TEST(GzipInflateTest, TheCapIsAHundredTimesTheFileAndAtLeast16MiB) {
+  EXPECT_EQ(GzipInflateCap(0), std::size_t{16} << 20);
+  EXPECT_EQ(GzipInflateCap(1000), std::size_t{16} << 20);
+  EXPECT_EQ(GzipInflateCap(std::size_t{1} << 20), std::size_t{100} << 20);
+  EXPECT_EQ(GzipInflateCap(SIZE_MAX), SIZE_MAX);
+  EXPECT_EQ(GzipInflateCapMessage(2048),
+            "gzip data inflates to more than 16.0 MiB, the cap for a file of 2.0 KiB (100 times its size, at least "
+            "16.0 MiB)");
+}
+
+TEST(GzipInflateTest, DataBeyondTheCapGivesNothing) {
+  // 17 MiB of one byte compress to about 17 KiB: the cap is 16 MiB.
+  const std::string content(std::size_t{17} << 20, 'x');
+  const std::string member = GzipMember(content);
+  ASSERT_LT(member.size() * 100, std::size_t{16} << 20);
+  EXPECT_EQ(InflateWholeGzip(member), std::nullopt);
+  // Just under the cap is read.
+  const std::string under(std::size_t{16} << 20, 'x');
+  EXPECT_EQ(InflateWholeGzip(GzipMember(under)), under);
+}
+
+TEST(GzipInflateTest, ASizeFieldClaimingGigabytesIsNotBelieved) {
+  // ISIZE says 4 GiB - 1 for a member of a few bytes: the data is damaged (the size does not match) and is
+  // refused without a buffer of the claimed size.
+  std::string member = GzipMember("FLASER 3 1 2 3\n");
+  member.replace(member.size() - 4, 4, "\xff\xff\xff\xff");
+  EXPECT_EQ(InflateWholeGzip(member), std::nullopt);
 }
 
 }  // namespace

@@ -38,6 +38,19 @@ TEST(TextFileTest, ReadsPlainAndGzipTheSame) {
   EXPECT_EQ(ReadTextFile(dir / "packed.txt.gz"), content);
 }
 
+TEST(TextFileTest, GzipBeyondTheCapIsAnErrorNamingTheFileAndTheCap) {
+  testing::TempDir dir;
+  // 17 MiB of comment lines in a file of about 17 KiB: beyond the 16 MiB cap.
+  WriteGzip(dir / "bomb.log.gz", std::string(std::size_t{17} << 20, '#'));
+  try {
+    ReadTextFile(dir / "bomb.log.gz");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("bomb.log.gz"));
+    EXPECT_THAT(error.what(), HasSubstr("inflates to more than 16.0 MiB"));
+  }
+}
+
 TEST(TextFileTest, TruncatedGzipNamesTheFile) {
   testing::TempDir dir;
   std::string content;

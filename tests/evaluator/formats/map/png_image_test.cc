@@ -7,6 +7,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <png.h>
+#include <zlib.h>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -171,6 +172,22 @@ TEST(PngImageTest, CorruptDataNamesTheFileAndLibpngsReason) {
   EXPECT_THAT(message, HasSubstr("broken.png"));
   EXPECT_THAT(message, HasSubstr("not a readable image"));
   EXPECT_THAT(message, HasSubstr("IDAT"));  // libpng's reason names the damaged chunk
+}
+
+TEST(PngImageTest, AHeaderClaimingMorePixelsThanTheFileCanHoldIsRefusedBeforeAllocating) {
+  PngSpec grey{.width = 4, .height = 4};
+  grey.rows = RandomRows(4, 4, 3);
+  std::string bytes = WritePng(grey);
+  // IHDR (after the 8-byte signature and the chunk's length) says 100000 x 100000: 10 GB of pixels from a
+  // file of a hundred bytes. The chunk's CRC is made to match, so only the claim is wrong.
+  const std::size_t ihdr = bytes.find("IHDR");
+  ASSERT_NE(ihdr, std::string::npos);
+  for (std::size_t field : {ihdr + 4, ihdr + 8}) bytes.replace(field, 4, std::string("\x00\x01\x86\xa0", 4));
+  const uLong crc = crc32(0, reinterpret_cast<const Bytef*>(bytes.data() + ihdr), 17);
+  for (int i = 0; i < 4; ++i) bytes[ihdr + 17 + i] = static_cast<char>((crc >> (24 - 8 * i)) & 0xff);
+  const std::string message = InputErrorOf([&] { DecodePng(bytes, "huge.png"); });
+  EXPECT_THAT(message, HasSubstr("huge.png"));
+  EXPECT_THAT(message, HasSubstr("claims 100000 x 100000 pixels"));
 }
 
 TEST(PngImageTest, SixteenBitSamplesAreRefused) {

@@ -1,10 +1,13 @@
 #include "evaluator/formats/trajectory/carmen_log.h"
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <numbers>
+#include <string>
 
 #include "tests/evaluator/formats/trajectory/trajectory_test_util.h"
+#include "tests/support/shared_data.h"
 
 namespace slamsweep::evaluator {
 namespace {
@@ -149,6 +152,17 @@ TEST(CarmenLogTest, EmptyLogHasNoRecords) {
   const CarmenLog log = ParseCarmenLog("", "empty.log");
   EXPECT_TRUE(log.lasers.empty());
   EXPECT_TRUE(log.odometry.empty());
+}
+
+TEST(CarmenLogTest, GzipBeyondTheInflateCapIsAnErrorNamingTheFile) {
+  testing::TempDir dir;
+  const std::filesystem::path path = dir / "bomb.log.gz";
+  // 17 MiB of comment lines compress to about 17 KiB: beyond the 16 MiB cap.
+  const std::string comments(std::size_t{17} << 20, '#');
+  gzFile file = gzopen(path.c_str(), "wb");
+  gzwrite(file, comments.data(), static_cast<unsigned>(comments.size()));
+  gzclose(file);
+  ExpectInputError([&] { ReadCarmenLog(path); }, {"bomb.log.gz", "inflates to more than 16.0 MiB"});
 }
 
 }  // namespace
