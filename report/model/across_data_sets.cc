@@ -96,11 +96,17 @@ void ChooseDensest(std::vector<Eligible>& eligible, DataSetVerdict& verdict) {
       if (e == densest) continue;
       DataSetChoice& choice = verdict.data_sets[e->choice];
       choice.used = false;
-      choice.why = fmt::format(
-          "the same physical run as {} (both scored on {}): a run counts once, by its densest log "
-          "({}, against {} here)",
-          verdict.data_sets[densest->choice].table_title, std::filesystem::path(e->relations).filename().string(),
-          RateText(densest->rate), RateText(e->rate));
+      const std::string& kept = verdict.data_sets[densest->choice].table_title;
+      const std::string relations = std::filesystem::path(e->relations).filename().string();
+      choice.why = densest->rate ? fmt::format(
+                                       "the same physical run as {} (both scored on {}): a run counts once, by "
+                                       "its densest log ({}, against {} here)",
+                                       kept, relations, RateText(densest->rate), RateText(e->rate))
+                                 : fmt::format(
+                                       "the same physical run as {} (both scored on {}): a run counts once; "
+                                       "their runs did not record scan rates, so the first by name counts "
+                                       "(run them again to choose the densest)",
+                                       kept, relations);
     }
   }
 }
