@@ -94,6 +94,9 @@ int RunProgram(int argc, const char* const* argv, const Streams& streams, std::s
                std::span<const HelperCommand> helpers) {
   CLI::App app{"slamsweep: batch benchmarking of 2D laser SLAM", "slamsweep"};
   app.require_subcommand(1);
+  app.footer(
+      "The manual is docs/ of the slamsweep sources, arranged by task (docs/README.md): getting started, sweep "
+      "files, data, metrics, the report, the roster, the service, Jenkins.");
   app.set_version_flag("--version", "slamsweep " + std::string(orchestrator::SlamsweepRevision()));
   int exit_code = 0;
   CommandLine line(app, streams, exit_code);

@@ -1,6 +1,6 @@
 #pragma once
 // slamsweep is three programs built from the command files of this folder, so that a command loads
-// only the libraries it needs (README "Programs and libraries"):
+// only the libraries it needs (docs/programs-and-libraries.md):
 //   slamsweep        the core: light commands (trajectory metrics, plan, algorithms); it starts
 //                    the helpers for the other commands, passing the command line on unchanged;
 //   slamsweep-maps   map commands: eval map, eval map-compare, vectorize (OpenCV, libpng);

@@ -51,7 +51,7 @@ bool CanBuildHere() {
          fs::is_regular_file(fs::path(SLAMSWEEP_BUILD_TREE) / "CMakeCache.txt");
 }
 
-// What the user waits for, from the builds measured on 2 cores (README "The paper's roster").
+// What the user waits for, from the builds measured on 2 cores (docs/algorithms.md, "The paper's roster").
 std::string Estimate(const std::string& upstream) {
   const std::string cached = "seconds when ~/.cache/slamsweep holds its build";
   if (upstream == "cartographer")

@@ -13,7 +13,7 @@ set -euo pipefail
 build_packages=(
   # toolchain
   g++ cmake ninja-build pkg-config
-  # libraries (README "Dependencies" says why each is there)
+  # libraries (docs/development.md says why each is there)
   libeigen3-dev libopencv-dev nlohmann-json3-dev libyaml-cpp-dev libspdlog-dev libfmt-dev
   libcli11-dev zlib1g-dev libdeflate-dev libsqlite3-dev libboost-dev libboost-filesystem-dev libssl-dev
   # ROS 2 bags: MCAP chunks and rosbag2 compression (libzstd), MCAP lz4 chunks (liblz4's frame API)

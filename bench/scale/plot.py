@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The README's plot of bench/scale: time (run of the 4 shards, merge, report) and disk against runs, from
+"""The plot of bench/scale in docs/scale-and-cost.md: time (run of the 4 shards, merge, report) and disk against runs, from
 one or more results.json files of scale_bench.py (every size in them; a size measured twice keeps the
 last file's figures). Drawn by gnuplot (scripts/install-deps.sh installs it).
 

@@ -81,6 +81,10 @@ RunInputs PrepareRunInputs(const RunSpec& spec, const std::filesystem::path& cac
   inputs.truth.reference = std::move(sequence.reference);
   inputs.truth.relations = std::move(sequence.relations);
   inputs.truth.relations_outside_log = sequence.relations_outside_log;
+  inputs.sequence_record["scans"] = sequence.scans.size();
+  if (!sequence.scans.empty()) {
+    inputs.sequence_record["span_s"] = sequence.scans.back().stamp_s - sequence.scans.front().stamp_s;
+  }
   if (sequence.stamp_facts) inputs.sequence_record["stamps"] = ev::StampFactsJson(*sequence.stamp_facts);
   inputs.robot = ev::TakeRobotLog(sequence);
   return inputs;

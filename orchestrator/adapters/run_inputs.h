@@ -35,7 +35,8 @@ struct RunInputs {
   std::vector<std::string> warnings;
   /// The noise applied and its seeds, recorded in result.json so the input can be reproduced.
   nlohmann::json noise_record;
-  /// What the sequence is like (result.json "sequence"): "stamps" (evaluator StampFactsJson) when the
+  /// What the sequence is like (result.json "sequence"): "scans" and "span_s" (first to last scan: the
+  /// report takes the densest of several logs of one run), and "stamps" (evaluator StampFactsJson) when the
   /// reader records how it chose them.
   nlohmann::json sequence_record = nlohmann::json::object();
   /// The program's odometry equals the reference at every scan (a corrected log without odometry

@@ -1,6 +1,6 @@
 #pragma once
 
-// The sweep file format (every key, its default and meaning) is documented in configs/README.md.
+// The sweep file format (every key, its default and meaning) is documented in docs/sweep-files.md.
 
 #include <cstddef>
 #include <cstdint>
@@ -102,7 +102,7 @@ struct SweepConfigContext {
   InputPolicy policy;
 };
 
-/// Reads and validates a sweep file (format: configs/README.md). Everything is checked before anything runs:
+/// Reads and validates a sweep file (format: docs/sweep-files.md). Everything is checked before anything runs:
 /// unknown keys at every level, wrong types, missing catalog or sequence files (naming the entry, the
 /// file and its download hint), unknown adapters, command argv placeholders, include/exclude names,
 /// duplicate names. Errors are InputError "FILE:LINE:COLUMN: field.path: expected ..., got ...".

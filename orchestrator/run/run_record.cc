@@ -16,6 +16,19 @@ std::string RunRecord::MetricUnit(std::string_view metric_name, std::string_view
   return {};
 }
 
+std::optional<double> ScanRateOfResult(const nlohmann::json& result) {
+  const auto sequence = result.find("sequence");
+  if (sequence == result.end() || !sequence->is_object()) return std::nullopt;
+  const auto scans = sequence->find("scans");
+  const auto span = sequence->find("span_s");
+  if (scans == sequence->end() || span == sequence->end() || !scans->is_number() || !span->is_number()) {
+    return std::nullopt;
+  }
+  const double seconds = span->get<double>();
+  if (!(seconds > 0.0) || scans->get<double>() < 2.0) return std::nullopt;
+  return (scans->get<double>() - 1.0) / seconds;
+}
+
 void ReadResultFields(const nlohmann::json& result, RunRecord& run) {
   using nlohmann::json;
   const auto text = [&](const char* key) {
@@ -50,6 +63,7 @@ void ReadResultFields(const nlohmann::json& result, RunRecord& run) {
   run.finished_at = text("finished_at");
   run.command = strings("command");
   run.warnings = strings("warnings");
+  run.scan_rate_hz = ScanRateOfResult(result);
 }
 
 }  // namespace slamsweep::orchestrator::inline run

@@ -78,6 +78,9 @@ struct RunRecord {
   /// memory twice over.
   nlohmann::json metric_details = nlohmann::json::object();
   nlohmann::json run_spec = nlohmann::json::object();  ///< run.json as recorded (the resolved configuration)
+  /// Scans per second of the log the program got (ScanRateOfResult); absent for runs recorded before the worker
+  /// counted them. The report takes the densest of several logs of one physical run.
+  std::optional<double> scan_rate_hz;
   std::vector<std::string> warnings;
 
   /// From the database: result.json as the store keeps it (ResultsStore::RecordRun), the id of the sweep that
@@ -92,9 +95,12 @@ struct RunRecord {
   std::string MetricUnit(std::string_view metric, std::string_view statistic) const;
 };
 
+/// (scans - 1) / span_s of result.json's "sequence" record; absent when it has neither or the span is not positive.
+std::optional<double> ScanRateOfResult(const nlohmann::json& result);
+
 /// The record's fields that result.json holds as plain values (failure_kind, reason, exit_code, signal, wall_s,
-/// cpu_s, peak_rss_kb, started_at, finished_at, command, warnings), read leniently: a missing value, or one of another
-/// type than the worker writes, is left empty. The store reads its records' result.json this way.
+/// cpu_s, peak_rss_kb, started_at, finished_at, command, warnings, the scan rate), read leniently: a missing value, or
+/// one of another type than the worker writes, is left empty. The store reads its records' result.json this way.
 void ReadResultFields(const nlohmann::json& result, RunRecord& run);
 
 }  // namespace slamsweep::orchestrator::inline run

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "report/html/across_data_sets_section.h"
 #include "report/html/html.h"
 #include "report/html/map_figures.h"
 #include "report/html/number_format.h"
@@ -265,6 +266,8 @@ std::string RenderIndexPage(const SiteData& site) {
   Html body = Element("p", model.counts.failed + model.counts.unfinished > 0 ? "summary failures" : "summary",
                       E(CountsText(model.counts) + " over " + std::to_string(model.sequences.size()) +
                         " sequences and " + std::to_string(model.algorithms.size()) + " algorithms."));
+  // The first answer: which is better over every data set, before the downloads and the per-sequence rankings.
+  body += AcrossDataSetsSection(site.across_data_sets);
   Html downloads;
   if (site.has_summary_csv) {
     downloads +=
@@ -533,6 +536,8 @@ table.overview tr.best td { background: #d8f0d8; }
 table.overview tr.beside td { color: #555; font-style: italic; }
 td.num { text-align: right; white-space: nowrap; }
 p.verdict { font-weight: bold; }
+div.cd-diagram { overflow-x: auto; }
+table.across td:nth-child(2) { font-weight: bold; }
 ul.tests { font-size: 0.85em; color: #444; }
 )";
 }

@@ -12,6 +12,7 @@
 #include "report/images/map_comparison_types.h"
 #include "report/model/parameter_model.h"
 #include "report/model/segment_model.h"
+#include "report/model/across_data_sets.h"
 #include "report/model/significance.h"
 #include "report/model/sweep_model.h"
 #include "report/plots/algorithm_palette.h"
@@ -93,6 +94,8 @@ struct SiteData {
   const ReportLayout* layout = nullptr;
   /// Per table (parallel to model->sequences): the ranking and the significance of its best row.
   std::vector<TableSignificance> significance;
+  /// Per noise setting and odometry mode: the verdict across data sets (BuildAcrossDataSets).
+  std::vector<DataSetVerdict> across_data_sets;
   std::string title;               ///< the sweep's name ("slamsweep report — <result dir name>" without one)
   std::vector<RunArtifacts> runs;  ///< parallel to model->runs
   std::map<std::string, std::vector<PlotArtifact>> plots;  ///< by table key (SequenceModel::key)

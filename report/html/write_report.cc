@@ -68,6 +68,7 @@ ReportSummary WriteReport(const fs::path& result_dir, const fs::path& out_dir, c
   site.model = &model;
   site.layout = &layout;
   site.significance = BuildSignificance(model);
+  site.across_data_sets = BuildAcrossDataSets(model, site.significance);
   const AlgorithmPalette palette(model.algorithms);
   site.palette = &palette;
   fs::path normal = fs::absolute(result_dir).lexically_normal();

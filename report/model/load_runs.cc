@@ -181,6 +181,7 @@ void ReadResult(const std::filesystem::path& file, RunRecord& run) {
   }
   run.flags = orchestrator::RunFlagsOf(run.run_spec, result);
   run.warnings = OptionalStrings(result, "warnings", file);
+  run.scan_rate_hz = orchestrator::ScanRateOfResult(result);
   if (const auto it = result.find("outputs"); it != result.end() && !it->is_null()) {
     if (!it->is_object()) FieldError(file, "outputs", "an object");
     run.outputs.map = OptionalString(*it, "map", file);

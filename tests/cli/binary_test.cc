@@ -42,6 +42,7 @@ TEST(BinaryTest, HelpExitsZeroAndListsCommands) {
   EXPECT_EQ(result.exit_code, 0);
   EXPECT_THAT(result.out, ::testing::HasSubstr("eval"));
   EXPECT_THAT(result.out, ::testing::HasSubstr("vectorize"));
+  EXPECT_THAT(result.out, ::testing::HasSubstr("docs/README.md"));  // where the manual is
 }
 
 TEST(BinaryTest, UsageErrorsExitTwoWithNothingOnStdout) {
@@ -60,7 +61,7 @@ TEST(BinaryTest, VersionPrintsTheRevision) {
 
 TEST(BinaryTest, TheCoreLoadsNoHeavyLibrary) {
   // What the dynamic loader maps at start (ldd's way): the map, report, sweep and format libraries
-  // belong to the helpers and modules (README "Programs and libraries").
+  // belong to the helpers and modules (docs/programs-and-libraries.md).
   const ProcessResult result = RunBinary("--version", "LD_TRACE_LOADED_OBJECTS=1");
   EXPECT_THAT(result.out, ::testing::HasSubstr("libstdc++"));
   for (const char* heavy : {"opencv", "mrpt", "ros", "gdal", "assimp", "sqlite", "gif", "spdlog", "png"}) {

@@ -194,6 +194,34 @@ TEST_F(MapsBrowserTest, MapPanelsLoadUnderJenkinsCsp) {
   EXPECT_TRUE(testing::BrokenLinks(dir_ / "report").empty());
 }
 
+// The overview of a sweep shaped like the paper's opens with the verdict across data sets and its critical-
+// difference diagram (inline SVG); under Jenkins' CSP. Its screenshot is the README's (scripts/readme-screenshot.sh).
+class AcrossDataSetsBrowserTest : public BrowserTest {
+ protected:
+  std::vector<testing::FixtureRun> Runs() const override { return testing::PaperLikeFixtureRuns(); }
+};
+
+TEST_F(AcrossDataSetsBrowserTest, TheOverviewOpensWithTheVerdictAcrossDataSets) {
+  const fs::path screenshot = fs::path(SLAMSWEEP_ARTIFACT_DIR) / "report_overview_screenshot.png";
+  fs::remove(screenshot);
+  CheckPage("index.html", screenshot, 1500);
+  EXPECT_TRUE(fs::exists(screenshot));
+  std::cout << "screenshot of the overview: " << screenshot.string() << "\n";
+  RecordProperty("screenshot overview", screenshot.string());
+  // The DOM as the browser built it: the first section heading is the verdict across data sets, with its diagram.
+  const ChromiumPage dom = LoadInHeadlessChromium(base_url_ + "index.html", dir_.path(), "overview-dom", {});
+  ASSERT_TRUE(dom.finished);
+  const std::size_t first_h2 = dom.dom.find("<h2>");
+  ASSERT_NE(first_h2, std::string::npos);
+  const std::string heading = "<h2>Which is better overall?</h2>";
+  EXPECT_EQ(dom.dom.compare(first_h2, heading.size(), heading), 0) << dom.dom.substr(first_h2, 80);
+  const std::size_t diagram = dom.dom.find("<svg class=\"cd\"");
+  EXPECT_NE(diagram, std::string::npos);
+  EXPECT_LT(diagram, dom.dom.find("Which is better, and is the difference real?"));
+  EXPECT_NE(dom.dom.find("cartographer is better than hector"), std::string::npos);
+  EXPECT_EQ(dom.dom.find("<script"), std::string::npos);
+}
+
 // The detector itself: a page with an inline style must be reported, or a silent browser would
 // pass every check above.
 TEST_F(BrowserTest, InlineStyleIsReportedAsViolation) {

@@ -168,7 +168,9 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
          {{"name", run.sequence},
           {"format", "carmen"},
           {"path", "/data/" + run.sequence + ".clf"},
-          {"ground_truth", run.with_reference ? "reference.tum" : "none"}}},
+          {"ground_truth", !run.ground_truth.empty() ? run.ground_truth
+                           : run.with_reference      ? "reference.tum"
+                                                     : "none"}}},
         {"noise", {{"name", run.noise}, {"odometry", nullptr}, {"range", nullptr}}},
         {"iteration", run.iteration},
         {"seed", 1000 + run.iteration},
@@ -177,6 +179,7 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
     json written = spec;
     if (!run.build.is_null()) written["build"] = run.build;
     if (!run.odometry.empty()) written["group"]["odometry"] = run.odometry;
+    if (!run.relations_file.empty()) written["sequence"]["relations"] = run.relations_file;
     Write(run_dir / "run.json", written.dump(2));
     Write(run_dir / "command.txt", "fake-slam\n--input\ninput/log.clf\n");
     Write(run_dir / "log.txt", run.log);
@@ -194,6 +197,7 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
                    {"finished_at", "2026-11-22T05:00:03Z"},
                    {"command", {"fake-slam", "--input", "input/log.clf"}},
                    {"warnings", json::array()}};
+    if (run.scans > 0) result["sequence"] = {{"scans", run.scans}, {"span_s", run.span_s}};
     json metrics = json::array();
     json details = json::object();
     json outputs = {{"log", "log.txt"}};
@@ -299,6 +303,73 @@ std::vector<FixtureRun> StandardFixtureRuns() {
   single.corners = 12.0;
   single.enclosed_areas = 1.0;
   runs.push_back(single);
+  return runs;
+}
+
+std::vector<FixtureRun> PaperLikeFixtureRuns() {
+  // Means per data set (three iterations v - 0.001, v, v + 0.001 for the seeded, one for the others):
+  //                  intel-full-rate  fr079  simulated-floor      ranks            mean rank
+  //   cartographer        0.04        0.05       0.12             1   1    2        4/3
+  //   gmapping            0.05        0.06       0.10             2   2.5  1        5.5/3
+  //   vinyslam            0.07        0.06       0.20             3   2.5  3        8.5/3
+  //   tinyslam            0.09        0.10       0.30             4   4    4        4
+  //   hector              0.20        0.30       0.50             5   5    5        5
+  // intel-dense is the same run as intel-full-rate at 1 scan/s against 7.35 (hector best there: it must not
+  // count); mit-csail is scored by ATE against its corrected log only (it must not count either).
+  struct Row {
+    const char* algorithm;
+    int iterations;
+    double full_rate, dense, fr079, floor, csail;
+  };
+  const Row rows[] = {{"cartographer", 1, 0.04, 0.30, 0.05, 0.12, 0.5}, {"gmapping", 3, 0.05, 0.20, 0.06, 0.10, 0.4},
+                      {"vinyslam", 3, 0.07, 0.25, 0.06, 0.20, 0.3},     {"tinyslam", 3, 0.09, 0.15, 0.10, 0.30, 0.2},
+                      {"hector", 1, 0.20, 0.01, 0.30, 0.50, 0.1},       {"rbpf-slam", 3, 0.06, 0.10, 0.07, 0.15, 0.6},
+                      {"odometry", 1, 1.50, 1.50, 2.00, 3.00, 4.0}};
+  std::vector<FixtureRun> runs;
+  for (const Row& row : rows) {
+    for (int i = 0; i < row.iterations; ++i) {
+      const double jitter = row.iterations == 1 ? 0.0 : 0.001 * (i - 1);
+      const auto make = [&](const char* sequence) {
+        FixtureRun run = MakeRun(row.algorithm, sequence, i);
+        if (std::string(row.algorithm) == "odometry") run.adapter = "odometry";
+        return run;
+      };
+      FixtureRun full_rate = make("intel-full-rate");
+      full_rate.ground_truth = "relations_only";
+      full_rate.with_reference = false;
+      full_rate.relations_file = "/data/intel/intel.relations";
+      full_rate.relations_mean_m = row.full_rate + jitter;
+      full_rate.relations_used = 1033;
+      full_rate.scans = 8000;
+      full_rate.span_s = 1088.6;
+      runs.push_back(full_rate);
+      FixtureRun dense = make("intel-dense");
+      dense.ground_truth = "corrected_poses";
+      dense.relations_file = "/data/intel/intel.relations";
+      dense.ape_rmse_m = 2.0 * (row.dense + jitter);
+      dense.relations_mean_m = row.dense + jitter;
+      dense.relations_used = 1800;
+      dense.scans = 1089;
+      dense.span_s = 1088.6;
+      runs.push_back(dense);
+      FixtureRun fr079 = make("fr079");
+      fr079.ground_truth = "corrected_poses";
+      fr079.relations_file = "/data/fr079/fr079.relations";
+      fr079.ape_rmse_m = 2.0 * (row.fr079 + jitter);
+      fr079.relations_mean_m = row.fr079 + jitter;
+      fr079.relations_used = 500;
+      if (std::string(row.algorithm) == "rbpf-slam" && i == 2) fr079.ok = false;
+      runs.push_back(fr079);
+      FixtureRun floor = make("simulated-floor");
+      floor.ground_truth = "exact";
+      floor.ape_rmse_m = row.floor + jitter;
+      runs.push_back(floor);
+      FixtureRun csail = make("mit-csail");
+      csail.ground_truth = "corrected_poses";
+      csail.ape_rmse_m = row.csail + jitter;
+      runs.push_back(csail);
+    }
+  }
   return runs;
 }
 

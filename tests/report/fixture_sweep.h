@@ -26,6 +26,13 @@ struct FixtureRun {
   std::string failure_kind = "exit_code";    ///< used when !ok
   std::string reason = "killed by SIGSEGV";  ///< used when !ok
   bool with_reference = true;                ///< reference.tum written (and the ATE, when ape_rmse_m is set)
+  /// run.json's sequence.ground_truth ("exact", "corrected_poses", ...); "" writes the fixture's placeholder.
+  std::string ground_truth;
+  /// run.json's sequence.relations (the relations file: logs of one run share it); "" leaves it out.
+  std::string relations_file;
+  /// result.json's sequence record: scans and span_s (the scan rate); 0 leaves them out.
+  std::size_t scans = 0;
+  double span_s = 0.0;
   std::optional<double> ape_rmse_m;
   /// The relations metric (mean, and the counts the worker writes: n, not_covered, outside_log).
   std::optional<double> relations_mean_m;
@@ -54,6 +61,12 @@ struct FixtureRun {
   std::vector<double> segment_lengths_m;
   double segment_drift_pct = 1.0;
 };
+
+/// A sweep shaped like configs/paper.yaml for the verdict across data sets: relations on intel-full-rate (dense)
+/// and intel-dense (the same run, sparse), relations on fr079, ATE against exact ground truth on simulated-floor,
+/// ATE against a corrected log on mit-csail; five contestants, the odometry baseline, and rbpf-slam with a
+/// failed run on fr079. The values are in fixture_sweep.cc with the ranks worked out by hand.
+std::vector<FixtureRun> PaperLikeFixtureRuns();
 
 /// A successful run of `algorithm` on `sequence` with no metric yet.
 FixtureRun MakeRun(std::string algorithm, std::string sequence, int iteration);

@@ -9,6 +9,7 @@
 #include "evaluator/core/input_error.h"
 #include "orchestrator/adapters/odometry_adapter.h"
 #include "orchestrator/adapters/stage_image.h"
+#include "orchestrator/run/run_record.h"
 #include "tests/orchestrator/worker/run_spec_fixture.h"
 #include "tests/support/shared_data.h"
 
@@ -95,6 +96,16 @@ TEST(PrepareRunInputsTest, TheProgramGetsTheOdometryNeverTheReference) {
   }
   EXPECT_GT(largest_m, 0.01);
   EXPECT_FALSE(inputs.odometry_is_reference);
+  // result.json's sequence record: how many scans over how long, from which the report takes the densest log.
+  ASSERT_EQ(inputs.robot.scans.size(), 60u);
+  EXPECT_EQ(inputs.sequence_record.at("scans"), 60);
+  const double span_s = inputs.robot.scans.back().stamp_s - inputs.robot.scans.front().stamp_s;
+  EXPECT_DOUBLE_EQ(inputs.sequence_record.at("span_s").get<double>(), span_s);
+  const std::optional<double> rate = ScanRateOfResult(nlohmann::json{{"sequence", inputs.sequence_record}});
+  ASSERT_TRUE(rate);
+  EXPECT_DOUBLE_EQ(*rate, 59.0 / span_s);
+  EXPECT_FALSE(ScanRateOfResult(nlohmann::json{{"sequence", {{"scans", 1}, {"span_s", 0.0}}}}));
+  EXPECT_FALSE(ScanRateOfResult(nlohmann::json::object()));
 }
 
 TEST(OdometryAdapterTest, TheTrajectoryIsTheOdometryAndTheMapIsRenderedFromIt) {
