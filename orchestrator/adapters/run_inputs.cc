@@ -80,12 +80,18 @@ nlohmann::json ApplyRunNoise(ev::Sequence& sequence, const NoiseSpec& noise, std
 
 bool OdometryIsReference(const ev::Sequence& sequence) { return ev::OdometryEqualsReference(sequence); }
 
-RunInputs PrepareRunInputs(const RunSpec& spec) {
+ev::Sequence LoadRunSequence(const RunSpec& spec) {
   // run.json holds resolved paths: no ${VARIABLE} is left to expand.
   ev::Sequence sequence = ev::LoadCatalogSequence(spec.sequence.entry, {});
   if (spec.sequence.max_scans) sequence = CutSequence(std::move(sequence), *spec.sequence.max_scans);
   ev::ValidateSequence(sequence);
+  return sequence;
+}
+
+RunInputs PrepareRunInputs(const RunSpec& spec) {
+  ev::Sequence sequence = LoadRunSequence(spec);
   RunInputs inputs;
+  inputs.scan_spacing = ev::ComputeScanSpacing(sequence);
   inputs.noise_record = ApplyRunNoise(sequence, spec.noise, spec.seed);
   inputs.odometry_is_reference = OdometryIsReference(sequence);
   inputs.warnings = std::move(sequence.warnings);

@@ -11,6 +11,7 @@
 #include "evaluator/core/relation.h"
 #include "evaluator/core/trajectory.h"
 #include "evaluator/sequence/robot_log.h"
+#include "evaluator/sequence/scan_spacing.h"
 #include "evaluator/sequence/sequence.h"
 #include "orchestrator/run/run_spec.h"
 
@@ -35,6 +36,9 @@ struct RunInputs {
   /// The program's odometry equals the reference at every scan (a corrected log without odometry
   /// noise): the run measures an upper bound, not SLAM (OdometryIsReference).
   bool odometry_is_reference = false;
+  /// How far apart the scans the program is given are (after cutting, before noise: the data's density,
+  /// not the noise's); absent with fewer than two scans.
+  std::optional<evaluator::ScanSpacing> scan_spacing;
 };
 
 /// The words the report, summary and warnings use for a run whose odometry is the reference.
@@ -56,6 +60,10 @@ nlohmann::json ApplyRunNoise(evaluator::Sequence& sequence, const NoiseSpec& noi
 /// Whether the odometry is the reference: the reference has a pose at every scan's stamp and each
 /// equals the odometry pose there (within 1 um and 1 urad). Then a SLAM program is handed the answer.
 bool OdometryIsReference(const evaluator::Sequence& sequence);
+
+/// The run's sequence as the program's input starts from: loaded (LoadCatalogSequence: paths in run.json
+/// are already resolved), cut to max_scans and validated; no noise yet.
+evaluator::Sequence LoadRunSequence(const RunSpec& spec);
 
 /// Loads the run's sequence (LoadCatalogSequence: paths in run.json are already resolved), cuts
 /// and noises it, and splits it into the program's part and the truth. Every problem is an

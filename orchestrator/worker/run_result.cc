@@ -49,6 +49,7 @@ nlohmann::json ToJson(const RunResult& result) {
   json["noise"] = result.noise;
   json["odometry_is_reference"] =
       result.odometry_is_reference ? nlohmann::json(*result.odometry_is_reference) : nlohmann::json();
+  json["scan_spacing"] = result.scan_spacing ? evaluator::ScanSpacingJson(*result.scan_spacing) : nlohmann::json();
   json["sandbox"] = result.sandbox;
   json["flags"] = ToJson(result.flags);
   return json;

@@ -231,6 +231,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   result.warnings.insert(result.warnings.end(), inputs.warnings.begin(), inputs.warnings.end());
   result.noise = inputs.noise_record;
   result.odometry_is_reference = inputs.odometry_is_reference;
+  result.scan_spacing = inputs.scan_spacing;
   result.flags.Set(RunFlag::kOdometryIsReference, inputs.odometry_is_reference);
   if (inputs.odometry_is_reference) result.warnings.push_back(std::string(kOdometryIsReferenceWarning));
   // The adapter gets the robot's part only; inputs.truth stays here until the program has exited.

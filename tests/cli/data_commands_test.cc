@@ -11,6 +11,7 @@
 #include "evaluator/sequence_io/sequence_file.h"
 #include "tests/cli/run_cli.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/sparse_carmen_log.h"
 
 namespace slamsweep {
 namespace {
@@ -77,6 +78,44 @@ TEST(DataInfoCommandTest, Fr079ByPath) {
   // Its ODOM stream logs no backward step; the one warning says the scans' reversals were given back.
   ASSERT_EQ(info.at("warnings").size(), 1u);
   EXPECT_NE(info.at("warnings")[0].get<std::string>().find("without their sign"), std::string::npos);
+}
+
+TEST(DataInfoCommandTest, ScanSpacingIsPrintedAndSparseScansAreWarnedOf) {
+  testing::TempDir dir;
+  const auto log = testing::WriteFile(dir / "sparse.log", testing::SparseCarmenLog());
+  const auto json = RunCli({"data", "info", log.string(), "--json"});
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const nlohmann::json spacing = nlohmann::json::parse(json.out).at("scan_spacing");
+  EXPECT_EQ(spacing.at("steps"), 4);
+  EXPECT_NEAR(spacing.at("gap_s").at("median").get<double>(), testing::kSparseLogMedianGapS, 1e-9);
+  EXPECT_NEAR(spacing.at("gap_s").at("p95").get<double>(), testing::kSparseLogP95GapS, 1e-9);
+  EXPECT_NEAR(spacing.at("travel_m").at("median").get<double>(), testing::kSparseLogMedianTravelM, 1e-9);
+  EXPECT_NEAR(spacing.at("travel_m").at("p95").get<double>(), testing::kSparseLogP95TravelM, 1e-9);
+  EXPECT_NEAR(spacing.at("rotation_rad").at("median").get<double>(), testing::kSparseLogMedianRotationRad, 1e-9);
+  EXPECT_NEAR(spacing.at("rotation_rad").at("p95").get<double>(), testing::kSparseLogP95RotationRad, 1e-9);
+  EXPECT_EQ(spacing.at("motion_from"), "odometry poses at the scans");
+  EXPECT_EQ(spacing.at("too_sparse_for_scan_matching"), true);
+
+  const auto text = RunCli({"data", "info", log.string()});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("from the odometry poses at the scans"));
+  EXPECT_THAT(text.out, HasSubstr("time gap: 1.500 s / 2.000 s\n"));
+  EXPECT_THAT(text.out, HasSubstr("travel:   5.000 m / 10.950 m\n"));
+  EXPECT_THAT(text.out, HasSubstr("rotation: 0.150 rad / 0.470 rad\n"));
+  EXPECT_THAT(text.out, HasSubstr("warning: scans too far apart for scan matching"));
+
+  // The same path in 1 cm steps is dense, however slowly it was driven (scans 10 s apart).
+  std::string dense;
+  for (int i = 0; i < 5; ++i) {
+    const std::string x = std::to_string(0.01 * i);
+    const std::string stamp = std::to_string(10 * i);
+    dense += "FLASER 3 1.5 2.5 3.5 " + x + " 0 0 " + x + " 0 0 " + stamp + " host " + stamp + "\n";
+  }
+  const auto slow = RunCli({"data", "info", testing::WriteFile(dir / "slow.log", dense).string()});
+  ASSERT_EQ(slow.exit_code, 0) << slow.err;
+  EXPECT_THAT(slow.out, HasSubstr("time gap: 10.000 s / 10.000 s\n"));
+  EXPECT_THAT(slow.out, HasSubstr("dense enough for scan matching"));
+  EXPECT_THAT(slow.out, ::testing::Not(HasSubstr("warning: scans too far apart")));
 }
 
 TEST(DataInfoCommandTest, DistinctBeamCountsAreListed) {

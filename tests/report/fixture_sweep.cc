@@ -244,6 +244,7 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
         if (run.map_compare_details) details["map_compare"] = MapCompareDetails(run, dir);
       }
     }
+    if (!run.scan_spacing.is_null()) result["scan_spacing"] = run.scan_spacing;
     result["outputs"] = outputs;
     result["metrics"] = metrics;
     result["metric_details"] = details;

@@ -47,6 +47,8 @@ struct FixtureRun {
   /// segment_drift_<L>m mean and rpe_segments.csv with 20 segments per length around `segment_drift_pct`.
   std::vector<double> segment_lengths_m;
   double segment_drift_pct = 1.0;
+  /// result.json's scan_spacing block as written; null: left out, as by workers before the block.
+  nlohmann::json scan_spacing = nullptr;
 };
 
 /// A successful run of `algorithm` on `sequence` with no metric yet.

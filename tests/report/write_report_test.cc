@@ -514,5 +514,47 @@ TEST_F(WriteReportTest, TheIndexOpensWithTheRankedOverviewAndItsVerdict) {
   EXPECT_NE(index.find("only ground-truth-free metrics"), std::string::npos);  // mit-no-ref
 }
 
+TEST_F(WriteReportTest, ASequenceWhoseScansAreTooFarApartIsMarkedAndItsDensityShown) {
+  // intel's 910 keyframes, as the density study measured them; the other table 5 cm and 0.02 rad per scan.
+  const nlohmann::json keyframes = {{"steps", 909},
+                                    {"gap_s", {{"median", 2.9}, {"p95", 3.6}}},
+                                    {"travel_m", {{"median", 0.67}, {"p95", 1.04}}},
+                                    {"rotation_rad", {{"median", 0.38}, {"p95", 0.56}}},
+                                    {"odometry_moves", true}};
+  const nlohmann::json dense = {{"steps", 2724},
+                                {"gap_s", {{"median", 0.2}, {"p95", 0.5}}},
+                                {"travel_m", {{"median", 0.05}, {"p95", 0.12}}},
+                                {"rotation_rad", {{"median", 0.02}, {"p95", 0.1}}},
+                                {"odometry_moves", true}};
+  std::vector<testing::FixtureRun> runs = testing::StandardFixtureRuns();
+  for (testing::FixtureRun& run : runs) run.scan_spacing = run.sequence == "intel" ? keyframes : dense;
+  runs.push_back(testing::MakeRun("gmapping", "old-sweep", 0));  // recorded before the block
+  testing::WriteFixtureSweep(dir_ / "density", runs);
+  WriteReport(dir_ / "density", dir_ / "report", options_);
+
+  const std::string intel = ReadAll(dir_ / "report/sequences/intel-clean.html");
+  const std::size_t mark = intel.find("<p class=\"sparse-data\">Sparse data: scans too far apart for scan matching");
+  ASSERT_NE(mark, std::string::npos) << intel;
+  EXPECT_LT(mark, intel.find("<table>"));  // above the tables it qualifies
+  EXPECT_NE(intel.find("0.67 m and 0.38 rad apart at the median"), std::string::npos);
+  EXPECT_NE(intel.find("<h2>Data density</h2>"), std::string::npos);
+  EXPECT_NE(intel.find("<th>Travel (m)</th><td class=\"num\">0.67</td><td class=\"num\">1.04</td>"),
+            std::string::npos)
+      << intel;
+  EXPECT_NE(intel.find("<th>Time gap (s)</th><td class=\"num\">2.9</td><td class=\"num\">3.6</td>"),
+            std::string::npos);
+  EXPECT_NE(intel.find("909 steps"), std::string::npos);
+  EXPECT_NE(ReadAll(dir_ / "report/index.html").find("<p class=\"sparse-data\">"), std::string::npos);
+
+  const std::string other = ReadAll(dir_ / "report/sequences/mit-no-ref-clean.html");
+  EXPECT_EQ(other.find("sparse-data"), std::string::npos);
+  EXPECT_NE(other.find("Dense enough for scan matching"), std::string::npos);
+  EXPECT_NE(ReadAll(dir_ / "report/sequences/old-sweep-clean.html").find("Not recorded"), std::string::npos);
+
+  // The mark is styled by the site's stylesheet, never inline.
+  EXPECT_EQ(AllPages().find(" style="), std::string::npos);
+  EXPECT_NE(ReadAll(dir_ / "report/style.css").find("p.sparse-data"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace slamsweep::report
