@@ -70,6 +70,7 @@ struct SourceOptions {
   std::string catalog;
   evaluator::SequenceReadOptions read;
   std::string odometry;
+  std::string ground_truth;
 };
 
 void AddSourceOptions(CLI::App& command, SourceOptions& options) {
@@ -85,12 +86,19 @@ void AddSourceOptions(CLI::App& command, SourceOptions& options) {
                   "where there is none), or the logged odometry, which in a corrected log is the reference "
                   "(default: recorded where the log has the stream)")
       ->check(CLI::IsMember({"recorded", "reference"}));
+  command.add_option("--ground-truth", options.ground_truth,
+                     "corrected_poses | exact | relations_only | none: the sequence's reference (a catalog entry's is "
+                     "replaced). A CARMEN log under relations_only or none is raw: its logged pose is the robot's "
+                     "odometry, and there is no reference trajectory (default for a CARMEN file: corrected_poses, "
+                     "the logged pose is the reference)");
 }
 
 ev::Sequence LoadSource(const SourceOptions& options) {
   std::optional<ev::OdometryMode> odometry;
   if (!options.odometry.empty()) odometry = ev::ParseOdometryMode(options.odometry, "--odometry");
-  return LoadSequenceArgument(options.source, FindCatalog(options.catalog), options.read, odometry);
+  std::optional<ev::GroundTruthKind> ground_truth;
+  if (!options.ground_truth.empty()) ground_truth = ev::ParseGroundTruthKind(options.ground_truth, "--ground-truth");
+  return LoadSequenceArgument(options.source, FindCatalog(options.catalog), options.read, odometry, ground_truth);
 }
 
 nlohmann::json InfoJson(const ev::Sequence& sequence) {
@@ -115,6 +123,8 @@ nlohmann::json InfoJson(const ev::Sequence& sequence) {
       !recorded ? 0
                 : (sequence.odometry_readings.empty() ? sequence.odometry.size() : sequence.odometry_readings.size());
   info["relations"] = sequence.relations ? sequence.relations->size() : 0;
+  info["relations_outside_log"] = sequence.relations_outside_log;
+  if (sequence.stamp_facts) info["stamps"] = ev::StampFactsJson(*sequence.stamp_facts);
   const std::optional<ev::ScanSpacing> spacing = ev::ComputeScanSpacing(sequence);
   info["scan_spacing"] = spacing ? ev::ScanSpacingJson(*spacing) : nlohmann::json();
   info["warnings"] = sequence.warnings;
@@ -345,6 +355,58 @@ ClockSources ResolveClockSources(const std::string& source, const std::string& c
   return sources;
 }
 
+/// What a clock fit pairs relation stamps with: a corrected log's ODOM stream (one reading per raw scan), or
+/// a raw log's own laser records (each scan with its odometry), whose stamps are the raw scans'.
+struct ClockReadings {
+  bool raw = false;
+  std::vector<double> logged_stamps_s;
+  /// The odometry at the readings as logged (chosen stamps), for the odometry fit.
+  ev::Trajectory odometry;
+  /// The scans on the same clock, with the odometry that moves relation ends onto them (the scan fit).
+  ev::Sequence sequence;
+  ev::Trajectory scan_odometry;
+};
+
+ClockReadings ClockReadingsOf(const ev::CarmenLog& log, const std::filesystem::path& path) {
+  std::vector<const ev::CarmenLaserRecord*> scans;
+  for (const ev::CarmenLaserRecord& record : log.lasers) {
+    if (record.type == "FLASER") scans.push_back(&record);
+  }
+  ClockReadings readings;
+  ev::CarmenSequenceOptions scan_options;
+  if (log.odometry.empty()) {
+    // No ODOM stream: a raw log, whose laser records carry the raw scans' stamps and the odometry.
+    readings.raw = true;
+    scan_options.logged_pose_is_reference = false;
+    for (const ev::CarmenLaserRecord* scan : scans) readings.logged_stamps_s.push_back(scan->ipc_stamp_s);
+    readings.sequence = ev::CarmenLogToSequence(log, path, scan_options);
+    readings.odometry = readings.sequence.odometry;
+    readings.scan_odometry = readings.sequence.odometry;
+    return readings;
+  }
+  ev::RecordedOdometry odometry = ev::RebuildRecordedOdometry(log, scans, path, {});
+  readings.logged_stamps_s = std::move(odometry.logged_stamps_s);
+  readings.odometry = std::move(odometry.readings);
+  scan_options.odometry = ev::OdometryMode::kRecorded;
+  readings.sequence = ev::CarmenLogToSequence(log, path, scan_options);
+  readings.scan_odometry = readings.sequence.odometry_readings;
+  return readings;
+}
+
+/// The relations whose both stamps the stamp fit maps inside the readings' span.
+ev::Relations InsideTheReadings(const ev::Relations& relations, const ev::RelationsClockFit& fit,
+                                const ev::Trajectory& readings) {
+  ev::Relations inside;
+  const double first_s = readings.StartS();
+  const double last_s = readings.EndS();
+  for (const ev::Relation& relation : relations) {
+    const double t1 = fit.rate * relation.t1_s + fit.offset_s;
+    const double t2 = fit.rate * relation.t2_s + fit.offset_s;
+    if (std::min(t1, t2) >= first_s && std::max(t1, t2) <= last_s) inside.push_back(relation);
+  }
+  return inside;
+}
+
 void RegisterRelationsClock(CLI::App& data, const Streams& streams) {
   struct Options {
     std::string source;
@@ -355,51 +417,56 @@ void RegisterRelationsClock(CLI::App& data, const Streams& streams) {
   auto options = std::make_shared<Options>();
   CLI::App* command = data.add_subcommand(
       "relations-clock",
-      "fit the map from a relations file's clock onto a corrected CARMEN log's, from time stamps alone: relation "
-      "stamps against the raw-scan stamps of the log's ODOM stream (an offset and a rate)");
-  command->add_option("SOURCE", options->source, "corrected CARMEN log, or catalog name")->required();
+      "fit the map from a relations file's clock onto a CARMEN log's: relation stamps against the raw-scan stamps "
+      "of a corrected log's ODOM stream, or of a raw log's laser records; then from its odometry and its scans "
+      "(an offset and a rate each)");
+  command->add_option("SOURCE", options->source, "CARMEN log (corrected or raw), or catalog name")->required();
   command->add_option("--relations", options->relations, "relations file (default: the catalog entry's)");
   command->add_option("--catalog", options->catalog, "dataset catalog (default: configs/datasets.yaml)");
   command->add_flag("--json", options->json, "print one JSON object");
   command->callback([options, streams] {
     const ClockSources sources = ResolveClockSources(options->source, options->catalog, options->relations);
     const ev::CarmenLog log = ev::ReadCarmenLog(sources.log);
-    std::vector<const ev::CarmenLaserRecord*> scans;
-    for (const ev::CarmenLaserRecord& record : log.lasers) {
-      if (record.type == "FLASER") scans.push_back(&record);
-    }
-    const ev::RecordedOdometry odometry = ev::RebuildRecordedOdometry(log, scans, sources.log, {});
+    const ClockReadings readings = ClockReadingsOf(log, sources.log);
     std::vector<double> relation_stamps;
-    for (const ev::Relation& relation : ev::ReadRelations(sources.relations)) {
+    const ev::Relations relations = ev::ReadRelations(sources.relations);
+    for (const ev::Relation& relation : relations) {
       relation_stamps.push_back(relation.t1_s);
       relation_stamps.push_back(relation.t2_s);
     }
-    const ev::RelationsClockFit fit = ev::FitRelationsClock(relation_stamps, odometry.logged_stamps_s);
-    const ev::Relations relations = ev::ReadRelations(sources.relations);
-    const ev::SearchedClockFit by_odometry = ev::FitRelationsClockByOdometry(relations, odometry.readings);
-    ev::CarmenSequenceOptions scan_options;
-    scan_options.odometry = ev::OdometryMode::kRecorded;
-    const ev::Sequence sequence = ev::CarmenLogToSequence(log, sources.log, scan_options);
+    const ev::RelationsClockFit fit = ev::FitRelationsClock(relation_stamps, readings.logged_stamps_s);
+    // A log of part of a run: the searches weigh the relations that the stamp fit puts inside the readings.
+    const ev::Relations inside = InsideTheReadings(relations, fit, readings.odometry);
+    const ev::SearchedClockFit by_odometry = ev::FitRelationsClockByOdometry(inside, readings.odometry);
     const double odometry_middle_s = 0.5 * (by_odometry.first_half_offset_s + by_odometry.second_half_offset_s);
     const ev::SearchedClockFit by_scans =
-        ev::FitRelationsClockByScans(relations, sequence.scans, sequence.odometry_readings, odometry_middle_s);
+        ev::FitRelationsClockByScans(inside, readings.sequence.scans, readings.scan_odometry, odometry_middle_s);
     nlohmann::json out = fit.ToJson();
     out["by_odometry"] = by_odometry.ToJson();
     out["by_scans"] = by_scans.ToJson();
     out["log"] = sources.log.string();
     out["relations"] = sources.relations.string();
-    out["readings"] = odometry.logged_stamps_s.size();
+    out["readings"] = readings.logged_stamps_s.size();
+    out["readings_from"] = readings.raw ? "laser records" : "ODOM stream";
+    out["relations_inside"] = inside.size();
+    out["relations_in_file"] = relations.size();
     if (options->json) {
       streams.out << out.dump() << "\n";
       return;
     }
     streams.out << fmt::format(
-        "from time stamps (relation stamps paired with the ODOM readings' stamps):\n"
+        "from time stamps (relation stamps paired with the {} stamps):\n"
         "relations_rate: {:.12g}\nrelations_offset_s: {:.12g}\n{} of {} relation stamps paired with a reading within "
         "{:.3f} s (half the readings' median spacing), {} within 10 ms; residual rms {:.4f} s, max {:.4f} s; the rate "
         "takes up {:.4f} s of drift over the relations' span\n",
-        fit.rate, fit.offset_s, fit.matched, fit.stamps, fit.tolerance_s, fit.matched_within_10ms, fit.rms_residual_s,
-        fit.max_abs_residual_s, fit.drift_over_span_s);
+        readings.raw ? "laser records'" : "ODOM readings'", fit.rate, fit.offset_s, fit.matched, fit.stamps,
+        fit.tolerance_s, fit.matched_within_10ms, fit.rms_residual_s, fit.max_abs_residual_s, fit.drift_over_span_s);
+    if (inside.size() < relations.size()) {
+      streams.out << fmt::format(
+          "{} of the {} relations lie inside the log under this map: the fits below weigh those (the log holds part "
+          "of the run)\n",
+          inside.size(), relations.size());
+    }
     streams.out << fmt::format(
         "from the recorded odometry (relations' rotations against the odometry's; inherits any lag of the odometry):\n"
         "relations_rate: {:.12g}\nrelations_offset_s: {:.12g}\n{} short relations turn as the odometry does within "

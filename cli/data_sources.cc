@@ -35,11 +35,20 @@ CatalogLocation FindCatalog(const std::string& catalog_option) {
 }
 
 ev::Sequence LoadSequenceArgument(const std::string& argument, const CatalogLocation& location,
-                                  const ev::SequenceReadOptions& read_options,
-                                  std::optional<ev::OdometryMode> odometry) {
+                                  const ev::SequenceReadOptions& read_options, std::optional<ev::OdometryMode> odometry,
+                                  std::optional<ev::GroundTruthKind> ground_truth) {
   std::error_code error;
   if (std::filesystem::is_regular_file(argument, error)) {
     ev::SequenceReadOptions options = read_options;
+    if (ground_truth) {
+      ev::CatalogEntry declared;
+      declared.ground_truth = *ground_truth;
+      options.carmen.logged_pose_is_reference = ev::LoggedPoseIsReference(declared);
+    }
+    if (odometry == ev::OdometryMode::kReference && !options.carmen.logged_pose_is_reference) {
+      throw ev::InputError("--odometry reference: " + argument +
+                           " is declared raw (--ground-truth): its logged pose is its only odometry");
+    }
     options.carmen.odometry = odometry.value_or(ev::OdometryMode::kRecorded);
     options.carmen.require_recorded_odometry = odometry.has_value();
     return ev::ReadSequence(argument, options);
@@ -54,6 +63,7 @@ ev::Sequence LoadSequenceArgument(const std::string& argument, const CatalogLoca
   for (const ev::CatalogEntry& entry : catalog.entries) {
     if (entry.name == argument) {
       ev::CatalogEntry chosen = entry;
+      if (ground_truth) chosen.ground_truth = *ground_truth;
       if (odometry) {
         if (*odometry == ev::OdometryMode::kReference && !ev::OdometryModeApplies(entry)) {
           throw ev::InputError("--odometry reference: sequence '" + argument +

@@ -28,8 +28,14 @@ CatalogLocation FindCatalog(const std::string& catalog_option);
 /// is the odometry mode asked for explicitly (a corrected log without an ODOM stream is then an
 /// error naming the line); unset, a file is read as the catalog reads its entries by default: with
 /// its recorded odometry where it has a stream, else its logged odometry and a warning.
+/// `ground_truth`, when set, is the kind of reference the sequence has (a catalog entry's is replaced):
+/// for a CARMEN log, relations_only or none declare it raw (catalog LoggedPoseIsReference). Unset, a
+/// CARMEN file is read as a corrected log (its logged pose is the reference), which a raw log cannot be
+/// told apart from: the safe side, since a corrected log read as raw would hand programs its corrected
+/// poses as odometry with no reference to flag it.
 evaluator::Sequence LoadSequenceArgument(const std::string& argument, const CatalogLocation& location,
                                          const evaluator::SequenceReadOptions& read_options = {},
-                                         std::optional<evaluator::OdometryMode> odometry = std::nullopt);
+                                         std::optional<evaluator::OdometryMode> odometry = std::nullopt,
+                                         std::optional<evaluator::GroundTruthKind> ground_truth = std::nullopt);
 
 }  // namespace slamsweep::cli

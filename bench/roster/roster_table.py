@@ -57,11 +57,11 @@ def main():
         peak = "-" if not rss else "%.0f" % (sum(rss) / len(rss) / 1024)
         ate_mean, ate_std = mean_std([v for v in (number(r.get("ape_trans.rmse")) for r in ok) if v is not None])
         # The relations error: mean over the relations of each run (its own std is the spread over
-        # relations), averaged over runs; coverage = used / (used + skipped).
+        # relations), averaged over runs; coverage = used / (used + not_covered).
         rel = [v for v in (number(r.get("relations_trans.mean")) for r in ok) if v is not None]
         rel_std = [v for v in (number(r.get("relations_trans.std")) for r in ok) if v is not None]
         used = [v for v in (number(r.get("relations_trans.n")) for r in ok) if v is not None]
-        skipped = [v for v in (number(r.get("relations_trans.skipped")) for r in ok) if v is not None]
+        skipped = [v for v in (number(r.get("relations_trans.not_covered")) for r in ok) if v is not None]
         if rel:
             coverage = sum(used) / max(1.0, sum(used) + sum(skipped))
             relations = "%.4f +- %.4f (%.1f %%)" % (mean_std(rel)[0], mean_std(rel_std)[0], 100.0 * coverage)

@@ -10,6 +10,7 @@
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
 #include "evaluator/sequence/corrected_log_clock.h"
+#include "evaluator/sequence/sequence_cut.h"
 #include "evaluator/simulation/simulated_sequence.h"
 
 namespace slamsweep::evaluator::inline catalog {
@@ -83,6 +84,17 @@ std::size_t Count(const std::filesystem::path& source, const YAML::Node& node, s
   return std::stoul(text);
 }
 
+std::array<double, 2> ParseWindow(const std::filesystem::path& source, const YAML::Node& node, std::string_view key) {
+  if (!node.IsSequence() || node.size() != 2) {
+    Fail(source, node, fmt::format("{}: expected [from, to], two stamps in seconds", key));
+  }
+  const std::array<double, 2> window{Number(source, node[0], key), Number(source, node[1], key)};
+  if (!(window[0] < window[1])) {
+    Fail(source, node, fmt::format("{}: expected from < to, got [{}, {}]", key, window[0], window[1]));
+  }
+  return window;
+}
+
 CorrectedLogLink ParseCorrectedLog(const std::filesystem::path& source, const YAML::Node& node) {
   if (!node.IsMap()) Fail(source, node, "corrected_log: expected a map with path, first_reading and every");
   CorrectedLogLink link;
@@ -125,17 +137,10 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
     } else if (key == "path") {
       entry.path = Scalar(source, value, key);
     } else if (key == "ground_truth") {
-      const std::string text = Scalar(source, value, key);
-      bool known = false;
-      for (GroundTruthKind kind : kGroundTruthKinds) {
-        if (text == GroundTruthKindName(kind)) {
-          entry.ground_truth = kind;
-          known = true;
-        }
-      }
-      if (!known) {
-        Fail(source, value,
-             fmt::format("ground_truth: expected corrected_poses, exact, relations_only or none, got '{}'", text));
+      try {
+        entry.ground_truth = ParseGroundTruthKind(Scalar(source, value, key), key);
+      } catch (const InputError& error) {
+        Fail(source, value, error.what());
       }
       has_ground_truth = true;
     } else if (key == "relations") {
@@ -147,6 +152,8 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
     } else if (key == "relations_rate") {
       entry.relations_rate = Number(source, value, key);
       if (!(entry.relations_rate > 0.0)) Fail(source, value, "relations_rate: expected a clock rate > 0");
+    } else if (key == "relations_window") {
+      entry.relations_window_s = ParseWindow(source, value, key);
     } else if (key == "odometry") {
       try {
         entry.odometry = ParseOdometryMode(Scalar(source, value, key), "odometry");
@@ -185,8 +192,8 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
     } else {
       Fail(source, item.first,
            fmt::format("unknown key '{}' (expected name, format, path, ground_truth, relations, relations_offset_s, "
-                       "relations_rate, odometry, max_range_m, stamp_policy, citation, licence, download, simulation, "
-                       "reference_map, corrected_log, notes)",
+                       "relations_rate, relations_window, odometry, max_range_m, stamp_policy, citation, licence, "
+                       "download, simulation, reference_map, corrected_log, notes)",
                        key));
     }
   }
@@ -200,6 +207,9 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
       Fail(source, node, fmt::format("sequence '{}': a simulated sequence has no corrected_log", entry.name));
   } else if (entry.path.empty()) {
     Fail(source, node, fmt::format("sequence '{}': no path", entry.name));
+  }
+  if (entry.relations_window_s && entry.relations_path.empty()) {
+    Fail(source, node, fmt::format("sequence '{}': relations_window without relations", entry.name));
   }
   if (entry.odometry == OdometryMode::kReference && !OdometryModeApplies(entry)) {
     Fail(
@@ -222,10 +232,29 @@ std::filesystem::path RequireFile(const CatalogEntry& entry, std::string_view wh
   return path;
 }
 
+/// The entry's provenance where the reader found none, its relations window's cut, and its relations
+/// outside the log counted.
+Sequence Finished(Sequence sequence, const CatalogEntry& entry) {
+  if (sequence.provenance.citation.empty()) sequence.provenance.citation = entry.citation;
+  if (sequence.provenance.licence_note.empty()) sequence.provenance.licence_note = entry.licence_note;
+  sequence.provenance.notes = entry.notes;
+  if (entry.relations_window_s) {
+    const auto [from_s, to_s] = *entry.relations_window_s;
+    sequence = KeepTimeSpan(std::move(sequence), entry.relations_rate * from_s + entry.relations_offset_s,
+                            entry.relations_rate * to_s + entry.relations_offset_s);
+  }
+  KeepRelationsInsideLog(sequence);
+  return sequence;
+}
+
 }  // namespace
 
 bool OdometryModeApplies(const CatalogEntry& entry) {
   return entry.format == "carmen" && entry.ground_truth == GroundTruthKind::kCorrectedPoses;
+}
+
+bool LoggedPoseIsReference(const CatalogEntry& entry) {
+  return entry.ground_truth == GroundTruthKind::kCorrectedPoses || entry.ground_truth == GroundTruthKind::kExact;
 }
 
 OdometryMode EffectiveOdometryMode(const CatalogEntry& entry) {
@@ -244,6 +273,15 @@ std::string_view GroundTruthKindName(GroundTruthKind kind) {
       return "none";
   }
   return "none";
+}
+
+GroundTruthKind ParseGroundTruthKind(std::string_view text, std::string_view option) {
+  std::string names;
+  for (GroundTruthKind kind : kGroundTruthKinds) {
+    if (text == GroundTruthKindName(kind)) return kind;
+    names += (names.empty() ? "" : ", ") + std::string(GroundTruthKindName(kind));
+  }
+  throw InputError(fmt::format("{}: expected one of {}, got '{}'", option, names, text));
 }
 
 Catalog ParseCatalog(std::string_view yaml_text, const std::filesystem::path& source) {
@@ -337,6 +375,8 @@ Sequence LoadCatalogSequence(const CatalogEntry& entry, const CatalogVariables& 
   SequenceReadOptions options;
   options.name = entry.name;
   options.carmen.max_range_m = entry.max_range_m;
+  options.carmen.logged_pose_is_reference = LoggedPoseIsReference(entry);
+  options.carmen.relations_window_s = entry.relations_window_s;
   options.carmen.stamps.policy = ParseStampPolicy(entry.stamp_policy, "stamp_policy");
   options.carmen.odometry = EffectiveOdometryMode(entry);
   // The catalog's default falls back to the logged odometry (with a warning) where a log has no stream.
@@ -351,6 +391,7 @@ Sequence LoadCatalogSequence(const CatalogEntry& entry, const CatalogVariables& 
     const std::filesystem::path corrected_path =
         RequireFile(entry, "corrected log", entry.corrected_log->path, variables);
     SequenceReadOptions corrected_options = options;
+    corrected_options.carmen.logged_pose_is_reference = true;
     corrected_options.carmen.odometry = OdometryMode::kRecorded;
     corrected_options.carmen.require_recorded_odometry = true;
     corrected_options.carmen.relations_path = relations_path;
@@ -360,19 +401,12 @@ Sequence LoadCatalogSequence(const CatalogEntry& entry, const CatalogVariables& 
     Sequence sequence = ReadSequence(path, options);
     TakeClockFromCorrectedLog(sequence, std::move(corrected), entry.corrected_log->first_scan,
                               entry.corrected_log->first_reading, entry.corrected_log->every, corrected_path);
-    if (sequence.provenance.citation.empty()) sequence.provenance.citation = entry.citation;
-    if (sequence.provenance.licence_note.empty()) sequence.provenance.licence_note = entry.licence_note;
-    sequence.provenance.notes = entry.notes;
-    return sequence;
+    return Finished(std::move(sequence), entry);
   }
   options.carmen.relations_path = relations_path;
   options.carmen.relations_offset_s = entry.relations_offset_s;
   options.carmen.relations_rate = entry.relations_rate;
-  Sequence sequence = ReadSequence(path, options);
-  if (sequence.provenance.citation.empty()) sequence.provenance.citation = entry.citation;
-  if (sequence.provenance.licence_note.empty()) sequence.provenance.licence_note = entry.licence_note;
-  sequence.provenance.notes = entry.notes;
-  return sequence;
+  return Finished(ReadSequence(path, options), entry);
 }
 
 }  // namespace slamsweep::evaluator::inline catalog

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <map>
@@ -29,6 +30,8 @@ enum class GroundTruthKind {
 
 /// "corrected_poses", "exact", "relations_only", "none".
 std::string_view GroundTruthKindName(GroundTruthKind kind);
+/// Inverse of GroundTruthKindName; InputError naming `option` and the accepted names otherwise.
+GroundTruthKind ParseGroundTruthKind(std::string_view text, std::string_view option = "ground_truth");
 
 /// The corrected CARMEN log of the same run as a subsampled log (MRPT's every-5th-scan intel rawlog):
 /// its recorded ODOM readings, one per raw scan, give the subsampled log's scan first_scan + j the
@@ -56,6 +59,10 @@ struct CatalogEntry {
   std::string relations_path;
   double relations_offset_s = 0.0;
   double relations_rate = 1.0;
+  /// [from, to] in seconds on the relations file's own clock: the sequence is the part of the log between
+  /// them (scans by the clock map above), scored on the relations with both stamps inside. Several logs of
+  /// one run (keyframes, every 5th scan, every scan) cut to one window are scored on the same relations.
+  std::optional<std::array<double, 2>> relations_window_s;
   /// Which odometry a program gets from a corrected CARMEN log (OdometryMode); unset: the catalog's
   /// default, recorded where the log has an ODOM stream (EffectiveOdometryMode). Set explicitly,
   /// "recorded" on a log without such a stream is an error.
@@ -91,6 +98,12 @@ struct Catalog {
 /// are the corrected poses (ground_truth corrected_poses). Only there does the odometry mode matter.
 bool OdometryModeApplies(const CatalogEntry& entry);
 
+/// Whether a CARMEN log's logged pose (FLASER x y theta, ROBOTLASER1 robot pose) is its reference: only
+/// under ground_truth corrected_poses (the Radish/Freiburg logs, GMapping's output) or exact. Under
+/// relations_only or none the log is raw: the logged pose is the robot's odometry and there is no
+/// reference trajectory.
+bool LoggedPoseIsReference(const CatalogEntry& entry);
+
 /// The odometry mode runs on `entry` use: its `odometry`, else "recorded". Entries where the mode
 /// does not apply (OdometryModeApplies) have only their recorded odometry: "recorded".
 OdometryMode EffectiveOdometryMode(const CatalogEntry& entry);
@@ -102,7 +115,7 @@ using CatalogVariables = std::map<std::string, std::string, std::less<>>;
 /// hold YAML anchors shared by entries), a list of maps with the
 /// fields of CatalogEntry (name, format, path, ground_truth, relations, relations_offset_s,
 /// max_range_m, stamp_policy, citation, licence, download, simulation, reference_map, relations_rate,
-/// odometry, corrected_log, notes). An unknown key, a missing
+/// relations_window, odometry, corrected_log, notes). An unknown key, a missing
 /// name/format/ground_truth, a duplicate name or a value of the wrong kind is an InputError
 /// "FILE:LINE: ..." at the offending node.
 Catalog ParseCatalog(std::string_view yaml_text, const std::filesystem::path& source);

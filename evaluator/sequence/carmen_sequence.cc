@@ -13,7 +13,9 @@
 #include "evaluator/sequence/flaser_fan.h"
 #include "evaluator/sequence/odometry_direction.h"
 #include "evaluator/sequence/provenance_file.h"
+#include "evaluator/sequence/record_order_check.h"
 #include "evaluator/sequence/recorded_odometry.h"
+#include "evaluator/sequence/relation_stamps.h"
 #include "evaluator/sequence/robot_log.h"
 
 namespace slamsweep::evaluator::inline sequence {
@@ -83,21 +85,27 @@ double FlaserMaxRange(const CarmenLog& log, const std::filesystem::path& source,
   return from_param.value_or(options.default_max_range_m);
 }
 
-/// Strictly increasing scan stamps from the records' ipc_timestamp, with a warning when they had to change.
-std::vector<double> ScanStampsOf(const std::vector<const CarmenLaserRecord*>& records,
-                                 const std::filesystem::path& source, const StampOptions& options,
-                                 std::vector<std::string>& warnings) {
+/// The laser records' ipc_timestamps in file order.
+std::vector<double> RecordedStamps(const std::vector<const CarmenLaserRecord*>& records) {
   std::vector<double> recorded;
   recorded.reserve(records.size());
   for (const CarmenLaserRecord* record : records) recorded.push_back(record->ipc_stamp_s);
+  return recorded;
+}
+
+/// Strictly increasing scan stamps for the records (their stamps `recorded`), with a warning when they
+/// had to change.
+ScanStamps ScanStampsOf(const std::vector<const CarmenLaserRecord*>& records, const std::vector<double>& recorded,
+                        const std::filesystem::path& source, const StampOptions& options,
+                        std::vector<std::string>& warnings) {
   ScanStamps stamps = ChooseScanStamps(recorded, options);
-  if (stamps.non_increasing.empty()) return std::move(stamps.stamps_s);
+  if (stamps.non_increasing.empty()) return stamps;
 
   const std::size_t first = stamps.non_increasing.front();
   if (options.policy == StampPolicy::kRecorded) {
     throw InputError(Located(source, records[first]->line,
                              fmt::format("ipc_timestamp {} does not come after the previous scan's {} (stamp policy "
-                                         "'recorded'; 'auto' repairs a few such stamps or falls back to record order)",
+                                         "'recorded'; 'auto' repairs such stamps or falls back to record order)",
                                          recorded[first], recorded[first - 1])));
   }
   if (stamps.outcome == StampOutcome::kRepaired) {
@@ -108,6 +116,17 @@ std::vector<double> ScanStampsOf(const std::vector<const CarmenLaserRecord*>& re
                 fmt::format("{} of {} scan stamps did not come after the previous one and were lifted to it + {} s "
                             "(lines {})",
                             stamps.non_increasing.size(), records.size(), options.repair_step_s, LineList(lines))));
+  } else if (stamps.outcome == StampOutcome::kRetimed) {
+    const StampFacts facts = DescribeStamps(recorded, stamps);
+    std::vector<std::size_t> lines;
+    for (std::size_t index : stamps.retimed) lines.push_back(records[index]->line);
+    warnings.push_back(Located(
+        source, 0,
+        fmt::format("{} of {} scan stamps do not come after the previous one ({} step back, by up to {:.3f} s; {} "
+                    "repeat it); the scans stay in file order and {} stamps outside the longest increasing run were "
+                    "re-timed between their neighbours, by up to {:.3f} s (lines {})",
+                    stamps.non_increasing.size(), records.size(), facts.steps_back, facts.largest_step_back_s,
+                    facts.duplicates, stamps.retimed.size(), facts.largest_change_s, LineList(lines))));
   } else if (stamps.outcome == StampOutcome::kRecordOrder && options.policy == StampPolicy::kAuto) {
     const auto [low, high] = std::minmax_element(recorded.begin(), recorded.end());
     warnings.push_back(Located(
@@ -117,7 +136,7 @@ std::vector<double> ScanStampsOf(const std::vector<const CarmenLaserRecord*>& re
                     stamps.non_increasing.size(), records.size(), records[first]->line, *low, *high,
                     options.record_order_period_s)));
   }
-  return std::move(stamps.stamps_s);
+  return stamps;
 }
 
 LaserScan FlaserScan(const CarmenLaserRecord& record, const std::filesystem::path& source, double max_range_m,
@@ -200,16 +219,6 @@ Relations ShiftedRelations(Relations relations, double rate, double offset_s) {
   return relations;
 }
 
-/// The median gap between consecutive stamps (sorted), 0 for fewer than two.
-double MedianSpacingS(std::vector<double> stamps) {
-  if (stamps.size() < 2) return 0.0;
-  std::sort(stamps.begin(), stamps.end());
-  std::vector<double> gaps(stamps.size() - 1);
-  for (std::size_t i = 1; i < stamps.size(); ++i) gaps[i - 1] = stamps[i] - stamps[i - 1];
-  std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
-  return gaps[gaps.size() / 2];
-}
-
 /// The ODOM records of a raw robot log written by slamsweep, when their stamps strictly increase
 /// (the readings between its scans); empty otherwise.
 Trajectory RawLogReadings(const CarmenLog& log) {
@@ -220,6 +229,12 @@ Trajectory RawLogReadings(const CarmenLog& log) {
     readings.Add(odom.ipc_stamp_s, odom.pose);
   }
   return readings;
+}
+
+/// Whether every scan stamp is one of the readings' stamps (the Sequence invariant for readings).
+bool ReadingsHoldScanStamps(const Trajectory& readings, const std::vector<double>& scan_stamps_s) {
+  return std::includes(readings.stamps_s().begin(), readings.stamps_s().end(), scan_stamps_s.begin(),
+                       scan_stamps_s.end());
 }
 
 Provenance ProvenanceOf(const std::filesystem::path& source, const CarmenSequenceOptions& options) {
@@ -326,13 +341,20 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
     }
   }
   std::vector<double> stamps_s;
+  const std::vector<double> recorded_stamps_s = RecordedStamps(records);
   if (recorded) {
     // Each scan is stamped like its raw reading, so that scans, readings and relations share one clock.
     stamps_s.reserve(records.size());
     for (std::size_t reading : recorded->scan_readings) stamps_s.push_back(recorded->readings.stamps_s()[reading]);
     sequence.warnings.insert(sequence.warnings.end(), recorded->warnings.begin(), recorded->warnings.end());
   } else {
-    stamps_s = ScanStampsOf(records, source, options.stamps, sequence.warnings);
+    StampOptions stamp_options = options.stamps;
+    // A raw log's records are in the order they were taken while some stamps arrived late (the full-rate
+    // intel run: see RecordOrderCheck): each late stamp is re-timed alone, the records keep their order.
+    if (!logged_pose_is_reference) stamp_options.repair = StampRepair::kRetime;
+    const ScanStamps chosen = ScanStampsOf(records, recorded_stamps_s, source, stamp_options, sequence.warnings);
+    sequence.stamp_facts = DescribeStamps(recorded_stamps_s, chosen);
+    stamps_s = chosen.stamps_s;
   }
 
   std::vector<std::size_t> guessed_fan_lines;
@@ -375,6 +397,9 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
     if (logged_pose_is_reference) reference.Add(stamps_s[i], record.robot_pose);
   }
   if (recorded) RestoreRecordedReversing(*recorded, source, sequence);
+  if (sequence.stamp_facts && !logged_pose_is_reference && sequence.stamp_facts->steps_back > 0) {
+    sequence.stamp_facts->order_check = CheckRecordOrder(sequence.scans, sequence.odometry.poses(), recorded_stamps_s);
+  }
   if (!guessed_fan_lines.empty()) {
     sequence.warnings.push_back(Located(
         source, 0,
@@ -384,8 +409,16 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
   }
   if (logged_pose_is_reference) sequence.reference = std::move(reference);
   if (options.relations_path) {
-    sequence.relations =
-        ShiftedRelations(ReadRelations(*options.relations_path), options.relations_rate, options.relations_offset_s);
+    Relations relations = ReadRelations(*options.relations_path);
+    if (options.relations_window_s) {
+      const auto [from_s, to_s] = *options.relations_window_s;
+      const std::size_t before = relations.size();
+      std::erase_if(relations, [&](const Relation& relation) {
+        return std::min(relation.t1_s, relation.t2_s) < from_s || std::max(relation.t1_s, relation.t2_s) > to_s;
+      });
+      sequence.relations_outside_log += before - relations.size();
+    }
+    sequence.relations = ShiftedRelations(std::move(relations), options.relations_rate, options.relations_offset_s);
     if (recorded) {
       // Repaired reading stamps moved: the relations follow their raw scans (the logged stamps name them).
       std::size_t unmatched = 0;
@@ -400,13 +433,42 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
                 "their own time",
                 unmatched, 2 * sequence.relations->size(), tolerance_s, source.string())));
       }
+    } else if (!logged_pose_is_reference) {
+      // A raw log: relation stamps name its scans by their recorded stamps, and follow any re-timed scan.
+      // A relation with a stamp beyond the recorded ones names no scan of this log: it is outside it.
+      const auto [low, high] = std::minmax_element(recorded_stamps_s.begin(), recorded_stamps_s.end());
+      const std::size_t before = sequence.relations->size();
+      std::erase_if(*sequence.relations, [&](const Relation& relation) {
+        return std::min(relation.t1_s, relation.t2_s) < *low || std::max(relation.t1_s, relation.t2_s) > *high;
+      });
+      sequence.relations_outside_log += before - sequence.relations->size();
+      std::size_t unmatched = 0;
+      const double tolerance_s = options.relations_match_tolerance_s.value_or(0.5 * MedianSpacingS(recorded_stamps_s));
+      sequence.relations =
+          MapRelationsOntoRecords(std::move(*sequence.relations), recorded_stamps_s, stamps_s, tolerance_s, unmatched);
+      if (unmatched > 0) {
+        sequence.warnings.push_back(Located(
+            *options.relations_path, 0,
+            fmt::format("{} of {} relation stamps lie farther than {:.3f} s from every scan of {} and keep their own "
+                        "time",
+                        unmatched, 2 * sequence.relations->size(), tolerance_s, source.string())));
+      }
     }
   }
   if (recorded) {
     sequence.odometry_readings = std::move(recorded->readings);
-  } else if (MarkedAsRawRobotLog(log) && log.odometry.size() > records.size()) {
+  } else if (!logged_pose_is_reference && log.odometry.size() > records.size()) {
     sequence.odometry_readings = RawLogReadings(log);
+    if (sequence.odometry_readings.empty() || !ReadingsHoldScanStamps(sequence.odometry_readings, stamps_s)) {
+      sequence.odometry_readings = Trajectory();
+      sequence.warnings.push_back(
+          Located(source, 0,
+                  fmt::format("{} ODOM records not used: their stamps do not increase through the scans' stamps; the "
+                              "odometry is the laser records' own, one pose per scan",
+                              log.odometry.size())));
+    }
   }
+  KeepRelationsInsideLog(sequence);
   sequence.provenance = ProvenanceOf(source, options);
   return sequence;
 }

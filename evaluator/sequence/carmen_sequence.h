@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -28,7 +29,9 @@ struct CarmenSequenceOptions {
   /// Readings below this are not returns.
   double min_range_m = 0.0;
   /// The logged pose (FLASER x y theta, ROBOTLASER1 robot pose) is the SLAM-corrected pose in the
-  /// "corrected" logs: keep it as Sequence::reference. Set false for raw logs, where it is odometry.
+  /// "corrected" logs: keep it as Sequence::reference. Set false for raw logs, where it is odometry: then
+  /// there is no reference, the records keep their file order (their acquisition order; late stamps are
+  /// re-timed, StampRepair::kRetime) and relation stamps are moved onto the scans they name.
   bool logged_pose_is_reference = true;
   /// Build the scans from the RLASER records (the rear laser of old-style logs) instead of FLASER or
   /// ROBOTLASER1. Their fan is FLASER's, turned backwards: sensor pose on the robot (0, 0, yaw pi).
@@ -42,6 +45,9 @@ struct CarmenSequenceOptions {
   /// moved onto the raw scans of the ODOM stream (MapRelationsOntoReadings).
   double relations_offset_s = 0.0;
   double relations_rate = 1.0;
+  /// When set, only the relations with both stamps in [from, to] (on the relations' own clock, before
+  /// the map above) are read; the others count as outside the log.
+  std::optional<std::array<double, 2>> relations_window_s;
   /// How far a relation stamp may lie from the logged stamp of a reading to name that raw scan;
   /// unset: half the readings' median spacing, so each stamp names its nearest reading.
   std::optional<double> relations_match_tolerance_s;

@@ -79,6 +79,7 @@ void TakeClockFromCorrectedLog(Sequence& sequence, Sequence corrected, std::size
   sequence.warnings.insert(sequence.warnings.end(), corrected.warnings.begin(), corrected.warnings.end());
   sequence.reference = std::move(corrected.reference);
   sequence.relations = std::move(corrected.relations);
+  sequence.relations_outside_log += corrected.relations_outside_log;
 }
 
 }  // namespace slamsweep::evaluator::inline sequence

@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/sequence/relation_stamps.h"
 
 namespace slamsweep::evaluator::inline sequence {
 namespace {
@@ -142,41 +143,8 @@ RecordedOdometry RebuildRecordedOdometry(const CarmenLog& log, std::span<const C
 
 Relations MapRelationsOntoReadings(Relations relations, const RecordedOdometry& odometry, double tolerance_s,
                                    std::size_t& unmatched) {
-  unmatched = 0;
-  const std::vector<double>& logged = odometry.logged_stamps_s;
-  std::vector<std::size_t> order(logged.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  // Stable: among equal logged stamps the first in file order comes first.
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return logged[a] < logged[b]; });
-  const auto map_stamp = [&](double& stamp_s) {
-    const auto at = std::lower_bound(order.begin(), order.end(), stamp_s,
-                                     [&](std::size_t index, double value) { return logged[index] < value; });
-    std::optional<std::size_t> best;
-    double best_distance = std::numeric_limits<double>::infinity();
-    if (at != order.end()) {
-      best = *at;
-      best_distance = logged[*at] - stamp_s;
-    }
-    if (at != order.begin()) {
-      // The first reading (in file order) of the run of equal stamps just below.
-      auto below = std::prev(at);
-      while (below != order.begin() && logged[*std::prev(below)] == logged[*below]) --below;
-      if (stamp_s - logged[*below] < best_distance) {
-        best = *below;
-        best_distance = stamp_s - logged[*below];
-      }
-    }
-    if (!best || best_distance > tolerance_s) {
-      ++unmatched;
-      return;
-    }
-    stamp_s = odometry.readings.stamps_s()[*best];
-  };
-  for (Relation& relation : relations) {
-    map_stamp(relation.t1_s);
-    map_stamp(relation.t2_s);
-  }
-  return relations;
+  return MapRelationsOntoRecords(std::move(relations), odometry.logged_stamps_s, odometry.readings.stamps_s(),
+                                 tolerance_s, unmatched);
 }
 
 Trajectory ReadingsAtStamps(const Trajectory& readings, std::span<const double> stamps_s) {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "evaluator/core/input_error.h"
@@ -105,6 +106,27 @@ bool OdometryEqualsReference(const Sequence& sequence) {
     }
   }
   return true;
+}
+
+void KeepRelationsInsideLog(Sequence& sequence) {
+  if (!sequence.relations) return;
+  if (sequence.scans.empty()) {
+    sequence.relations_outside_log += sequence.relations->size();
+    sequence.relations.reset();
+    return;
+  }
+  double first_s = sequence.scans.front().stamp_s;
+  double last_s = sequence.scans.back().stamp_s;
+  if (!sequence.odometry_readings.empty()) {
+    first_s = std::min(first_s, sequence.odometry_readings.stamps_s().front());
+    last_s = std::max(last_s, sequence.odometry_readings.stamps_s().back());
+  }
+  const std::size_t before = sequence.relations->size();
+  std::erase_if(*sequence.relations, [&](const Relation& relation) {
+    return std::min(relation.t1_s, relation.t2_s) < first_s || std::max(relation.t1_s, relation.t2_s) > last_s;
+  });
+  sequence.relations_outside_log += before - sequence.relations->size();
+  if (sequence.relations->empty()) sequence.relations.reset();
 }
 
 }  // namespace slamsweep::evaluator::inline sequence

@@ -8,6 +8,7 @@
 #include "evaluator/core/occupancy_grid.h"
 #include "evaluator/core/relation.h"
 #include "evaluator/core/trajectory.h"
+#include "evaluator/sequence/scan_stamps.h"
 
 namespace slamsweep::evaluator::inline sequence {
 
@@ -38,11 +39,16 @@ struct Sequence {
   Trajectory odometry_readings;
   /// Ground-truth robot poses (any stamps; metrics associate them by time).
   std::optional<Trajectory> reference;
+  /// The relations whose two stamps both lie inside the recorded span of the scans (a log may hold
+  /// part of a run: its relations outside are not the run's to cover), and how many were outside.
   std::optional<Relations> relations;
+  std::size_t relations_outside_log = 0;
   std::optional<OccupancyGrid> reference_map;
   Provenance provenance;
   /// What the reader had to repair or assume, each naming the input file, for the run record.
   std::vector<std::string> warnings;
+  /// How the scan stamps were chosen from the recorded ones, when the reader knows (CARMEN logs).
+  std::optional<StampFacts> stamp_facts;
 };
 
 /// Throws InputError (starting with the sequence name) unless the invariant above holds and every
@@ -53,5 +59,11 @@ void ValidateSequence(const Sequence& sequence);
 /// Whether the odometry is the reference: the reference has a pose at every scan's stamp and each
 /// equals the odometry pose there (within 1 um and 1 urad). A program given it is handed the answer.
 bool OdometryEqualsReference(const Sequence& sequence);
+
+/// Moves the relations with a stamp outside the log's recorded span (its first to last scan or odometry
+/// reading) out of `sequence.relations` into the count `relations_outside_log` (a log of part of a run, or a
+/// cut one).
+/// No relation left: `relations` is reset. Stamps are on the scans' clock (after any clock map).
+void KeepRelationsInsideLog(Sequence& sequence);
 
 }  // namespace slamsweep::evaluator::inline sequence

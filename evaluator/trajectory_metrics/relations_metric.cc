@@ -56,7 +56,7 @@ nlohmann::json RelationsResult::ToJson() const {
                         {"rotation_sq_mean_deg2", rotation_sq_mean_deg2},
                         {"rotation_sq_std_deg2", rotation_sq_std_deg2},
                         {"used", used},
-                        {"skipped", skipped},
+                        {"not_covered", not_covered},
                         {"interpolation", interpolation},
                         {"linear_fallbacks", linear_fallbacks},
                         {"specification", specification}};
@@ -100,7 +100,7 @@ RelationsResult RelationsMetric::Compute(const Trajectory& estimate, const Relat
 
   RelationsResult result;
   result.used = translation_m.size();
-  result.skipped = relations.size() - result.used;
+  result.not_covered = relations.size() - result.used;
   result.interpolation = by_odometry ? "odometry" : "linear";
   result.linear_fallbacks = linear_fallbacks;
   result.specification = nlohmann::json{{"t_offset_s", options_.t_offset_s}, {"interpolation", result.interpolation}};

@@ -25,10 +25,11 @@ struct RelationsResult {
   double rotation_abs_std_deg = 0.0;
   double rotation_sq_mean_deg2 = 0.0;
   double rotation_sq_std_deg2 = 0.0;
-  /// Relations scored, and relations skipped because t1 or t2 (after the offset) lies outside
-  /// the estimate's time span.
+  /// Relations scored, and relations not covered: t1 or t2 (after the offset) lies outside the
+  /// estimate's time span. Relations outside the log itself are never given to the metric
+  /// (Sequence::relations_outside_log counts them).
   std::size_t used = 0;
-  std::size_t skipped = 0;
+  std::size_t not_covered = 0;
   /// "odometry" (the estimate moved by the odometry between its poses, OdometryInterpolator) or
   /// "linear" (no odometry given); relation stamps the odometry did not cover were interpolated
   /// linearly all the same, and are counted.

@@ -10,6 +10,8 @@
 #include "evaluator/noise/random.h"
 #include "evaluator/noise/range_noise.h"
 #include "evaluator/catalog/catalog.h"
+#include "evaluator/sequence/scan_spacing.h"
+#include "evaluator/sequence/sequence_cut.h"
 
 namespace slamsweep::orchestrator::inline adapters {
 
@@ -17,33 +19,7 @@ namespace ev = slamsweep::evaluator;
 
 ev::Sequence CutSequence(ev::Sequence sequence, std::size_t max_scans) {
   if (max_scans == 0) throw ev::InputError("sequence.max_scans: expected a positive number of scans, got 0");
-  if (sequence.scans.size() <= max_scans) return sequence;
-  sequence.scans.resize(max_scans);
-  std::vector<std::size_t> first(max_scans);
-  std::iota(first.begin(), first.end(), std::size_t{0});
-  sequence.odometry = sequence.odometry.Subset(first);
-  const double last_stamp_s = sequence.scans.back().stamp_s;
-  if (!sequence.odometry_readings.empty()) {
-    std::vector<std::size_t> kept;
-    for (std::size_t i = 0; i < sequence.odometry_readings.size(); ++i) {
-      if (sequence.odometry_readings.stamps_s()[i] <= last_stamp_s) kept.push_back(i);
-    }
-    sequence.odometry_readings = std::move(sequence.odometry_readings).Select(kept);
-  }
-  if (sequence.reference) {
-    std::vector<std::size_t> kept;
-    for (std::size_t i = 0; i < sequence.reference->size(); ++i) {
-      if (sequence.reference->stamps_s()[i] <= last_stamp_s) kept.push_back(i);
-    }
-    sequence.reference = sequence.reference->Subset(kept);
-    if (sequence.reference->empty()) sequence.reference.reset();
-  }
-  if (sequence.relations) {
-    std::erase_if(*sequence.relations,
-                  [&](const ev::Relation& relation) { return std::max(relation.t1_s, relation.t2_s) > last_stamp_s; });
-    if (sequence.relations->empty()) sequence.relations.reset();
-  }
-  return sequence;
+  return ev::KeepScanRange(std::move(sequence), 0, max_scans);
 }
 
 nlohmann::json ApplyRunNoise(ev::Sequence& sequence, const NoiseSpec& noise, std::uint64_t seed) {
@@ -91,12 +67,16 @@ ev::Sequence LoadRunSequence(const RunSpec& spec) {
 RunInputs PrepareRunInputs(const RunSpec& spec) {
   ev::Sequence sequence = LoadRunSequence(spec);
   RunInputs inputs;
-  inputs.scan_spacing = ev::ComputeScanSpacing(sequence);
+  if (const std::optional<ev::ScanSpacing> spacing = ev::ComputeScanSpacing(sequence)) {
+    inputs.sequence_record["scan_spacing"] = ev::ScanSpacingJson(*spacing);
+  }
   inputs.noise_record = ApplyRunNoise(sequence, spec.noise, spec.seed);
   inputs.odometry_is_reference = OdometryIsReference(sequence);
   inputs.warnings = std::move(sequence.warnings);
   inputs.truth.reference = std::move(sequence.reference);
   inputs.truth.relations = std::move(sequence.relations);
+  inputs.truth.relations_outside_log = sequence.relations_outside_log;
+  if (sequence.stamp_facts) inputs.sequence_record["stamps"] = ev::StampFactsJson(*sequence.stamp_facts);
   inputs.robot = ev::TakeRobotLog(sequence);
   return inputs;
 }

@@ -11,7 +11,6 @@
 #include "evaluator/core/relation.h"
 #include "evaluator/core/trajectory.h"
 #include "evaluator/sequence/robot_log.h"
-#include "evaluator/sequence/scan_spacing.h"
 #include "evaluator/sequence/sequence.h"
 #include "orchestrator/run/run_spec.h"
 
@@ -21,7 +20,9 @@ namespace slamsweep::orchestrator::inline adapters {
 /// the worker writes none of it into the run folder before the program has exited.
 struct RunTruth {
   std::optional<evaluator::Trajectory> reference;
+  /// The relations inside the (cut) log, and how many of the file's were outside it.
   std::optional<evaluator::Relations> relations;
+  std::size_t relations_outside_log = 0;
 };
 
 /// A run's inputs split by who may see them: `robot` is what the program is given (scans and
@@ -33,12 +34,13 @@ struct RunInputs {
   std::vector<std::string> warnings;
   /// The noise applied and its seeds, recorded in result.json so the input can be reproduced.
   nlohmann::json noise_record;
+  /// What the sequence is like (result.json "sequence"): "stamps" (evaluator StampFactsJson) when the
+  /// reader records how it chose them; "scan_spacing" (ScanSpacingJson) with two scans or more, measured
+  /// after cutting and before noise (the data's density, not the noise's).
+  nlohmann::json sequence_record = nlohmann::json::object();
   /// The program's odometry equals the reference at every scan (a corrected log without odometry
   /// noise): the run measures an upper bound, not SLAM (OdometryIsReference).
   bool odometry_is_reference = false;
-  /// How far apart the scans the program is given are (after cutting, before noise: the data's density,
-  /// not the noise's); absent with fewer than two scans.
-  std::optional<evaluator::ScanSpacing> scan_spacing;
 };
 
 /// The words the report, summary and warnings use for a run whose odometry is the reference.
@@ -46,8 +48,9 @@ inline constexpr std::string_view kOdometryIsReferenceWarning =
     "odometry = reference: an upper bound, not a SLAM result (the program's odometry is the reference "
     "trajectory; add odometry noise to make it a SLAM test)";
 
-/// The first `max_scans` scans of `sequence` with their odometry; reference poses and relations
-/// later than the last kept scan are dropped too (they describe a part the run never saw).
+/// The first `max_scans` scans of `sequence` with their odometry (evaluator KeepScanRange); reference poses
+/// later than the last kept scan are dropped too, and relations there count as outside the log (they
+/// describe a part the run never saw).
 /// A sequence with fewer scans is returned unchanged; max_scans = 0 is an InputError.
 evaluator::Sequence CutSequence(evaluator::Sequence sequence, std::size_t max_scans);
 

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <array>
+#include <optional>
+
 #include "evaluator/core/input_error.h"
 #include "orchestrator/config/yaml_fields.h"
 
@@ -59,6 +62,18 @@ std::optional<std::size_t> MaxScans(const std::filesystem::path& file, const YAM
   return static_cast<std::size_t>(std::stoull(node.Scalar()));
 }
 
+/// `relations_window: [from, to]` (seconds on the relations' clock, from < to).
+std::optional<std::array<double, 2>> RelationsWindow(const std::filesystem::path& file, const YAML::Node& node,
+                                                     const std::string& path) {
+  if (!node.IsDefined() || node.IsNull()) return std::nullopt;
+  const nlohmann::json value = node.IsSequence() ? YamlToJson(node) : nlohmann::json();
+  if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number() ||
+      !(value[0].get<double>() < value[1].get<double>())) {
+    FailExpected(file, node, path, "[from, to], two stamps in seconds on the relations' clock with from < to");
+  }
+  return std::array<double, 2>{value[0].get<double>(), value[1].get<double>()};
+}
+
 }  // namespace
 
 SequenceSpec ParseSequenceConfig(const std::filesystem::path& file, YAML::Node node, const std::string& path,
@@ -78,6 +93,13 @@ SequenceSpec ParseSequenceConfig(const std::filesystem::path& file, YAML::Node n
     spec.entry.name = fields.Text("name", spec.entry.name);
     if (spec.entry.name.empty()) FailExpected(file, fields.Get("name"), fields.PathOf("name"), "a non-empty name");
     spec.max_scans = MaxScans(file, fields.Get("max_scans"), fields.PathOf("max_scans"));
+    if (const auto window = RelationsWindow(file, fields.Get("relations_window"), fields.PathOf("relations_window"))) {
+      if (spec.entry.relations_path.empty()) {
+        FailAt(file, fields.Get("relations_window"),
+               fmt::format("{}: sequence '{}' has no relations", fields.PathOf("relations_window"), spec.entry.name));
+      }
+      spec.entry.relations_window_s = window;
+    }
     if (const YAML::Node odometry = fields.Get("odometry"); odometry.IsDefined() && !odometry.IsNull()) {
       if (!odometry.IsScalar()) FailExpected(file, odometry, fields.PathOf("odometry"), "recorded or reference");
       try {

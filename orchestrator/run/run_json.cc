@@ -283,6 +283,7 @@ json ToJson(const evaluator::CatalogEntry& entry) {
   // Only when set: the run ids of entries without one (every run before it existed) stay the same.
   if (!entry.reference_map_path.empty()) out["reference_map"] = entry.reference_map_path;
   if (entry.relations_rate != 1.0) out["relations_rate"] = entry.relations_rate;
+  if (entry.relations_window_s) out["relations_window"] = *entry.relations_window_s;
   if (entry.odometry) out["odometry"] = std::string(evaluator::OdometryModeName(*entry.odometry));
   if (entry.corrected_log) {
     out["corrected_log"] = json{{"path", entry.corrected_log->path},
@@ -303,7 +304,8 @@ bool SameEvaluation(const json& recorded_evaluation, const EvaluationOptions& cu
 }
 
 evaluator::CatalogEntry CatalogEntryFromJson(const json& value, const std::string& path) {
-  const json object = WithoutNulls(value, path);
+  json object = WithoutNulls(value, path);
+  const json window = Take(object, "relations_window");
   JsonFields fields(object, path);
   evaluator::CatalogEntry entry;
   entry.name = fields.Text("name", "");
@@ -337,6 +339,13 @@ evaluator::CatalogEntry CatalogEntryFromJson(const json& value, const std::strin
   }
   entry.notes = fields.Text("notes", "");
   fields.Finish();
+  if (!window.is_null()) {
+    if (!window.is_array() || window.size() != 2 || !window[0].is_number() || !window[1].is_number() ||
+        !(window[0].get<double>() < window[1].get<double>())) {
+      Fail(Join(path, "relations_window"), "[from, to] with from < to, in seconds", window);
+    }
+    entry.relations_window_s = std::array<double, 2>{window[0].get<double>(), window[1].get<double>()};
+  }
 
   if (entry.name.empty()) throw InputError(Join(path, "name") + ": expected a non-empty name");
   constexpr std::string_view kFormats[] = {"carmen", "rawlog", "rosbag", "simulated"};
@@ -344,19 +353,7 @@ evaluator::CatalogEntry CatalogEntryFromJson(const json& value, const std::strin
     throw InputError(Join(path, "format") + ": expected carmen, rawlog, rosbag or simulated, got \"" + entry.format +
                      "\"");
   }
-  bool known = false;
-  for (evaluator::GroundTruthKind kind :
-       {evaluator::GroundTruthKind::kCorrectedPoses, evaluator::GroundTruthKind::kExact,
-        evaluator::GroundTruthKind::kRelationsOnly, evaluator::GroundTruthKind::kNone}) {
-    if (ground_truth == evaluator::GroundTruthKindName(kind)) {
-      entry.ground_truth = kind;
-      known = true;
-    }
-  }
-  if (!known) {
-    throw InputError(Join(path, "ground_truth") + ": expected corrected_poses, exact, relations_only or none, got \"" +
-                     ground_truth + "\"");
-  }
+  entry.ground_truth = evaluator::ParseGroundTruthKind(ground_truth, Join(path, "ground_truth"));
   if (entry.max_range_m && !(*entry.max_range_m > 0.0)) {
     throw InputError(Join(path, "max_range_m") + ": expected a range > 0 m");
   }

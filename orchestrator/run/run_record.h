@@ -78,7 +78,7 @@ struct RunRecord {
   /// memory twice over.
   nlohmann::json metric_details = nlohmann::json::object();
   nlohmann::json run_spec = nlohmann::json::object();  ///< run.json as recorded (the resolved configuration)
-  /// result.json's scan_spacing block as recorded (null when absent): how far apart the input's scans were.
+  /// result.json's sequence.scan_spacing block as recorded (null when absent): how far apart the input's scans were.
   nlohmann::json scan_spacing;
   std::vector<std::string> warnings;
 

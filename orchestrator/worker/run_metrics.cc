@@ -95,19 +95,23 @@ void AddSegmentRpe(RunMetrics& out, const EvaluationOptions& evaluation, const e
   out.segment_errors = std::move(records);
 }
 
-/// The relations metric's flat numbers; "n" counts the relations used, "skipped" those outside the
-/// estimate's time span (coverage = n / (n + skipped)).
-void AddRelations(std::vector<FlatMetric>& metrics, const ev::RelationsResult& result) {
+/// The relations metric's flat numbers; "n" counts the relations used, "not_covered" those inside the
+/// log but outside the estimate's time span (coverage = n / (n + not_covered)), "outside_log" those of
+/// the relations file that the log (or its cut) does not hold.
+void AddRelations(std::vector<FlatMetric>& metrics, const ev::RelationsResult& result, std::size_t outside_log) {
   const double used = static_cast<double>(result.used);
-  const double skipped = static_cast<double>(result.skipped);
-  metrics.push_back({"relations_trans", "mean", result.translation_abs_mean_m, "m"});
-  metrics.push_back({"relations_trans", "std", result.translation_abs_std_m, "m"});
-  metrics.push_back({"relations_trans", "n", used, "count"});
-  metrics.push_back({"relations_trans", "skipped", skipped, "count"});
-  metrics.push_back({"relations_rot", "mean", result.rotation_abs_mean_deg, "deg"});
-  metrics.push_back({"relations_rot", "std", result.rotation_abs_std_deg, "deg"});
-  metrics.push_back({"relations_rot", "n", used, "count"});
-  metrics.push_back({"relations_rot", "skipped", skipped, "count"});
+  const double not_covered = static_cast<double>(result.not_covered);
+  const double outside = static_cast<double>(outside_log);
+  for (const char* name : {"relations_trans", "relations_rot"}) {
+    const bool trans = name == std::string_view("relations_trans");
+    metrics.push_back(
+        {name, "mean", trans ? result.translation_abs_mean_m : result.rotation_abs_mean_deg, trans ? "m" : "deg"});
+    metrics.push_back(
+        {name, "std", trans ? result.translation_abs_std_m : result.rotation_abs_std_deg, trans ? "m" : "deg"});
+    metrics.push_back({name, "n", used, "count"});
+    metrics.push_back({name, "not_covered", not_covered, "count"});
+    metrics.push_back({name, "outside_log", outside, "count"});
+  }
 }
 
 /// Runs one metric; an InputError (no pairs, degenerate alignment, empty map) becomes a warning
@@ -130,7 +134,18 @@ std::string SegmentRpeMetricName(std::string_view kind, double length_m) {
   return fmt::format("segment_{}_{}m", kind, length);
 }
 
+nlohmann::json RelationsCoverage::ToJson() const {
+  return {{"basis", "relations"}, {"fraction", Fraction()}, {"covered", covered}, {"inside_log", inside_log}};
+}
+
 void RequireCoverage(const EvaluationOptions& evaluation, const RunMetrics& metrics) {
+  if (metrics.relations_coverage && metrics.relations_coverage->Fraction() < evaluation.min_coverage) {
+    const RelationsCoverage& c = *metrics.relations_coverage;
+    throw RunFailure(FailureKind::kIncompleteTrajectory,
+                     fmt::format("the trajectory covers {} of the {} relations inside the log ({:.1f} %), below "
+                                 "evaluation.min_coverage {:.0f} %",
+                                 c.covered, c.inside_log, 100.0 * c.Fraction(), 100.0 * evaluation.min_coverage));
+  }
   if (!metrics.coverage || metrics.coverage->fraction >= evaluation.min_coverage) return;
   const ev::TrajectoryCoverage& c = *metrics.coverage;
   throw RunFailure(FailureKind::kIncompleteTrajectory,
@@ -183,19 +198,28 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
     }
   }
   if (inputs.estimate && inputs.relations) {
+    // Relations as the only reference: the coverage gate counts them (none covered until shown otherwise).
+    if (!inputs.reference) out.relations_coverage = RelationsCoverage{0, inputs.relations->size()};
     Attempt(out, "relations", [&] {
       const ev::RelationsResult result =
           ev::RelationsMetric({}).Compute(*inputs.estimate, *inputs.relations, inputs.odometry);
-      AddRelations(out.metrics, result);
+      AddRelations(out.metrics, result, inputs.relations_outside_log);
       out.details["relations"] = result.ToJson();
+      out.details["relations"]["outside_log"] = inputs.relations_outside_log;
+      if (out.relations_coverage) out.relations_coverage->covered = result.used;
     });
+    if (out.relations_coverage) {
+      out.details["coverage"] = out.relations_coverage->ToJson();
+      out.details["coverage"]["min_coverage"] = evaluation.min_coverage;
+    }
   }
   if (inputs.reference && inputs.relations) {
     Attempt(out, "reference_floor", [&] {
       const ev::RelationsResult result =
           ev::RelationsMetric({}).Compute(*inputs.reference, *inputs.relations, inputs.odometry);
-      AddRelations(out.reference_floor, result);
+      AddRelations(out.reference_floor, result, inputs.relations_outside_log);
       out.reference_floor_details = result.ToJson();
+      out.reference_floor_details["outside_log"] = inputs.relations_outside_log;
     });
   }
   if (inputs.map) {

@@ -17,6 +17,17 @@
 
 namespace slamsweep::orchestrator::inline worker {
 
+/// The share of the relations inside the log that a run's estimate covers (both stamps in its span).
+struct RelationsCoverage {
+  std::size_t covered = 0;
+  std::size_t inside_log = 0;
+  double Fraction() const {
+    return inside_log == 0 ? 0.0 : static_cast<double>(covered) / static_cast<double>(inside_log);
+  }
+  /// {"basis": "relations", "fraction", "covered", "inside_log"}
+  nlohmann::json ToJson() const;
+};
+
 /// Every metric of a run with its full specification.
 struct RunMetrics {
   std::vector<FlatMetric> metrics;
@@ -34,6 +45,9 @@ struct RunMetrics {
   nlohmann::json reference_floor_details;
   /// How much of the reference's time span the estimate covers; absent without both.
   std::optional<evaluator::TrajectoryCoverage> coverage;
+  /// Where relations are the only reference (no reference trajectory): how many of the relations inside
+  /// the log the estimate covers. The coverage gate then counts relations, not time.
+  std::optional<RelationsCoverage> relations_coverage;
 };
 
 /// What the metrics are computed from: the run's estimate and the truth it is compared with.
@@ -46,6 +60,8 @@ struct MetricInputs {
   const evaluator::Trajectory* estimate = nullptr;   ///< null: trajectory metrics are skipped
   const evaluator::Trajectory* reference = nullptr;  ///< null: APE and RPE are skipped
   const evaluator::Relations* relations = nullptr;   ///< null: the relations metric is skipped
+  /// Relations of the sequence's file outside the (cut) log: counted, never scored, never "not covered".
+  std::size_t relations_outside_log = 0;
   /// The odometry the program was given (its readings where denser than its scans): the relations
   /// metric moves the estimate by it between the estimate's poses. null: linear interpolation.
   const evaluator::Trajectory* odometry = nullptr;
@@ -76,7 +92,8 @@ RunMetrics ComputeRunMetrics(const EvaluationOptions& evaluation, const MetricIn
 std::string SegmentRpeMetricName(std::string_view kind, double length_m);
 
 /// Throws RunFailure (incomplete_trajectory) when the trajectory spans less of the reference's time
-/// span than evaluation.min_coverage: its errors would be measured on the part it chose to keep.
+/// span than evaluation.min_coverage, or, where relations are the only reference, covers a smaller
+/// share of the relations inside the log: its errors would be measured on the part it chose to keep.
 void RequireCoverage(const EvaluationOptions& evaluation, const RunMetrics& metrics);
 
 }  // namespace slamsweep::orchestrator::inline worker

@@ -47,9 +47,9 @@ nlohmann::json ToJson(const RunResult& result) {
   warnings.insert(warnings.end(), result.metrics.warnings.begin(), result.metrics.warnings.end());
   json["warnings"] = std::move(warnings);
   json["noise"] = result.noise;
+  json["sequence"] = result.sequence;
   json["odometry_is_reference"] =
       result.odometry_is_reference ? nlohmann::json(*result.odometry_is_reference) : nlohmann::json();
-  json["scan_spacing"] = result.scan_spacing ? evaluator::ScanSpacingJson(*result.scan_spacing) : nlohmann::json();
   json["sandbox"] = result.sandbox;
   json["flags"] = ToJson(result.flags);
   return json;

@@ -8,7 +8,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "evaluator/sequence/scan_spacing.h"
 #include "orchestrator/run/run_failure.h"
 #include "orchestrator/run/run_flags.h"
 #include "orchestrator/worker/run_metrics.h"
@@ -35,12 +34,11 @@ struct RunResult {
   std::vector<std::string> warnings;
   /// The noise applied to the program's input and its seeds (RunInputs::noise_record).
   nlohmann::json noise;
+  /// What the sequence is like (RunInputs::sequence_record): "stamps" when the reader records them.
+  nlohmann::json sequence = nlohmann::json::object();
   /// The program's odometry was the reference (RunInputs::odometry_is_reference); absent when the
   /// inputs were never prepared.
   std::optional<bool> odometry_is_reference;
-  /// How far apart the input's consecutive scans are (RunInputs::scan_spacing); absent when the inputs
-  /// were never prepared or hold fewer than two scans.
-  std::optional<evaluator::ScanSpacing> scan_spacing;
   /// How the program was isolated (worker.cc: "isolated", "proc", "user", "process_limit_by", "network",
   /// "why" when the sandbox differs from the full one or is absent); null when no program ran.
   nlohmann::json sandbox;

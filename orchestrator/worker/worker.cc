@@ -230,8 +230,8 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   const RunInputs inputs = PrepareRunInputs(spec);
   result.warnings.insert(result.warnings.end(), inputs.warnings.begin(), inputs.warnings.end());
   result.noise = inputs.noise_record;
+  result.sequence = inputs.sequence_record;
   result.odometry_is_reference = inputs.odometry_is_reference;
-  result.scan_spacing = inputs.scan_spacing;
   result.flags.Set(RunFlag::kOdometryIsReference, inputs.odometry_is_reference);
   if (inputs.odometry_is_reference) result.warnings.push_back(std::string(kOdometryIsReferenceWarning));
   // The adapter gets the robot's part only; inputs.truth stays here until the program has exited.
@@ -289,6 +289,7 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
   metric_inputs.estimate = collected.trajectory ? &*collected.trajectory : nullptr;
   metric_inputs.reference = reference;
   metric_inputs.relations = inputs.truth.relations ? &*inputs.truth.relations : nullptr;
+  metric_inputs.relations_outside_log = inputs.truth.relations_outside_log;
   metric_inputs.odometry =
       inputs.robot.odometry_readings.empty() ? &inputs.robot.odometry : &inputs.robot.odometry_readings;
   // The reference map is truth: read or rendered only now, after the program has exited, and

@@ -1,3 +1,5 @@
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <map>
 #include <string>
@@ -84,6 +86,7 @@ Html RowNotes(const AlgorithmRow& row) {
   if (row.kind == RowKind::kPublished) {
     notes += T("<br>") + Element("span", "baseline-note", E("published figure, not measured here; never ranked"));
   }
+  if (!row.scope_note.empty()) notes += T("<br>") + Element("span", "warning", E(row.scope_note));
   if (row.build_split) {
     notes +=
         T("<br>") + Element("span", "warning",
@@ -168,6 +171,13 @@ Html SequenceTables(const SiteData& site, const SequenceModel& sequence, std::st
                            "Table I: trajectory error over iterations, mean ± sample std (failed runs have no value "
                            "and are counted in Runs)",
                            root);
+  }
+  if (sequence.relations_inside_log && sequence.relations_outside_log > 0) {
+    out += Element("p", "note",
+                   E(fmt::format("Relations: the runs are scored on the {} relations with both stamps inside this "
+                                 "log; {} more of the relations file lie outside the log (it holds part of the run, "
+                                 "or is cut): they are not this sequence's to cover and never count as missed.",
+                                 *sequence.relations_inside_log, sequence.relations_outside_log)));
   }
   if (sequence.map_columns.empty()) {
     out += Element("p", "note", E("No map metric for this sequence (no run produced a map)."));
@@ -310,7 +320,7 @@ std::string RenderIndexPage(const SiteData& site) {
 Html DensitySection(const SequenceModel& sequence) {
   Html out = Element("h2", "", E("Data density"));
   if (!sequence.scan_spacing) {
-    return out + Element("p", "note", E("Not recorded: no run of this table has scan_spacing in its result.json."));
+    return out + Element("p", "note", E("Not recorded: no run of this table has sequence.scan_spacing in its result.json."));
   }
   const evaluator::ScanSpacing& spacing = *sequence.scan_spacing;
   Html rows;

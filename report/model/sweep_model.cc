@@ -1,5 +1,7 @@
 #include "report/model/sweep_model.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <limits>
 #include <map>
@@ -238,8 +240,10 @@ std::optional<AlgorithmRow> ReferenceFloorRow(const std::vector<RunRecord>& runs
 }
 
 /// The published rows of a table: figures for the log whose relations file the table's runs were scored
-/// against, when they ran the whole log (no max_scans cut). A figure fills the relations columns it has
+/// against, unless the runs were cut with max_scans. A figure fills the relations columns it has
 /// (translation in m, rotation in deg); its std is the published spread over the relations, not over runs.
+/// Where the table's log holds part of the run (relations outside the log), the row says that the figure
+/// is over the whole log's relations, not the table's.
 std::vector<AlgorithmRow> PublishedRows(const std::vector<RunRecord>& runs, const std::vector<std::size_t>& all,
                                         const SequenceModel& sequence, const std::vector<PublishedFigure>& published) {
   std::string log;
@@ -260,6 +264,12 @@ std::vector<AlgorithmRow> PublishedRows(const std::vector<RunRecord>& runs, cons
     row.name = "published: " + figure.label;
     row.algorithm = "published: " + figure.label + " [" + figure.source + (figure.verified ? "" : ", unverified") + "]";
     row.parameters = figure.citation;
+    if (sequence.relations_inside_log && sequence.relations_outside_log > 0) {
+      row.scope_note = fmt::format(
+          "over the whole log's relations, not the same relations: this table scores the {} of {} that lie inside "
+          "its log",
+          *sequence.relations_inside_log, *sequence.relations_inside_log + sequence.relations_outside_log);
+    }
     bool any = false;
     for (const MetricColumn& column : sequence.trajectory_columns) {
       MetricCell cell;
@@ -333,6 +343,32 @@ std::string MetricSpecLabel(const RunRecord& run, const std::string& metric) {
   return {};
 }
 
+namespace {
+
+std::optional<double> FlatValue(const RunRecord& run, std::string_view metric, std::string_view statistic) {
+  for (const FlatMetric& flat : run.metrics) {
+    if (flat.metric == metric && flat.statistic == statistic) return flat.value;
+  }
+  return std::nullopt;
+}
+
+/// The table's relations, inside and outside the log, from its first run that scored them (every run of a
+/// table reads the same sequence and cut).
+void CountRelations(const std::vector<RunRecord>& runs, const std::vector<std::size_t>& indices,
+                    SequenceModel& sequence) {
+  for (std::size_t index : indices) {
+    const std::optional<double> used = FlatValue(runs[index], "relations_trans", "n");
+    const std::optional<double> not_covered = FlatValue(runs[index], "relations_trans", "not_covered");
+    if (!used || !not_covered) continue;
+    sequence.relations_inside_log = static_cast<std::size_t>(*used + *not_covered);
+    sequence.relations_outside_log =
+        static_cast<std::size_t>(FlatValue(runs[index], "relations_trans", "outside_log").value_or(0.0));
+    return;
+  }
+}
+
+}  // namespace
+
 SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions& options) {
   SweepModel model;
   std::sort(runs.begin(), runs.end(), [](const RunRecord& a, const RunRecord& b) { return a.run_id < b.run_id; });
@@ -379,6 +415,7 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions&
     }
     sequence.map_columns = BuildColumns(model.runs, all, kMapCandidates);
     sequence.has_reference = !sequence.trajectory_columns.empty();
+    CountRelations(model.runs, all, sequence);
     sequence.scan_spacing = TableScanSpacing(model.runs, all);
     std::map<std::tuple<std::string, std::string, std::string>, std::size_t> builds_per_group;
     std::map<std::pair<std::string, std::string>, std::set<std::string>> modes_per_algorithm;

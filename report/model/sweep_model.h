@@ -101,6 +101,9 @@ struct AlgorithmRow {
   /// when there is no ATE (no reference); the lower middle for an even count. Absent when no run succeeded.
   std::optional<std::size_t> median_run;
   std::string median_by;  ///< "ATE translation RMSE", "corner count" or "" (first successful run)
+  /// A reference line measured on other data than the table's (a published figure over the whole log beside
+  /// a table of part of it): what the difference is. Empty otherwise.
+  std::string scope_note;
 };
 
 /// One comparison table: a sequence under one noise setting. Rows are compared only within it.
@@ -111,7 +114,11 @@ struct SequenceModel {
   std::string key;
   /// For headings: "intel, noise odo-low".
   std::string title;
-  bool has_reference = false;                    ///< some run has a trajectory metric
+  bool has_reference = false;  ///< some run has a trajectory metric
+  /// The relations the runs were scored on: inside the (cut) log, and of the relations file outside it
+  /// (a log of part of a run; shown as "outside the log", never as missed). From the first run that has them.
+  std::optional<std::size_t> relations_inside_log;
+  std::size_t relations_outside_log = 0;
   std::vector<MetricColumn> trajectory_columns;  ///< Table I: ATE, RPE, relations
   std::vector<MetricColumn> map_columns;         ///< occupied proportion, corners, enclosed areas
   std::vector<AlgorithmRow> rows;                ///< sorted by name, then parameters

@@ -9,7 +9,7 @@
 
 namespace slamsweep::report::inline model {
 
-/// How far apart a table's scans are: result.json's scan_spacing of the first of `table_runs` (indices into
+/// How far apart a table's scans are: result.json's sequence.scan_spacing of the first of `table_runs` (indices into
 /// `runs`, in table order) that recorded a readable block; every run of a table reads the same sequence.
 /// Absent when none did (runs recorded before the block, or inputs never prepared).
 std::optional<evaluator::ScanSpacing> TableScanSpacing(const std::vector<orchestrator::RunRecord>& runs,

@@ -118,6 +118,83 @@ TEST(DataInfoCommandTest, ScanSpacingIsPrintedAndSparseScansAreWarnedOf) {
   EXPECT_THAT(slow.out, ::testing::Not(HasSubstr("warning: scans too far apart")));
 }
 
+// A file declared raw: its logged pose is the odometry (not the reference), and the stamps the reader had
+// to change are counted.
+TEST(DataInfoCommandTest, AFileDeclaredRawHasNoReferenceAndItsStampFactsAreShown) {
+  testing::TempDir dir;
+  std::string text;
+  for (int scan = 0; scan < 100; ++scan) {
+    text += "FLASER 180";
+    for (int b = 0; b < 180; ++b) text += " 1.5";
+    const std::string pose = std::to_string(0.05 * scan) + " 0 0 ";
+    // Scan 50's stamp arrived 0.5 s late.
+    const double stamp_s = 0.2 * scan + (scan == 50 ? 0.5 : 0.0);
+    text += " " + pose + pose + std::to_string(stamp_s) + " host " + std::to_string(stamp_s) + "\n";
+  }
+  testing::WriteFile(dir / "raw.clf", text);
+  const auto raw = RunCli({"data", "info", (dir / "raw.clf").string(), "--ground-truth", "none", "--json"});
+  ASSERT_EQ(raw.exit_code, 0) << raw.err;
+  const nlohmann::json info = nlohmann::json::parse(raw.out);
+  EXPECT_EQ(info.at("has_reference"), false);
+  EXPECT_EQ(info.at("recorded_odometry"), true);
+  EXPECT_EQ(info.at("stamps").at("outcome"), "retimed");
+  EXPECT_EQ(info.at("stamps").at("steps_back"), 1);
+  EXPECT_EQ(info.at("stamps").at("changed"), 1);
+  EXPECT_NEAR(info.at("duration_s").get<double>(), 19.8, 1e-6);
+  // Undeclared, a CARMEN file is read as a corrected log: the logged pose is the reference.
+  const auto corrected = RunCli({"data", "info", (dir / "raw.clf").string(), "--json"});
+  ASSERT_EQ(corrected.exit_code, 0) << corrected.err;
+  EXPECT_EQ(nlohmann::json::parse(corrected.out).at("has_reference"), true);
+  EXPECT_EQ(nlohmann::json::parse(corrected.out).at("odometry"), "reference");
+  const auto wrong = RunCli({"data", "info", (dir / "raw.clf").string(), "--ground-truth", "raw"});
+  EXPECT_EQ(wrong.exit_code, 2);
+  EXPECT_THAT(wrong.err, HasSubstr("--ground-truth: expected one of corrected_poses, exact, relations_only, none"));
+}
+
+// The full-rate intel entry: a raw log read on its own clock, with the relations inside it.
+TEST(DataInfoCommandTest, TheFullRateIntelEntryIsReadOnItsOwnClock) {
+  SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-raw-scans-0-5504.clf.gz");
+  SLAMSWEEP_REQUIRE_SHARED(relations, "datasets/intel/intel.relations");
+  const auto run = RunCli({"data", "info", "intel-full-rate", "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json info = nlohmann::json::parse(run.out);
+  EXPECT_EQ(info.at("scans"), 5505);
+  // PROVENANCE.txt: the first 1,088.6 s of the run (not one made-up second per scan).
+  EXPECT_NEAR(info.at("duration_s").get<double>(), 1088.6, 0.05);
+  EXPECT_EQ(info.at("has_reference"), false);
+  EXPECT_EQ(info.at("odometry"), "recorded");
+  EXPECT_EQ(info.at("relations"), 1033);
+  EXPECT_EQ(info.at("relations_outside_log"), 2984 - 1033);
+  EXPECT_EQ(info.at("stamps").at("steps_back"), 265);
+  EXPECT_EQ(info.at("stamps").at("duplicates"), 0);
+  EXPECT_TRUE(info.at("stamps").contains("order_check"));
+  for (const nlohmann::json& warning : info.at("warnings")) {
+    EXPECT_THAT(warning.get<std::string>(), ::testing::Not(HasSubstr("record order")));
+    EXPECT_THAT(warning.get<std::string>(), ::testing::Not(HasSubstr("no odometry stream")));
+  }
+}
+
+// A raw log has no ODOM stream: the clock fit pairs the relation stamps with the laser records' own.
+TEST(DataRelationsClockCommandTest, OnTheRawFullRateLogTheRelationsClockIsTheLogsOwn) {
+  SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-raw-scans-0-5504.clf.gz");
+  SLAMSWEEP_REQUIRE_SHARED(relations, "datasets/intel/intel.relations");
+  const auto run = RunCli({"data", "relations-clock", "intel-full-rate", "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json fit = nlohmann::json::parse(run.out);
+  EXPECT_EQ(fit.at("readings_from"), "laser records");
+  EXPECT_EQ(fit.at("readings"), 5505);
+  // PROVENANCE.txt: 1,033 relations lie inside the log; ipc = logger + 976052857.337284 is the relations' own
+  // clock, so each stamp of those pairs with a scan's exactly, and the map is about the identity there.
+  EXPECT_EQ(fit.at("relations_inside"), 1033);
+  EXPECT_EQ(fit.at("matched"), fit.at("matched_within_10ms"));
+  EXPECT_LT(fit.at("rms_residual_s").get<double>(), 0.001);
+  EXPECT_NEAR(fit.at("offset_s").get<double>() + (fit.at("rate").get<double>() - 1.0) * 976053400.0, 0.0, 0.01);
+  // The scans' fit, which reads no stamp pairing, lands there too.
+  const nlohmann::json& by_scans = fit.at("by_scans");
+  EXPECT_NEAR(by_scans.at("offset_s").get<double>() + (by_scans.at("rate").get<double>() - 1.0) * 976053400.0, 0.0,
+              0.01);
+}
+
 TEST(DataInfoCommandTest, DistinctBeamCountsAreListed) {
   testing::TempDir dir;
   std::string text;

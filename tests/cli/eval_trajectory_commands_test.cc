@@ -104,7 +104,7 @@ TEST(EvalRelationsCommandTest, ExactTrajectoryGivesZeroError) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json result = nlohmann::json::parse(run.out);
   EXPECT_EQ(result.at("used"), 1);
-  EXPECT_EQ(result.at("skipped"), 0);
+  EXPECT_EQ(result.at("not_covered"), 0);
   EXPECT_NEAR(result.at("translation_abs_mean_m").get<double>(), 0.0, 1e-9);
   EXPECT_NEAR(result.at("rotation_abs_mean_deg").get<double>(), 0.0, 1e-7);
 }
@@ -119,7 +119,7 @@ TEST(EvalRelationsCommandTest, KnownOffsetGivesKnownError) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json result = nlohmann::json::parse(run.out);
   EXPECT_EQ(result.at("used"), 1);
-  EXPECT_EQ(result.at("skipped"), 1);  // the relation at t = 5..6 s lies outside the trajectory
+  EXPECT_EQ(result.at("not_covered"), 1);  // the relation at t = 5..6 s lies outside the trajectory
   EXPECT_NEAR(result.at("translation_abs_mean_m").get<double>(), 0.5, 1e-9);
   EXPECT_NEAR(result.at("translation_sq_mean_m2").get<double>(), 0.25, 1e-9);
 }

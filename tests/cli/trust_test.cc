@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -392,8 +393,8 @@ TEST(TrustTest, OdometryBaselineOnIntelsRecordedOdometryIsNoUpperBound) {
     EXPECT_GT(ResultMetric(result, "ape_trans", "rmse"), 5.0);
     // The relations: nearly all used, and the odometry far worse than the corrected log itself.
     const double used = ResultMetric(result, "relations_trans", "n");
-    const double skipped = ResultMetric(result, "relations_trans", "skipped");
-    EXPECT_GE(used / (used + skipped), 0.95);
+    const double not_covered = ResultMetric(result, "relations_trans", "not_covered");
+    EXPECT_GE(used / (used + not_covered), 0.95);
     EXPECT_GT(ResultMetric(result, "relations_trans", "mean"), 1.0);
     ASSERT_TRUE(result.contains("reference_floor")) << result.dump();
     double floor_m = std::numeric_limits<double>::quiet_NaN();
@@ -401,6 +402,46 @@ TEST(TrustTest, OdometryBaselineOnIntelsRecordedOdometryIsNoUpperBound) {
       if (metric.at("metric") == "relations_trans" && metric.at("statistic") == "mean") floor_m = metric.at("value");
     }
     EXPECT_LT(floor_m, 0.2);
+  }
+  EXPECT_EQ(runs, 1u);
+}
+
+// A raw log with relations as its only reference: the program's odometry is the robot's (never flagged as the
+// reference), there is no ATE to compute, and the relations outside the cut log are counted apart.
+TEST(TrustTest, TheFullRateIntelLogIsRawAndScoredOnTheRelationsInsideIt) {
+  SLAMSWEEP_REQUIRE_SHARED(raw, "datasets/intel/intel-raw-scans-0-5504.clf.gz");
+  SLAMSWEEP_REQUIRE_SHARED(relations, "datasets/intel/intel.relations");
+  testing::TempDir dir;
+  const auto file = testing::WriteFile(
+      dir / "raw.yaml",
+      "name: raw\noutput: out\nevaluation: {stages: 0}\nalgorithms:\n  - {name: odometry, adapter: odometry}\n"
+      "sequences:\n  - {catalog: intel-full-rate, name: intel-full-rate-800, max_scans: 800}\n");
+  const auto plan = RunCli({"plan", file.string()});
+  ASSERT_EQ(plan.exit_code, 0) << plan.err;
+  EXPECT_THAT(plan.err, Not(HasSubstr("get the reference as odometry")));
+  const auto run = RunCli({"run", file.string()});
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  const nlohmann::json summary = ReadJsonFile(dir / "out" / "summary.json");
+  EXPECT_EQ(summary.at("runs").at(0).at("odometry_is_reference"), false);
+  std::size_t runs = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "out" / "runs")) {
+    ++runs;
+    const nlohmann::json result = ReadJsonFile(entry.path() / "result.json");
+    EXPECT_EQ(result.at("status"), "ok") << result.dump();
+    EXPECT_EQ(result.at("odometry_is_reference"), false);
+    EXPECT_TRUE(std::isnan(ResultMetric(result, "ape_trans", "rmse"))) << "no reference trajectory, no ATE";
+    const double used = ResultMetric(result, "relations_trans", "n");
+    const double not_covered = ResultMetric(result, "relations_trans", "not_covered");
+    const double outside = ResultMetric(result, "relations_trans", "outside_log");
+    EXPECT_GT(used, 50.0);
+    EXPECT_EQ(not_covered, 0.0) << "the baseline's path spans the whole cut";
+    EXPECT_EQ(used + not_covered + outside, 2984.0);
+    EXPECT_EQ(result.at("metric_details").at("coverage").at("basis"), "relations");
+    EXPECT_EQ(result.at("metric_details").at("coverage").at("fraction"), 1.0);
+    EXPECT_GT(ResultMetric(result, "relations_trans", "mean"), 0.0);
+    EXPECT_FALSE(result.contains("reference_floor"));
+    EXPECT_EQ(result.at("sequence").at("stamps").at("outcome"), "retimed");
+    EXPECT_GT(result.at("sequence").at("stamps").at("steps_back").get<int>(), 0);
   }
   EXPECT_EQ(runs, 1u);
 }

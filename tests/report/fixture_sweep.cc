@@ -230,6 +230,14 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
                                 {"rmse", *run.ape_rmse_m},
                                 {"specification", {{"pose_relation", "translation_part"}, {"alignment", "se2"}}}};
       }
+      if (run.relations_mean_m) {
+        metrics.push_back(Metric("relations_trans", "mean", *run.relations_mean_m, "m"));
+        metrics.push_back(Metric("relations_trans", "n", static_cast<double>(run.relations_used), "count"));
+        metrics.push_back(
+            Metric("relations_trans", "not_covered", static_cast<double>(run.relations_not_covered), "count"));
+        metrics.push_back(
+            Metric("relations_trans", "outside_log", static_cast<double>(run.relations_outside_log), "count"));
+      }
       if (run.occupied_ratio)
         metrics.push_back(Metric("occupied_to_free_unknown", "value", *run.occupied_ratio, "ratio"));
       if (run.corners) metrics.push_back(Metric("corners", "value", *run.corners, "count"));
@@ -244,7 +252,7 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
         if (run.map_compare_details) details["map_compare"] = MapCompareDetails(run, dir);
       }
     }
-    if (!run.scan_spacing.is_null()) result["scan_spacing"] = run.scan_spacing;
+    if (!run.scan_spacing.is_null()) result["sequence"]["scan_spacing"] = run.scan_spacing;
     result["outputs"] = outputs;
     result["metrics"] = metrics;
     result["metric_details"] = details;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -26,6 +27,11 @@ struct FixtureRun {
   std::string reason = "killed by SIGSEGV";  ///< used when !ok
   bool with_reference = true;                ///< reference.tum written (and the ATE, when ape_rmse_m is set)
   std::optional<double> ape_rmse_m;
+  /// The relations metric (mean, and the counts the worker writes: n, not_covered, outside_log).
+  std::optional<double> relations_mean_m;
+  std::size_t relations_used = 0;
+  std::size_t relations_not_covered = 0;
+  std::size_t relations_outside_log = 0;
   std::optional<double> occupied_ratio;
   std::optional<double> corners;
   std::optional<double> enclosed_areas;
@@ -47,7 +53,7 @@ struct FixtureRun {
   /// segment_drift_<L>m mean and rpe_segments.csv with 20 segments per length around `segment_drift_pct`.
   std::vector<double> segment_lengths_m;
   double segment_drift_pct = 1.0;
-  /// result.json's scan_spacing block as written; null: left out, as by workers before the block.
+  /// result.json's sequence.scan_spacing block as written; null: left out, as by workers before the block.
   nlohmann::json scan_spacing = nullptr;
 };
 

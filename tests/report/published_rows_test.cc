@@ -87,6 +87,35 @@ TEST(PublishedRowsTest, ACutOfTheLogGetsNone) {
   for (const AlgorithmRow& row : model.sequences.at(0).rows) EXPECT_NE(row.kind, RowKind::kPublished) << row.algorithm;
 }
 
+// A log of part of the run (its relations file reaches beyond it): the published figures are over the whole
+// log, so each row says its figure was not measured on the same relations.
+TEST(PublishedRowsTest, APartialLogGetsThemWithANoteThatTheRelationsDiffer) {
+  slamsweep::testing::TempDir dir;
+  SweepModelOptions options;
+  options.published = Figures(dir);
+  std::vector<RunRecord> runs;
+  for (int i = 0; i < 2; ++i) {
+    RunRecord run = MakeRecord("cartographer", "intel-full-rate", i, 0.03, nullptr);
+    run.metrics.push_back({"relations_trans", "n", 1033.0, "count"});
+    run.metrics.push_back({"relations_trans", "not_covered", 0.0, "count"});
+    run.metrics.push_back({"relations_trans", "outside_log", 1951.0, "count"});
+    runs.push_back(run);
+  }
+  const SweepModel model = BuildSweepModel(runs, options);
+  std::size_t published = 0;
+  for (const AlgorithmRow& row : model.sequences.at(0).rows) {
+    if (row.kind != RowKind::kPublished) {
+      EXPECT_TRUE(row.scope_note.empty());
+      continue;
+    }
+    ++published;
+    EXPECT_EQ(row.scope_note,
+              "over the whole log's relations, not the same relations: this table scores the 1033 of 2984 that lie "
+              "inside its log");
+  }
+  EXPECT_EQ(published, 2u);
+}
+
 TEST(PublishedRowsTest, AMalformedEntryIsNamed) {
   slamsweep::testing::TempDir dir;
   const auto file = slamsweep::testing::WriteFile(

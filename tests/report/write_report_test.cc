@@ -143,6 +143,33 @@ TEST_F(WriteReportTest, SequenceWithoutReferenceRendersSensibly) {
   EXPECT_NE(rmse.find("rmse_mean: n/a"), std::string::npos);
 }
 
+// A log of part of a run: the relations outside it are named as such on the sequence page, apart from the
+// table's numbers, and never as relations the runs missed.
+TEST(WriteReportRelationsTest, RelationsOutsideThePartialLogAreShownAsOutsideTheLog) {
+  TempDir dir;
+  std::vector<testing::FixtureRun> runs;
+  for (int i = 0; i < 2; ++i) {
+    testing::FixtureRun run = testing::MakeRun("cartographer", "intel-full-rate", i);
+    run.with_reference = false;
+    run.relations_mean_m = 0.02 + 0.01 * i;
+    run.relations_used = 1033;
+    run.relations_outside_log = 1951;
+    run.corners = 30;
+    runs.push_back(run);
+  }
+  testing::WriteFixtureSweep(dir / "sweep", runs);
+  testing::FakeArtwork artwork;
+  ReportOptions options;
+  options.artwork = &artwork;
+  WriteReport(dir / "sweep", dir / "report", options);
+  const std::string page = ReadAll(dir / "report/sequences/intel-full-rate-clean.html");
+  EXPECT_NE(page.find("scored on the 1033 relations with both stamps inside this log; 1951 more of the relations "
+                      "file lie outside the log"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("Relations translation mean"), std::string::npos);
+}
+
 TEST_F(WriteReportTest, TextFilesOfThePaperService) {
   Write();
   const std::string rmse = ReadAll(dir_ / "report/files/gmapping/intel-clean/rmse.txt");

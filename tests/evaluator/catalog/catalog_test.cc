@@ -216,6 +216,53 @@ TEST(CatalogTest, UnknownKeysAndBadValuesNameFileAndLine) {
   EXPECT_THAT(ErrorOf([] { ParseCatalog("sequences: [\n", "c.yaml"); }), HasSubstr("c.yaml:"));
 }
 
+// ground_truth says what a CARMEN log's logged pose is: the reference of a corrected log, the odometry of a
+// raw one (relations_only, none), which then has no reference to be flagged against.
+TEST(CatalogTest, ACarmenLogUnderRelationsOnlyOrNoneIsRaw) {
+  testing::TempDir dir;
+  std::string log;
+  for (int i = 0; i < 5; ++i) {
+    log += "FLASER 180";
+    for (int b = 0; b < 180; ++b) log += " 2.0";
+    log += " " + std::to_string(0.1 * i) + " 0 0 " + std::to_string(0.1 * i) + " 0 0 " + std::to_string(i) +
+           " nohost " + std::to_string(i) + "\n";
+  }
+  testing::WriteFile(dir / "a.log", log);
+  const CatalogVariables variables{{"ROOT", dir.path().string()}};
+  CatalogEntry entry = ParseCatalog(kMinimal, "c.yaml").entries.at(0);
+  for (GroundTruthKind raw : {GroundTruthKind::kNone, GroundTruthKind::kRelationsOnly}) {
+    entry.ground_truth = raw;
+    EXPECT_FALSE(LoggedPoseIsReference(entry));
+    const Sequence sequence = LoadCatalogSequence(entry, variables);
+    EXPECT_FALSE(sequence.reference.has_value()) << GroundTruthKindName(raw);
+    EXPECT_FALSE(OdometryEqualsReference(sequence));
+  }
+  entry.ground_truth = GroundTruthKind::kCorrectedPoses;
+  EXPECT_TRUE(LoggedPoseIsReference(entry));
+  const Sequence corrected = LoadCatalogSequence(entry, variables);
+  ASSERT_TRUE(corrected.reference.has_value());
+  EXPECT_TRUE(OdometryEqualsReference(corrected)) << "a corrected log without an ODOM stream: flagged, not hidden";
+}
+
+TEST(CatalogTest, ARelationsWindowIsTwoStampsInOrderAndNeedsRelations) {
+  const Catalog catalog = ParseCatalog(
+      std::string(kMinimal) + "    relations: r.relations\n    relations_window: [100.5, 200]\n", "c.yaml");
+  ASSERT_TRUE(catalog.entries.at(0).relations_window_s.has_value());
+  EXPECT_EQ((*catalog.entries.at(0).relations_window_s)[0], 100.5);
+  EXPECT_EQ((*catalog.entries.at(0).relations_window_s)[1], 200.0);
+  EXPECT_THAT(ErrorOf([] {
+                ParseCatalog(std::string(kMinimal) + "    relations: r\n    relations_window: [2, 1]\n", "c.yaml");
+              }),
+              HasSubstr("c.yaml:8: relations_window: expected from < to"));
+  EXPECT_THAT(
+      ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    relations: r\n    relations_window: 5\n", "c.yaml"); }),
+      HasSubstr("relations_window: expected [from, to]"));
+  EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    relations_window: [1, 2]\n", "c.yaml"); }),
+              HasSubstr("relations_window without relations"));
+  EXPECT_THAT(ErrorOf([] { ParseGroundTruthKind("corrected", "--ground-truth"); }),
+              HasSubstr("--ground-truth: expected one of corrected_poses, exact, relations_only, none"));
+}
+
 TEST(CatalogTest, AnEntryMayNameAReferenceMap) {
   const Catalog catalog = ParseCatalog(std::string(kMinimal) + "    reference_map: ${SHARED}/maps/a.yaml\n", "c.yaml");
   EXPECT_EQ(catalog.entries.at(0).reference_map_path, "${SHARED}/maps/a.yaml");

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
 #include <numbers>
 #include <regex>
@@ -249,11 +250,150 @@ TEST(CarmenSequenceTest, RelationsAreReadAndShiftedOntoTheLogClock) {
   CarmenSequenceOptions options;
   options.relations_path = relations;
   options.relations_offset_s = -1000.0;
-  const Sequence sequence = FromText(Flaser(180, 1, 1, "0 0 0", "0 0 0", 1.0), options);
+  const Sequence sequence =
+      FromText(Flaser(180, 1, 1, "0 0 0", "0 0 0", 0.0) + Flaser(180, 1, 1, "0 0 0", "0 0 0", 2.0), options);
   ASSERT_TRUE(sequence.relations.has_value());
   ASSERT_EQ(sequence.relations->size(), 1u);
   EXPECT_DOUBLE_EQ(sequence.relations->front().t1_s, 0.5);
   EXPECT_DOUBLE_EQ(sequence.relations->front().t2_s, 1.5);
+  EXPECT_EQ(sequence.relations_outside_log, 0u);
+}
+
+// A log of part of a run holds only the relations whose two stamps lie inside its span; the others are
+// counted, never scored (and never counted as missed by a program).
+TEST(CarmenSequenceTest, RelationsOutsideTheLogsSpanAreCountedAndLeftOut) {
+  const testing::TempDir dir;
+  const auto relations = testing::WriteFile(dir / "x.relations",
+                                            "0.5 1.5 1 0 0 0 0 0\n"     // inside
+                                            "1.5 2.5 1 0 0 0 0 0\n"     // ends after the last scan
+                                            "-0.5 1.0 1 0 0 0 0 0\n");  // starts before the first
+  CarmenSequenceOptions options;
+  options.relations_path = relations;
+  const Sequence sequence =
+      FromText(Flaser(180, 1, 1, "0 0 0", "0 0 0", 0.0) + Flaser(180, 1, 1, "0 0 0", "0 0 0", 2.0), options);
+  ASSERT_TRUE(sequence.relations.has_value());
+  ASSERT_EQ(sequence.relations->size(), 1u);
+  EXPECT_DOUBLE_EQ(sequence.relations->front().t1_s, 0.5);
+  EXPECT_EQ(sequence.relations_outside_log, 2u);
+}
+
+TEST(CarmenSequenceTest, ARelationsWindowKeepsOnlyTheRelationsInsideIt) {
+  const testing::TempDir dir;
+  const auto relations = testing::WriteFile(dir / "x.relations", "100.5 101.5 1 0 0 0 0 0\n100.2 103 1 0 0 0 0 0\n");
+  CarmenSequenceOptions options;
+  options.relations_path = relations;
+  options.relations_offset_s = -100.0;
+  options.relations_window_s = std::array<double, 2>{100.0, 102.0};  // the relations' own clock
+  std::string text;
+  for (int i = 0; i < 5; ++i) text += Flaser(180, 1, 1, "0 0 0", "0 0 0", i);
+  const Sequence sequence = FromText(text, options);
+  ASSERT_TRUE(sequence.relations.has_value());
+  ASSERT_EQ(sequence.relations->size(), 1u);
+  EXPECT_DOUBLE_EQ(sequence.relations->front().t1_s, 0.5);
+  EXPECT_EQ(sequence.relations_outside_log, 1u);
+}
+
+/// A raw log of `count` scans 0.2 s apart moving 0.1 m each along x, whose record `late` is stamped
+/// `delay_s` late; scan i's first range is 1 + i / 100, so scans can be told apart.
+std::string RawLogWithALateStamp(int count, int late, double delay_s) {
+  std::string text;
+  for (int i = 0; i < count; ++i) {
+    const std::string pose = std::to_string(0.1 * i) + " 0 0";
+    const double stamp_s = 0.2 * i + (i == late ? delay_s : 0.0);
+    text += Flaser(180, 1.0 + i / 100.0, 2.0, pose, pose, stamp_s);
+  }
+  return text;
+}
+
+CarmenSequenceOptions Raw() {
+  CarmenSequenceOptions options;
+  options.logged_pose_is_reference = false;
+  return options;
+}
+
+// A raw log: its logged pose is the robot's odometry, and there is no reference to flag it against.
+TEST(CarmenSequenceTest, ARawLogsLoggedPoseIsItsOdometryAndNeverTheReference) {
+  const Sequence sequence = FromText(RawLogWithALateStamp(10, -1, 0.0), Raw());
+  EXPECT_FALSE(sequence.reference.has_value());
+  EXPECT_FALSE(OdometryEqualsReference(sequence));
+  ASSERT_EQ(sequence.odometry.size(), 10u);
+  EXPECT_DOUBLE_EQ(sequence.odometry.poses()[3].position.x(), 0.3);
+  ASSERT_TRUE(sequence.stamp_facts.has_value());
+  EXPECT_EQ(sequence.stamp_facts->outcome, StampOutcome::kRecorded);
+  EXPECT_FALSE(sequence.stamp_facts->order_check.has_value());
+  EXPECT_NO_THROW(ValidateSequence(sequence));
+}
+
+// Records stay in file order; the late stamp alone moves between its neighbours (a corrected log's lift
+// would crowd the next records a millisecond apart), and the facts say what was done.
+TEST(CarmenSequenceTest, ARawLogKeepsFileOrderAndRetimesALateStampAlone) {
+  const Sequence sequence = FromText(RawLogWithALateStamp(400, 100, 0.7), Raw());
+  ASSERT_EQ(sequence.scans.size(), 400u);
+  for (std::size_t i = 0; i < 400; ++i) EXPECT_FLOAT_EQ(sequence.scans[i].ranges_m[0], 1.0f + i / 100.0f) << i;
+  EXPECT_NEAR(sequence.scans[100].stamp_s, 20.0, 1e-9);
+  EXPECT_NEAR(sequence.scans[101].stamp_s, 20.2, 1e-9);
+  EXPECT_NEAR(sequence.scans[103].stamp_s, 20.6, 1e-9);
+  ASSERT_TRUE(sequence.stamp_facts.has_value());
+  EXPECT_EQ(sequence.stamp_facts->outcome, StampOutcome::kRetimed);
+  EXPECT_EQ(sequence.stamp_facts->steps_back, 1u);
+  EXPECT_EQ(sequence.stamp_facts->duplicates, 0u);
+  EXPECT_EQ(sequence.stamp_facts->changed, 1u);
+  EXPECT_NEAR(sequence.stamp_facts->largest_change_s, 0.7, 1e-9);
+  EXPECT_TRUE(AnyWarningContains(sequence, "re-timed")) << ::testing::PrintToString(sequence.warnings);
+  EXPECT_NO_THROW(ValidateSequence(sequence));
+  // The same log read as a corrected log lifts instead (today's behaviour for corrected logs).
+  const Sequence corrected = FromText(RawLogWithALateStamp(400, 100, 0.7));
+  EXPECT_NEAR(corrected.scans[101].stamp_s, 20.701, 1e-9);
+}
+
+TEST(CarmenSequenceTest, ARawLogCountsRepeatedStamps) {
+  std::string text;
+  for (int i = 0; i < 50; ++i) {
+    const std::string pose = std::to_string(0.1 * i) + " 0 0";
+    text += Flaser(180, 1, 1, pose, pose, i == 20 ? 0.2 * 19 : 0.2 * i);
+  }
+  const Sequence sequence = FromText(text, Raw());
+  ASSERT_TRUE(sequence.stamp_facts.has_value());
+  EXPECT_EQ(sequence.stamp_facts->duplicates, 1u);
+  EXPECT_EQ(sequence.stamp_facts->steps_back, 0u);
+  EXPECT_EQ(sequence.stamp_facts->changed, 1u);
+  EXPECT_NEAR(sequence.scans[20].stamp_s, 4.0, 1e-9);
+  EXPECT_NO_THROW(ValidateSequence(sequence));
+}
+
+// Relation stamps name scans by the stamps they were logged with: a relation at the late record's logged
+// stamp follows it to its re-timed stamp.
+TEST(CarmenSequenceTest, ARawLogsRelationsFollowTheScansTheyName) {
+  const testing::TempDir dir;
+  const auto relations = testing::WriteFile(dir / "x.relations", "10 20.7 10 0 0 0 0 0\n");
+  CarmenSequenceOptions options = Raw();
+  options.relations_path = relations;
+  const Sequence sequence = FromText(RawLogWithALateStamp(200, 100, 0.7), options);
+  ASSERT_TRUE(sequence.relations.has_value());
+  ASSERT_EQ(sequence.relations->size(), 1u);
+  EXPECT_NEAR(sequence.relations->front().t1_s, 10.0, 1e-9);
+  EXPECT_NEAR(sequence.relations->front().t2_s, 20.0, 1e-9);
+}
+
+// Which order the records were taken in: at the backward step, the scans and odometry change less in file
+// order than in the order the stamps give.
+TEST(CarmenSequenceTest, TheOrderCheckFindsTheFileOrderWhereItIsTheRobots) {
+  std::string text;
+  for (int i = 0; i < 40; ++i) {
+    const std::string pose = std::to_string(0.1 * i) + " 0 0";
+    // Every tenth record's stamp comes after its successor's, as late stamps do.
+    const double stamp_s = 0.2 * i + (i % 10 == 5 ? 0.3 : 0.0);
+    text += Flaser(180, 1.0 + i / 10.0, 2.0 + i / 10.0, pose, pose, stamp_s);
+  }
+  const Sequence sequence = FromText(text, Raw());
+  ASSERT_TRUE(sequence.stamp_facts.has_value());
+  ASSERT_TRUE(sequence.stamp_facts->order_check.has_value());
+  const RecordOrderCheck& check = *sequence.stamp_facts->order_check;
+  EXPECT_EQ(check.steps, 4u);
+  EXPECT_EQ(check.scans_closer_in_file_order, 4u);
+  EXPECT_EQ(check.scans_closer_in_stamp_order, 0u);
+  EXPECT_EQ(check.odometry_shorter_in_file_order, 4u);
+  EXPECT_EQ(check.odometry_shorter_in_stamp_order, 0u);
 }
 
 TEST(CarmenSequenceTest, BadInputIsAnInputErrorThatSaysWhere) {

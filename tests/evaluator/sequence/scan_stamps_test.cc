@@ -7,6 +7,8 @@
 #include <limits>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "evaluator/core/input_error.h"
 
 namespace slamsweep::evaluator {
@@ -117,6 +119,85 @@ TEST(ScanStampsTest, PolicyNamesRoundTrip) {
     EXPECT_NE(std::string(error.what()).find("--stamps"), std::string::npos) << error.what();
     EXPECT_NE(std::string(error.what()).find("record_order"), std::string::npos) << error.what();
   }
+}
+
+StampOptions Retiming() {
+  StampOptions options;
+  options.repair = StampRepair::kRetime;
+  return options;
+}
+
+// A late stamp (the record's arrival delayed) moves alone, between its neighbours; lifting would instead
+// drag the three records after it to a millisecond apart.
+TEST(ScanStampsTest, RetimingMovesALateStampAloneBetweenItsNeighbours) {
+  const std::vector<double> recorded{0.0, 1.0, 2.0, 3.8, 3.0, 4.0, 5.0};
+  const ScanStamps stamps = ChooseScanStamps(recorded, Retiming());
+  EXPECT_EQ(stamps.outcome, StampOutcome::kRetimed);
+  EXPECT_THAT(stamps.retimed, ElementsAre(3u));
+  EXPECT_THAT(stamps.non_increasing, ElementsAre(4u));
+  EXPECT_THAT(stamps.stamps_s, ElementsAre(0.0, 1.0, 2.0, 2.5, 3.0, 4.0, 5.0));
+  const StampFacts facts = DescribeStamps(recorded, stamps);
+  EXPECT_EQ(facts.steps_back, 1u);
+  EXPECT_EQ(facts.duplicates, 0u);
+  EXPECT_DOUBLE_EQ(facts.largest_step_back_s, 0.8);
+  EXPECT_EQ(facts.changed, 1u);
+  EXPECT_DOUBLE_EQ(facts.largest_change_s, 1.3);
+}
+
+// An early stamp is the one outside the longest increasing run, and repeated stamps are re-timed too.
+TEST(ScanStampsTest, RetimingHandlesEarlyStampsDuplicatesAndTheEnds) {
+  const std::vector<double> recorded{0.5, 0.0, 1.0, 1.0, 2.0, 0.2, 4.0, 3.9};
+  StampOptions options = Retiming();
+  options.max_retimed_fraction = 0.5;  // 4 of these 8 move
+  const ScanStamps stamps = ChooseScanStamps(recorded, options);
+  EXPECT_EQ(stamps.outcome, StampOutcome::kRetimed);
+  // Kept: 0.0, 1.0, 2.0, 3.9 (indices 1, 2, 4, 7): of the two 1.0 the first, of the runs of length 4
+  // the one ending lowest.
+  EXPECT_THAT(stamps.retimed, ElementsAre(0u, 3u, 5u, 6u));
+  // Before the first kept stamp the kept spacing continues (1 s per record there); between kept ones,
+  // linear by record index.
+  using ::testing::DoubleNear;
+  EXPECT_THAT(stamps.stamps_s, ElementsAre(DoubleNear(-1.0, 1e-12), 0.0, 1.0, DoubleNear(1.5, 1e-12), 2.0,
+                                           DoubleNear(2.0 + 1.9 / 3, 1e-12), DoubleNear(2.0 + 3.8 / 3, 1e-12), 3.9));
+  const StampFacts facts = DescribeStamps(recorded, stamps);
+  EXPECT_EQ(facts.steps_back, 3u);
+  EXPECT_EQ(facts.duplicates, 1u);
+  EXPECT_DOUBLE_EQ(facts.largest_step_back_s, 1.8);
+  EXPECT_EQ(facts.changed, 4u);
+  EXPECT_NEAR(facts.largest_change_s, 2.0 + 1.9 / 3 - 0.2, 1e-12);
+}
+
+TEST(ScanStampsTest, RetimingFallsBackToRecordOrderWhenMostStampsWouldMove) {
+  const std::vector<double> recorded{5.0, 4.0, 3.0, 2.0, 1.0};
+  const ScanStamps stamps = ChooseScanStamps(recorded, Retiming());
+  EXPECT_EQ(stamps.outcome, StampOutcome::kRecordOrder);
+  EXPECT_THAT(stamps.stamps_s, ElementsAre(0.0, 1.0, 2.0, 3.0, 4.0));
+  EXPECT_TRUE(stamps.retimed.empty());
+  EXPECT_EQ(DescribeStamps(recorded, stamps).changed, 5u);
+}
+
+TEST(ScanStampsTest, RetimingUnderTheRecordedPolicyReportsButDoesNotChange) {
+  StampOptions options = Retiming();
+  options.policy = StampPolicy::kRecorded;
+  const std::vector<double> recorded{0.0, 2.0, 1.0, 3.0};
+  const ScanStamps stamps = ChooseScanStamps(recorded, options);
+  EXPECT_EQ(stamps.outcome, StampOutcome::kRecorded);
+  EXPECT_THAT(stamps.non_increasing, ElementsAre(2u));
+  EXPECT_THAT(stamps.stamps_s, ElementsAre(0.0, 2.0, 1.0, 3.0));
+}
+
+TEST(ScanStampsTest, StampFactsJsonNamesEveryFact) {
+  StampFacts facts;
+  facts.outcome = StampOutcome::kRetimed;
+  facts.records = 9;
+  facts.steps_back = 2;
+  facts.order_check = RecordOrderCheck{2, 2, 0, 1, 1};
+  const nlohmann::json json = StampFactsJson(facts);
+  EXPECT_EQ(json.at("outcome"), "retimed");
+  EXPECT_EQ(json.at("records"), 9);
+  EXPECT_EQ(json.at("steps_back"), 2);
+  EXPECT_EQ(json.at("order_check").at("scans_closer_in_file_order"), 2);
+  EXPECT_EQ(json.at("order_check").at("odometry_shorter_in_stamp_order"), 1);
 }
 
 }  // namespace

@@ -29,7 +29,7 @@ TEST(RelationsMetricTest, AnEstimateEqualToTheReferenceHasZeroError) {
   const Relations relations = {Between(reference, 0, 1), Between(reference, 3, 9), Between(reference, 20, 2)};
   const RelationsResult result = RelationsMetric(RelationsOptions{}).Compute(reference, relations);
   EXPECT_EQ(result.used, 3u);
-  EXPECT_EQ(result.skipped, 0u);
+  EXPECT_EQ(result.not_covered, 0u);
   EXPECT_LT(result.translation_abs_mean_m, 1e-12);
   EXPECT_LT(result.rotation_abs_mean_deg, 1e-6);
 }
@@ -84,10 +84,10 @@ TEST(RelationsMetricTest, RelationsOutsideTheSpanAreSkippedAndCounted) {
                                Relation{30.0, 31.0, Pose()}};
   const RelationsResult result = RelationsMetric(RelationsOptions{}).Compute(reference, relations);
   EXPECT_EQ(result.used, 1u);
-  EXPECT_EQ(result.skipped, 3u);
+  EXPECT_EQ(result.not_covered, 3u);
   const nlohmann::json json = result.ToJson();
   EXPECT_EQ(json.at("used"), 1);
-  EXPECT_EQ(json.at("skipped"), 3);
+  EXPECT_EQ(json.at("not_covered"), 3);
   EXPECT_EQ(json.at("specification").at("t_offset_s"), 0.0);
   EXPECT_TRUE(json.contains("rotation_sq_std_deg2"));
 }

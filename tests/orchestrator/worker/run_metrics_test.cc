@@ -6,6 +6,7 @@
 #include <string>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/run/run_failure.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -47,6 +48,72 @@ TEST(RunMetricsTest, RelationsAreScoredByHand) {
   EXPECT_NEAR(*Find(metrics, "relations_rot", "mean"), 0.0, 1e-12);
   EXPECT_TRUE(metrics.details.contains("relations"));
   EXPECT_FALSE(Find(metrics, "ape_trans", "rmse")) << "no reference, no APE";
+}
+
+// Relations outside the log are counted apart from relations inside it that the run did not cover.
+TEST(RunMetricsTest, RelationsOutsideTheLogAreNotCountedAsNotCovered) {
+  ev::Trajectory estimate;
+  for (int i = 0; i <= 5; ++i) estimate.Add(i, At(i));  // stops half-way through the log's 0..10 s
+  const ev::Relations relations = {{0, 1, At(1)}, {2, 3, At(1)}, {4, 8, At(4)}, {7, 9, At(2)}};
+  MetricInputs inputs;
+  inputs.estimate = &estimate;
+  inputs.relations = &relations;
+  inputs.relations_outside_log = 6;
+  const RunMetrics metrics = ComputeRunMetrics({}, inputs);
+  EXPECT_EQ(*Find(metrics, "relations_trans", "n"), 2.0);
+  EXPECT_EQ(*Find(metrics, "relations_trans", "not_covered"), 2.0);
+  EXPECT_EQ(*Find(metrics, "relations_trans", "outside_log"), 6.0);
+  EXPECT_FALSE(Find(metrics, "relations_trans", "skipped"));
+  EXPECT_EQ(metrics.details.at("relations").at("outside_log"), 6);
+  EXPECT_EQ(metrics.details.at("relations").at("not_covered"), 2);
+  // Relations are the only reference: the coverage counts them, 2 of the 4 inside the log.
+  ASSERT_TRUE(metrics.relations_coverage.has_value());
+  EXPECT_EQ(metrics.relations_coverage->covered, 2u);
+  EXPECT_EQ(metrics.relations_coverage->inside_log, 4u);
+  EXPECT_EQ(metrics.details.at("coverage").at("basis"), "relations");
+  EXPECT_DOUBLE_EQ(metrics.details.at("coverage").at("fraction").get<double>(), 0.5);
+  EvaluationOptions evaluation;
+  evaluation.min_coverage = 0.95;
+  try {
+    RequireCoverage(evaluation, metrics);
+    FAIL() << "expected the coverage gate to fail the run";
+  } catch (const RunFailure& failure) {
+    EXPECT_EQ(failure.kind(), FailureKind::kIncompleteTrajectory);
+    EXPECT_NE(std::string(failure.what()).find("covers 2 of the 4 relations inside the log"), std::string::npos)
+        << failure.what();
+  }
+  evaluation.min_coverage = 0.5;
+  EXPECT_NO_THROW(RequireCoverage(evaluation, metrics));
+}
+
+// An estimate that covers none of the relations is scored 0 of them, and fails the gate.
+TEST(RunMetricsTest, AnEstimateCoveringNoRelationFailsTheRelationsCoverage) {
+  ev::Trajectory estimate;
+  estimate.Add(0, At(0));
+  estimate.Add(1, At(1));
+  const ev::Relations relations = {{4, 8, At(4)}};
+  MetricInputs inputs;
+  inputs.estimate = &estimate;
+  inputs.relations = &relations;
+  const RunMetrics metrics = ComputeRunMetrics({}, inputs);
+  ASSERT_TRUE(metrics.relations_coverage.has_value());
+  EXPECT_EQ(metrics.relations_coverage->covered, 0u);
+  EXPECT_THROW(RequireCoverage({}, metrics), RunFailure);
+}
+
+// With a reference trajectory the gate stays on its time span; relations do not add a second one.
+TEST(RunMetricsTest, WithAReferenceTheCoverageIsTheReferencesTimeSpan) {
+  const ev::Trajectory reference = Line();
+  const ev::Trajectory estimate = Line();
+  const ev::Relations relations = {{0, 1, At(1)}};
+  MetricInputs inputs;
+  inputs.estimate = &estimate;
+  inputs.reference = &reference;
+  inputs.relations = &relations;
+  const RunMetrics metrics = ComputeRunMetrics({}, inputs);
+  EXPECT_FALSE(metrics.relations_coverage.has_value());
+  ASSERT_TRUE(metrics.coverage.has_value());
+  EXPECT_FALSE(metrics.details.at("coverage").contains("basis"));
 }
 
 TEST(RunMetricsTest, ApeAndRpeCarryTheirUnitsAndSpecification) {

@@ -333,7 +333,7 @@ TEST_F(WorkerTest, ResultJsonRecordsHowFarApartTheInputsScansAre) {
   spec_.noise.odometry->alpha3 = 0.05;
   const nlohmann::json result = Run();
   EXPECT_EQ(result["status"], "ok") << result.dump(2);
-  const nlohmann::json& spacing = result["scan_spacing"];
+  const nlohmann::json& spacing = result["sequence"]["scan_spacing"];
   ASSERT_TRUE(spacing.is_object()) << result.dump(2);
   EXPECT_EQ(spacing["steps"], 4);
   EXPECT_NEAR(spacing["gap_s"]["median"].get<double>(), slamsweep::testing::kSparseLogMedianGapS, 1e-9);
@@ -348,9 +348,10 @@ TEST_F(WorkerTest, ResultJsonRecordsHowFarApartTheInputsScansAre) {
   // and 12 m (median 8.5).
   spec_.sequence.max_scans = 3;
   const nlohmann::json cut = Run();
-  EXPECT_EQ(cut["scan_spacing"]["steps"], 2) << cut.dump(2);
-  EXPECT_NEAR(cut["scan_spacing"]["gap_s"]["p95"].get<double>(), 1.95, 1e-9);
-  EXPECT_NEAR(cut["scan_spacing"]["travel_m"]["median"].get<double>(), 8.5, 1e-9);
+  const nlohmann::json& cut_spacing = cut["sequence"]["scan_spacing"];
+  EXPECT_EQ(cut_spacing["steps"], 2) << cut.dump(2);
+  EXPECT_NEAR(cut_spacing["gap_s"]["p95"].get<double>(), 1.95, 1e-9);
+  EXPECT_NEAR(cut_spacing["travel_m"]["median"].get<double>(), 8.5, 1e-9);
 }
 
 TEST_F(WorkerTest, EveryRunWithAReferenceIsScoredAgainstTheReferenceMap) {
