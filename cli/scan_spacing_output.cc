@@ -23,9 +23,8 @@ void PrintScanSpacing(const std::optional<evaluator::ScanSpacing>& spacing, std:
   } else if (*sparse) {
     out << "warning: " << evaluator::SparseScanWarning(*spacing) << "\n";
   } else {
-    const evaluator::SparseScanThreshold threshold = evaluator::SparseScanThresholdInUse();
-    out << fmt::format("  dense enough for scan matching (medians within {:.2f} m and {:.2f} rad)\n",
-                       threshold.median_travel_m, threshold.median_rotation_rad);
+    out << fmt::format("  dense enough for scan matching (median travel within {:.2f} m, docs/data-density.md)\n",
+                       evaluator::SparseScanThresholdInUse().median_travel_m);
   }
 }
 

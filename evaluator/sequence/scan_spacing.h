@@ -37,17 +37,17 @@ struct ScanSpacing {
 /// scan stamps and the odometry poses (one per scan, ValidateSequence's invariant).
 std::optional<ScanSpacing> ComputeScanSpacing(const Sequence& sequence);
 
-/// Scans further apart than this, at the median, are too far apart for scan matching. The bounds lie
-/// between the densities at which Cartographer worked and failed on the intel run (docs/data-density.md).
+/// Scans further apart than this in median travel are too far apart for scan matching. The bound lies
+/// between the intel run's every scan (where Cartographer worked) and every 5th scan (where it lost most of
+/// its accuracy): docs/data-density.md. Rotation is shown, not judged: the study has no log sparse in it alone.
 struct SparseScanThreshold {
   double median_travel_m = 0.0;
-  double median_rotation_rad = 0.0;
 };
 /// The threshold slamsweep marks sparse data by (scan_spacing.cc says which measurements it rests on).
 SparseScanThreshold SparseScanThresholdInUse();
 
-/// Whether consecutive scans are too far apart for scan matching: the median travel or the median
-/// rotation beyond SparseScanThresholdInUse(). Absent when the odometry does not move.
+/// Whether consecutive scans are too far apart for scan matching: the median travel beyond
+/// SparseScanThresholdInUse(). Absent when the odometry does not move.
 std::optional<bool> TooSparseForScanMatching(const ScanSpacing& spacing);
 
 /// One sentence for a user when the scans are too sparse ("" otherwise): the measured medians, the

@@ -346,9 +346,9 @@ Html DensitySection(const SequenceModel& sequence) {
   } else if (*sparse) {
     note += "Too far apart for scan matching (see the mark above the tables).";
   } else {
-    note += "Dense enough for scan matching: the medians are within " + FormatNumber(threshold.median_travel_m) +
-            " m and " + FormatNumber(threshold.median_rotation_rad) +
-            " rad, the spacing at which Cartographer still worked on the intel run (docs/data-density.md).";
+    note += "Dense enough for scan matching: the median travel is within " + FormatNumber(threshold.median_travel_m) +
+            " m, below the spacing at which Cartographer lost most of its accuracy on the intel run "
+            "(docs/data-density.md).";
   }
   return out + Element("p", "note", E(note));
 }

@@ -80,6 +80,42 @@ TEST(DataInfoCommandTest, Fr079ByPath) {
   EXPECT_NE(info.at("warnings")[0].get<std::string>().find("without their sign"), std::string::npos);
 }
 
+TEST(DataInfoCommandTest, TheIntelLogsSpacingSaysWhichIsDenseEnoughForScanMatching) {
+  SLAMSWEEP_REQUIRE_SHARED(raw, "datasets/intel/intel-raw-scans-0-5504.clf.gz");
+  SLAMSWEEP_REQUIRE_SHARED(corrected, "datasets/intel/intel-corrected.log.gz");
+  // Every scan of the run's first 1,088.6 s, its odometry the FLASER records' odometry fields in file order.
+  // Expected values from a short Python reading of those fields (docs/data-density.md), not from slamsweep.
+  const auto full = RunCli({"data", "info", "intel-full-rate", "--json"});
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  const nlohmann::json dense = nlohmann::json::parse(full.out).at("scan_spacing");
+  EXPECT_EQ(dense.at("steps"), 5504);
+  EXPECT_NEAR(dense.at("travel_m").at("median").get<double>(), 0.055507, 1e-6);
+  EXPECT_NEAR(dense.at("travel_m").at("p95").get<double>(), 0.063280, 1e-6);
+  EXPECT_NEAR(dense.at("rotation_rad").at("median").get<double>(), 0.006146, 1e-6);
+  EXPECT_NEAR(dense.at("rotation_rad").at("p95").get<double>(), 0.091260, 1e-6);
+  EXPECT_EQ(dense.at("too_sparse_for_scan_matching"), false);
+  const auto full_text = RunCli({"data", "info", "intel-full-rate"});
+  ASSERT_EQ(full_text.exit_code, 0) << full_text.err;
+  EXPECT_THAT(full_text.out, HasSubstr("  travel:   0.056 m / 0.063 m\n"));
+  EXPECT_THAT(full_text.out, HasSubstr("dense enough for scan matching"));
+  EXPECT_THAT(full_text.out, ::testing::Not(HasSubstr("too far apart")));
+
+  // GMapping's 910 keyframes, two thirds of a metre apart: marked, whatever the odometry they are read with.
+  const auto keyframes = RunCli({"data", "info", "intel"});
+  ASSERT_EQ(keyframes.exit_code, 0) << keyframes.err;
+  EXPECT_THAT(keyframes.out, HasSubstr("between consecutive scans (909 steps)"));
+  EXPECT_THAT(keyframes.out, HasSubstr("warning: scans too far apart for scan matching: consecutive scans are 0.67 m"));
+  const auto logged = RunCli({"data", "info", "intel", "--odometry", "reference", "--json"});
+  ASSERT_EQ(logged.exit_code, 0) << logged.err;
+  const nlohmann::json sparse = nlohmann::json::parse(logged.out).at("scan_spacing");
+  // The corrected log's own FLASER poses and stamps, read the same way in Python.
+  EXPECT_NEAR(sparse.at("gap_s").at("median").get<double>(), 3.35, 1e-6);
+  EXPECT_NEAR(sparse.at("gap_s").at("p95").get<double>(), 4.83, 1e-6);
+  EXPECT_NEAR(sparse.at("travel_m").at("median").get<double>(), 0.670118, 1e-6);
+  EXPECT_NEAR(sparse.at("travel_m").at("p95").get<double>(), 1.037998, 1e-6);
+  EXPECT_EQ(sparse.at("too_sparse_for_scan_matching"), true);
+}
+
 TEST(DataInfoCommandTest, ScanSpacingIsPrintedAndSparseScansAreWarnedOf) {
   testing::TempDir dir;
   const auto log = testing::WriteFile(dir / "sparse.log", testing::SparseCarmenLog());

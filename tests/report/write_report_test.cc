@@ -542,11 +542,11 @@ TEST_F(WriteReportTest, TheIndexOpensWithTheRankedOverviewAndItsVerdict) {
 }
 
 TEST_F(WriteReportTest, ASequenceWhoseScansAreTooFarApartIsMarkedAndItsDensityShown) {
-  // intel's 910 keyframes, as the density study measured them; the other table 5 cm and 0.02 rad per scan.
+  // intel's 910 keyframes as `slamsweep data info intel` measures them (rounded); the other table 5 cm per scan.
   const nlohmann::json keyframes = {{"steps", 909},
-                                    {"gap_s", {{"median", 2.9}, {"p95", 3.6}}},
-                                    {"travel_m", {{"median", 0.67}, {"p95", 1.04}}},
-                                    {"rotation_rad", {{"median", 0.38}, {"p95", 0.56}}},
+                                    {"gap_s", {{"median", 3.31}, {"p95", 4.89}}},
+                                    {"travel_m", {{"median", 0.67}, {"p95", 1.05}}},
+                                    {"rotation_rad", {{"median", 0.39}, {"p95", 0.57}}},
                                     {"odometry_moves", true}};
   const nlohmann::json dense = {{"steps", 2724},
                                 {"gap_s", {{"median", 0.2}, {"p95", 0.5}}},
@@ -563,12 +563,12 @@ TEST_F(WriteReportTest, ASequenceWhoseScansAreTooFarApartIsMarkedAndItsDensitySh
   const std::size_t mark = intel.find("<p class=\"sparse-data\">Sparse data: scans too far apart for scan matching");
   ASSERT_NE(mark, std::string::npos) << intel;
   EXPECT_LT(mark, intel.find("<table>"));  // above the tables it qualifies
-  EXPECT_NE(intel.find("0.67 m and 0.38 rad apart at the median"), std::string::npos);
+  EXPECT_NE(intel.find("0.67 m apart at the median (by the odometry), beyond 0.12 m"), std::string::npos);
   EXPECT_NE(intel.find("<h2>Data density</h2>"), std::string::npos);
-  EXPECT_NE(intel.find("<th>Travel (m)</th><td class=\"num\">0.67</td><td class=\"num\">1.04</td>"),
+  EXPECT_NE(intel.find("<th>Travel (m)</th><td class=\"num\">0.6700</td><td class=\"num\">1.050</td>"),
             std::string::npos)
       << intel;
-  EXPECT_NE(intel.find("<th>Time gap (s)</th><td class=\"num\">2.9</td><td class=\"num\">3.6</td>"),
+  EXPECT_NE(intel.find("<th>Time gap (s)</th><td class=\"num\">3.310</td><td class=\"num\">4.890</td>"),
             std::string::npos);
   EXPECT_NE(intel.find("909 steps"), std::string::npos);
   EXPECT_NE(ReadAll(dir_ / "report/index.html").find("<p class=\"sparse-data\">"), std::string::npos);

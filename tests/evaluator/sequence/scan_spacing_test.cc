@@ -78,28 +78,36 @@ TEST(ScanSpacingTest, OneScanHasNoSpacingAndAParkedOdometryNoVerdict) {
 }
 
 TEST(ScanSpacingTest, TheThresholdRestsOnTheDensityStudy) {
-  // docs/data-density.md: between intel-dense written back (every scan, where Cartographer worked) and
-  // every 2nd scan of it (where it failed).
-  const SparseScanThreshold threshold = SparseScanThresholdInUse();
-  EXPECT_EQ(threshold.median_travel_m, 0.0);
-  EXPECT_EQ(threshold.median_rotation_rad, 0.0);
+  // docs/full-rate-intel.md's three densities of one intel span, median travel between scans (measured in
+  // docs/data-density.md): every scan 0.0555 m (Cartographer 0.025 m), every 5th scan 0.2842 m (Cartographer
+  // 0.18 m, vinySLAM no better than the wheels). The bound is their geometric mean, 0.1256 m, rounded down.
+  const double bound = SparseScanThresholdInUse().median_travel_m;
+  EXPECT_EQ(bound, 0.12);
+  EXPECT_GT(bound, 0.0555);
+  EXPECT_LT(bound, 0.2842);
 }
 
-TEST(ScanSpacingTest, TravelOrRotationBeyondTheThresholdIsSparseTimeIsNot) {
-  const SparseScanThreshold threshold = SparseScanThresholdInUse();
-  const double travel = threshold.median_travel_m;
-  const double turn = threshold.median_rotation_rad;
-  // Just inside both bounds, scans 10 s apart (a slow robot): dense enough.
-  const Sequence slow = Made({{0, 0, 0, 0}, {10, 0.9 * travel, 0, 0.9 * turn}, {20, 1.8 * travel, 0, 1.8 * turn}});
+TEST(ScanSpacingTest, MedianTravelBeyondTheThresholdIsSparseTimeAndRotationAreNot) {
+  // Travel 0.11 m then 0.11 m: median 0.11, inside 0.12; scans 10 s apart and turning 1 rad each (a slow robot
+  // turning in place between scans is shown, not judged): dense enough.
+  const Sequence slow = Made({{0, 0, 0, 0}, {10, 0.11, 0, 1.0}, {20, 0.22, 0, 2.0}});
   EXPECT_EQ(TooSparseForScanMatching(*ComputeScanSpacing(slow)), false);
   EXPECT_EQ(SparseScanWarning(*ComputeScanSpacing(slow)), "");
-  // Beyond the travel bound alone, and beyond the rotation bound alone, 0.1 s apart: sparse.
-  const Sequence far = Made({{0, 0, 0, 0}, {0.1, 1.1 * travel, 0, 0}, {0.2, 2.2 * travel, 0, 0}});
+  // Travel 0.13 m per step, 0.1 s apart, no turn: median 0.13, beyond 0.12: sparse.
+  const Sequence far = Made({{0, 0, 0, 0}, {0.1, 0.13, 0, 0}, {0.2, 0.26, 0, 0}});
   EXPECT_EQ(TooSparseForScanMatching(*ComputeScanSpacing(far)), true);
-  const Sequence turning = Made({{0, 0, 0, 0}, {0.1, 0, 0, 1.1 * turn}, {0.2, 0, 0, 2.2 * turn}});
-  EXPECT_EQ(TooSparseForScanMatching(*ComputeScanSpacing(turning)), true);
+  // Steps 0.05, 0.05, 1, 1, 1 m: sorted, the median (rank 2) is 1 m: sparse.
+  const Sequence mostly_far = Made({{0, 0, 0, 0}, {1, 0.05, 0, 0}, {2, 0.1, 0, 0}, {3, 1.1, 0, 0}, {4, 2.1, 0, 0},
+                                    {5, 3.1, 0, 0}});
+  EXPECT_EQ(TooSparseForScanMatching(*ComputeScanSpacing(mostly_far)), true);
+  // Steps 0.05, 0.05, 0.05, 1, 1 m: median 0.05: a few long steps do not make a log sparse.
+  const Sequence mostly_near = Made({{0, 0, 0, 0}, {1, 0.05, 0, 0}, {2, 0.1, 0, 0}, {3, 0.15, 0, 0},
+                                     {4, 1.15, 0, 0}, {5, 2.15, 0, 0}});
+  EXPECT_EQ(TooSparseForScanMatching(*ComputeScanSpacing(mostly_near)), false);
   const std::string warning = SparseScanWarning(*ComputeScanSpacing(far));
   EXPECT_NE(warning.find("too far apart for scan matching"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("0.13 m apart at the median"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("beyond 0.12 m"), std::string::npos) << warning;
   EXPECT_NE(warning.find("docs/data-density.md"), std::string::npos) << warning;
 }
 
@@ -110,7 +118,8 @@ TEST(ScanSpacingTest, TheJsonBlockReadsBack) {
   EXPECT_NEAR(block.at("gap_s").at("median").get<double>(), 2.0, 1e-12);
   EXPECT_NEAR(block.at("travel_m").at("p95").get<double>(), 0.58, 1e-12);
   EXPECT_EQ(block.at("motion_from"), "odometry poses at the scans");
-  EXPECT_TRUE(block.at("too_sparse_for_scan_matching").is_boolean());
+  EXPECT_EQ(block.at("too_sparse_for_scan_matching"), true);  // median travel 0.4 m
+  EXPECT_EQ(block.at("threshold").at("median_travel_m"), 0.12);
   EXPECT_EQ(ScanSpacingFromJson(block), spacing);
   nlohmann::json broken = block;
   broken["travel_m"].erase("p95");
