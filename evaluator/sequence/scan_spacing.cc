@@ -113,7 +113,8 @@ ScanSpacing ScanSpacingFromJson(const nlohmann::json& block) {
   spacing.travel_m = PercentilesFromJson(block, "travel_m");
   spacing.rotation_rad = PercentilesFromJson(block, "rotation_rad");
   const auto moves = block.find("odometry_moves");
-  if (moves == block.end() || !moves->is_boolean()) throw InputError("scan_spacing.odometry_moves: expected true or false");
+  if (moves == block.end() || !moves->is_boolean())
+    throw InputError("scan_spacing.odometry_moves: expected true or false");
   spacing.odometry_moves = moves->get<bool>();
   return spacing;
 }

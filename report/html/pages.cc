@@ -320,7 +320,8 @@ std::string RenderIndexPage(const SiteData& site) {
 Html DensitySection(const SequenceModel& sequence) {
   Html out = Element("h2", "", E("Data density"));
   if (!sequence.scan_spacing) {
-    return out + Element("p", "note", E("Not recorded: no run of this table has sequence.scan_spacing in its result.json."));
+    return out +
+           Element("p", "note", E("Not recorded: no run of this table has sequence.scan_spacing in its result.json."));
   }
   const evaluator::ScanSpacing& spacing = *sequence.scan_spacing;
   Html rows;

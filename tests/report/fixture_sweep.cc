@@ -303,6 +303,22 @@ std::vector<FixtureRun> StandardFixtureRuns() {
   return runs;
 }
 
+std::vector<FixtureRun> DensityFixtureRuns() {
+  const json keyframes = {{"steps", 909},
+                          {"gap_s", {{"median", 3.31}, {"p95", 4.89}}},
+                          {"travel_m", {{"median", 0.67}, {"p95", 1.05}}},
+                          {"rotation_rad", {{"median", 0.39}, {"p95", 0.57}}},
+                          {"odometry_moves", true}};
+  const json dense = {{"steps", 2724},
+                      {"gap_s", {{"median", 0.2}, {"p95", 0.5}}},
+                      {"travel_m", {{"median", 0.05}, {"p95", 0.12}}},
+                      {"rotation_rad", {{"median", 0.02}, {"p95", 0.1}}},
+                      {"odometry_moves", true}};
+  std::vector<FixtureRun> runs = StandardFixtureRuns();
+  for (FixtureRun& run : runs) run.scan_spacing = run.sequence == "intel" ? keyframes : dense;
+  return runs;
+}
+
 std::vector<FixtureRun> ValidityFixtureRuns() {
   std::vector<FixtureRun> runs;
   const std::pair<const char*, double> levels[] = {{"odo-1", 1.0}, {"odo-2", 2.0}, {"odo-10", 10.0}};

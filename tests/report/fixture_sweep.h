@@ -81,6 +81,11 @@ std::vector<FixtureRun> StandardFixtureRuns();
 /// the occupied ratio falls exactly with it (rho = -1), enclosed areas are constant (no variation).
 std::vector<FixtureRun> ValidityFixtureRuns();
 
+/// StandardFixtureRuns with result.json's sequence.scan_spacing: on "intel" its 910 keyframes as `slamsweep data
+/// info intel` measures them, rounded (909 steps; gap 3.31 / 4.89 s, travel 0.67 / 1.05 m, rotation 0.39 /
+/// 0.57 rad, median / p95: too far apart for scan matching); on "mit-no-ref" 5 cm per scan (dense enough).
+std::vector<FixtureRun> DensityFixtureRuns();
+
 /// A sweep for the segment-length and parameter pages on "intel" (reference) and "mit-no-ref": gmapping
 /// and hector with segment RPE at 10, 20 and 30 m (hector drifting twice as much), "icp-slam" swept
 /// over ICP.maxIterations (20, 40, 80; 40 is best), "rbpf-slam" over particles x resample (2 x 2), 2-3

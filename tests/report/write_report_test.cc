@@ -542,19 +542,7 @@ TEST_F(WriteReportTest, TheIndexOpensWithTheRankedOverviewAndItsVerdict) {
 }
 
 TEST_F(WriteReportTest, ASequenceWhoseScansAreTooFarApartIsMarkedAndItsDensityShown) {
-  // intel's 910 keyframes as `slamsweep data info intel` measures them (rounded); the other table 5 cm per scan.
-  const nlohmann::json keyframes = {{"steps", 909},
-                                    {"gap_s", {{"median", 3.31}, {"p95", 4.89}}},
-                                    {"travel_m", {{"median", 0.67}, {"p95", 1.05}}},
-                                    {"rotation_rad", {{"median", 0.39}, {"p95", 0.57}}},
-                                    {"odometry_moves", true}};
-  const nlohmann::json dense = {{"steps", 2724},
-                                {"gap_s", {{"median", 0.2}, {"p95", 0.5}}},
-                                {"travel_m", {{"median", 0.05}, {"p95", 0.12}}},
-                                {"rotation_rad", {{"median", 0.02}, {"p95", 0.1}}},
-                                {"odometry_moves", true}};
-  std::vector<testing::FixtureRun> runs = testing::StandardFixtureRuns();
-  for (testing::FixtureRun& run : runs) run.scan_spacing = run.sequence == "intel" ? keyframes : dense;
+  std::vector<testing::FixtureRun> runs = testing::DensityFixtureRuns();
   runs.push_back(testing::MakeRun("gmapping", "old-sweep", 0));  // recorded before the block
   testing::WriteFixtureSweep(dir_ / "density", runs);
   WriteReport(dir_ / "density", dir_ / "report", options_);

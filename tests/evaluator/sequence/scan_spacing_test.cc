@@ -97,12 +97,12 @@ TEST(ScanSpacingTest, MedianTravelBeyondTheThresholdIsSparseTimeAndRotationAreNo
   const Sequence far = Made({{0, 0, 0, 0}, {0.1, 0.13, 0, 0}, {0.2, 0.26, 0, 0}});
   EXPECT_EQ(TooSparseForScanMatching(*ComputeScanSpacing(far)), true);
   // Steps 0.05, 0.05, 1, 1, 1 m: sorted, the median (rank 2) is 1 m: sparse.
-  const Sequence mostly_far = Made({{0, 0, 0, 0}, {1, 0.05, 0, 0}, {2, 0.1, 0, 0}, {3, 1.1, 0, 0}, {4, 2.1, 0, 0},
-                                    {5, 3.1, 0, 0}});
+  const Sequence mostly_far =
+      Made({{0, 0, 0, 0}, {1, 0.05, 0, 0}, {2, 0.1, 0, 0}, {3, 1.1, 0, 0}, {4, 2.1, 0, 0}, {5, 3.1, 0, 0}});
   EXPECT_EQ(TooSparseForScanMatching(*ComputeScanSpacing(mostly_far)), true);
   // Steps 0.05, 0.05, 0.05, 1, 1 m: median 0.05: a few long steps do not make a log sparse.
-  const Sequence mostly_near = Made({{0, 0, 0, 0}, {1, 0.05, 0, 0}, {2, 0.1, 0, 0}, {3, 0.15, 0, 0},
-                                     {4, 1.15, 0, 0}, {5, 2.15, 0, 0}});
+  const Sequence mostly_near =
+      Made({{0, 0, 0, 0}, {1, 0.05, 0, 0}, {2, 0.1, 0, 0}, {3, 0.15, 0, 0}, {4, 1.15, 0, 0}, {5, 2.15, 0, 0}});
   EXPECT_EQ(TooSparseForScanMatching(*ComputeScanSpacing(mostly_near)), false);
   const std::string warning = SparseScanWarning(*ComputeScanSpacing(far));
   EXPECT_NE(warning.find("too far apart for scan matching"), std::string::npos) << warning;

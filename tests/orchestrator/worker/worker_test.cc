@@ -324,7 +324,8 @@ TEST_F(WorkerTest, ResultJsonRecordsHowFarApartTheInputsScansAre) {
   spec_.sequence.entry = {};
   spec_.sequence.entry.name = "sparse";
   spec_.sequence.entry.format = "carmen";
-  spec_.sequence.entry.path = slamsweep::testing::WriteFile(tools_ / "sparse.log", slamsweep::testing::SparseCarmenLog());
+  spec_.sequence.entry.path =
+      slamsweep::testing::WriteFile(tools_ / "sparse.log", slamsweep::testing::SparseCarmenLog());
   spec_.sequence.max_scans.reset();
   // Odometry noise changes what the program is given, not how far apart the recorded scans are.
   spec_.noise.name = "noisy";
