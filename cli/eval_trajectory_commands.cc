@@ -1,11 +1,13 @@
 // `slamsweep eval ape|rpe|relations`: flags follow evo's names with dashes.
 #include <fmt/format.h>
 
+#include <future>
 #include <memory>
 #include <optional>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
+#include <utility>
 
 #include "cli/command.h"
 #include "cli/segment_rpe_output.h"
@@ -36,17 +38,38 @@ struct PairOptions {
   bool json = false;
 };
 
-/// Reads a trajectory in the given (or detected) format; format notes such as a CARMEN
-/// log's broken clock go to stderr so that --json output stays one object.
-ev::Trajectory ReadForCommand(const std::string& path, const std::string& format, const Streams& streams) {
+ev::TrajectoryFormat ParseFormatOption(const std::string& format) {
   const std::optional<ev::TrajectoryFormat> parsed = ev::ParseTrajectoryFormat(format);
   if (!parsed) {
     throw ev::InputError("--ref-format/--est-format '" + format +
                          "': expected one of auto, tum, kitti, mrpt, carmen, csv");
   }
-  ev::TrajectoryFile file = ev::ReadTrajectoryFile(path, *parsed);
+  return *parsed;
+}
+
+/// Format notes such as a CARMEN log's broken clock go to stderr so that --json output stays one object.
+ev::Trajectory TrajectoryWithNotes(ev::TrajectoryFile file, const Streams& streams) {
   for (const std::string& warning : file.warnings) streams.err << "slamsweep: warning: " << warning << "\n";
   return std::move(file.trajectory);
+}
+
+/// Reads a trajectory in the given (or detected) format.
+ev::Trajectory ReadForCommand(const std::string& path, const std::string& format, const Streams& streams) {
+  const ev::TrajectoryFormat parsed = ParseFormatOption(format);
+  return TrajectoryWithNotes(ev::ReadTrajectoryFile(path, parsed), streams);
+}
+
+/// The reference and the estimate of an ape or rpe command, read at once: the estimate on a thread of its own
+/// (parsing the files is most of an eval command's time). Errors and notes come as reading one after the other
+/// would give them, the reference's first.
+std::pair<ev::Trajectory, ev::Trajectory> ReadPairForCommand(const PairOptions& options, const Streams& streams) {
+  const ev::TrajectoryFormat reference_format = ParseFormatOption(options.reference_format);
+  std::future<ev::TrajectoryFile> estimate = std::async(std::launch::async, [&options] {
+    return ev::ReadTrajectoryFile(options.estimate_path, ParseFormatOption(options.estimate_format));
+  });
+  ev::Trajectory reference =
+      TrajectoryWithNotes(ev::ReadTrajectoryFile(options.reference_path, reference_format), streams);
+  return {std::move(reference), TrajectoryWithNotes(estimate.get(), streams)};
 }
 
 void AddPairOptions(CLI::App& command, PairOptions& options) {
@@ -110,9 +133,8 @@ void RegisterApe(CLI::App& eval, const Streams& streams) {
     ape_options.pose_relation = ev::ParsePoseRelation(options->pose_relation);
     ape_options.association = ToAssociation(*options);
     ape_options.alignment = ToAlignment(*options);
-    ev::Trajectory reference = ReadForCommand(options->reference_path, options->reference_format, streams);
-    ev::Trajectory estimate = ReadForCommand(options->estimate_path, options->estimate_format, streams);
-    PrintMetric(ev::Ape(ape_options).Compute(std::move(reference), std::move(estimate)), options->json, streams.out);
+    const auto [reference, estimate] = ReadPairForCommand(*options, streams);
+    PrintMetric(ev::Ape(ape_options).Compute(reference, estimate), options->json, streams.out);
   });
 }
 
@@ -144,8 +166,7 @@ void RegisterRpe(CLI::App& eval, const Streams& streams) {
             "--segments: give no --align, --pose-relation, --all-pairs or --pairs-from-reference; "
             "segments are chosen on the reference and report translation and rotation");
       }
-      const ev::Trajectory reference = ReadForCommand(options->reference_path, options->reference_format, streams);
-      const ev::Trajectory estimate = ReadForCommand(options->estimate_path, options->estimate_format, streams);
+      const auto [reference, estimate] = ReadPairForCommand(*options, streams);
       PrintSegmentRpe(reference, estimate, ParseSegmentsOption(*segments), ToAssociation(*options), options->json,
                       streams.out);
       return;
@@ -161,8 +182,7 @@ void RegisterRpe(CLI::App& eval, const Streams& streams) {
     rpe_options.all_pairs = *all_pairs;
     rpe_options.association = ToAssociation(*options);
     rpe_options.alignment = ToAlignment(*options);
-    const ev::Trajectory reference = ReadForCommand(options->reference_path, options->reference_format, streams);
-    const ev::Trajectory estimate = ReadForCommand(options->estimate_path, options->estimate_format, streams);
+    const auto [reference, estimate] = ReadPairForCommand(*options, streams);
     PrintMetric(ev::Rpe(rpe_options).Compute(reference, estimate), options->json, streams.out);
   });
 }
@@ -184,8 +204,11 @@ void RegisterRelations(CLI::App& eval, const Streams& streams) {
   command->callback([options, streams] {
     ev::RelationsOptions relations_options;
     relations_options.t_offset_s = options->t_offset_s;
+    // The relations file is read on a thread of its own while the trajectory is read here.
+    std::future<ev::Relations> relations_read =
+        std::async(std::launch::async, [options] { return ev::ReadRelations(options->relations_path); });
     const ev::Trajectory estimate = ReadForCommand(options->trajectory_path, "auto", streams);
-    const ev::Relations relations = ev::ReadRelations(options->relations_path);
+    const ev::Relations relations = relations_read.get();
     const ev::RelationsResult result = ev::RelationsMetric(relations_options).Compute(estimate, relations);
     const nlohmann::json j = result.ToJson();
     if (options->json) {

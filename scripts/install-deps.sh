@@ -54,9 +54,10 @@ packages=(
   # clone compiles only what changed; hyperfine: bench/cli, whole-process times); python3-scipy is the
   # independent reference for the Spearman rank correlation of the metric validity study and the
   # rank tests; python3-statsmodels for the Holm correction (tests/evaluator/statistics); python3-pil reads
-  # the stage animations back (tests/evaluator/formats/map)
+  # the stage animations back (tests/evaluator/formats/map); python3-opencv runs bench/map_metrics_reference.py, the
+  # plain Python + OpenCV paper map metrics that `eval map` is timed against (docs/performance.md)
   # clang-format checks the source layout (tests/architecture)
-  libgtest-dev libgmock-dev libbenchmark-dev shellcheck clang-format ccache hyperfine python3-scipy python3-statsmodels python3-pil
+  libgtest-dev libgmock-dev libbenchmark-dev shellcheck clang-format ccache hyperfine python3-scipy python3-statsmodels python3-pil python3-opencv
   # the service tests: /metrics parsed by the Prometheus project's own parser; wrk drives bench/service/load_test.sh
   python3-prometheus-client wrk
   # the Slurm executor's test: a real one-node cluster on localhost (jobs/slurm/local-cluster.sh)

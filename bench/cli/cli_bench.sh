@@ -40,7 +40,6 @@ command -v hyperfine >/dev/null || { echo "cli_bench.sh: hyperfine missing (apt 
 out=$(realpath -m -- "$out")  # the cases run inside the inputs folder
 inputs="$out/inputs"
 mkdir -p "$out"
-/usr/bin/python3 "$root/bench/cli/make_inputs.py" "$inputs"
 shared=${SLAMSWEEP_SHARED:-$root/../shared}
 
 # name | target ms ("half:B": at most half the first program's with two programs, else half of B, the
@@ -69,6 +68,17 @@ prepare_worker_run() {
   fi
   find "$sweep_out/runs" -mindepth 1 -maxdepth 1 -type d | head -n 1
 }
+
+# Only the inputs the selected cases read (the generator's 1,000,000-pose pair takes minutes).
+input_files=()
+for entry in "${cases[@]}"; do
+  IFS='|' read -r name _ _ arguments <<<"$entry"
+  [[ -z "$only" || "$name" =~ $only ]] || continue
+  for word in $arguments; do
+    [[ "$word" =~ ^(tum|map|relations)-.*[.](tum|yaml|pgm|png|txt)$ ]] && input_files+=("$word")
+  done
+done
+/usr/bin/python3 "$root/bench/cli/make_inputs.py" "$inputs" --files "${input_files[@]}"
 
 median() { sort -n | awk '{v[NR]=$1} END {print (NR % 2) ? v[(NR+1)/2] : (v[NR/2] + v[NR/2+1]) / 2}'; }
 

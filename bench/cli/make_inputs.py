@@ -4,13 +4,19 @@
   trajectories: tum-<n>-ref.tum / tum-<n>-est.tum for n = 1000, 100000, 1000000: a 10 Hz,
                 ~1 m/s wandering planar drive and a drifting, noisy, rigidly displaced copy with
                 +-3 ms stamp jitter, printed with Python's shortest round-trip repr (as evo writes).
+  relations:    relations-<n>.txt for n = 100000: Kuemmerle's format (t1 t2 x y z roll pitch yaw),
+                the reference's exact motion from every pose to the one 10 poses later (n - 10 lines).
   maps:         map-<side>.pgm + .yaml (map_saver trinary: 0 occupied, 254 free, 205 unknown) and
                 map-<side>.png for side = 200 and 2000: a floor plan of rooms with 2-cell walls,
                 doors, furniture and speckle, unknown outside a margin.
 
 Deterministic (fixed seeds); a file that already exists is kept, so a rerun costs nothing.
-Usage: make_inputs.py OUT_DIR
+Usage: make_inputs.py OUT_DIR [--files NAME ...]
+  --files  write only the inputs these file names belong to (a TUM pair, a map with its .pgm/.yaml/.png,
+           a relations file), e.g. what the selected benchmark cases read: the 1,000,000-pose pair alone
+           takes minutes of Python.
 """
+import argparse
 import math
 import os
 import random
@@ -48,6 +54,31 @@ def write_tum_pair(directory, count):
         out.writelines(reference_lines)
     with open(estimate_path, "w") as out:
         out.writelines(estimate_lines)
+
+
+def write_relations(directory, count, step=10):
+    """Relations on the reference drive of write_tum_pair (same path, same stamps)."""
+    path = os.path.join(directory, f"relations-{count}.txt")
+    if os.path.exists(path):
+        return
+    poses = []
+    x = y = yaw = 0.0
+    for i in range(count):
+        t = 0.1 * i
+        yaw += 0.02 * math.sin(0.01 * t) + 0.01 * math.sin(0.0007 * t)
+        x += 0.1 * math.cos(yaw)
+        y += 0.1 * math.sin(yaw)
+        poses.append((t, x, y, yaw))
+    lines = []
+    for i in range(count - step):
+        t1, x1, y1, yaw1 = poses[i]
+        t2, x2, y2, yaw2 = poses[i + step]
+        c, s = math.cos(yaw1), math.sin(yaw1)
+        dx, dy = c * (x2 - x1) + s * (y2 - y1), -s * (x2 - x1) + c * (y2 - y1)
+        dyaw = math.atan2(math.sin(yaw2 - yaw1), math.cos(yaw2 - yaw1))
+        lines.append(f"{t1!r} {t2!r} {dx!r} {dy!r} 0 0 0 {dyaw!r}\n")
+    with open(path, "w") as out:
+        out.writelines(lines)
 
 
 def floor_plan(side):
@@ -109,14 +140,24 @@ def write_map(directory, side):
 
 
 def main():
-    if len(sys.argv) != 2:
-        sys.exit("usage: make_inputs.py OUT_DIR")
-    directory = sys.argv[1]
+    parser = argparse.ArgumentParser(usage="make_inputs.py OUT_DIR [--files NAME ...]")
+    parser.add_argument("directory")
+    parser.add_argument("--files", nargs="*", default=None)
+    args = parser.parse_args()
+    directory = args.directory
+
+    def wanted(*names):
+        return args.files is None or any(name in args.files for name in names)
+
     os.makedirs(directory, exist_ok=True)
     for count in (1000, 100_000, 1_000_000):
-        write_tum_pair(directory, count)
+        if wanted(f"tum-{count}-ref.tum", f"tum-{count}-est.tum"):
+            write_tum_pair(directory, count)
+    if wanted("relations-100000.txt"):
+        write_relations(directory, 100_000)
     for side in (200, 2000):
-        write_map(directory, side)
+        if wanted(f"map-{side}.yaml", f"map-{side}.pgm", f"map-{side}.png"):
+            write_map(directory, side)
 
 
 if __name__ == "__main__":

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -89,18 +90,18 @@ const char* ReadFiniteNumber(const char* first, const char* last, double& value)
   return exact.ptr;
 }
 
-std::size_t EstimateLineCount(std::string_view content) {
-  // The mean length of the first lines, with a margin: a vector reserved from it rarely grows.
-  constexpr std::size_t kSampleLines = 64;
+std::size_t CountLines(std::string_view content) {
+  // memchr jumps from newline to newline (vectorised in glibc), several times faster than a byte loop.
   std::size_t lines = 0;
-  std::size_t sampled = 0;
-  while (lines < kSampleLines && sampled < content.size()) {
-    const std::size_t newline = content.find('\n', sampled);
-    sampled = newline == std::string_view::npos ? content.size() : newline + 1;
+  const char* cursor = content.data();
+  const char* const end = cursor + content.size();
+  while (cursor < end) {
+    const void* newline = std::memchr(cursor, '\n', static_cast<std::size_t>(end - cursor));
     ++lines;
+    if (newline == nullptr) break;
+    cursor = static_cast<const char*>(newline) + 1;
   }
-  if (sampled == 0) return 0;
-  return content.size() / sampled * lines * 5 / 4 + lines;
+  return lines;
 }
 
 std::vector<std::string_view> SplitFields(std::string_view line, std::string_view separators) {

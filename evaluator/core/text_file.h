@@ -91,8 +91,9 @@ void ForEachNumberLine(std::string_view content, OnNumbers&& on_numbers, OnOther
 /// written with a non-zero digit, subnormals, infinities and NaNs are left to std::from_chars.
 const char* ReadFiniteNumber(const char* first, const char* last, double& value);
 
-/// About how many lines `content` has, from the length of its first lines: for reserving.
-std::size_t EstimateLineCount(std::string_view content);
+/// How many lines `content` has (a last line without its newline counts): what a reader of one record per
+/// line reserves, so that its vectors are allocated once, at their final size.
+std::size_t CountLines(std::string_view content);
 
 // ---- implementation of the templates ----
 inline bool IsFieldBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "evaluator/core/huge_pages.h"
 #include "evaluator/core/input_error.h"
 
 namespace slamsweep::evaluator::inline core {
@@ -39,6 +40,8 @@ void Trajectory::Add(double stamp_s, const Pose& pose) {
 void Trajectory::Reserve(std::size_t count) {
   stamps_s_.reserve(count);
   poses_.reserve(count);
+  AdviseHugePages(stamps_s_);
+  AdviseHugePages(poses_);
 }
 
 double Trajectory::StartS() const {

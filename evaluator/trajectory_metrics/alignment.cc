@@ -23,20 +23,20 @@ constexpr std::array<ModeName, 6> kModeNames = {{{AlignmentMode::kNone, "none"},
                                                  {AlignmentMode::kSim2, "sim2"},
                                                  {AlignmentMode::kSim3, "sim3"}}};
 
-// The dimension-generic core of Umeyama's method; kDim = 2 reads x and y only.
-template <int kDim>
-Alignment Umeyama(std::span<const Pose> source, std::span<const Pose> target, bool with_scale) {
+// The dimension-generic core of Umeyama's method over n pairs; source(i) and target(i) give pair i's poses
+// (from spans, or through the indices of an association). kDim = 2 reads x and y only.
+template <int kDim, typename Source, typename Target>
+Alignment Umeyama(std::size_t n, const Source& source, const Target& target, bool with_scale) {
   using Vector = Eigen::Matrix<double, kDim, 1>;
   using Matrix = Eigen::Matrix<double, kDim, kDim>;
   const auto point = [](const Pose& pose) -> Vector { return pose.position.template head<kDim>(); };
-  const std::size_t n = source.size();
   const double count = static_cast<double>(n);
 
   Vector mean_source = Vector::Zero();
   Vector mean_target = Vector::Zero();
   for (std::size_t i = 0; i < n; ++i) {
-    mean_source += point(source[i]);
-    mean_target += point(target[i]);
+    mean_source += point(source(i));
+    mean_target += point(target(i));
   }
   mean_source /= count;
   mean_target /= count;
@@ -44,8 +44,8 @@ Alignment Umeyama(std::span<const Pose> source, std::span<const Pose> target, bo
   double variance_source = 0.0;
   Matrix covariance = Matrix::Zero();
   for (std::size_t i = 0; i < n; ++i) {
-    const Vector dx = point(source[i]) - mean_source;
-    const Vector dy = point(target[i]) - mean_target;
+    const Vector dx = point(source(i)) - mean_source;
+    const Vector dy = point(target(i)) - mean_target;
     variance_source += dx.squaredNorm();
     covariance.noalias() += dy * dx.transpose();
   }
@@ -78,6 +78,19 @@ Alignment Umeyama(std::span<const Pose> source, std::span<const Pose> target, bo
   alignment.scale = scale;
   alignment.planar = kDim == 2;
   return alignment;
+}
+
+// The alignment of n pairs (pair k: reference_at(k), estimate_at(k)) for a mode other than kNone.
+template <typename ReferenceAt, typename EstimateAt>
+Alignment AlignPairs(std::size_t n, const ReferenceAt& reference_at, const EstimateAt& estimate_at,
+                     const AlignmentOptions& options) {
+  if (n == 0) throw InputError("alignment: no associated pairs to align");
+  if (options.mode == AlignmentMode::kOrigin) return OriginAlignment(reference_at(0), estimate_at(0));
+  const std::size_t used = options.n_to_align == -1 ? n : std::min(n, static_cast<std::size_t>(options.n_to_align));
+  const bool with_scale = options.mode == AlignmentMode::kSim2 || options.mode == AlignmentMode::kSim3;
+  const bool planar = options.mode == AlignmentMode::kSe2 || options.mode == AlignmentMode::kSim2;
+  return planar ? Umeyama<2>(used, estimate_at, reference_at, with_scale)
+                : Umeyama<3>(used, estimate_at, reference_at, with_scale);
 }
 
 }  // namespace
@@ -134,7 +147,10 @@ Alignment UmeyamaAlignment(std::span<const Pose> source, std::span<const Pose> t
                      std::to_string(target.size()) + " target positions (expected equal counts)");
   }
   if (source.empty()) throw InputError("Umeyama alignment: no position pairs to align");
-  return planar ? Umeyama<2>(source, target, with_scale) : Umeyama<3>(source, target, with_scale);
+  const auto source_at = [source](std::size_t i) -> const Pose& { return source[i]; };
+  const auto target_at = [target](std::size_t i) -> const Pose& { return target[i]; };
+  return planar ? Umeyama<2>(source.size(), source_at, target_at, with_scale)
+                : Umeyama<3>(source.size(), source_at, target_at, with_scale);
 }
 
 Alignment OriginAlignment(const Pose& reference_origin, const Pose& estimate_origin) {
@@ -154,18 +170,18 @@ std::optional<Alignment> ComputeAlignment(const Trajectory& reference, const Tra
     throw InputError("alignment: reference has " + std::to_string(reference.size()) + " poses but estimate has " +
                      std::to_string(estimate.size()) + " (expected associated pairs)");
   }
-  if (estimate.empty()) throw InputError("alignment: no associated pairs to align");
-  if (options.mode == AlignmentMode::kOrigin)
-    return OriginAlignment(reference.poses().front(), estimate.poses().front());
+  return AlignPairs(
+      estimate.size(), [&](std::size_t k) -> const Pose& { return reference.poses()[k]; },
+      [&](std::size_t k) -> const Pose& { return estimate.poses()[k]; }, options);
+}
 
-  const std::size_t used = options.n_to_align == -1
-                               ? estimate.size()
-                               : std::min(estimate.size(), static_cast<std::size_t>(options.n_to_align));
-  const bool with_scale = options.mode == AlignmentMode::kSim2 || options.mode == AlignmentMode::kSim3;
-  const bool planar = options.mode == AlignmentMode::kSe2 || options.mode == AlignmentMode::kSim2;
-  const std::span<const Pose> source(estimate.poses().data(), used);
-  const std::span<const Pose> target(reference.poses().data(), used);
-  return UmeyamaAlignment(source, target, with_scale, planar);
+std::optional<Alignment> ComputeAlignment(const Trajectory& reference, const Trajectory& estimate,
+                                          const AssociatedIndices& pairs, const AlignmentOptions& options) {
+  ValidateAlignmentOptions(options);
+  if (options.mode == AlignmentMode::kNone) return std::nullopt;
+  return AlignPairs(
+      pairs.size(), [&](std::size_t k) -> const Pose& { return reference.poses()[pairs.reference_ids[k]]; },
+      [&](std::size_t k) -> const Pose& { return estimate.poses()[pairs.estimate_ids[k]]; }, options);
 }
 
 Trajectory ApplyAlignment(Trajectory trajectory, const Alignment& alignment) {

@@ -8,6 +8,7 @@
 
 #include "evaluator/core/pose.h"
 #include "evaluator/core/trajectory.h"
+#include "evaluator/trajectory_metrics/association.h"
 
 namespace slamsweep::evaluator::inline trajectory_metrics {
 
@@ -68,6 +69,10 @@ Alignment OriginAlignment(const Pose& reference_origin, const Pose& estimate_ori
 /// or nullopt for kNone. Throws InputError for empty input or a degenerate configuration.
 std::optional<Alignment> ComputeAlignment(const Trajectory& reference, const Trajectory& estimate,
                                           const AlignmentOptions& options);
+
+/// The same for the pairs of an association given as indices into the unpaired trajectories (no pose copied).
+std::optional<Alignment> ComputeAlignment(const Trajectory& reference, const Trajectory& estimate,
+                                          const AssociatedIndices& pairs, const AlignmentOptions& options);
 
 /// The trajectory with every pose moved by `alignment` (stamps unchanged). Takes its input by
 /// value so that a caller done with the original can move it in and avoid a copy.

@@ -19,31 +19,32 @@ nlohmann::json Ape::Specification() const {
 }
 
 MetricResult Ape::Compute(const Trajectory& reference, const Trajectory& estimate) const {
-  return Score(Associate(reference, estimate, options_.association));
-}
-
-MetricResult Ape::Compute(Trajectory&& reference, Trajectory&& estimate) const {
-  return Score(Associate(std::move(reference), std::move(estimate), options_.association));
-}
-
-MetricResult Ape::Score(Association association) const {
+  const AssociatedIndices pairs = AssociateIndices(reference, estimate, options_.association);
   MetricResult result;
-  result.alignment = ComputeAlignment(association.reference, association.estimate, options_.alignment);
-  const Trajectory aligned = result.alignment ? ApplyAlignment(std::move(association.estimate), *result.alignment)
-                                              : std::move(association.estimate);
+  result.alignment = ComputeAlignment(reference, estimate, pairs, options_.alignment);
 
-  const std::vector<Pose>& reference_poses = association.reference.poses();
-  const std::vector<Pose>& estimate_poses = aligned.poses();
-  result.errors.resize(reference_poses.size());
-  for (std::size_t i = 0; i < reference_poses.size(); ++i) {
-    const Pose& expected = reference_poses[i];
-    const Pose& actual = estimate_poses[i];
-    result.errors[i] = options_.pose_relation == PoseRelation::kTranslation
-                           ? (expected.position - actual.position).norm()
-                           : RadToDeg(RotationAngleRad(expected.orientation.conjugate() * actual.orientation));
+  // Each pair's error straight from the input poses: the aligned estimate is never stored.
+  const std::vector<Pose>& reference_poses = reference.poses();
+  const std::vector<Pose>& estimate_poses = estimate.poses();
+  const bool translation = options_.pose_relation == PoseRelation::kTranslation;
+  const Alignment identity;
+  const Alignment& alignment = result.alignment ? *result.alignment : identity;
+  const Eigen::Quaterniond rotation(alignment.rotation);
+  result.errors.resize(pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const Pose& expected = reference_poses[pairs.reference_ids[k]];
+    const Pose& recorded = estimate_poses[pairs.estimate_ids[k]];
+    if (translation) {
+      const Eigen::Vector3d actual = result.alignment ? alignment.Apply(recorded.position) : recorded.position;
+      result.errors[k] = (expected.position - actual).norm();
+    } else {
+      const Eigen::Quaterniond actual =
+          result.alignment ? (rotation * recorded.orientation).normalized() : recorded.orientation;
+      result.errors[k] = RadToDeg(RotationAngleRad(expected.orientation.conjugate() * actual));
+    }
   }
 
-  FinishMetricResult("ape", options_.pose_relation, Specification(), association, result);
+  FinishMetricResult("ape", options_.pose_relation, Specification(), pairs, result);
   return result;
 }
 

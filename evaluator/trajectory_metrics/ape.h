@@ -22,10 +22,9 @@ class Ape {
   /// Throws InputError naming the first invalid option.
   explicit Ape(ApeOptions options);
 
-  /// Throws InputError when no pairs associate or the alignment is degenerate.
+  /// Throws InputError when no pairs associate or the alignment is degenerate. Pairs are taken by index:
+  /// no pose of either trajectory is copied.
   MetricResult Compute(const Trajectory& reference, const Trajectory& estimate) const;
-  /// The same for trajectories the caller gives up: no copy of the paired poses is made.
-  MetricResult Compute(Trajectory&& reference, Trajectory&& estimate) const;
 
   const ApeOptions& options() const { return options_; }
   /// The specification stored in every result: pose_relation, alignment, n_to_align,
@@ -33,8 +32,6 @@ class Ape {
   nlohmann::json Specification() const;
 
  private:
-  MetricResult Score(Association association) const;
-
   ApeOptions options_;
 };
 

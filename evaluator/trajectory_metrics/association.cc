@@ -33,16 +33,24 @@ class NearestStamp {
     double difference_s = 0.0;
   };
 
-  explicit NearestStamp(std::vector<double> stamps_s) : sorted_(std::move(stamps_s)) {
-    if (std::is_sorted(sorted_.begin(), sorted_.end())) return;
-    const std::size_t n = sorted_.size();
+  // Reads `stamps_s` in place when they ascend and need no shift (the usual case), else sorts a shifted copy.
+  NearestStamp(std::span<const double> stamps_s, double shift_s) : sorted_(stamps_s) {
+    if (shift_s == 0.0 && std::is_sorted(stamps_s.begin(), stamps_s.end())) return;
+    std::vector<double> shifted(stamps_s.begin(), stamps_s.end());
+    for (double& stamp : shifted) stamp += shift_s;
+    const std::size_t n = shifted.size();
+    if (std::is_sorted(shifted.begin(), shifted.end())) {
+      owned_ = std::move(shifted);
+      sorted_ = owned_;
+      return;
+    }
     order_.resize(n);
     std::iota(order_.begin(), order_.end(), std::size_t{0});
     std::stable_sort(order_.begin(), order_.end(),
-                     [this](std::size_t a, std::size_t b) { return sorted_[a] < sorted_[b]; });
-    std::vector<double> values(n);
-    for (std::size_t k = 0; k < n; ++k) values[k] = sorted_[order_[k]];
-    sorted_ = std::move(values);
+                     [&](std::size_t a, std::size_t b) { return shifted[a] < shifted[b]; });
+    owned_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) owned_[k] = shifted[order_[k]];
+    sorted_ = owned_;
     tree_.assign(2 * n, 0);
     for (std::size_t k = 0; k < n; ++k) tree_[n + k] = order_[k];
     for (std::size_t k = n - 1; k > 0; --k) tree_[k] = std::min(tree_[2 * k], tree_[2 * k + 1]);
@@ -106,7 +114,8 @@ class NearestStamp {
     return lowest;
   }
 
-  std::vector<double> sorted_;      // stamp values in ascending order
+  std::span<const double> sorted_;  // stamp values in ascending order (the input's, or owned_)
+  std::vector<double> owned_;       // shifted or sorted stamps, when the input's could not be read in place
   std::vector<std::size_t> order_;  // original index of each sorted position; empty = identity
   std::vector<std::size_t> tree_;   // segment tree of minimum original index over sorted positions
 };
@@ -164,9 +173,7 @@ Pairing PairByStamp(const Trajectory& reference, const Trajectory& estimate, con
   // The offset belongs to the estimate: shift it forward, or the reference backward.
   const double shift_s = pairing.estimate_longer ? options.t_offset_s : -options.t_offset_s;
 
-  std::vector<double> shifted_s(longer.stamps_s());
-  for (double& stamp : shifted_s) stamp += shift_s;
-  const NearestStamp nearest(std::move(shifted_s));
+  const NearestStamp nearest(longer.stamps_s(), shift_s);
 
   pairing.shorter_ids.reserve(shorter.size());
   pairing.longer_ids.reserve(shorter.size());
@@ -194,32 +201,44 @@ Pairing PairByStamp(const Trajectory& reference, const Trajectory& estimate, con
   return pairing;
 }
 
-/// The association of `pairing` from the paired poses (copies or kept in place, as the caller chose).
-Association Assemble(const Pairing& pairing, Trajectory shorter_paired, Trajectory longer_paired) {
-  Association association;
+}  // namespace
+
+AssociatedIndices AssociateIndices(const Trajectory& reference, const Trajectory& estimate,
+                                   const AssociationOptions& options) {
+  Pairing pairing = PairByStamp(reference, estimate, options);
+  AssociatedIndices indices;
   const bool estimate_longer = pairing.estimate_longer;
-  association.reference = std::move(estimate_longer ? shorter_paired : longer_paired);
-  association.estimate = std::move(estimate_longer ? longer_paired : shorter_paired);
-  association.reference_unpaired = estimate_longer ? pairing.shorter_unpaired : pairing.longer_unpaired;
-  association.estimate_unpaired = estimate_longer ? pairing.longer_unpaired : pairing.shorter_unpaired;
+  indices.reference_ids = std::move(estimate_longer ? pairing.shorter_ids : pairing.longer_ids);
+  indices.estimate_ids = std::move(estimate_longer ? pairing.longer_ids : pairing.shorter_ids);
+  indices.reference_unpaired = estimate_longer ? pairing.shorter_unpaired : pairing.longer_unpaired;
+  indices.estimate_unpaired = estimate_longer ? pairing.longer_unpaired : pairing.shorter_unpaired;
+  return indices;
+}
+
+Association Associate(const Trajectory& reference, const Trajectory& estimate, const AssociationOptions& options) {
+  const AssociatedIndices indices = AssociateIndices(reference, estimate, options);
+  Association association;
+  association.reference = reference.Subset(indices.reference_ids);
+  association.estimate = estimate.Subset(indices.estimate_ids);
+  association.reference_unpaired = indices.reference_unpaired;
+  association.estimate_unpaired = indices.estimate_unpaired;
   return association;
+}
+
+namespace {
+
+bool IsEveryIndexInOrder(std::span<const std::size_t> ids, std::size_t size) {
+  if (ids.size() != size) return false;
+  for (std::size_t k = 0; k < size; ++k) {
+    if (ids[k] != k) return false;
+  }
+  return true;
 }
 
 }  // namespace
 
-Association Associate(const Trajectory& reference, const Trajectory& estimate, const AssociationOptions& options) {
-  const Pairing pairing = PairByStamp(reference, estimate, options);
-  const Trajectory& shorter = pairing.estimate_longer ? reference : estimate;
-  const Trajectory& longer = pairing.estimate_longer ? estimate : reference;
-  return Assemble(pairing, shorter.Subset(pairing.shorter_ids), longer.Subset(pairing.longer_ids));
-}
-
-Association Associate(Trajectory&& reference, Trajectory&& estimate, const AssociationOptions& options) {
-  const Pairing pairing = PairByStamp(reference, estimate, options);
-  Trajectory& shorter = pairing.estimate_longer ? reference : estimate;
-  Trajectory& longer = pairing.estimate_longer ? estimate : reference;
-  return Assemble(pairing, std::move(shorter).Select(pairing.shorter_ids),
-                  std::move(longer).Select(pairing.longer_ids));
+PairedSide::PairedSide(const Trajectory& trajectory, std::span<const std::size_t> ids) : input_(&trajectory) {
+  if (!IsEveryIndexInOrder(ids, trajectory.size())) copy_ = trajectory.Subset(ids);
 }
 
 }  // namespace slamsweep::evaluator::inline trajectory_metrics

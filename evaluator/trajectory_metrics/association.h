@@ -2,6 +2,9 @@
 
 #include <cstddef>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <span>
+#include <vector>
 
 #include "evaluator/core/trajectory.h"
 
@@ -46,8 +49,33 @@ struct Association {
 /// both time ranges and suggests a larger --t-max-diff or a --t-offset.
 Association Associate(const Trajectory& reference, const Trajectory& estimate, const AssociationOptions& options);
 
-/// Associate for trajectories the caller gives up: their paired poses stay where they are
-/// (Trajectory::Select) instead of being copied. The same pairs and counts.
-Association Associate(Trajectory&& reference, Trajectory&& estimate, const AssociationOptions& options);
+/// The pairs of Associate as indices, without copying a pose: pair k is reference pose reference_ids[k]
+/// with estimate pose estimate_ids[k], in Associate's order, with the same unpaired counts.
+struct AssociatedIndices {
+  std::vector<std::size_t> reference_ids;
+  std::vector<std::size_t> estimate_ids;
+  std::size_t reference_unpaired = 0;
+  std::size_t estimate_unpaired = 0;
+
+  std::size_t size() const { return reference_ids.size(); }
+};
+
+/// Associate's pairing as indices (same options, same errors).
+AssociatedIndices AssociateIndices(const Trajectory& reference, const Trajectory& estimate,
+                                   const AssociationOptions& options);
+
+/// One side of an association in pair order: the input trajectory itself when every one of its poses is
+/// paired, in order (ids 0, 1, ..., n - 1: two trajectories on one clock), otherwise a copy of just the
+/// paired poses. Holds a reference to `trajectory`, which must outlive it.
+class PairedSide {
+ public:
+  PairedSide(const Trajectory& trajectory, std::span<const std::size_t> ids);
+
+  const Trajectory& trajectory() const { return copy_ ? *copy_ : *input_; }
+
+ private:
+  const Trajectory* input_;
+  std::optional<Trajectory> copy_;
+};
 
 }  // namespace slamsweep::evaluator::inline trajectory_metrics

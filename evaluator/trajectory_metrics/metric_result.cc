@@ -15,14 +15,14 @@ nlohmann::json MetricResult::ToJson() const {
 }
 
 void FinishMetricResult(std::string metric, PoseRelation pose_relation, nlohmann::json specification,
-                        const Association& association, MetricResult& result) {
+                        const AssociatedIndices& pairs, MetricResult& result) {
   result.metric = std::move(metric);
   result.unit = std::string(PoseRelationUnit(pose_relation));
   result.specification = std::move(specification);
   result.statistics = ComputeStatistics(result.errors);
-  result.pairs = association.reference.size();
-  result.reference_unpaired = association.reference_unpaired;
-  result.estimate_unpaired = association.estimate_unpaired;
+  result.pairs = pairs.size();
+  result.reference_unpaired = pairs.reference_unpaired;
+  result.estimate_unpaired = pairs.estimate_unpaired;
 }
 
 }  // namespace slamsweep::evaluator::inline trajectory_metrics

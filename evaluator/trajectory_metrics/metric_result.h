@@ -43,6 +43,6 @@ struct MetricResult {
 /// relation, specification, statistics of the errors, and the association counts. APE and RPE
 /// share it so both report the same fields the same way.
 void FinishMetricResult(std::string metric, PoseRelation pose_relation, nlohmann::json specification,
-                        const Association& association, MetricResult& result);
+                        const AssociatedIndices& pairs, MetricResult& result);
 
 }  // namespace slamsweep::evaluator::inline trajectory_metrics

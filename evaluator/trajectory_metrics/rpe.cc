@@ -1,5 +1,6 @@
 #include "evaluator/trajectory_metrics/rpe.h"
 
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -29,16 +30,20 @@ nlohmann::json Rpe::Specification() const {
 }
 
 MetricResult Rpe::Compute(const Trajectory& reference, const Trajectory& estimate) const {
-  Association association = Associate(reference, estimate, options_.association);
+  const AssociatedIndices pairs_by_stamp = AssociateIndices(reference, estimate, options_.association);
   MetricResult result;
-  result.alignment = ComputeAlignment(association.reference, association.estimate, options_.alignment);
-  const Trajectory aligned = result.alignment ? ApplyAlignment(std::move(association.estimate), *result.alignment)
-                                              : std::move(association.estimate);
+  result.alignment = ComputeAlignment(reference, estimate, pairs_by_stamp, options_.alignment);
+  // The paired poses, in pair order: the inputs themselves when every pose is paired in order.
+  const PairedSide paired_reference(reference, pairs_by_stamp.reference_ids);
+  const PairedSide paired_estimate(estimate, pairs_by_stamp.estimate_ids);
+  std::optional<Trajectory> aligned_storage;
+  if (result.alignment) aligned_storage = ApplyAlignment(paired_estimate.trajectory(), *result.alignment);
+  const Trajectory& aligned = aligned_storage ? *aligned_storage : paired_estimate.trajectory();
 
   // evo takes the pairs from the (aligned) estimate unless told otherwise.
   const std::vector<IndexPair> pairs =
-      SelectPairs(options_.pairs_from_reference ? association.reference : aligned, Selection());
-  const std::vector<Pose>& q = association.reference.poses();
+      SelectPairs(options_.pairs_from_reference ? paired_reference.trajectory() : aligned, Selection());
+  const std::vector<Pose>& q = paired_reference.trajectory().poses();
   const std::vector<Pose>& p = aligned.poses();
   result.errors.resize(pairs.size());
   for (std::size_t k = 0; k < pairs.size(); ++k) {
@@ -49,7 +54,7 @@ MetricResult Rpe::Compute(const Trajectory& reference, const Trajectory& estimat
                            : RadToDeg(RotationAngleRad(error.orientation));
   }
 
-  FinishMetricResult("rpe", options_.pose_relation, Specification(), association, result);
+  FinishMetricResult("rpe", options_.pose_relation, Specification(), pairs_by_stamp, result);
   return result;
 }
 

@@ -63,10 +63,12 @@ SegmentRpe::SegmentRpe(SegmentRpeOptions options) : options_(std::move(options))
 }
 
 SegmentRpeResult SegmentRpe::Compute(const Trajectory& reference, const Trajectory& estimate) const {
-  const Association association = Associate(reference, estimate, options_.association);
-  const std::vector<Pose>& q = association.reference.poses();
-  const std::vector<Pose>& p = association.estimate.poses();
-  const std::vector<double>& stamps = association.reference.stamps_s();
+  const AssociatedIndices association = AssociateIndices(reference, estimate, options_.association);
+  const PairedSide paired_reference(reference, association.reference_ids);
+  const PairedSide paired_estimate(estimate, association.estimate_ids);
+  const std::vector<Pose>& q = paired_reference.trajectory().poses();
+  const std::vector<Pose>& p = paired_estimate.trajectory().poses();
+  const std::vector<double>& stamps = paired_reference.trajectory().stamps_s();
 
   SegmentRpeResult result;
   result.specification = ToJson(options_.association);
@@ -76,14 +78,15 @@ SegmentRpeResult SegmentRpe::Compute(const Trajectory& reference, const Trajecto
   result.specification["pairs_from"] = "reference";
   result.specification["delta_tolerance"] = options_.relative_tolerance;
   result.specification["alignment"] = "none";
-  result.pairs = association.reference.size();
+  result.pairs = association.size();
   result.reference_unpaired = association.reference_unpaired;
   result.estimate_unpaired = association.estimate_unpaired;
 
   for (const double length : options_.lengths_m) {
     SegmentLengthResult segments;
     segments.length_m = length;
-    segments.pairs = FindPairs(association.reference, {length, DeltaUnit::kMeters, true, options_.relative_tolerance});
+    segments.pairs =
+        FindPairs(paired_reference.trajectory(), {length, DeltaUnit::kMeters, true, options_.relative_tolerance});
     for (const auto [i, j] : segments.pairs) {
       const Pose error = Relative(Relative(q[i], q[j]), Relative(p[i], p[j]));
       const double translation = error.position.norm();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <stdexcept>
 #include <system_error>
 
@@ -20,6 +21,8 @@ constexpr const char* kSystemEtc[] = {
 
 // POSIX shared memory, as much as a container gets by default.
 constexpr std::uint64_t kDevShmBytes = 64 << 20;
+// The sandbox's own writable tmpfs folders: bubblewrap would make a bound path's missing parents there, writable.
+constexpr const char* kScratchFolders[] = {"/tmp", "/dev/shm"};
 
 bool Inside(const fs::path& path, const fs::path& folder) {
   const std::string p = path.string();
@@ -36,6 +39,31 @@ fs::path Checked(const fs::path& path) {
 
 void Append(std::vector<std::string>& argv, std::initializer_list<std::string> items) {
   argv.insert(argv.end(), items.begin(), items.end());
+}
+
+/// The stands in the sandbox's scratch folders: for each path mounted two or more levels below /tmp or /dev/shm
+/// (/tmp/a/out/runs/r0/raw), the folder right below it (/tmp/a), unless that is mounted itself. bubblewrap makes a
+/// mount point's missing parents as plain folders of the file system beneath, here the writable private tmpfs: the
+/// program could write beside its raw/ and input/, into a copy of its run folder that never reaches the host. An
+/// empty tmpfs on the stand holds those parents and is remounted read-only once everything is bound in it
+/// (--remount-ro needs a mount point, which a folder made by --dir is not; binding a parent from the host would show
+/// its other files).
+std::vector<fs::path> Stands(const std::vector<fs::path>& mounted) {
+  std::vector<fs::path> stands;
+  for (const fs::path& path : mounted) {
+    for (const fs::path scratch : kScratchFolders) {
+      const fs::path relative = path.lexically_relative(scratch);
+      if (relative.empty() || *relative.begin() == ".." || std::distance(relative.begin(), relative.end()) < 2) {
+        continue;
+      }
+      const fs::path stand = scratch / *relative.begin();
+      if (std::find(mounted.begin(), mounted.end(), stand) == mounted.end() &&
+          std::find(stands.begin(), stands.end(), stand) == stands.end()) {
+        stands.push_back(stand);
+      }
+    }
+  }
+  return stands;
 }
 
 }  // namespace
@@ -82,7 +110,7 @@ std::vector<std::string> BwrapCommand(const SandboxSpec& spec, const std::vector
   if (spec.file_size_limit_bytes > 0) Append(argv, {"--size", tmpfs_size});
   Append(argv, {"--tmpfs", "/tmp"});
   // System folders, then the run's own paths with parents before children, so that a writable folder
-  // inside a read-only one is bound on top of it (and a run folder under /tmp on top of the private one).
+  // inside a read-only one is bound on top of it (and a run folder under /tmp on a stand in the private one).
   std::vector<fs::path> bound;
   std::error_code error;
   for (const fs::path& path : SystemPaths()) {
@@ -95,10 +123,6 @@ std::vector<std::string> BwrapCommand(const SandboxSpec& spec, const std::vector
       bound.push_back(path);
     }
   }
-  std::vector<fs::path> masks;
-  for (const fs::path& path : spec.hidden) masks.push_back(Checked(path));
-  std::sort(masks.begin(), masks.end());
-  for (const fs::path& mask : masks) Append(argv, {"--tmpfs", mask.string()});
   struct Bind {
     fs::path path;
     bool writable;
@@ -108,6 +132,15 @@ std::vector<std::string> BwrapCommand(const SandboxSpec& spec, const std::vector
   for (const fs::path& path : spec.writable) binds.push_back({Checked(path), true});
   binds.push_back({init, false});
   std::stable_sort(binds.begin(), binds.end(), [](const Bind& a, const Bind& b) { return a.path < b.path; });
+  // Empty tmpfs folders, read-only at the end: a secret's folder under the system paths, covered, and the
+  // stands under /tmp and /dev/shm that hold the parents of what is bound there.
+  std::vector<fs::path> masks;
+  for (const fs::path& path : spec.hidden) masks.push_back(Checked(path));
+  std::vector<fs::path> mounted = masks;
+  for (const Bind& bind : binds) mounted.push_back(bind.path);
+  for (const fs::path& stand : Stands(mounted)) masks.push_back(stand);
+  std::sort(masks.begin(), masks.end());
+  for (const fs::path& mask : masks) Append(argv, {"--tmpfs", mask.string()});
   for (const Bind& bind : binds) {
     const bool covered =
         std::any_of(bound.begin(), bound.end(), [&](const fs::path& folder) { return Inside(bind.path, folder); });

@@ -68,6 +68,13 @@ TEST(BinaryTest, TheCoreLoadsNoHeavyLibrary) {
   }
 }
 
+TEST(BinaryTest, TheCoreLoadsLibcryptoOnlyForADigest) {
+  // libcrypto's relocations were two thirds of the core's start-up; it is loaded by the first SHA-256.
+  const ProcessResult result = RunBinary("--version", "LD_TRACE_LOADED_OBJECTS=1");
+  EXPECT_THAT(result.out, ::testing::HasSubstr("libstdc++"));
+  EXPECT_THAT(result.out, ::testing::Not(::testing::HasSubstr("libcrypto")));
+}
+
 TEST(BinaryTest, TheWorkerLoadsNoImageCodecLibrary) {
   // Every run starts the sweep program as its worker: OpenCV's imgcodecs would bring GDAL and a hundred
   // more libraries, about 70 ms of loading per run. PNGs are read and written with libpng.

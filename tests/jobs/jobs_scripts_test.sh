@@ -9,7 +9,8 @@
 #   quickstart (jobs/run-sweep.sh on configs/quickstart.yaml), service (jobs/submit-sweep.sh against a real
 #   `slamsweep serve`), groovy_lint (npm-groovy-lint on every Jenkinsfile; exit 77 = skipped when the linter
 #   is not installed, a failure under CI=true), speed (jobs/speed-check.sh on two cases, one run each: its
-#   outputs and exit status, never the timings).
+#   outputs and exit status, never the timings), paired_speed (jobs/paired-speed-check.sh: the same program on
+#   both sides is run and tabled; a program planted with a busy loop before it starts is found slower, exit 3).
 set -euo pipefail
 
 case_name=${1:?usage: jobs_scripts_test.sh CASE SLAMSWEEP_BINARY}
@@ -199,6 +200,14 @@ check_bad_arguments() {
   expect_log "BENCH_RUNS must be a positive integer, got '0'" "speed-check.sh names the bad BENCH_RUNS"
   expect_status 2 "speed-check.sh without a slamsweep program" env SLAMSWEEP_BIN="$work/no-slamsweep" \
     "$jobs_dir/speed-check.sh" "$work/speed-nobin"
+  expect_status 2 "paired-speed-check.sh with two output folders" "$jobs_dir/paired-speed-check.sh" "$work/a" "$work/b"
+  expect_log 'usage: jobs/paired-speed-check.sh' "paired-speed-check.sh prints its usage"
+  expect_status 2 "paired-speed-check.sh with BENCH_RUNS=2" env BENCH_RUNS=2 "$jobs_dir/paired-speed-check.sh" \
+    "$work/paired-bad"
+  expect_log "BENCH_RUNS must be an integer of at least 3, got '2'" "paired-speed-check.sh names the bad BENCH_RUNS"
+  expect_status 2 "paired-speed-check.sh with a baseline that is no commit" env SPEED_BASELINE=no-such-commit \
+    "$jobs_dir/paired-speed-check.sh" "$work/paired-nocommit"
+  expect_log "SPEED_BASELINE 'no-such-commit' names no commit" "paired-speed-check.sh names the bad SPEED_BASELINE"
   expect_status 2 "scale-check.sh with two output folders" "$jobs_dir/scale-check.sh" "$work/a" "$work/b"
   expect_log 'usage: jobs/scale-check.sh' "scale-check.sh prints its usage"
   expect_status 2 "scale-check.sh with SCALE_SIZES=1k" env SCALE_SIZES=1k "$jobs_dir/scale-check.sh" "$work/scale-bad"
@@ -524,18 +533,28 @@ check_quickstart() {
 
 # --- speed: the nightly's speed stage, end to end on two cases ---------------------------------------------
 
+# run_speed_stage NAME COMMAND...: runs a speed stage's script (output to $work/last.log) and leaves its exit
+# status in $status. 3 is a slow verdict, which a loaded CI machine may give: the wiring is what is checked, not
+# the speed, so 0 and 3 pass and anything else fails (return 1).
+run_speed_stage() {
+  local name=$1
+  shift
+  status=0
+  "$@" >"$work/last.log" 2>&1 || status=$?
+  tail -8 "$work/last.log"
+  if ((status == 0 || status == 3)); then
+    pass "$name exit $status (0 no verdict against it, 3 slow)"
+  else
+    fail "$name exited $status"
+    return 1
+  fi
+}
+
 check_speed() {
   cd "$work"
   local status=0
-  BENCH_RUNS=1 BENCH_ONLY='^(version|eval-ape-1k)$' "$jobs_dir/speed-check.sh" speed >"$work/last.log" 2>&1 || status=$?
-  tail -8 "$work/last.log"
-  # 3 would be a missed target on a loaded CI machine: the wiring is what is checked here, not the speed.
-  if ((status == 0 || status == 3)); then
-    pass "speed-check.sh exit $status (0 met, 3 missed)"
-  else
-    fail "speed-check.sh exited $status"
-    return
-  fi
+  run_speed_stage speed-check.sh env BENCH_RUNS=1 BENCH_ONLY='^(version|eval-ape-1k)$' \
+    "$jobs_dir/speed-check.sh" speed || return
   [[ -s speed/table.md ]] && pass "speed/table.md written" || fail "speed/table.md missing"
   if python3 - speed/summary.json <<'EOF'
 import json, sys
@@ -567,6 +586,40 @@ EOF
     pass "the slow program's table has a NO row"
   else
     fail "the slow program's table has no NO row: $(cat slow/table.md 2>/dev/null)"
+  fi
+}
+
+# --- paired_speed: the nightly's paired stage, the same program against itself and against a planted slowdown ---
+
+check_paired_speed() {
+  cd "$work"
+  local status=0
+  # The same program twice: 3 would be a false alarm of the rank test (alpha 0.01) on a noisy machine.
+  run_speed_stage "paired-speed-check.sh on the same program twice" env SPEED_BASELINE_BIN="$SLAMSWEEP_BIN" \
+    BENCH_RUNS=6 BENCH_ONLY='^eval-ape-se3-100k$' "$jobs_dir/paired-speed-check.sh" same || return
+  if python3 - same/verdict.json same/samples.json <<'EOF'
+import json, sys
+verdict = json.load(open(sys.argv[1]))
+samples = json.load(open(sys.argv[2]))
+assert [case["case"] for case in verdict["cases"]] == ["eval-ape-se3-100k"], verdict
+case = samples["cases"][0]
+assert case["same_output"] and len(case["before"]["cpu_s"]) == 6 and len(case["after"]["cpu_s"]) == 6, case
+EOF
+  then
+    pass "verdict.json and samples.json hold the case, six pairs and equal outputs"
+  else
+    fail "same/verdict.json or same/samples.json is wrong"
+  fi
+  # The guard must be able to fail: a program that burns CPU in a loop before it starts is slower on any machine.
+  local slow=$work/busy-slamsweep
+  printf '#!/bin/sh\ni=0\nwhile [ $i -lt 300000 ]; do i=$((i + 1)); done\nexec "%s" "$@"\n' "$SLAMSWEEP_BIN" >"$slow"
+  chmod +x "$slow"
+  expect_status 3 "paired-speed-check.sh on a program planted with a busy loop" env SPEED_BASELINE_BIN="$SLAMSWEEP_BIN" \
+    SLAMSWEEP_BIN="$slow" BENCH_RUNS=6 BENCH_ONLY='^eval-ape-se3-100k$' "$jobs_dir/paired-speed-check.sh" slow
+  if grep -q '| SLOWER |' slow/table.md 2>/dev/null; then
+    pass "the planted slowdown's table has a SLOWER row"
+  else
+    fail "the planted slowdown's table has no SLOWER row: $(cat slow/table.md 2>/dev/null)"
   fi
 }
 
@@ -627,7 +680,8 @@ case $case_name in
     check_jenkinsfile "$jobs_dir/Jenkinsfile.nightly" 4 "cron(" "jobs/run-shard.sh" "jobs/merge-shards.sh" \
       "jobs/nightly-compare.sh" "unstable(" "error(" "publishHTML" "junit testResults" "stage('Speed')" \
       "jobs/speed-check.sh out/speed" "label 'slamsweep-bench'" "stage('Scale')" "jobs/scale-check.sh out/scale" \
-      "stage('Report in a browser')" "jobs/browser-check.sh out/screenshots" "artifacts: 'out/screenshots/**'"
+      "stage('Report in a browser')" "jobs/browser-check.sh out/screenshots" "artifacts: 'out/screenshots/**'" \
+      "stage('Speed against the previous build')" "jobs/paired-speed-check.sh out/paired" "name: 'SPEED_BASELINE'"
     check_jenkinsfile "$jobs_dir/Jenkinsfile.service" 2 "stage('Setup')" "stage('Sweep')" "stage('Publish')" \
       "jobs/submit-sweep.sh" "withCredentials" "junit testResults: 'out/junit.xml', allowEmptyResults: false" \
       "publishHTML" "name: 'SLAMSWEEP_SERVER'" "name: 'PRIORITY'"
@@ -651,6 +705,7 @@ case $case_name in
   service) check_service ;;
   groovy_lint) check_groovy_lint ;;
   speed) check_speed ;;
+  paired_speed) check_paired_speed ;;
   *)
     echo "unknown case $case_name" >&2
     exit 2

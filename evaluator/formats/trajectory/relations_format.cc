@@ -1,5 +1,8 @@
 #include "evaluator/formats/trajectory/relations_format.h"
 
+#include <array>
+
+#include "evaluator/core/huge_pages.h"
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
 #include "evaluator/formats/trajectory/euler_angles.h"
@@ -9,31 +12,45 @@ namespace slamsweep::evaluator::inline formats::inline trajectory {
 namespace {
 
 constexpr std::string_view kLayout = "t1 t2 x y z roll pitch yaw";
+constexpr std::array<std::string_view, 8> kFieldNames = {"t1", "t2", "x", "y", "z", "roll", "pitch", "yaw"};
 
 }  // namespace
 
 Relations ParseRelations(std::string_view content, const std::filesystem::path& source) {
   Relations relations;
-  ForEachRecord(source, content, [&](const TextRecord& record) {
-    if (record.size() != 8) {
-      record.Fail("expected 8 fields (" + std::string(kLayout) + "), got " + std::to_string(record.size()));
-    }
+  relations.reserve(CountLines(content));
+  AdviseHugePages(relations);
+  // v: t1 t2 x y z roll pitch yaw
+  const auto add = [&](const std::array<double, 8>& v) {
     Relation relation;
-    relation.t1_s = record.Number(0, "t1");
-    relation.t2_s = record.Number(1, "t2");
-    relation.delta.position = {record.Number(2, "x"), record.Number(3, "y"), record.Number(4, "z")};
-    relation.delta.orientation = QuaternionFromRollPitchYaw({.roll_rad = record.Number(5, "roll"),
-                                                             .pitch_rad = record.Number(6, "pitch"),
-                                                             .yaw_rad = record.Number(7, "yaw")});
+    relation.t1_s = v[0];
+    relation.t2_s = v[1];
+    relation.delta.position = {v[2], v[3], v[4]};
+    relation.delta.orientation = QuaternionFromRollPitchYaw({.roll_rad = v[5], .pitch_rad = v[6], .yaw_rad = v[7]});
     relations.push_back(relation);
-  });
+  };
+  // Lines of eight finite numbers take the quick path; any other line is read field by field, which names
+  // what is wrong with it.
+  ForEachNumberLine<8>(
+      content, [&](const std::array<double, 8>& v, std::string_view, std::size_t) { add(v); },
+      [&](std::string_view line, std::size_t line_number) {
+        const TextRecord record(source, line_number, SplitFields(line, " \t\r"));
+        if (record.size() != 8) {
+          record.Fail("expected 8 fields (" + std::string(kLayout) + "), got " + std::to_string(record.size()));
+        }
+        std::array<double, 8> v{};
+        for (std::size_t i = 0; i < v.size(); ++i) v[i] = record.Number(i, kFieldNames[i]);  // the first bad one fails
+        add(v);
+      });
   if (relations.empty()) {
     throw InputError(Located(source, 0, "no relations found (expected lines '" + std::string(kLayout) + "')"));
   }
   return relations;
 }
 
-Relations ReadRelations(const std::filesystem::path& path) { return ParseRelations(ReadTextFile(path), path); }
+Relations ReadRelations(const std::filesystem::path& path) {
+  return ParseRelations(ReadTextFileContent(path).text(), path);
+}
 
 void WriteRelations(const Relations& relations, std::ostream& out) {
   for (const Relation& relation : relations) {

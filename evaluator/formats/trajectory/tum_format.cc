@@ -35,7 +35,7 @@ void AddTumRecord(const TextRecord& record, Trajectory& trajectory) {
 
 Trajectory ParseTum(std::string_view content, const std::filesystem::path& source) {
   Trajectory trajectory;
-  trajectory.Reserve(EstimateLineCount(content));
+  trajectory.Reserve(CountLines(content));
   ForEachNumberLine<8>(
       content,
       [&](const std::array<double, 8>& v, std::string_view line, std::size_t line_number) {
@@ -62,7 +62,7 @@ Trajectory ParseTum(std::string_view content, const std::filesystem::path& sourc
   return trajectory;
 }
 
-Trajectory ReadTum(const std::filesystem::path& path) { return ParseTum(ReadTextFile(path), path); }
+Trajectory ReadTum(const std::filesystem::path& path) { return ParseTum(ReadTextFileContent(path).text(), path); }
 
 void WriteTum(const Trajectory& trajectory, std::ostream& out) {
   out << "# timestamp tx ty tz qx qy qz qw\n";

@@ -55,6 +55,33 @@ void ExpectSamePoses(const Trajectory& actual, const Trajectory& expected) {
   }
 }
 
+TEST(AlignmentTest, ByIndicesEqualsTheAlignmentOfThePairedCopiesBitForBit) {
+  // Pairs taken out of order, one pose twice: the fit through the indices reads the same poses in the same order
+  // as the fit over copies of them, so every mode gives the very same doubles.
+  const Trajectory estimate = Spread3d(50);
+  const Trajectory reference = Transformed(estimate, TiltedRotation(), Eigen::Vector3d(1, 2, 3), 1.3);
+  AssociatedIndices pairs;
+  for (std::size_t k = 0; k < 40; ++k) {
+    pairs.reference_ids.push_back((k * 7) % 50);
+    pairs.estimate_ids.push_back(k == 5 ? 3 : (k * 7) % 50);
+  }
+  const Trajectory reference_copy = reference.Subset(pairs.reference_ids);
+  const Trajectory estimate_copy = estimate.Subset(pairs.estimate_ids);
+  for (AlignmentMode mode :
+       {AlignmentMode::kOrigin, AlignmentMode::kSe2, AlignmentMode::kSe3, AlignmentMode::kSim2, AlignmentMode::kSim3}) {
+    for (int n_to_align : {-1, 10}) {
+      const AlignmentOptions options{mode, n_to_align};
+      const Alignment by_indices = *ComputeAlignment(reference, estimate, pairs, options);
+      const Alignment by_copies = *ComputeAlignment(reference_copy, estimate_copy, options);
+      EXPECT_EQ(by_indices.rotation, by_copies.rotation) << AlignmentModeName(mode);
+      EXPECT_EQ(by_indices.translation, by_copies.translation) << AlignmentModeName(mode);
+      EXPECT_EQ(by_indices.scale, by_copies.scale) << AlignmentModeName(mode);
+      EXPECT_EQ(by_indices.planar, by_copies.planar) << AlignmentModeName(mode);
+    }
+  }
+  EXPECT_FALSE(ComputeAlignment(reference, estimate, pairs, AlignmentOptions{}).has_value());
+}
+
 TEST(AlignmentTest, Se3RecoversAKnownRigidTransform) {
   const Trajectory estimate = Spread3d(50);
   const Eigen::Vector3d translation(5.0, -3.0, 2.0);

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "evaluator/core/input_error.h"
@@ -191,6 +192,44 @@ TEST(AssociationTest, MatchesTheQuadraticOracleOnRandomUnsortedStamps) {
     ++compared;
   }
   EXPECT_GT(compared, 200);
+}
+
+TEST(AssociationTest, IndicesNameThePosesAssociateCopies) {
+  // Estimate longer, poses paired twice, unsorted stamps and an offset: the indices give Associate's pairs.
+  const std::vector<std::pair<std::vector<double>, std::vector<double>>> cases = {
+      {{0.0, 1.0, 2.0}, {0.0, 0.004, 1.003, 2.0, 2.002, 3.0}},
+      {{0.0, 1.0, 2.0, 3.0}, {0.999, 1.001, 5.0}},
+      {{2.0, 0.0, 1.0, 3.0}, {1.001, 0.0, 2.999}},
+      {{100.0, 101.0, 102.0}, {0.0, 1.0, 2.0, 3.0}},
+  };
+  for (const auto& [reference_stamps, estimate_stamps] : cases) {
+    const Trajectory reference = Indexed(reference_stamps);
+    const Trajectory estimate = Indexed(estimate_stamps);
+    AssociationOptions options;
+    options.t_offset_s = reference_stamps[0] == 100.0 ? 100.0 : 0.0;
+    const Association copied = Associate(reference, estimate, options);
+    const AssociatedIndices indices = AssociateIndices(reference, estimate, options);
+    ASSERT_EQ(indices.size(), copied.reference.size());
+    std::vector<int> reference_ids(indices.reference_ids.begin(), indices.reference_ids.end());
+    std::vector<int> estimate_ids(indices.estimate_ids.begin(), indices.estimate_ids.end());
+    EXPECT_EQ(reference_ids, Indices(copied.reference));
+    EXPECT_EQ(estimate_ids, Indices(copied.estimate));
+    EXPECT_EQ(indices.reference_unpaired, copied.reference_unpaired);
+    EXPECT_EQ(indices.estimate_unpaired, copied.estimate_unpaired);
+  }
+}
+
+TEST(AssociationTest, PairedSideIsTheInputWhenEveryPoseIsPairedInOrder) {
+  const Trajectory trajectory = Indexed({0.0, 1.0, 2.0});
+  const std::vector<std::size_t> all = {0, 1, 2};
+  EXPECT_EQ(&PairedSide(trajectory, all).trajectory(), &trajectory);
+  // Fewer, repeated or reordered poses: a copy of just the paired ones, in pair order.
+  for (const std::vector<std::size_t>& ids :
+       {std::vector<std::size_t>{0, 2}, std::vector<std::size_t>{0, 1, 1}, std::vector<std::size_t>{1, 0, 2}}) {
+    const PairedSide side(trajectory, ids);
+    EXPECT_NE(&side.trajectory(), &trajectory);
+    EXPECT_EQ(Indices(side.trajectory()), std::vector<int>(ids.begin(), ids.end()));
+  }
 }
 
 }  // namespace

@@ -180,7 +180,14 @@ void Attempts(const std::string& raw_dir) {
     Report("tcp_loopback_listener", connected, "127.0.0.1:" + Arg("port") + ": " + (connected ? "connected" : Error()));
     if (fd >= 0) ::close(fd);
   }
+  // Beside its input/ and raw/: the run folder and the sweep's output folder above it must be read-only to it.
   TryWrite("write_run_folder", run_dir + "/hostile-was-here");
+  {
+    const std::string folder = run_dir + "/hostile-folder";
+    const bool made = ::mkdir(folder.c_str(), 0755) == 0;
+    Report("mkdir_run_folder", made, (made ? "made " : "") + folder + (made ? "" : ": " + Error()));
+  }
+  TryWrite("write_output_folder", run_dir.substr(0, run_dir.rfind("/runs/")) + "/hostile-was-here");
   TryWrite("write_input_folder", run_dir + "/input/hostile-was-here");
   TryWrite("write_decoy_output", Arg("decoy") + ".hostile");
   TryWrite("write_root", "/hostile-was-here");

@@ -8,6 +8,15 @@ worker's group; to connect to a listener on 127.0.0.1; to write outside raw/ and
 /tmp; to hold capabilities or gain them through a setuid program; to leave a setsid daemon behind and a symbolic link in raw/ pointing at
 the reference; then a bounded fork storm and a file larger than the run's disk limit.
 
+A write attempt is judged twice: by what the program saw and by what the host has afterwards. "refused"
+when both say no; "SUCCEEDED" (an escape) when the host has the file; "PHANTOM" when the program wrote a
+file the host never got (a writable copy of a folder made inside the sandbox: still a fault, since the
+program must see its run folder read-only); "private" for write_tmp alone, whose private /tmp must take it.
+
+--run-folder tmp makes the sweep's folder (its output, hence every run folder) under /tmp, where the
+sandbox's private /tmp is; outside (the default) makes it in --workdir, or in /var/tmp when that is
+under /tmp too.
+
 Passes when every attempt fails, the attempts run is scored ok, the fork storm and the big file end
 as failed runs naming their limits, and the sweep finishes with every run recorded. Prints one line
 per attempt with its outcome. --user nobody runs the whole sweep as that unprivileged user.
@@ -102,6 +111,26 @@ def hostile_processes(hostile):
     return found
 
 
+def under_tmp(path):
+    """Whether `path` is under /tmp as given (what the sandbox binds) or once its links are resolved."""
+    return any(p == "/tmp" or p.startswith("/tmp/") for p in (os.path.normpath(path), os.path.realpath(path)))
+
+
+def judge_write(name, in_sandbox, host_path, private=False):
+    """One write attempt's verdict from the program's own report and the host's file: see the module's doc."""
+    on_host = os.path.lexists(host_path)
+    if in_sandbox is None:
+        outcome = "SUCCEEDED" if on_host else "missing"
+    elif on_host:
+        outcome = "SUCCEEDED"
+    elif in_sandbox[0] == "SUCCEEDED":
+        outcome = "private" if private else "PHANTOM"
+    else:
+        outcome = "refused"
+    seen = f"{in_sandbox[0]} ({in_sandbox[1]})" if in_sandbox else "no ATTEMPT line"
+    return name, outcome, f"in the sandbox: {seen}; on the host: {host_path} {'exists' if on_host else 'does not exist'}"
+
+
 def read_runs(out):
     runs = {}
     for run_id in sorted(os.listdir(os.path.join(out, "runs"))):
@@ -132,7 +161,9 @@ def main():
                         help="how sandboxes get their /proc (auto: slamsweep probes)")
     parser.add_argument("--expect-proc", choices=["own", "none"], default=None)
     parser.add_argument("--workdir", default=None,
-                        help="folder for the sweep (not under /tmp: the sandbox's private /tmp is there)")
+                        help="folder for the sweep with --run-folder outside (default: the current folder)")
+    parser.add_argument("--run-folder", choices=["outside", "tmp"], default="outside",
+                        help="make the sweep's folder under /tmp (the sandbox's private /tmp is there) or outside it")
     args = parser.parse_args()
     args.slamsweep, args.hostile = os.path.abspath(args.slamsweep), os.path.abspath(args.hostile)
 
@@ -144,8 +175,17 @@ def main():
         print("--user nobody needs root to switch to that user")
         return 1 if os.environ.get("CI") == "true" else 77
 
-    folder = tempfile.mkdtemp(prefix="slamsweep-hostile-", dir=args.workdir)
+    if args.run_folder == "tmp":
+        base = "/tmp"
+    else:
+        base = os.path.abspath(args.workdir or os.getcwd())
+        base = "/var/tmp" if under_tmp(base) else base
+    folder = tempfile.mkdtemp(prefix="slamsweep-hostile-", dir=base)
     os.chmod(folder, 0o755)
+    if under_tmp(folder) != (args.run_folder == "tmp"):
+        print(f"the sweep's folder {folder} is not {'under' if args.run_folder == 'tmp' else 'outside'} /tmp")
+        return 1
+    print(f"the sweep's folder: {folder} ({'under' if args.run_folder == 'tmp' else 'outside'} /tmp)")
     decoy_dir = os.path.join(folder, "decoy", "runs", "r0")
     os.makedirs(decoy_dir)
     decoy = os.path.join(decoy_dir, "reference.tum")
@@ -191,17 +231,29 @@ def main():
     out = os.path.join(folder, "out")
     runs = read_runs(out) if os.path.isdir(os.path.join(out, "runs")) else {}
     attempts = runs.get("attempts", {"log": "", "result": None, "folder": ""})
+    run_folder = attempts["folder"] or os.path.join(out, "runs", "(none)")
+    # Each write attempt and the file the host would have if it got through.
+    writes = {"write_run_folder": os.path.join(run_folder, "hostile-was-here"),
+              "mkdir_run_folder": os.path.join(run_folder, "hostile-folder"),
+              "write_output_folder": os.path.join(out, "hostile-was-here"),
+              "write_input_folder": os.path.join(run_folder, "input", "hostile-was-here"),
+              "write_decoy_output": decoy + ".hostile",
+              "write_root": "/hostile-was-here",
+              "write_tmp": host_tmp.name + ".hostile"}
+    written = {}
     for line in attempts["log"].splitlines():
         if line.startswith("ATTEMPT "):
             name, _, rest = line[len("ATTEMPT "):].partition(": ")
             outcome, _, detail = rest.partition(" (")
-            if name == "write_tmp":
-                # A sandbox's private /tmp may take it: the host-side check below decides.
-                print(f"(the program wrote into its /tmp: {rest})")
+            if name in writes:
+                written[name] = (outcome, detail.rstrip(")"))
                 continue
             outcomes.append((name, outcome, detail.rstrip(")")))
-    seen = {name for name, _, _ in outcomes}
-    if not outcomes:
+    seen = {name for name, _, _ in outcomes} | set(written)
+    # The private /tmp is the program's scratch: write_tmp must get through there and only there.
+    outcomes += [judge_write(name, written.get(name), path, private=name == "write_tmp")
+                 for name, path in writes.items()]
+    if not seen:
         problems.append("the attempts run printed no ATTEMPT line (log.txt):\n" + attempts["log"][-2000:])
 
     # What is judged from outside the sandbox.
@@ -216,10 +268,6 @@ def main():
                      f"{len(daemons)} hostile process(es) outlived the run" if daemons else "nothing outlived the run"))
     outcomes.append(("tcp_listener_side", "SUCCEEDED" if accepted else "refused",
                      f"the listener accepted {len(accepted)} connection(s)"))
-    for what, path in [("write_host_tmp", host_tmp.name + ".hostile"), ("write_decoy_seen_on_host", decoy + ".hostile"),
-                       ("write_run_folder_seen_on_host", os.path.join(attempts["folder"], "hostile-was-here"))]:
-        outcomes.append((what, "SUCCEEDED" if os.path.exists(path) else "refused",
-                         f"{path} {'exists' if os.path.exists(path) else 'does not exist'}"))
     for name in ["fork", "disk"]:
         for line in runs.get(name, {"log": ""})["log"].splitlines():
             if line.startswith("ATTEMPT "):
@@ -227,10 +275,13 @@ def main():
                 outcome, _, detail = rest.partition(" (")
                 outcomes.append((attempt, outcome, detail.rstrip(")")))
 
+    def expected(name):
+        return "private" if name == "write_tmp" else "refused"
+
     print(f"\n{'attempt':28} outcome     detail")
     for name, outcome, detail in outcomes:
-        print(f"{name:28} {outcome:11} {detail[:150]}")
-        if outcome != "refused":
+        print(f"{name:28} {outcome:11} {detail[:250]}")
+        if outcome != expected(name):
             problems.append(f"attempt {name} {outcome}: {detail}")
 
     def result_of(name):
@@ -259,7 +310,7 @@ def main():
     for check in ["attempts"] + [name for name in ["attempts", "fork", "disk"] if name not in runs]:
         if check not in runs:
             problems.append(f"no run folder for mode {check}")
-    if ("umount" not in seen or "nested_user_namespace" not in seen) and outcomes:
+    if ("umount" not in seen or "nested_user_namespace" not in seen) and seen:
         problems.append("the attempts run stopped before trying everything")
     sandbox = result_of("attempts").get("sandbox") or {}
     print(f"sandbox of the attempts run: {json.dumps(sandbox)}")
@@ -274,7 +325,7 @@ def main():
         if os.path.exists(leftover):
             os.unlink(leftover)
     if args.legacy:
-        print(f"\n(legacy: {sum(1 for o in outcomes if o[1] != 'refused')} of {len(outcomes)} attempts succeeded; "
+        print(f"\n(legacy: {sum(1 for o in outcomes if o[1] != expected(o[0]))} of {len(outcomes)} attempts succeeded; "
               f"results in {folder})")
         return 0
     if problems:
@@ -282,7 +333,8 @@ def main():
         print(f"(results kept in {folder})")
         return 1
     shutil.rmtree(folder, ignore_errors=True)
-    print(f"\nevery attempt was refused ({len(outcomes)} attempts, as {args.user}, /proc: {sandbox.get('proc')})")
+    print(f"\nevery attempt was refused ({len(outcomes)} attempts, as {args.user}, /proc: {sandbox.get('proc')}, "
+          f"run folder {'under' if args.run_folder == 'tmp' else 'outside'} /tmp)")
     return 0
 
 

@@ -7,9 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -93,6 +96,39 @@ TEST(BwrapCommandTest, IsolatesEverythingAndShowsOnlyWhatItIsGiven) {
   EXPECT_EQ(Find(networked, {"--unshare-net"}), networked.size());
   spec.read_only = {"relative/path"};
   EXPECT_THROW(BwrapCommand(spec, {"/bin/true"}, "/data/run/raw", 7), std::invalid_argument);
+}
+
+TEST(BwrapCommandTest, WhatIsBoundUnderTheSandboxsOwnTmpStandsOnAReadOnlyTmpfs) {
+  SandboxSpec spec;
+  spec.init_program = "/tmp/clone/build/slamsweep-sandbox-init";
+  spec.read_only = {"/tmp/clone/out/runs/r0/input", "/dev/shm/tools/slam", "/tmp/slam", "/tmp/given",
+                    "/tmp/given/config.ini",        "/data/run/input"};
+  spec.writable = {"/tmp/clone/out/runs/r0/raw"};
+  for (const std::uint64_t size : {std::uint64_t{0}, std::uint64_t{8} << 20}) {
+    spec.file_size_limit_bytes = size;
+    const std::vector<std::string> argv = BwrapCommand(spec, {"/tmp/slam"}, "/tmp/clone/out/runs/r0/raw", 7);
+    const std::size_t bind_raw = Find(argv, {"--bind", "/tmp/clone/out/runs/r0/raw", "/tmp/clone/out/runs/r0/raw"});
+    const std::size_t last_bind = Find(argv, {"--ro-bind", "/tmp/given", "/tmp/given"});
+    ASSERT_LT(bind_raw, argv.size());
+    ASSERT_LT(last_bind, argv.size());
+    // One stand for every first folder below /tmp or /dev/shm that holds a deeper bound path: on the private
+    // tmpfs, under what is bound there, and read-only once everything is bound.
+    for (const std::string stand : {"/tmp/clone", "/dev/shm/tools"}) {
+      const std::size_t mounted = Find(argv, {"--tmpfs", stand});
+      ASSERT_LT(mounted, argv.size()) << stand;
+      EXPECT_EQ(std::count(argv.begin(), argv.end(), stand), 2) << stand << ": one tmpfs, one remount";
+      EXPECT_LT(Find(argv, {"--tmpfs", stand.substr(0, stand.rfind('/'))}), mounted) << stand;
+      EXPECT_LT(mounted, std::min(bind_raw, Find(argv, {"--ro-bind", "/dev/shm/tools/slam", "/dev/shm/tools/slam"})));
+      EXPECT_GT(Find(argv, {"--remount-ro", stand}), std::max(bind_raw, last_bind)) << stand;
+    }
+    // Bound itself, right in /tmp or outside it: the host's folder (or the read-only root) holds what is in it.
+    for (const char* plain : {"/tmp/slam", "/tmp/given", "/data", "/data/run"}) {
+      EXPECT_EQ(Find(argv, {"--tmpfs", plain}), argv.size()) << plain;
+      EXPECT_EQ(Find(argv, {"--remount-ro", plain}), argv.size()) << plain;
+    }
+    // The private /tmp itself stays writable: it is the program's scratch.
+    EXPECT_EQ(Find(argv, {"--remount-ro", "/tmp"}), argv.size());
+  }
 }
 
 TEST(BwrapCommandTest, WithoutAFreshProcThereIsNoProcAndProcessOneRefusesUserNamespaces) {
@@ -219,12 +255,28 @@ TEST_F(SandboxedProcessTest, OnlyTheSystemAndTheGivenFoldersExistInAnOwnNamespac
   std::ofstream(dir_ / "secret.txt") << "truth\n";
   const ProcessOutcome outcome =
       Run("ls / | tr '\\n' ' '; echo; for p in " + (dir_ / "secret.txt").string() +
-          " /home /root /var /etc/shadow; do [ -e $p ] && echo VISIBLE $p; done; "
+          " /etc/shadow /etc/ssh; do [ -e $p ] && echo VISIBLE $p; done; "
+          "for f in /home /root /var; do [ -e $f ] && echo LISTED $f $(ls -A $f); done; "
           "echo pids $(ls /proc | grep -c '^[0-9]'); grep -c : /proc/net/dev; id -u; "
           "grep CapEff /proc/self/status; echo x > /etc/x 2>/dev/null && echo WROTE-ETC; true");
   EXPECT_TRUE(outcome.ok()) << outcome.reason << Log();
   const std::string log = Log();
   EXPECT_EQ(log.find("VISIBLE"), std::string::npos) << log;
+  // Nothing of the host's home, root or service folders: where process 1 or raw/ lies in one (a checkout
+  // under /var/tmp or /home), only the folder leading to it exists there.
+  std::istringstream lines(log);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string word, folder;
+    if (!(words >> word >> folder) || word != "LISTED") continue;
+    std::set<std::string> leading;
+    for (const fs::path& bound : {sandbox_.init_program, dir_ / "raw"}) {
+      const fs::path relative = bound.lexically_relative(folder);
+      if (!relative.empty() && *relative.begin() != "..") leading.insert(relative.begin()->string());
+    }
+    EXPECT_FALSE(leading.empty()) << folder << " exists with nothing bound in it: " << line;
+    for (std::string entry; words >> entry;) EXPECT_TRUE(leading.count(entry)) << folder << " shows " << entry;
+  }
   EXPECT_EQ(log.find("WROTE-ETC"), std::string::npos) << log;
   // The shell, a subshell or two, ls and the sandbox's process 1: a handful, not the host's.
   EXPECT_NE(log.find("pids "), std::string::npos) << log;
@@ -232,6 +284,45 @@ TEST_F(SandboxedProcessTest, OnlyTheSystemAndTheGivenFoldersExistInAnOwnNamespac
   // Loopback only: the header line of /proc/net/dev has no ':', so the count is of interfaces.
   EXPECT_NE(log.find("\n1\n"), std::string::npos) << log;
   EXPECT_NE(log.find("CapEff:\t0000000000000000"), std::string::npos) << log;
+}
+
+TEST_F(SandboxedProcessTest, NothingButRawIsWritableAroundTheRunFolderWhereverItIs) {
+  // Under the sandbox's own /tmp and /dev/shm bubblewrap makes the run folder's parents itself; elsewhere
+  // (/var/tmp, never under /tmp) the host's folders are not shown and the root is read-only.
+  for (const fs::path& base : {fs::path("/tmp"), fs::path("/dev/shm"), fs::path("/var/tmp")}) {
+    const fs::path top = base / (dir_.path().filename().string() + "-run");
+    const fs::path run = top / "out" / "runs" / "r0";
+    fs::create_directories(run / "input");
+    fs::create_directories(run / "raw");
+    for (const fs::path& folder : {top, top / "out", top / "out" / "runs", run, run / "input"}) {
+      ::chmod(folder.c_str(), 0755);
+    }
+    ::chmod((run / "raw").c_str(), 0777);
+    SandboxSpec sandbox = sandbox_;
+    sandbox.read_only = {run / "input"};
+    sandbox.writable = {run / "raw"};
+    const std::vector<fs::path> beside = {run / "beside", run / "input" / "beside", top / "out" / "beside",
+                                          top / "beside", run / "newdir"};
+    std::string script;
+    for (std::size_t i = 0; i + 1 < beside.size(); ++i) {
+      script += "(echo x > " + beside[i].string() + ") 2>/dev/null && echo WROTE " + beside[i].string() + "; ";
+    }
+    script += "mkdir " + beside.back().string() + " 2>/dev/null && echo WROTE " + beside.back().string() + "; ";
+    script += "echo x > /tmp/scratch && echo scratch ok; echo x > out.txt";
+    ProcessSpec spec = testing::Sh(script, dir_ / "log.txt");
+    spec.working_dir = run / "raw";
+    spec.sandbox = sandbox;
+    const ProcessOutcome outcome = RunProcess(spec);
+    const std::string log = Log();
+    EXPECT_TRUE(outcome.ok()) << base << ": " << outcome.reason << log;
+    // In the sandbox: every write beside raw/ refused, the private /tmp writable.
+    EXPECT_EQ(log.find("WROTE"), std::string::npos) << base << ": " << log;
+    EXPECT_NE(log.find("scratch ok"), std::string::npos) << base << ": " << log;
+    // On the host: raw/ got its output and nothing else was made.
+    EXPECT_EQ(ReadAll(run / "raw" / "out.txt"), "x\n") << base;
+    for (const fs::path& path : beside) EXPECT_FALSE(fs::exists(path)) << path;
+    fs::remove_all(top);
+  }
 }
 
 TEST_F(SandboxedProcessTest, NoNestedUserNamespaceWithOrWithoutAProc) {
