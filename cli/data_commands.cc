@@ -13,6 +13,7 @@
 
 #include "cli/command.h"
 #include "cli/data_sources.h"
+#include "cli/scan_spacing_output.h"
 #include "evaluator/core/input_error.h"
 #include "evaluator/formats/map/map_server_format.h"
 #include "evaluator/formats/trajectory/output_file.h"
@@ -27,6 +28,7 @@
 #include "evaluator/sequence/odometry_mode.h"
 #include "evaluator/sequence/recorded_odometry.h"
 #include "evaluator/sequence/relations_clock.h"
+#include "evaluator/sequence/scan_spacing.h"
 #include "evaluator/sequence_io/bag_trajectory_file.h"
 #include "evaluator/sequence_io/sequence_file.h"
 #include "evaluator/sequence_io/robot_log_file.h"
@@ -138,6 +140,8 @@ nlohmann::json InfoJson(const ev::Sequence& sequence) {
   info["relations"] = sequence.relations ? sequence.relations->size() : 0;
   info["relations_outside_log"] = sequence.relations_outside_log;
   if (sequence.stamp_facts) info["stamps"] = ev::StampFactsJson(*sequence.stamp_facts);
+  const std::optional<ev::ScanSpacing> spacing = ev::ComputeScanSpacing(sequence);
+  info["scan_spacing"] = spacing ? ev::ScanSpacingJson(*spacing) : nlohmann::json();
   info["warnings"] = sequence.warnings;
   info["provenance"] = {{"source", sequence.provenance.source},
                         {"citation", sequence.provenance.citation},
@@ -162,7 +166,10 @@ void RegisterInfo(CLI::App& data, const Streams& streams) {
       streams.out << info.dump() << "\n";
       return;
     }
-    for (const auto& [key, value] : info.items()) streams.out << key << ": " << value.dump() << "\n";
+    for (const auto& [key, value] : info.items()) {
+      if (key != "scan_spacing") streams.out << key << ": " << value.dump() << "\n";
+    }
+    PrintScanSpacing(ev::ComputeScanSpacing(sequence), streams.out);
   });
 }
 

@@ -10,6 +10,7 @@
 #include "evaluator/noise/random.h"
 #include "evaluator/noise/range_noise.h"
 #include "evaluator/catalog/catalog.h"
+#include "evaluator/sequence/scan_spacing.h"
 #include "evaluator/sequence/sequence_cut.h"
 #include "orchestrator/input_cache/prepared_sequence_cache.h"
 
@@ -56,14 +57,16 @@ nlohmann::json ApplyRunNoise(ev::Sequence& sequence, const NoiseSpec& noise, std
 
 bool OdometryIsReference(const ev::Sequence& sequence) { return ev::OdometryEqualsReference(sequence); }
 
+ev::Sequence LoadRunSequence(const RunSpec& spec) {
+  // run.json holds resolved paths: no ${VARIABLE} is left to expand.
+  ev::Sequence sequence = ev::LoadCatalogSequence(spec.sequence.entry, {});
+  if (spec.sequence.max_scans) sequence = CutSequence(std::move(sequence), *spec.sequence.max_scans);
+  ev::ValidateSequence(sequence);
+  return sequence;
+}
+
 RunInputs PrepareRunInputs(const RunSpec& spec, const std::filesystem::path& cache_dir) {
-  const auto prepare = [&spec] {
-    // run.json holds resolved paths: no ${VARIABLE} is left to expand.
-    ev::Sequence read = ev::LoadCatalogSequence(spec.sequence.entry, {});
-    if (spec.sequence.max_scans) read = CutSequence(std::move(read), *spec.sequence.max_scans);
-    ev::ValidateSequence(read);
-    return read;
-  };
+  const auto prepare = [&spec] { return LoadRunSequence(spec); };
   std::string cache_problem;
   ev::Sequence sequence;
   if (cache_dir.empty()) {
@@ -74,6 +77,9 @@ RunInputs PrepareRunInputs(const RunSpec& spec, const std::filesystem::path& cac
     cache_problem = std::move(prepared.cache_problem);
   }
   RunInputs inputs;
+  if (const std::optional<ev::ScanSpacing> spacing = ev::ComputeScanSpacing(sequence)) {
+    inputs.sequence_record["scan_spacing"] = ev::ScanSpacingJson(*spacing);
+  }
   inputs.noise_record = ApplyRunNoise(sequence, spec.noise, spec.seed);
   inputs.odometry_is_reference = OdometryIsReference(sequence);
   inputs.warnings = std::move(sequence.warnings);

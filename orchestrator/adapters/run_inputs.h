@@ -36,8 +36,9 @@ struct RunInputs {
   /// The noise applied and its seeds, recorded in result.json so the input can be reproduced.
   nlohmann::json noise_record;
   /// What the sequence is like (result.json "sequence"): "scans" and "span_s" (first to last scan: the
-  /// report takes the densest of several logs of one run), and "stamps" (evaluator StampFactsJson) when the
-  /// reader records how it chose them.
+  /// report takes the densest of several logs of one run), "stamps" (evaluator StampFactsJson) when the
+  /// reader records how it chose them, and "scan_spacing" (ScanSpacingJson) with two scans or more, measured
+  /// after cutting and before noise (the data's density, not the noise's).
   nlohmann::json sequence_record = nlohmann::json::object();
   /// The program's odometry equals the reference at every scan (a corrected log without odometry
   /// noise): the run measures an upper bound, not SLAM (OdometryIsReference).
@@ -64,6 +65,10 @@ nlohmann::json ApplyRunNoise(evaluator::Sequence& sequence, const NoiseSpec& noi
 /// Whether the odometry is the reference: the reference has a pose at every scan's stamp and each
 /// equals the odometry pose there (within 1 um and 1 urad). Then a SLAM program is handed the answer.
 bool OdometryIsReference(const evaluator::Sequence& sequence);
+
+/// The run's sequence as the program's input starts from: loaded (LoadCatalogSequence: paths in run.json
+/// are already resolved), cut to max_scans and validated; no noise yet.
+evaluator::Sequence LoadRunSequence(const RunSpec& spec);
 
 /// Loads the run's sequence (LoadCatalogSequence: paths in run.json are already resolved), cuts
 /// and noises it, and splits it into the program's part and the truth. With a `cache_dir`

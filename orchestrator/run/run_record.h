@@ -81,6 +81,8 @@ struct RunRecord {
   /// Scans per second of the log the program got (ScanRateOfResult); absent for runs recorded before the worker
   /// counted them. The report takes the densest of several logs of one physical run.
   std::optional<double> scan_rate_hz;
+  /// result.json's sequence.scan_spacing block as recorded (null when absent): how far apart the input's scans were.
+  nlohmann::json scan_spacing;
   std::vector<std::string> warnings;
 
   /// From the database: result.json as the store keeps it (ResultsStore::RecordRun), the id of the sweep that

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "evaluator/sequence/scan_spacing.h"
 #include "report/html/across_data_sets_section.h"
 #include "report/html/html.h"
 #include "report/html/map_figures.h"
@@ -151,8 +152,17 @@ Html MetricTableHtml(const SiteData& site, const SequenceModel& sequence, const 
          (notes.str().empty() ? Html() : Element("ul", "table-notes", notes) + T("\n"));
 }
 
+/// The mark of a table whose scans are too far apart for scan matching: its numbers judge the data as much as
+/// the programs.
+Html SparseDataMark(const SequenceModel& sequence) {
+  if (!sequence.scan_spacing) return {};
+  const std::string warning = evaluator::SparseScanWarning(*sequence.scan_spacing);
+  if (warning.empty()) return {};
+  return Element("p", "sparse-data", E("Sparse data: " + warning + "."));
+}
+
 Html SequenceTables(const SiteData& site, const SequenceModel& sequence, std::string_view root) {
-  Html out;
+  Html out = SparseDataMark(sequence);
   if (sequence.trajectory_columns.empty()) {
     out += Element("p", "note",
                    E("No trajectory metric for this sequence (no reference trajectory, or no run succeeded): "
@@ -309,9 +319,48 @@ std::string RenderIndexPage(const SiteData& site) {
   return Page(site.title, "", body);
 }
 
+/// The sequence page's "Data density": median and 95th percentile of the spacing of consecutive scans.
+Html DensitySection(const SequenceModel& sequence) {
+  Html out = Element("h2", "", E("Data density"));
+  if (!sequence.scan_spacing) {
+    return out +
+           Element("p", "note", E("Not recorded: no run of this table has sequence.scan_spacing in its result.json."));
+  }
+  const evaluator::ScanSpacing& spacing = *sequence.scan_spacing;
+  Html rows;
+  const auto row = [&](const std::string& what, const evaluator::SpacingPercentiles& percentiles) {
+    rows += Element("tr", "",
+                    Element("th", "", E(what)) + Element("td", "num", E(FormatNumber(percentiles.median))) +
+                        Element("td", "num", E(FormatNumber(percentiles.p95))));
+  };
+  row("Time gap (s)", spacing.gap_s);
+  row("Travel (m)", spacing.travel_m);
+  row("Rotation (rad)", spacing.rotation_rad);
+  const Html header = Element("th", "", E("Between consecutive scans")) + Element("th", "", E("median")) +
+                      Element("th", "", E("95th percentile"));
+  out += T("<table class=\"facts\">\n<thead>") + Element("tr", "", header) + T("</thead>\n<tbody>\n") + rows +
+         T("</tbody>\n</table>\n");
+  std::string note = std::to_string(spacing.steps) +
+                     " steps between the consecutive scans the programs were given; travel and rotation by the "
+                     "odometry poses at the scans (what a SLAM program has, not the reference). ";
+  const std::optional<bool> sparse = evaluator::TooSparseForScanMatching(spacing);
+  const evaluator::SparseScanThreshold threshold = evaluator::SparseScanThresholdInUse();
+  if (!sparse) {
+    note += "The odometry never moves: travel and rotation say nothing of the scans' density.";
+  } else if (*sparse) {
+    note += "Too far apart for scan matching (see the mark above the tables).";
+  } else {
+    note += "Dense enough for scan matching: the median travel is within " + FormatNumber(threshold.median_travel_m) +
+            " m, below the spacing at which Cartographer lost most of its accuracy on the intel run "
+            "(docs/data-density.md).";
+  }
+  return out + Element("p", "note", E(note));
+}
+
 std::string RenderSequencePage(const SiteData& site, const SequenceModel& sequence) {
   const std::string root = "../";
   Html body = SequenceTables(site, sequence, root);
+  body += DensitySection(sequence);
   body += ViewLinks(site, sequence, root);
   body += Element("h2", "", E("Metric plots"));
   body += Plots(site, sequence, root);
@@ -518,6 +567,7 @@ ul.table-notes { color: #8a4b00; font-size: 0.9em; margin-top: 0; }
 .status-ok { color: #060; }
 .note { color: #555; font-style: italic; }
 .warning { color: #8a4b00; font-size: 0.85em; font-weight: normal; }
+p.sparse-data { color: #8a4b00; font-weight: bold; border-left: 4px solid #8a4b00; padding-left: 0.5em; }
 .plots, .gallery { display: flex; flex-wrap: wrap; gap: 1em; }
 figure { margin: 0; border: 1px solid #ddd; padding: 0.5em; }
 figcaption { font-size: 0.9em; margin: 0.3em 0; word-break: break-all; }

@@ -203,6 +203,9 @@ void ReadResult(const std::filesystem::path& file, RunRecord& run) {
   if (const auto it = result.find("metric_details"); it != result.end() && it->is_object()) {
     run.metric_details = MetricDetailsTheReportReads(*it);
   }
+  if (const auto it = result.find("sequence"); it != result.end() && it->is_object()) {
+    if (const auto spacing = it->find("scan_spacing"); spacing != it->end()) run.scan_spacing = *spacing;
+  }
 }
 
 }  // namespace

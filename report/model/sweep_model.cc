@@ -11,6 +11,7 @@
 #include "orchestrator/run/run_json.h"
 
 #include "orchestrator/store/validity_table.h"
+#include "report/model/table_density.h"
 #include "report/model/validity_support.h"
 
 namespace slamsweep::report::inline model {
@@ -415,6 +416,7 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions&
     sequence.map_columns = BuildColumns(model.runs, all, kMapCandidates);
     sequence.has_reference = !sequence.trajectory_columns.empty();
     CountRelations(model.runs, all, sequence);
+    sequence.scan_spacing = TableScanSpacing(model.runs, all);
     std::map<std::tuple<std::string, std::string, std::string>, std::size_t> builds_per_group;
     std::map<std::pair<std::string, std::string>, std::set<std::string>> modes_per_algorithm;
     for (const auto& [row_key, indices] : rows) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "evaluator/sequence/scan_spacing.h"
 #include "evaluator/validity/metric_validity.h"
 #include "report/model/mean_std.h"
 #include "report/model/published_figures.h"
@@ -121,6 +122,8 @@ struct SequenceModel {
   std::vector<MetricColumn> trajectory_columns;  ///< Table I: ATE, RPE, relations
   std::vector<MetricColumn> map_columns;         ///< occupied proportion, corners, enclosed areas
   std::vector<AlgorithmRow> rows;                ///< sorted by name, then parameters
+  /// How far apart the table's scans are (TableScanSpacing); absent when no run recorded it.
+  std::optional<evaluator::ScanSpacing> scan_spacing;
 };
 
 /// What BuildSweepModel weighs beside the runs.

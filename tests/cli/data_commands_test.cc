@@ -11,6 +11,7 @@
 #include "evaluator/sequence_io/sequence_file.h"
 #include "tests/cli/run_cli.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/sparse_carmen_log.h"
 
 namespace slamsweep {
 namespace {
@@ -77,6 +78,80 @@ TEST(DataInfoCommandTest, Fr079ByPath) {
   // Its ODOM stream logs no backward step; the one warning says the scans' reversals were given back.
   ASSERT_EQ(info.at("warnings").size(), 1u);
   EXPECT_NE(info.at("warnings")[0].get<std::string>().find("without their sign"), std::string::npos);
+}
+
+TEST(DataInfoCommandTest, TheIntelLogsSpacingSaysWhichIsDenseEnoughForScanMatching) {
+  SLAMSWEEP_REQUIRE_SHARED(raw, "datasets/intel/intel-raw-scans-0-5504.clf.gz");
+  SLAMSWEEP_REQUIRE_SHARED(corrected, "datasets/intel/intel-corrected.log.gz");
+  // Every scan of the run's first 1,088.6 s, its odometry the FLASER records' odometry fields in file order.
+  // Expected values from a short Python reading of those fields (docs/data-density.md), not from slamsweep.
+  const auto full = RunCli({"data", "info", "intel-full-rate", "--json"});
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  const nlohmann::json dense = nlohmann::json::parse(full.out).at("scan_spacing");
+  EXPECT_EQ(dense.at("steps"), 5504);
+  EXPECT_NEAR(dense.at("travel_m").at("median").get<double>(), 0.055507, 1e-6);
+  EXPECT_NEAR(dense.at("travel_m").at("p95").get<double>(), 0.063280, 1e-6);
+  EXPECT_NEAR(dense.at("rotation_rad").at("median").get<double>(), 0.006146, 1e-6);
+  EXPECT_NEAR(dense.at("rotation_rad").at("p95").get<double>(), 0.091260, 1e-6);
+  EXPECT_EQ(dense.at("too_sparse_for_scan_matching"), false);
+  const auto full_text = RunCli({"data", "info", "intel-full-rate"});
+  ASSERT_EQ(full_text.exit_code, 0) << full_text.err;
+  EXPECT_THAT(full_text.out, HasSubstr("  travel:   0.056 m / 0.063 m\n"));
+  EXPECT_THAT(full_text.out, HasSubstr("dense enough for scan matching"));
+  EXPECT_THAT(full_text.out, ::testing::Not(HasSubstr("too far apart")));
+
+  // GMapping's 910 keyframes, two thirds of a metre apart: marked, whatever the odometry they are read with.
+  const auto keyframes = RunCli({"data", "info", "intel"});
+  ASSERT_EQ(keyframes.exit_code, 0) << keyframes.err;
+  EXPECT_THAT(keyframes.out, HasSubstr("between consecutive scans (909 steps)"));
+  EXPECT_THAT(keyframes.out, HasSubstr("warning: scans too far apart for scan matching: consecutive scans are 0.67 m"));
+  const auto logged = RunCli({"data", "info", "intel", "--odometry", "reference", "--json"});
+  ASSERT_EQ(logged.exit_code, 0) << logged.err;
+  const nlohmann::json sparse = nlohmann::json::parse(logged.out).at("scan_spacing");
+  // The corrected log's own FLASER poses and stamps, read the same way in Python.
+  EXPECT_NEAR(sparse.at("gap_s").at("median").get<double>(), 3.35, 1e-6);
+  EXPECT_NEAR(sparse.at("gap_s").at("p95").get<double>(), 4.83, 1e-6);
+  EXPECT_NEAR(sparse.at("travel_m").at("median").get<double>(), 0.670118, 1e-6);
+  EXPECT_NEAR(sparse.at("travel_m").at("p95").get<double>(), 1.037998, 1e-6);
+  EXPECT_EQ(sparse.at("too_sparse_for_scan_matching"), true);
+}
+
+TEST(DataInfoCommandTest, ScanSpacingIsPrintedAndSparseScansAreWarnedOf) {
+  testing::TempDir dir;
+  const auto log = testing::WriteFile(dir / "sparse.log", testing::SparseCarmenLog());
+  const auto json = RunCli({"data", "info", log.string(), "--json"});
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const nlohmann::json spacing = nlohmann::json::parse(json.out).at("scan_spacing");
+  EXPECT_EQ(spacing.at("steps"), 4);
+  EXPECT_NEAR(spacing.at("gap_s").at("median").get<double>(), testing::kSparseLogMedianGapS, 1e-9);
+  EXPECT_NEAR(spacing.at("gap_s").at("p95").get<double>(), testing::kSparseLogP95GapS, 1e-9);
+  EXPECT_NEAR(spacing.at("travel_m").at("median").get<double>(), testing::kSparseLogMedianTravelM, 1e-9);
+  EXPECT_NEAR(spacing.at("travel_m").at("p95").get<double>(), testing::kSparseLogP95TravelM, 1e-9);
+  EXPECT_NEAR(spacing.at("rotation_rad").at("median").get<double>(), testing::kSparseLogMedianRotationRad, 1e-9);
+  EXPECT_NEAR(spacing.at("rotation_rad").at("p95").get<double>(), testing::kSparseLogP95RotationRad, 1e-9);
+  EXPECT_EQ(spacing.at("motion_from"), "odometry poses at the scans");
+  EXPECT_EQ(spacing.at("too_sparse_for_scan_matching"), true);
+
+  const auto text = RunCli({"data", "info", log.string()});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("from the odometry poses at the scans"));
+  EXPECT_THAT(text.out, HasSubstr("time gap: 1.500 s / 2.000 s\n"));
+  EXPECT_THAT(text.out, HasSubstr("travel:   5.000 m / 10.950 m\n"));
+  EXPECT_THAT(text.out, HasSubstr("rotation: 0.150 rad / 0.470 rad\n"));
+  EXPECT_THAT(text.out, HasSubstr("warning: scans too far apart for scan matching"));
+
+  // The same path in 1 cm steps is dense, however slowly it was driven (scans 10 s apart).
+  std::string dense;
+  for (int i = 0; i < 5; ++i) {
+    const std::string x = std::to_string(0.01 * i);
+    const std::string stamp = std::to_string(10 * i);
+    dense += "FLASER 3 1.5 2.5 3.5 " + x + " 0 0 " + x + " 0 0 " + stamp + " host " + stamp + "\n";
+  }
+  const auto slow = RunCli({"data", "info", testing::WriteFile(dir / "slow.log", dense).string()});
+  ASSERT_EQ(slow.exit_code, 0) << slow.err;
+  EXPECT_THAT(slow.out, HasSubstr("time gap: 10.000 s / 10.000 s\n"));
+  EXPECT_THAT(slow.out, HasSubstr("dense enough for scan matching"));
+  EXPECT_THAT(slow.out, ::testing::Not(HasSubstr("warning: scans too far apart")));
 }
 
 // A file declared raw: its logged pose is the odometry (not the reference), and the stamps the reader had

@@ -15,6 +15,7 @@
 #include "evaluator/core/text_file.h"
 #include "tests/cli/run_cli.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/sparse_carmen_log.h"
 
 namespace slamsweep {
 namespace {
@@ -225,6 +226,26 @@ TEST(RunCommand, AFailingProgramIsRecordedAndTheSweepExitsOne) {
   std::stringstream xml;
   xml << junit.rdbuf();
   EXPECT_EQ(CountLines(xml.str(), "<failure"), 2u) << xml.str();
+}
+
+TEST(RunCommand, WarnsOncePerSequenceWhoseScansAreTooFarApartBeforeRunning) {
+  ASSERT_TRUE(kWorkerProgramSet);
+  slamsweep::testing::TempDir dir;
+  slamsweep::testing::WriteFile(dir / "sparse.log", slamsweep::testing::SparseCarmenLog());
+  // Two iterations under two noise settings on each sequence: four runs on the sparse log, one warning.
+  const auto config = slamsweep::testing::WriteFile(
+      dir / "density.yaml",
+      "name: density\noutput: out\niterations: 2\nseed: 7\nworkers: 2\nevaluation: {stages: 2}\n"
+      "algorithms:\n  - name: odometry\n    adapter: odometry\n"
+      "noise:\n  - name: clean\n  - name: noisy\n    odometry: {alpha1: 0.01, alpha3: 0.01}\n"
+      "sequences:\n  - {name: sparse, format: carmen, path: sparse.log, ground_truth: none}\n"
+      "  - {catalog: simulated-floor, name: floor, max_scans: 40}\n");
+  const auto run = RunCli({"run", config.string(), "--no-report"});
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_THAT(run.out, HasSubstr("8 ok, 0 failed"));
+  EXPECT_EQ(CountLines(run.err, "warning: sequence 'sparse': scans too far apart for scan matching"), 1u) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("5.00 m apart at the median"));
+  EXPECT_EQ(CountLines(run.err, "sequence 'floor'"), 0u) << run.err;
 }
 
 TEST(MergeCommand, ShardsMergedEqualTheWholeSweep) {

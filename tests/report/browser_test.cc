@@ -117,6 +117,18 @@ TEST_F(BrowserTest, PagesLoadUnderJenkinsCsp) {
   std::cout << "screenshot of the metric specification: " << metrics_screenshot.string() << "\n";
 }
 
+// The sparse-data mark and the "Data density" table of a sequence page, and the mark on the index.
+class DensityBrowserTest : public BrowserTest {
+ protected:
+  std::vector<testing::FixtureRun> Runs() const override { return testing::DensityFixtureRuns(); }
+};
+
+TEST_F(DensityBrowserTest, TheSparseDataMarkLoadsUnderJenkinsCsp) {
+  ASSERT_NE(ReadAll(dir_ / "report/sequences/intel-clean.html").find("<p class=\"sparse-data\">"), std::string::npos);
+  CheckPage("sequences/intel-clean.html", fs::path(SLAMSWEEP_ARTIFACT_DIR) / "report_sparse_data_screenshot.png");
+  CheckPage("index.html");
+}
+
 // The validity page (report/html/validity_page.h) with numbers and its scatter plots, on a sweep of
 // graded noise settings; its screenshot is kept as an artifact.
 class ValidityBrowserTest : public BrowserTest {

@@ -256,6 +256,7 @@ void WriteFixtureSweep(const fs::path& dir, const std::vector<FixtureRun>& runs)
         if (run.map_compare_details) details["map_compare"] = MapCompareDetails(run, dir);
       }
     }
+    if (!run.scan_spacing.is_null()) result["sequence"]["scan_spacing"] = run.scan_spacing;
     result["outputs"] = outputs;
     result["metrics"] = metrics;
     result["metric_details"] = details;
@@ -370,6 +371,22 @@ std::vector<FixtureRun> PaperLikeFixtureRuns() {
       runs.push_back(csail);
     }
   }
+  return runs;
+}
+
+std::vector<FixtureRun> DensityFixtureRuns() {
+  const json keyframes = {{"steps", 909},
+                          {"gap_s", {{"median", 3.31}, {"p95", 4.89}}},
+                          {"travel_m", {{"median", 0.67}, {"p95", 1.05}}},
+                          {"rotation_rad", {{"median", 0.39}, {"p95", 0.57}}},
+                          {"odometry_moves", true}};
+  const json dense = {{"steps", 2724},
+                      {"gap_s", {{"median", 0.2}, {"p95", 0.5}}},
+                      {"travel_m", {{"median", 0.05}, {"p95", 0.12}}},
+                      {"rotation_rad", {{"median", 0.02}, {"p95", 0.1}}},
+                      {"odometry_moves", true}};
+  std::vector<FixtureRun> runs = StandardFixtureRuns();
+  for (FixtureRun& run : runs) run.scan_spacing = run.sequence == "intel" ? keyframes : dense;
   return runs;
 }
 

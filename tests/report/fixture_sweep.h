@@ -60,6 +60,8 @@ struct FixtureRun {
   /// segment_drift_<L>m mean and rpe_segments.csv with 20 segments per length around `segment_drift_pct`.
   std::vector<double> segment_lengths_m;
   double segment_drift_pct = 1.0;
+  /// result.json's sequence.scan_spacing block as written; null: left out, as by workers before the block.
+  nlohmann::json scan_spacing = nullptr;
 };
 
 /// A sweep shaped like configs/paper.yaml for the verdict across data sets: relations on intel-full-rate (dense)
@@ -91,6 +93,11 @@ std::vector<FixtureRun> StandardFixtureRuns();
 /// and the iteration; corners rise exactly with the ATE on both sequences (rho = +1 everywhere),
 /// the occupied ratio falls exactly with it (rho = -1), enclosed areas are constant (no variation).
 std::vector<FixtureRun> ValidityFixtureRuns();
+
+/// StandardFixtureRuns with result.json's sequence.scan_spacing: on "intel" its 910 keyframes as `slamsweep data
+/// info intel` measures them, rounded (909 steps; gap 3.31 / 4.89 s, travel 0.67 / 1.05 m, rotation 0.39 /
+/// 0.57 rad, median / p95: too far apart for scan matching); on "mit-no-ref" 5 cm per scan (dense enough).
+std::vector<FixtureRun> DensityFixtureRuns();
 
 /// A sweep for the segment-length and parameter pages on "intel" (reference) and "mit-no-ref": gmapping
 /// and hector with segment RPE at 10, 20 and 30 m (hector drifting twice as much), "icp-slam" swept

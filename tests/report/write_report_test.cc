@@ -541,5 +541,35 @@ TEST_F(WriteReportTest, TheIndexOpensWithTheRankedOverviewAndItsVerdict) {
   EXPECT_NE(index.find("only ground-truth-free metrics"), std::string::npos);  // mit-no-ref
 }
 
+TEST_F(WriteReportTest, ASequenceWhoseScansAreTooFarApartIsMarkedAndItsDensityShown) {
+  std::vector<testing::FixtureRun> runs = testing::DensityFixtureRuns();
+  runs.push_back(testing::MakeRun("gmapping", "old-sweep", 0));  // recorded before the block
+  testing::WriteFixtureSweep(dir_ / "density", runs);
+  WriteReport(dir_ / "density", dir_ / "report", options_);
+
+  const std::string intel = ReadAll(dir_ / "report/sequences/intel-clean.html");
+  const std::size_t mark = intel.find("<p class=\"sparse-data\">Sparse data: scans too far apart for scan matching");
+  ASSERT_NE(mark, std::string::npos) << intel;
+  EXPECT_LT(mark, intel.find("<table>"));  // above the tables it qualifies
+  EXPECT_NE(intel.find("0.67 m apart at the median (by the odometry), beyond 0.12 m"), std::string::npos);
+  EXPECT_NE(intel.find("<h2>Data density</h2>"), std::string::npos);
+  EXPECT_NE(intel.find("<th>Travel (m)</th><td class=\"num\">0.6700</td><td class=\"num\">1.050</td>"),
+            std::string::npos)
+      << intel;
+  EXPECT_NE(intel.find("<th>Time gap (s)</th><td class=\"num\">3.310</td><td class=\"num\">4.890</td>"),
+            std::string::npos);
+  EXPECT_NE(intel.find("909 steps"), std::string::npos);
+  EXPECT_NE(ReadAll(dir_ / "report/index.html").find("<p class=\"sparse-data\">"), std::string::npos);
+
+  const std::string other = ReadAll(dir_ / "report/sequences/mit-no-ref-clean.html");
+  EXPECT_EQ(other.find("sparse-data"), std::string::npos);
+  EXPECT_NE(other.find("Dense enough for scan matching"), std::string::npos);
+  EXPECT_NE(ReadAll(dir_ / "report/sequences/old-sweep-clean.html").find("Not recorded"), std::string::npos);
+
+  // The mark is styled by the site's stylesheet, never inline.
+  EXPECT_EQ(AllPages().find(" style="), std::string::npos);
+  EXPECT_NE(ReadAll(dir_ / "report/style.css").find("p.sparse-data"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace slamsweep::report

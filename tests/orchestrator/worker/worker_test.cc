@@ -25,6 +25,7 @@
 #include "orchestrator/worker/program_sandbox.h"
 #include "tests/orchestrator/worker/run_spec_fixture.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/sparse_carmen_log.h"
 
 namespace slamsweep::orchestrator {
 namespace {
@@ -317,6 +318,42 @@ TEST_F(WorkerTest, TheOdometryBaselineRunsNoProgramAndIsScored) {
   EXPECT_EQ(Metric(result, "ape_trans", "n"), 60.0);
   EXPECT_EQ(result["outputs"]["stage_count"], spec_.evaluation.stages);
   EXPECT_FALSE(std::isnan(Metric(result, "corners", "value")));
+}
+
+TEST_F(WorkerTest, ResultJsonRecordsHowFarApartTheInputsScansAre) {
+  spec_.algorithm.adapter = "odometry";
+  spec_.sequence.entry = {};
+  spec_.sequence.entry.name = "sparse";
+  spec_.sequence.entry.format = "carmen";
+  spec_.sequence.entry.path =
+      slamsweep::testing::WriteFile(tools_ / "sparse.log", slamsweep::testing::SparseCarmenLog());
+  spec_.sequence.max_scans.reset();
+  // Odometry noise changes what the program is given, not how far apart the recorded scans are.
+  spec_.noise.name = "noisy";
+  spec_.noise.odometry = ev::OdometryNoise{};
+  spec_.noise.odometry->alpha1 = 0.05;
+  spec_.noise.odometry->alpha3 = 0.05;
+  const nlohmann::json result = Run();
+  EXPECT_EQ(result["status"], "ok") << result.dump(2);
+  const nlohmann::json& spacing = result["sequence"]["scan_spacing"];
+  ASSERT_TRUE(spacing.is_object()) << result.dump(2);
+  EXPECT_EQ(spacing["steps"], 4);
+  EXPECT_NEAR(spacing["gap_s"]["median"].get<double>(), slamsweep::testing::kSparseLogMedianGapS, 1e-9);
+  EXPECT_NEAR(spacing["gap_s"]["p95"].get<double>(), slamsweep::testing::kSparseLogP95GapS, 1e-9);
+  EXPECT_NEAR(spacing["travel_m"]["median"].get<double>(), slamsweep::testing::kSparseLogMedianTravelM, 1e-9);
+  EXPECT_NEAR(spacing["travel_m"]["p95"].get<double>(), slamsweep::testing::kSparseLogP95TravelM, 1e-9);
+  EXPECT_NEAR(spacing["rotation_rad"]["median"].get<double>(), slamsweep::testing::kSparseLogMedianRotationRad, 1e-9);
+  EXPECT_NEAR(spacing["rotation_rad"]["p95"].get<double>(), slamsweep::testing::kSparseLogP95RotationRad, 1e-9);
+  EXPECT_EQ(spacing["too_sparse_for_scan_matching"], true);
+
+  // The first three scans, as the program gets them: gaps 1 and 2 s (median 1.5, p95 1 + 0.95 = 1.95), travel 5
+  // and 12 m (median 8.5).
+  spec_.sequence.max_scans = 3;
+  const nlohmann::json cut = Run();
+  const nlohmann::json& cut_spacing = cut["sequence"]["scan_spacing"];
+  EXPECT_EQ(cut_spacing["steps"], 2) << cut.dump(2);
+  EXPECT_NEAR(cut_spacing["gap_s"]["p95"].get<double>(), 1.95, 1e-9);
+  EXPECT_NEAR(cut_spacing["travel_m"]["median"].get<double>(), 8.5, 1e-9);
 }
 
 TEST_F(WorkerTest, EveryRunWithAReferenceIsScoredAgainstTheReferenceMap) {

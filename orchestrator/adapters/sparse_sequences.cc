@@ -1,0 +1,32 @@
+#include "orchestrator/adapters/sparse_sequences.h"
+
+#include <optional>
+#include <set>
+#include <utility>
+
+#include "evaluator/core/input_error.h"
+#include "evaluator/sequence/scan_spacing.h"
+#include "orchestrator/adapters/run_inputs.h"
+
+namespace slamsweep::orchestrator::inline adapters {
+
+std::string SparseSequenceWarnings(const std::vector<RunSpec>& runs) {
+  // A sequence is its catalog entry with its cut: runs differing only in algorithm, noise or seed share it.
+  std::set<std::pair<std::string, std::size_t>> seen;
+  std::string text;
+  for (const RunSpec& run : runs) {
+    if (!seen.emplace(run.sequence.entry.name, run.sequence.max_scans.value_or(0)).second) continue;
+    std::optional<evaluator::ScanSpacing> spacing;
+    try {
+      spacing = evaluator::ComputeScanSpacing(LoadRunSequence(run));
+    } catch (const evaluator::InputError&) {
+      continue;
+    }
+    if (!spacing) continue;
+    const std::string warning = evaluator::SparseScanWarning(*spacing);
+    if (!warning.empty()) text += "warning: sequence '" + run.sequence.entry.name + "': " + warning + "\n";
+  }
+  return text;
+}
+
+}  // namespace slamsweep::orchestrator::inline adapters
