@@ -381,7 +381,9 @@ TEST(LamaDefaultsTest, TheOfflineLaunchFilesValuesAreTheDefaults) {
       ++compared;
     }
     EXPECT_GE(compared, 4u) << algorithm;
-    if (algorithm == "lama-pf") EXPECT_EQ(listed.at("threads"), "1");
+    if (algorithm == "lama-pf") {
+      EXPECT_EQ(listed.at("threads"), "1");
+    }
   }
 }
 
