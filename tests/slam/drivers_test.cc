@@ -163,7 +163,12 @@ std::vector<std::string> Built() {
 }
 
 INSTANTIATE_TEST_SUITE_P(Roster, DriverTest, ::testing::ValuesIn(Built()),
-                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           // gtest names take letters, digits and '_' only: slam-toolbox -> slam_toolbox.
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(DriverTest);
 
 bool IsBuilt(const std::string& algorithm) {
