@@ -21,4 +21,7 @@ std::vector<std::pair<std::string, std::string>> WorkerEnvironment();
 /// GLIBC_TUNABLES for a worker given the orchestrator's value (null when unset).
 std::string WorkerGlibcTunables(const char* inherited);
 
+/// The orchestrator's environment with WorkerEnvironment() set in it, as NAME=VALUE strings for posix_spawn.
+std::vector<std::string> WorkerEnvironmentBlock();
+
 }  // namespace slamsweep::orchestrator::inline sweep

@@ -12,7 +12,6 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
-#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -27,28 +26,12 @@
 #include "orchestrator/worker/worker.h"
 #include "orchestrator/worker/worker_service.h"
 
-extern char** environ;
-
 namespace slamsweep::orchestrator::inline sweep {
 namespace {
 
 /// The grace a stopped worker gets to stop its program and remove partial outputs (LocalExecutor's).
 constexpr double kGraceS = 10.0;
 constexpr auto kMaxSleep = std::chrono::seconds(1);
-
-/// environ with WorkerEnvironment() set in it.
-std::vector<std::string> WorkerEnvironmentBlock() {
-  std::map<std::string, std::string> variables;
-  for (char** entry = environ; entry != nullptr && *entry != nullptr; ++entry) {
-    const std::string text(*entry);
-    const std::size_t equals = text.find('=');
-    if (equals != std::string::npos) variables[text.substr(0, equals)] = text.substr(equals + 1);
-  }
-  for (const auto& [name, value] : WorkerEnvironment()) variables[name] = value;
-  std::vector<std::string> block;
-  for (const auto& [name, value] : variables) block.push_back(name + "=" + value);
-  return block;
-}
 
 std::vector<char*> Pointers(std::vector<std::string>& strings) {
   std::vector<char*> pointers;

@@ -159,7 +159,8 @@ TEST(SequenceFileTest, FormatNamesAreCheckedAndTheOptionNamed) {
   EXPECT_EQ(ParseSequenceWriteFormat("rawlog"), SequenceWriteFormat::kRawlog);
   EXPECT_EQ(ParseSequenceWriteFormat("carmen"), SequenceWriteFormat::kCarmen);
   EXPECT_EQ(ParseSequenceWriteFormat("tum"), SequenceWriteFormat::kTum);
-  EXPECT_THAT(ErrorOf([] { ParseSequenceWriteFormat("png"); }), HasSubstr("--to: expected rawlog, carmen or tum"));
+  EXPECT_THAT(ErrorOf([] { ParseSequenceWriteFormat("png"); }),
+              HasSubstr("--to: expected rawlog, carmen, tum or rosbag2"));
   EXPECT_EQ(ParseSequenceFormat("rosbag"), SequenceFormat::kRosbag);
   EXPECT_THAT(ErrorOf([] { ParseSequenceFormat("kitti", "format"); }), HasSubstr("format: expected"));
 }
