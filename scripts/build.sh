@@ -12,6 +12,9 @@ launcher=()
 if [[ -z "${CMAKE_CXX_COMPILER_LAUNCHER:-}" ]] && command -v ccache >/dev/null; then
   export CCACHE_DIR=${CCACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/slamsweep/ccache}
   export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$root}
+  # Builds with line tables (-g1: the sanitizer and fuzz builds) would otherwise hash the build folder too, and
+  # miss across worktrees; the cost is a debug-info compilation directory that may name another build folder.
+  export CCACHE_NOHASHDIR=${CCACHE_NOHASHDIR:-1}
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
 # Tests and benchmarks are configured unless the arguments turn them off (the later -D wins): the main job
