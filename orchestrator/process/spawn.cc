@@ -13,10 +13,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <exception>
 #include <optional>
+#include <string_view>
 #include <system_error>
 
 #include <boost/process.hpp>
@@ -26,6 +28,36 @@
 namespace slamsweep::orchestrator::inline process {
 namespace bp = boost::process;
 namespace {
+
+/// The child's environment, NAME=VALUE: the supervisor's without the removed prefixes, then the spec's own.
+/// Built here rather than with bp::environment, whose lookup by name (operator[], erase) reads past the end
+/// of an entry shorter than the name (Boost 1.74's basic_environment_impl::find; AddressSanitizer reports it).
+std::vector<std::string> ChildEnvironment(const ProcessSpec& spec) {
+  std::vector<std::string> entries;
+  for (char** entry = ::environ; *entry != nullptr; ++entry) {
+    const std::string_view text(*entry);
+    const std::string_view name = text.substr(0, text.find('='));
+    const bool removed = std::ranges::any_of(spec.removed_env_prefixes,
+                                             [&](const std::string& prefix) { return name.starts_with(prefix); });
+    const bool replaced = std::ranges::any_of(spec.extra_env, [&](const auto& extra) { return extra.first == name; });
+    if (!removed && !replaced) entries.emplace_back(text);
+  }
+  for (auto extra = spec.extra_env.begin(); extra != spec.extra_env.end(); ++extra) {
+    const bool set_again = std::any_of(std::next(extra), spec.extra_env.end(),
+                                       [&](const auto& later) { return later.first == extra->first; });
+    if (!set_again) entries.push_back(extra->first + "=" + extra->second);  // the last setting wins
+  }
+  return entries;
+}
+
+/// Hands the child the environment above (execve's envp).
+struct ExplicitEnvironment : bp::extend::handler {
+  char** envp = nullptr;
+  template <typename Executor>
+  void on_setup(Executor& exec) const {
+    exec.env = envp;
+  }
+};
 
 /// What the child does between fork and exec (async-signal-safe calls only).
 struct ChildSetup : bp::extend::handler {
@@ -153,16 +185,10 @@ SpawnResult SpawnChild(const ProcessSpec& spec, const ChildStreams& streams) {
     // Close-on-exec ends: no other child (started later) inherits this child's pipe, which would
     // otherwise keep it open after the child ends. dup2 onto 1 and 2 clears the flag for the child.
     bp::pipe pipe(fds[0], fds[1]);
-    bp::environment environment = boost::this_process::environment();
-    std::vector<std::string> removed;
-    for (const auto& entry : environment) {
-      const std::string name = entry.get_name();
-      for (const std::string& prefix : spec.removed_env_prefixes) {
-        if (name.starts_with(prefix)) removed.push_back(name);
-      }
-    }
-    for (const std::string& name : removed) environment.erase(name);
-    for (const auto& [name, value] : spec.extra_env) environment[name] = value;
+    const std::vector<std::string> environment = ChildEnvironment(spec);
+    std::vector<char*> envp;
+    for (const std::string& entry : environment) envp.push_back(const_cast<char*>(entry.c_str()));
+    envp.push_back(nullptr);
     const std::string working_dir = spec.working_dir.empty() ? std::string(".") : spec.working_dir.string();
     std::string executable = program;
     std::vector<std::string> args(spec.argv.begin() + 1, spec.argv.end());
@@ -191,7 +217,7 @@ SpawnResult SpawnChild(const ProcessSpec& spec, const ChildStreams& streams) {
     }
     bp::child child(ChildSetup{{}, ::getpid(), status_write, user, cgroup_procs}, bp::posix::use_vfork,
                     bp::exe = executable, bp::args = args, bp::std_in<bp::null, (bp::std_out & bp::std_err)> pipe,
-                    bp::start_dir = working_dir, environment,
+                    bp::start_dir = working_dir, ExplicitEnvironment{{}, envp.data()},
                     StreamRedirection{{}, streams.stdin_fd, null_output, streams.stderr_fd}, ec);
     if (status_write >= 0) ::close(status_write);
     status_write = -1;

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -178,6 +179,29 @@ TEST(RunProcessTest, StdinIsDevNull) {
   const ProcessOutcome outcome = RunProcess(spec);
   EXPECT_TRUE(outcome.ok()) << outcome.reason;
   EXPECT_LT(outcome.wall_s, 5.0);
+}
+
+// The child's environment is the supervisor's minus the removed prefixes, with the spec's variables set over
+// it (the last setting of a name wins). Under AddressSanitizer, names longer than an existing entry also
+// check that the lookup reads no entry past its end.
+TEST(RunProcessTest, EnvironmentRemovesPrefixesAndReplacesVariables) {
+  TempDir dir;
+  ::setenv("SLAMSWEEP_TEST_KEPT", "kept", 1);
+  ::setenv("SLAMSWEEP_TEST_SECRET_TOKEN", "secret", 1);
+  ::setenv("SLAMSWEEP_TEST_REPLACED", "old", 1);
+  ProcessSpec spec = Sh("env | grep '^SLAMSWEEP_TEST_' | sort", dir / "log.txt");
+  spec.removed_env_prefixes = {"SLAMSWEEP_TEST_SECRET"};
+  spec.extra_env = {{"SLAMSWEEP_TEST_REPLACED", "first"},
+                    {"SLAMSWEEP_TEST_A_NAME_LONGER_THAN_ANY_ENTRY_OF_THE_ENVIRONMENT", "x"},
+                    {"SLAMSWEEP_TEST_REPLACED", "new"}};
+  const ProcessOutcome outcome = RunProcess(spec);
+  ::unsetenv("SLAMSWEEP_TEST_KEPT");
+  ::unsetenv("SLAMSWEEP_TEST_SECRET_TOKEN");
+  ::unsetenv("SLAMSWEEP_TEST_REPLACED");
+  ASSERT_TRUE(outcome.ok()) << outcome.reason;
+  EXPECT_EQ(ReadAll(dir / "log.txt"),
+            "SLAMSWEEP_TEST_A_NAME_LONGER_THAN_ANY_ENTRY_OF_THE_ENVIRONMENT=x\nSLAMSWEEP_TEST_KEPT=kept\n"
+            "SLAMSWEEP_TEST_REPLACED=new\n");
 }
 
 TEST(RunProcessTest, EnvironmentAndWorkingDirectory) {
