@@ -14,7 +14,8 @@
 # --seconds: wall-clock seconds per target (default FUZZ_SECONDS, or 600). The table gives the CPU seconds
 # each target got.
 # Environment: FUZZ_SECONDS, FUZZ_TARGETS (names, default every target), FUZZ_NICE (default 5),
-# SLAMSWEEP_FUZZ_BUILD_DIR (default <repo>/build-fuzz), SKIP_DEPS=1 (do not install clang).
+# SLAMSWEEP_FUZZ_BUILD_DIR (default <repo>/build-fuzz), SKIP_DEPS=1 (do not install clang), SKIP_BUILD=1 (fuzz
+# the programs the build folder holds, as they are).
 # Exit code: 0 no finding; 3 a finding (see summary.md); 4 a target wrote no log; otherwise the failing step's code.
 set -euo pipefail
 # shellcheck source=jobs/lib.sh
@@ -35,8 +36,10 @@ nice_level=${FUZZ_NICE:-5}
 contained=" rawlog rosbag "
 
 [[ "${SKIP_DEPS:-0}" == 1 ]] || jobs_run "$SLAMSWEEP_ROOT/scripts/install-fuzz-deps.sh"
-CXX=clang++-14 SLAMSWEEP_BUILD_DIR=$build_dir SLAMSWEEP_BUILD_TARGETS=fuzz_targets \
-  jobs_run "$SLAMSWEEP_ROOT/scripts/build.sh" -DSLAMSWEEP_FUZZ=ON -DSLAMSWEEP_BUILD_BENCHMARKS=OFF
+if [[ "${SKIP_BUILD:-0}" != 1 ]]; then
+  CXX=clang++-14 SLAMSWEEP_BUILD_DIR=$build_dir SLAMSWEEP_BUILD_TARGETS=fuzz_targets \
+    jobs_run "$SLAMSWEEP_ROOT/scripts/build.sh" -DSLAMSWEEP_FUZZ=ON -DSLAMSWEEP_BUILD_BENCHMARKS=OFF
+fi
 targets=()
 if [[ -n "${FUZZ_TARGETS:-}" ]]; then
   read -r -a targets <<<"$FUZZ_TARGETS"
