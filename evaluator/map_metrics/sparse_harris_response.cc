@@ -5,6 +5,7 @@
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
+#include "evaluator/map_metrics/harris_area.h"
 #include "evaluator/map_metrics/zero_scan.h"
 
 namespace slamsweep::evaluator::inline map_metrics {
@@ -120,11 +121,15 @@ void HarrisOnArea(const cv::Mat& image, cv::Rect area, int margin, const HarrisR
   const cv::Rect widened =
       cv::Rect(area.x - margin, area.y - margin, area.width + 2 * margin, area.height + 2 * margin) &
       cv::Rect(0, 0, image.cols, image.rows);
+  cv::Mat out = band(cv::Rect(area.x, area.y - band_first_row, area.width, area.height));
+  if (HarrisAreaSupported(options.block_size_cells, widened.size())) {
+    HarrisResponseOfArea(image, widened, area, options.aperture_cells, options.harris_k, out);
+    return;
+  }
   cv::Mat area_response;  // fresh, hence continuous like the whole-image call's (see below)
   cv::cornerHarris(image(widened), area_response, options.block_size_cells, options.aperture_cells, options.harris_k,
                    cv::BORDER_DEFAULT);
-  area_response(cv::Rect(area.x - widened.x, area.y - widened.y, area.width, area.height))
-      .copyTo(band(cv::Rect(area.x, area.y - band_first_row, area.width, area.height)));
+  area_response(cv::Rect(area.x - widened.x, area.y - widened.y, area.width, area.height)).copyTo(out);
 }
 
 }  // namespace
@@ -171,11 +176,17 @@ void ForEachHarrisResponseBand(const cv::Mat& image, const HarrisResponseOptions
     }
     if (tr == last_tile_row && active) {
       const int band_row = std::max(0, (rows.start - margin) / 64 * 64);
-      cv::Mat band_response;
-      cv::cornerHarris(image.rowRange(band_row, image.rows), band_response, options.block_size_cells,
-                       options.aperture_cells, options.harris_k, cv::BORDER_DEFAULT);
-      band_response.rowRange(rows.start - band_row, band_response.rows).copyTo(band.response);
-      band.computed_areas.push_back(cv::Rect(0, rows.start, image.cols, rows.size()));
+      const cv::Rect call_area(0, band_row, image.cols, image.rows - band_row);
+      const cv::Rect kept(0, rows.start, image.cols, rows.size());
+      if (HarrisAreaSupported(options.block_size_cells, call_area.size())) {
+        HarrisResponseOfArea(image, call_area, kept, options.aperture_cells, options.harris_k, band.response);
+      } else {
+        cv::Mat band_response;
+        cv::cornerHarris(image(call_area), band_response, options.block_size_cells, options.aperture_cells,
+                         options.harris_k, cv::BORDER_DEFAULT);
+        band_response.rowRange(rows.start - band_row, band_response.rows).copyTo(band.response);
+      }
+      band.computed_areas.push_back(kept);
     }
     visit(band);
   }

@@ -40,6 +40,9 @@ struct HarrisResponseBand {
 /// which is what an all-zero neighbourhood gives. A band is one tile row (the last one absorbs
 /// the remainder); small images are one band computed whole.
 ///
+/// With the corner count's 2 x 2 block, each call's response comes from HarrisResponseOfArea
+/// (harris_area.h), equal bit for bit to cv::cornerHarris on the same area; other blocks call it.
+///
 /// Exactness: per pixel the same arithmetic runs as in the whole-image call, with one caveat.
 /// OpenCV's block sum keeps double-precision running sums that start at each call's first row
 /// and column, so a computed response can differ from the whole-image call in its last bits
