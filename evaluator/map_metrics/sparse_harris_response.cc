@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "evaluator/map_metrics/harris_area.h"
+#include "evaluator/map_metrics/two_thread_sequence.h"
 #include "evaluator/map_metrics/zero_scan.h"
 
 namespace slamsweep::evaluator::inline map_metrics {
@@ -132,12 +133,72 @@ void HarrisOnArea(const cv::Mat& image, cv::Rect area, int margin, const HarrisR
   area_response(cv::Rect(area.x - widened.x, area.y - widened.y, area.width, area.height)).copyTo(out);
 }
 
+// Zero outside `computed` (disjoint column spans covering whole rows of the band, left to right):
+// only where nothing was computed is the fresh band written twice.
+void ZeroOutside(const std::vector<cv::Rect>& computed, cv::Mat& band) {
+  for (int row = 0; row < band.rows; ++row) {
+    float* pixels = band.ptr<float>(row);
+    int col = 0;
+    for (const cv::Rect& span : computed) {
+      std::fill(pixels + col, pixels + span.x, 0.0f);
+      col = span.x + span.width;
+    }
+    std::fill(pixels + col, pixels + band.cols, 0.0f);
+  }
+}
+
+// The band of tile row `tr`. cornerHarris's last step treats a continuous image as one long row
+// and leaves a scalar remainder of fewer than 64 pixels at its end. A tile's sub-image ends with
+// margin rows at least 64 wide, so its remainder is thrown away; the last tile row is computed as
+// one full-width band starting at a multiple of 64 rows, so that its remainder is the same pixels
+// as the whole-image call's. Consecutive active tiles of a tile row share one call (fewer calls,
+// shared margins).
+HarrisResponseBand ComputeBand(const cv::Mat& image, const TileGrid& tiles, int tr,
+                               const HarrisResponseOptions& options) {
+  const int reach = ResponseReach(options);
+  const int margin = options.block_size_cells + 1;
+  const int last_tile_row = tiles.rows() - 1;
+  const cv::Range rows = tiles.RowRange(tr);
+  HarrisResponseBand band;
+  band.first_row = rows.start;
+  band.response.create(rows.size(), image.cols, CV_32FC1);
+  bool active = false;
+  for (int tc = 0; tc < tiles.cols();) {
+    if (!tiles.Active(tr, tc, reach)) {
+      ++tc;
+      continue;
+    }
+    const int first_tile = tc;
+    while (tc < tiles.cols() && tiles.Active(tr, tc, reach)) ++tc;
+    active = true;
+    if (tr == last_tile_row) break;  // computed below, whole
+    const cv::Rect span = tiles.Tile(tr, first_tile) | tiles.Tile(tr, tc - 1);
+    band.computed_areas.push_back(span);
+    HarrisOnArea(image, span, margin, options, band.first_row, band.response);
+  }
+  if (tr == last_tile_row && active) {
+    const int band_row = std::max(0, (rows.start - margin) / 64 * 64);
+    const cv::Rect call_area(0, band_row, image.cols, image.rows - band_row);
+    const cv::Rect kept(0, rows.start, image.cols, rows.size());
+    if (HarrisAreaSupported(options.block_size_cells, call_area.size())) {
+      HarrisResponseOfArea(image, call_area, kept, options.aperture_cells, options.harris_k, band.response);
+    } else {
+      cv::Mat band_response;
+      cv::cornerHarris(image(call_area), band_response, options.block_size_cells, options.aperture_cells,
+                       options.harris_k, cv::BORDER_DEFAULT);
+      band_response.rowRange(rows.start - band_row, band_response.rows).copyTo(band.response);
+    }
+    band.computed_areas.push_back(kept);
+  }
+  ZeroOutside(band.computed_areas, band.response);
+  return band;
+}
+
 }  // namespace
 
 void ForEachHarrisResponseBand(const cv::Mat& image, const HarrisResponseOptions& options, const RowRuns* nonzero,
                                const std::function<void(const HarrisResponseBand&)>& visit) {
   const int reach = ResponseReach(options);
-  const int margin = options.block_size_cells + 1;
   if (image.empty()) return;
   if (image.rows < 2 * kTileCells || image.cols < 2 * kTileCells || reach > kTileCells) {
     HarrisResponseBand whole;
@@ -148,48 +209,10 @@ void ForEachHarrisResponseBand(const cv::Mat& image, const HarrisResponseOptions
     return;
   }
   const TileGrid tiles(image, nonzero);
-  // cornerHarris's last step treats a continuous image as one long row and leaves a scalar
-  // remainder of fewer than 64 pixels at its end. A tile's sub-image ends with margin rows at
-  // least 64 wide, so its remainder is thrown away; the last tile row is computed as one
-  // full-width band starting at a multiple of 64 rows, so that its remainder is the same
-  // pixels as the whole-image call's.
-  // Consecutive active tiles of a tile row share one call (fewer calls, shared margins).
-  const int last_tile_row = tiles.rows() - 1;
-  for (int tr = 0; tr < tiles.rows(); ++tr) {
-    const cv::Range rows = tiles.RowRange(tr);
-    HarrisResponseBand band;
-    band.first_row = rows.start;
-    band.response = cv::Mat::zeros(rows.size(), image.cols, CV_32FC1);
-    bool active = false;
-    for (int tc = 0; tc < tiles.cols();) {
-      if (!tiles.Active(tr, tc, reach)) {
-        ++tc;
-        continue;
-      }
-      const int first_tile = tc;
-      while (tc < tiles.cols() && tiles.Active(tr, tc, reach)) ++tc;
-      active = true;
-      if (tr == last_tile_row) break;  // computed below, whole
-      const cv::Rect span = tiles.Tile(tr, first_tile) | tiles.Tile(tr, tc - 1);
-      band.computed_areas.push_back(span);
-      HarrisOnArea(image, span, margin, options, band.first_row, band.response);
-    }
-    if (tr == last_tile_row && active) {
-      const int band_row = std::max(0, (rows.start - margin) / 64 * 64);
-      const cv::Rect call_area(0, band_row, image.cols, image.rows - band_row);
-      const cv::Rect kept(0, rows.start, image.cols, rows.size());
-      if (HarrisAreaSupported(options.block_size_cells, call_area.size())) {
-        HarrisResponseOfArea(image, call_area, kept, options.aperture_cells, options.harris_k, band.response);
-      } else {
-        cv::Mat band_response;
-        cv::cornerHarris(image(call_area), band_response, options.block_size_cells, options.aperture_cells,
-                         options.harris_k, cv::BORDER_DEFAULT);
-        band_response.rowRange(rows.start - band_row, band_response.rows).copyTo(band.response);
-      }
-      band.computed_areas.push_back(kept);
-    }
-    visit(band);
-  }
+  // The bands are independent: both cores compute them, `visit` sees them in order.
+  ForEachInOrderOnTwoThreads<HarrisResponseBand>(
+      tiles.rows(), [&](int tr) { return ComputeBand(image, tiles, tr, options); },
+      [&](int, const HarrisResponseBand& band) { visit(band); });
 }
 
 }  // namespace slamsweep::evaluator::inline map_metrics
