@@ -2,10 +2,10 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/map_metrics/scorable_grid.h"
+#include "evaluator/map_metrics/usable_cores.h"
 
 #include <future>
 #include <string>
-#include <thread>
 
 namespace slamsweep::evaluator::inline map_metrics {
 
@@ -39,7 +39,7 @@ PaperMetrics Frame(const OccupancyGrid& grid, const PaperMetricsOptions& options
 
 bool Crops(const PaperMetrics& metrics) { return metrics.window != CellWindow{0, 0, metrics.width, metrics.height}; }
 
-bool TwoCores() { return std::thread::hardware_concurrency() >= 2; }
+bool TwoCores() { return UsableCores() >= 2; }
 
 // The three metrics only read the grid: with two cores the occupied proportion and the enclosed
 // areas run on a helper thread while this one counts the corners.

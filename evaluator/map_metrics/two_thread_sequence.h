@@ -8,6 +8,8 @@
 #include <thread>
 #include <vector>
 
+#include "evaluator/map_metrics/usable_cores.h"
+
 namespace slamsweep::evaluator::inline map_metrics {
 
 /// Computes make(i) for i = 0 .. count - 1 on the calling thread and one helper thread (each takes
@@ -19,7 +21,7 @@ namespace slamsweep::evaluator::inline map_metrics {
 /// With one index or one core, everything runs on the calling thread.
 template <typename T, typename Make, typename Use>
 void ForEachInOrderOnTwoThreads(int count, Make&& make, Use&& use) {
-  if (count <= 1 || std::thread::hardware_concurrency() < 2) {
+  if (count <= 1 || UsableCores() < 2) {
     for (int i = 0; i < count; ++i) use(i, make(i));
     return;
   }
