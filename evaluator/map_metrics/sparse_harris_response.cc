@@ -6,10 +6,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "evaluator/map_metrics/harris_area.h"
-#include "evaluator/map_metrics/two_thread_sequence.h"
 #include "evaluator/map_metrics/zero_scan.h"
 
 namespace slamsweep::evaluator::inline map_metrics {
+
 namespace {
 
 constexpr int kTileCells = 64;
@@ -19,6 +19,8 @@ constexpr int kTileCells = 64;
 int ResponseReach(const HarrisResponseOptions& options) {
   return std::max(1, options.aperture_cells / 2) + options.block_size_cells;
 }
+
+}  // namespace
 
 // Bounding box of the non-zero pixels of one tile (empty when max_row < 0).
 struct TileExtent {
@@ -112,6 +114,8 @@ class TileGrid {
   std::vector<TileExtent> extents_;
 };
 
+namespace {
+
 // Computes the response of `area` (image coordinates) into the band that starts at image row
 // `band_first_row`, running cv::cornerHarris on that area widened by `margin` (clipped to the
 // image). cornerHarris reads the real pixels around a sub-image for its derivatives, but its
@@ -196,23 +200,26 @@ HarrisResponseBand ComputeBand(const cv::Mat& image, const TileGrid& tiles, int 
 
 }  // namespace
 
-void ForEachHarrisResponseBand(const cv::Mat& image, const HarrisResponseOptions& options, const RowRuns* nonzero,
-                               const std::function<void(const HarrisResponseBand&)>& visit) {
-  const int reach = ResponseReach(options);
+HarrisResponseBands::HarrisResponseBands(const cv::Mat& image, const HarrisResponseOptions& options,
+                                         const RowRuns* nonzero)
+    : image_(image), options_(options) {
   if (image.empty()) return;
-  if (image.rows < 2 * kTileCells || image.cols < 2 * kTileCells || reach > kTileCells) {
-    HarrisResponseBand whole;
-    cv::cornerHarris(image, whole.response, options.block_size_cells, options.aperture_cells, options.harris_k,
-                     cv::BORDER_DEFAULT);
-    whole.computed_areas.push_back(cv::Rect(0, 0, image.cols, image.rows));
-    visit(whole);
-    return;
-  }
-  const TileGrid tiles(image, nonzero);
-  // The bands are independent: both cores compute them, `visit` sees them in order.
-  ForEachInOrderOnTwoThreads<HarrisResponseBand>(
-      tiles.rows(), [&](int tr) { return ComputeBand(image, tiles, tr, options); },
-      [&](int, const HarrisResponseBand& band) { visit(band); });
+  whole_ = image.rows < 2 * kTileCells || image.cols < 2 * kTileCells || ResponseReach(options) > kTileCells;
+  if (!whole_) tiles_ = std::make_shared<const TileGrid>(image, nonzero);
+}
+
+int HarrisResponseBands::count() const {
+  if (image_.empty()) return 0;
+  return whole_ ? 1 : tiles_->rows();
+}
+
+HarrisResponseBand HarrisResponseBands::Compute(int index) const {
+  if (!whole_) return ComputeBand(image_, *tiles_, index, options_);
+  HarrisResponseBand whole;
+  cv::cornerHarris(image_, whole.response, options_.block_size_cells, options_.aperture_cells, options_.harris_k,
+                   cv::BORDER_DEFAULT);
+  whole.computed_areas.push_back(cv::Rect(0, 0, image_.cols, image_.rows));
+  return whole;
 }
 
 }  // namespace slamsweep::evaluator::inline map_metrics
