@@ -53,22 +53,31 @@ using Double4 = double __attribute__((vector_size(32)));
   return __builtin_convertvector(left * right, Double4);
 }
 
-// The box filter's row pass over one row of the call area, for the kept columns: s starts as
-// (0 + X[1]) + X[0] (column -1 reflected to 1), then s += X[c] - X[c - 2] column by column, in
-// double. The sums go to `sums` from column kept_begin on, 4 doubles a cell.
-[[gnu::always_inline]] inline void RowPass(const float* dx, const float* dy, int kept_begin, int kept_end,
-                                           double* sums) {
-  Double4 back2 = Products(dx, dy, 1);  // X[c - 2], starting as X[-1] = X[1]
-  Double4 back1 = Products(dx, dy, 0);  // X[c - 1]
-  Double4 s = Double4{} + back2;
-  s += back1;
-  if (kept_begin == 0) Store(sums, s);
+// The box filter's row pass over `n` rows of the call area (1 or 2), for the kept columns: s starts
+// as (0 + X[1]) + X[0] (column -1 reflected to 1), then s += X[c] - X[c - 2] column by column, in
+// double. Row i's sums go to sums[i] from column kept_begin on, 4 doubles a cell. Two rows advance
+// side by side so that their chains of dependent additions overlap in the processor.
+template <int n>
+[[gnu::always_inline]] inline void RowPasses(const float* const* dx, const float* const* dy, int kept_begin,
+                                             int kept_end, double* const* sums) {
+  Double4 back2[n];  // X[c - 2], starting as X[-1] = X[1]
+  Double4 back1[n];  // X[c - 1]
+  Double4 s[n];
+  for (int i = 0; i < n; ++i) {
+    back2[i] = Products(dx[i], dy[i], 1);
+    back1[i] = Products(dx[i], dy[i], 0);
+    s[i] = Double4{} + back2[i];
+    s[i] += back1[i];
+    if (kept_begin == 0) Store(sums[i], s[i]);
+  }
   for (int c = 1; c < kept_end; ++c) {
-    const Double4 here = Products(dx, dy, c);
-    s += here - back2;
-    back2 = back1;
-    back1 = here;
-    if (c >= kept_begin) Store(sums + 4 * static_cast<std::size_t>(c - kept_begin), s);
+    for (int i = 0; i < n; ++i) {
+      const Double4 here = Products(dx[i], dy[i], c);
+      s[i] += here - back2[i];
+      back2[i] = back1[i];
+      back1[i] = here;
+      if (c >= kept_begin) Store(sums[i] + 4 * static_cast<std::size_t>(c - kept_begin), s[i]);
+    }
   }
 }
 
@@ -85,12 +94,12 @@ __attribute__((target_clones("avx2", "default"))) void BoxSumResponse(const cv::
   const int width = kept.width;
 
   const std::size_t lanes = 4 * static_cast<std::size_t>(width);
-  std::vector<double> previous(lanes), current(lanes), column_sums(lanes);
+  // Row sums of the row above the one in hand and of the next two rows.
+  std::array<std::vector<double>, 3> row_sums = {std::vector<double>(lanes), std::vector<double>(lanes),
+                                                 std::vector<double>(lanes)};
+  std::vector<double> column_sums(lanes);
   std::array<std::vector<float>, kChannels> box = {std::vector<float>(width), std::vector<float>(width),
                                                    std::vector<float>(width)};
-  const auto row_pass = [&](int row, std::vector<double>& sums) {
-    RowPass(dx.ptr<float>(row), dy.ptr<float>(row), kept_begin, kept_end, sums.data());
-  };
 
   // The final step's forms by the cell's position in the call area taken as one row.
   const std::int64_t cells = static_cast<std::int64_t>(call_area.width) * call_area.height;
@@ -98,26 +107,22 @@ __attribute__((target_clones("avx2", "default"))) void BoxSumResponse(const cv::
   const std::int64_t four_end = cells - wide_end >= 4 ? wide_end + 4 : wide_end;
   const float k = static_cast<float>(harris_k);
 
-  // The column pass: SUM = 0 + R[-1] (row -1 reflected to 1); row r gives s = SUM + R[r], then
-  // SUM = s - R[r - 1].
-  row_pass(1, previous);
-  for (std::size_t i = 0; i < lanes; ++i) column_sums[i] = 0.0 + previous[i];
-  for (int row = 0; row < end_row; ++row) {
-    row_pass(row, current);
+  // The column pass on `row`, whose row sums are `here` (the row above's: `above`): s = SUM + R[r]
+  // rounded to float, then SUM = s - R[r - 1]; then the row's response when it is kept.
+  const auto finish_row = [&](int row, const double* here, const double* above) {
     float* a = box[0].data();
     float* b = box[1].data();
     float* c = box[2].data();
     for (int col = 0; col < width; ++col) {
       const std::size_t at = 4 * static_cast<std::size_t>(col);
-      const Double4 sum = Load(&column_sums[at]) + Load(&current[at]);
+      const Double4 sum = Load(&column_sums[at]) + Load(&here[at]);
       const Float4 rounded = __builtin_convertvector(sum, Float4);
       a[col] = rounded[0];
       b[col] = rounded[1];
       c[col] = rounded[2];
-      Store(&column_sums[at], sum - Load(&previous[at]));
+      Store(&column_sums[at], sum - Load(&above[at]));
     }
-    std::swap(previous, current);
-    if (row < first_row) continue;
+    if (row < first_row) return;
     float* response = out.ptr<float>(row - first_row);
     for (int col = 0; col < width; ++col) response[col] = HarrisWide(a[col], b[col], c[col], k);
     // Cells past the last multiple of 8 of the call area, if this row holds any.
@@ -127,6 +132,30 @@ __attribute__((target_clones("avx2", "default"))) void BoxSumResponse(const cv::
       response[col] =
           position < four_end ? HarrisFour(a[col], b[col], c[col], k) : HarrisScalar(a[col], b[col], c[col], harris_k);
     }
+  };
+
+  // The column pass starts with SUM = 0 + R[-1] (row -1 reflected to 1).
+  double* above = row_sums[0].data();
+  double* next[2] = {row_sums[1].data(), row_sums[2].data()};
+  {
+    const float* x = dx.ptr<float>(1);
+    const float* y = dy.ptr<float>(1);
+    RowPasses<1>(&x, &y, kept_begin, kept_end, &above);
+  }
+  for (std::size_t i = 0; i < lanes; ++i) column_sums[i] = 0.0 + above[i];
+  for (int row = 0; row < end_row; row += 2) {
+    const bool pair = row + 1 < end_row;
+    const float* x[2] = {dx.ptr<float>(row), dx.ptr<float>(pair ? row + 1 : row)};
+    const float* y[2] = {dy.ptr<float>(row), dy.ptr<float>(pair ? row + 1 : row)};
+    if (pair) {
+      RowPasses<2>(x, y, kept_begin, kept_end, next);
+    } else {
+      RowPasses<1>(x, y, kept_begin, kept_end, next);
+    }
+    finish_row(row, next[0], above);
+    if (!pair) break;
+    finish_row(row + 1, next[1], next[0]);
+    std::swap(above, next[1]);  // the pair's second row is the next row above; the others take the next pair
   }
 }
 
