@@ -71,7 +71,7 @@ for name in "${targets[@]}"; do
   last=$(grep -E '^#[0-9]+' "$output/$name.log" | grep -E 'cov: [0-9]+' | tail -n 1 || true)
   executions=$(sed -E 's/^#([0-9]+).*/\1/' <<<"$last")
   edges=$(sed -nE 's/.*cov: ([0-9]+).*/\1/p' <<<"$last")
-  cpu_s=$(awk '{printf "%.0f", $1 + $2}' "$output/$name.cpu")
+  cpu_s=$(awk 'END {printf "%.0f", $1 + $2}' "$output/$name.cpu")  # the last line: time may first say the exit status
   count() { find "$output/$name" -maxdepth 1 -name "$1-*" | wc -l; }
   crash=$(count crash) leak=$(count leak) timeout=$(count timeout) oom=$(count oom)
   verdict=ok
