@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <optional>
 
@@ -22,8 +23,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kUnknownGrey = 205;
-constexpr int kFreeGrey = 254;
-constexpr int kOccupiedGrey = 0;
 /// The stage animation's longer side at most: a larger canvas is reduced by a whole factor (its size on
 /// disk and its encoding time grow with the pixels; map.png keeps the final map at full resolution).
 constexpr int kStageAnimationMaxSidePx = 400;
@@ -51,37 +50,77 @@ std::vector<cv::Mat> OnCommonCanvas(const std::vector<cv::Mat>& stages) {
   return placed;
 }
 
-// A trinary stage reduced by `factor` on each side: a pixel of the result is occupied when a cell of its block
-// is, else free when one is, else unknown (walls one cell thick and the explored area stay visible).
-cv::Mat ReducedStage(const cv::Mat& stage, int factor) {
-  cv::Mat reduced((stage.rows + factor - 1) / factor, (stage.cols + factor - 1) / factor, CV_8UC1,
-                  cv::Scalar(kUnknownGrey));
-  for (int row = 0; row < stage.rows; ++row) {
-    const std::uint8_t* in = stage.ptr<std::uint8_t>(row);
-    std::uint8_t* out = reduced.ptr<std::uint8_t>(row / factor);
-    for (int col = 0; col < stage.cols; ++col) {
-      std::uint8_t& pixel = out[col / factor];
-      if (in[col] == kOccupiedGrey || pixel == kOccupiedGrey) {
-        pixel = kOccupiedGrey;
-      } else if (in[col] == kFreeGrey) {
-        pixel = kFreeGrey;
-      } else if (pixel != kFreeGrey) {
-        pixel = in[col];
+// Trinary greys plus this (modulo 256) order as the reduction ranks them: unknown 205 -> 0, free 254 -> 49,
+// occupied 0 -> 51. A plain byte maximum then picks occupied over free over unknown, and vectorises.
+constexpr std::uint8_t kRankShift = 51;
+
+// The blocks of `reduced` (factor x factor cells of the trinary `stage` each) in the rows and columns of
+// `blocks`, each the grey of the highest-ranked cell in it: walls one cell thick and the explored area stay
+// visible.
+void ReduceBlocks(const cv::Mat& stage, int factor, const cv::Rect& blocks, cv::Mat& reduced) {
+  const int first_col = blocks.x * factor;
+  const int end_col = std::min(stage.cols, (blocks.x + blocks.width) * factor);
+  std::vector<std::uint8_t> ranks(static_cast<std::size_t>(end_col - first_col));
+  for (int block_row = blocks.y; block_row < blocks.y + blocks.height; ++block_row) {
+    std::fill(ranks.begin(), ranks.end(), std::uint8_t{0});
+    const int end_row = std::min(stage.rows, (block_row + 1) * factor);
+    for (int row = block_row * factor; row < end_row; ++row) {
+      const std::uint8_t* in = stage.ptr<std::uint8_t>(row) + first_col;
+      for (std::size_t i = 0; i < ranks.size(); ++i) {
+        ranks[i] = std::max(ranks[i], static_cast<std::uint8_t>(in[i] + kRankShift));
       }
     }
+    std::uint8_t* out = reduced.ptr<std::uint8_t>(block_row);
+    for (int block_col = blocks.x; block_col < blocks.x + blocks.width; ++block_col) {
+      const auto begin = ranks.begin() + (block_col - blocks.x) * factor;
+      const auto end = std::min(begin + factor, ranks.end());
+      out[block_col] = static_cast<std::uint8_t>(*std::max_element(begin, end) - kRankShift);
+    }
   }
-  return reduced;
+}
+
+// The rows and columns of blocks holding a cell that differs between two stages of one size; empty when none.
+cv::Rect ChangedBlocks(const cv::Mat& before, const cv::Mat& after, int factor) {
+  int top = after.rows;
+  int bottom = -1;
+  int left = after.cols;
+  int right = -1;
+  const auto width = static_cast<std::size_t>(after.cols);
+  for (int row = 0; row < after.rows; ++row) {
+    const std::uint8_t* a = before.ptr<std::uint8_t>(row);
+    const std::uint8_t* b = after.ptr<std::uint8_t>(row);
+    if (std::memcmp(a, b, width) == 0) continue;
+    int first = 0;
+    while (a[first] == b[first]) ++first;
+    int last = after.cols - 1;
+    while (a[last] == b[last]) --last;
+    top = std::min(top, row);
+    bottom = row;
+    left = std::min(left, first);
+    right = std::max(right, last);
+  }
+  if (bottom < 0) return {};
+  return {left / factor, top / factor, right / factor - left / factor + 1, bottom / factor - top / factor + 1};
 }
 
 // The stages on their common canvas, reduced by the smallest whole factor that brings its longer side
-// within kStageAnimationMaxSidePx.
+// within kStageAnimationMaxSidePx. Only the blocks a stage changed are reduced again.
 std::vector<cv::Mat> AnimationFrames(const std::vector<cv::Mat>& stages) {
   std::vector<cv::Mat> frames = OnCommonCanvas(stages);
   const int side = std::max(frames.front().cols, frames.front().rows);
   const int factor = (side + kStageAnimationMaxSidePx - 1) / kStageAnimationMaxSidePx;
   if (factor <= 1) return frames;
-  for (cv::Mat& frame : frames) frame = ReducedStage(frame, factor);
-  return frames;
+  const cv::Mat& first = frames.front();
+  std::vector<cv::Mat> reduced;
+  reduced.reserve(frames.size());
+  reduced.emplace_back((first.rows + factor - 1) / factor, (first.cols + factor - 1) / factor, CV_8UC1);
+  ReduceBlocks(first, factor, cv::Rect(0, 0, reduced.back().cols, reduced.back().rows), reduced.back());
+  for (std::size_t i = 1; i < frames.size(); ++i) {
+    reduced.push_back(reduced.back().clone());
+    const cv::Rect changed = ChangedBlocks(frames[i - 1], frames[i], factor);
+    if (!changed.empty()) ReduceBlocks(frames[i], factor, changed, reduced.back());
+  }
+  return reduced;
 }
 
 }  // namespace
