@@ -1,6 +1,7 @@
 #include "orchestrator/worker/run_outputs.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -23,9 +24,12 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kUnknownGrey = 205;
-/// The stage animation's longer side at most: a larger canvas is reduced by a whole factor (its size on
-/// disk and its encoding time grow with the pixels; map.png keeps the final map at full resolution).
+/// The stage animation's longer side at most and its bytes at most: a larger canvas, or an animation of more
+/// bytes, is reduced by the next whole factor (up to kStageAnimationMaxFactor). Its size on disk and its
+/// encoding time grow with the pixels; map.png keeps the final map at full resolution.
 constexpr int kStageAnimationMaxSidePx = 400;
+constexpr std::size_t kStageAnimationMaxBytes = 14 << 10;
+constexpr int kStageAnimationMaxFactor = 8;
 
 // The stages on one canvas of the largest width and height, smaller ones centred on unknown cells (a
 // stage image carries no origin to align it by; the report's animations have always centred them).
@@ -79,8 +83,8 @@ void ReduceBlocks(const cv::Mat& stage, int factor, const cv::Rect& blocks, cv::
   }
 }
 
-// The rows and columns of blocks holding a cell that differs between two stages of one size; empty when none.
-cv::Rect ChangedBlocks(const cv::Mat& before, const cv::Mat& after, int factor) {
+// The rectangle of cells that differ between two stages of one size; empty when none do.
+cv::Rect ChangedCells(const cv::Mat& before, const cv::Mat& after) {
   int top = after.rows;
   int bottom = -1;
   int left = after.cols;
@@ -100,15 +104,13 @@ cv::Rect ChangedBlocks(const cv::Mat& before, const cv::Mat& after, int factor) 
     right = std::max(right, last);
   }
   if (bottom < 0) return {};
-  return {left / factor, top / factor, right / factor - left / factor + 1, bottom / factor - top / factor + 1};
+  return {left, top, right - left + 1, bottom - top + 1};
 }
 
-// The stages on their common canvas, reduced by the smallest whole factor that brings its longer side
-// within kStageAnimationMaxSidePx. Only the blocks a stage changed are reduced again.
-std::vector<cv::Mat> AnimationFrames(const std::vector<cv::Mat>& stages) {
-  std::vector<cv::Mat> frames = OnCommonCanvas(stages);
-  const int side = std::max(frames.front().cols, frames.front().rows);
-  const int factor = (side + kStageAnimationMaxSidePx - 1) / kStageAnimationMaxSidePx;
+// The stages on their common canvas reduced by `factor`; changed[i] is the rectangle of cells stage i changed
+// (ChangedCells), and only its blocks are reduced again.
+std::vector<cv::Mat> ReducedFrames(const std::vector<cv::Mat>& frames, const std::vector<cv::Rect>& changed,
+                                   int factor) {
   if (factor <= 1) return frames;
   const cv::Mat& first = frames.front();
   std::vector<cv::Mat> reduced;
@@ -117,10 +119,34 @@ std::vector<cv::Mat> AnimationFrames(const std::vector<cv::Mat>& stages) {
   ReduceBlocks(first, factor, cv::Rect(0, 0, reduced.back().cols, reduced.back().rows), reduced.back());
   for (std::size_t i = 1; i < frames.size(); ++i) {
     reduced.push_back(reduced.back().clone());
-    const cv::Rect changed = ChangedBlocks(frames[i - 1], frames[i], factor);
-    if (!changed.empty()) ReduceBlocks(frames[i], factor, changed, reduced.back());
+    const cv::Rect& cells = changed[i];
+    if (cells.empty()) continue;
+    const cv::Rect blocks(cells.x / factor, cells.y / factor,
+                          (cells.x + cells.width - 1) / factor - cells.x / factor + 1,
+                          (cells.y + cells.height - 1) / factor - cells.y / factor + 1);
+    ReduceBlocks(frames[i], factor, blocks, reduced.back());
   }
   return reduced;
+}
+
+// The stage animation: the stages on their common canvas, reduced by the smallest whole factor that brings
+// its longer side within kStageAnimationMaxSidePx and, while it can, its bytes within kStageAnimationMaxBytes.
+std::string StageAnimation(const std::vector<cv::Mat>& stages) {
+  const std::vector<cv::Mat> frames = OnCommonCanvas(stages);
+  std::vector<cv::Rect> changed(frames.size());
+  for (std::size_t i = 1; i < frames.size(); ++i) changed[i] = ChangedCells(frames[i - 1], frames[i]);
+  const int side = std::max(frames.front().cols, frames.front().rows);
+  int factor = std::max(1, (side + kStageAnimationMaxSidePx - 1) / kStageAnimationMaxSidePx);
+  std::string animation = ev::EncodeAnimatedGreyPng(ReducedFrames(frames, changed, factor));
+  while (animation.size() > kStageAnimationMaxBytes && factor < kStageAnimationMaxFactor && side / factor > 1) {
+    // The bytes of a stage animation fall about as factor^1.5 (the stages of bench/scale): the factor expected
+    // to fit, so that most animations are encoded at most twice.
+    const double over = static_cast<double>(animation.size()) / static_cast<double>(kStageAnimationMaxBytes);
+    const int expected = static_cast<int>(std::ceil(factor * std::pow(over, 1.0 / 1.5)));
+    factor = std::min(kStageAnimationMaxFactor, std::max(factor + 1, expected));
+    animation = ev::EncodeAnimatedGreyPng(ReducedFrames(frames, changed, factor));
+  }
+  return animation;
 }
 
 }  // namespace
@@ -151,7 +177,7 @@ nlohmann::json WriteRunOutputs(const RunPaths& paths, const CollectedOutputs& co
   phase.emplace("outputs_stages");
   outputs["stages"] = nlohmann::json::array();
   if (!collected.stages.empty()) {
-    ev::WriteBinaryFile(paths.StageAnimation(), ev::EncodeAnimatedGreyPng(AnimationFrames(collected.stages)));
+    ev::WriteBinaryFile(paths.StageAnimation(), StageAnimation(collected.stages));
     outputs["stage_animation"] = paths.StageAnimation().filename().string();
     outputs["stage_count"] = collected.stages.size();
   }

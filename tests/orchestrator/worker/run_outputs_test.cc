@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
+#include <filesystem>
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -50,6 +52,28 @@ TEST(RunOutputsTest, AStageAnimationOverTheSideCapIsReducedByAWholeFactorKeeping
   EXPECT_EQ(frames[1].at<std::uint8_t>(117, 601 / 3), 0);
   EXPECT_EQ(frames[1].at<std::uint8_t>(117, 500 / 3), 254);
   EXPECT_EQ(frames[0].at<std::uint8_t>(0, 0), 205);
+}
+
+TEST(RunOutputsTest, AStageAnimationOverTheByteCapIsReducedUntilItFits) {
+  slamsweep::testing::TempDir dir;
+  const RunPaths paths{dir.path()};
+  // Cells drawn at random from the three greys: nothing for deflate to find, 38 KB a frame in full.
+  cv::RNG draw(7);
+  std::vector<cv::Mat> stages;
+  for (int i = 0; i < 3; ++i) {
+    cv::Mat stage(390, 390, CV_8UC1);
+    for (int row = 0; row < stage.rows; ++row) {
+      for (int col = 0; col < stage.cols; ++col) {
+        stage.at<std::uint8_t>(row, col) = std::array<std::uint8_t, 3>{0, 205, 254}[draw.uniform(0, 3)];
+      }
+    }
+    stages.push_back(stage);
+  }
+  WriteRunOutputs(paths, Collected(stages), nullptr);
+  EXPECT_LE(std::filesystem::file_size(paths.StageAnimation()), 14u << 10);
+  const std::vector<cv::Mat> frames = ev::DecodeAnimatedGreyPng(ev::ReadTextFile(paths.StageAnimation()), "stages.png");
+  ASSERT_EQ(frames.size(), 3u);
+  EXPECT_LT(frames[0].cols, 390 / 2);
 }
 
 TEST(RunOutputsTest, AStageAnimationWithinTheSideCapKeepsEveryCell) {
