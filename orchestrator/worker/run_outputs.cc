@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <filesystem>
 #include <optional>
 
@@ -27,7 +26,7 @@ constexpr int kUnknownGrey = 205;
 /// The stage animation's longer side at most and its bytes at most: a larger canvas, or an animation of more
 /// bytes, is reduced by the next whole factor (up to kStageAnimationMaxFactor). Its size on disk and its
 /// encoding time grow with the pixels; map.png keeps the final map at full resolution.
-constexpr int kStageAnimationMaxSidePx = 400;
+constexpr int kStageAnimationMaxSidePx = 256;
 constexpr std::size_t kStageAnimationMaxBytes = 14 << 10;
 constexpr int kStageAnimationMaxFactor = 8;
 
@@ -83,32 +82,8 @@ void ReduceBlocks(const cv::Mat& stage, int factor, const cv::Rect& blocks, cv::
   }
 }
 
-// The rectangle of cells that differ between two stages of one size; empty when none do.
-cv::Rect ChangedCells(const cv::Mat& before, const cv::Mat& after) {
-  int top = after.rows;
-  int bottom = -1;
-  int left = after.cols;
-  int right = -1;
-  const auto width = static_cast<std::size_t>(after.cols);
-  for (int row = 0; row < after.rows; ++row) {
-    const std::uint8_t* a = before.ptr<std::uint8_t>(row);
-    const std::uint8_t* b = after.ptr<std::uint8_t>(row);
-    if (std::memcmp(a, b, width) == 0) continue;
-    int first = 0;
-    while (a[first] == b[first]) ++first;
-    int last = after.cols - 1;
-    while (a[last] == b[last]) --last;
-    top = std::min(top, row);
-    bottom = row;
-    left = std::min(left, first);
-    right = std::max(right, last);
-  }
-  if (bottom < 0) return {};
-  return {left, top, right - left + 1, bottom - top + 1};
-}
-
 // The stages on their common canvas reduced by `factor`; changed[i] is the rectangle of cells stage i changed
-// (ChangedCells), and only its blocks are reduced again.
+// (evaluator::ChangedRect), and only its blocks are reduced again.
 std::vector<cv::Mat> ReducedFrames(const std::vector<cv::Mat>& frames, const std::vector<cv::Rect>& changed,
                                    int factor) {
   if (factor <= 1) return frames;
@@ -134,7 +109,7 @@ std::vector<cv::Mat> ReducedFrames(const std::vector<cv::Mat>& frames, const std
 std::string StageAnimation(const std::vector<cv::Mat>& stages) {
   const std::vector<cv::Mat> frames = OnCommonCanvas(stages);
   std::vector<cv::Rect> changed(frames.size());
-  for (std::size_t i = 1; i < frames.size(); ++i) changed[i] = ChangedCells(frames[i - 1], frames[i]);
+  for (std::size_t i = 1; i < frames.size(); ++i) changed[i] = ev::ChangedRect(frames[i - 1], frames[i]);
   const int side = std::max(frames.front().cols, frames.front().rows);
   int factor = std::max(1, (side + kStageAnimationMaxSidePx - 1) / kStageAnimationMaxSidePx);
   std::string animation = ev::EncodeAnimatedGreyPng(ReducedFrames(frames, changed, factor));

@@ -37,27 +37,27 @@ CollectedOutputs Collected(const std::vector<cv::Mat>& stages) {
 TEST(RunOutputsTest, AStageAnimationOverTheSideCapIsReducedByAWholeFactorKeepingWallsAndFreeSpace) {
   slamsweep::testing::TempDir dir;
   const RunPaths paths{dir.path()};
-  // 1,000 x 700 cells: a factor of 3 brings the longer side to 334 (at most 400).
+  // 1,000 x 700 cells: a factor of 4 brings the longer side to 250 (at most 256).
   const nlohmann::json outputs =
       WriteRunOutputs(paths, Collected({Stage(700, 1000, 500), Stage(700, 1000, 601)}), nullptr);
   EXPECT_EQ(outputs["stage_count"], 2u);
   const std::vector<cv::Mat> frames = ev::DecodeAnimatedGreyPng(ev::ReadTextFile(paths.StageAnimation()), "stages.png");
   ASSERT_EQ(frames.size(), 2u);
   for (const cv::Mat& frame : frames) {
-    EXPECT_EQ(frame.cols, 334);
-    EXPECT_EQ(frame.rows, 234);
+    EXPECT_EQ(frame.cols, 250);
+    EXPECT_EQ(frame.rows, 175);
   }
   // The one-cell walls survive the reduction (occupied wins in its block), as do free and unknown.
-  EXPECT_EQ(frames[0].at<std::uint8_t>(117, 500 / 3), 0);
-  EXPECT_EQ(frames[1].at<std::uint8_t>(117, 601 / 3), 0);
-  EXPECT_EQ(frames[1].at<std::uint8_t>(117, 500 / 3), 254);
+  EXPECT_EQ(frames[0].at<std::uint8_t>(87, 500 / 4), 0);
+  EXPECT_EQ(frames[1].at<std::uint8_t>(87, 601 / 4), 0);
+  EXPECT_EQ(frames[1].at<std::uint8_t>(87, 500 / 4), 254);
   EXPECT_EQ(frames[0].at<std::uint8_t>(0, 0), 205);
 }
 
 TEST(RunOutputsTest, AStageAnimationOverTheByteCapIsReducedUntilItFits) {
   slamsweep::testing::TempDir dir;
   const RunPaths paths{dir.path()};
-  // Cells drawn at random from the three greys: nothing for deflate to find, 38 KB a frame in full.
+  // Cells drawn at random from the three greys: nothing for deflate to find, over 14 KB even at half the side.
   cv::RNG draw(7);
   std::vector<cv::Mat> stages;
   for (int i = 0; i < 3; ++i) {
@@ -79,7 +79,7 @@ TEST(RunOutputsTest, AStageAnimationOverTheByteCapIsReducedUntilItFits) {
 TEST(RunOutputsTest, AStageAnimationWithinTheSideCapKeepsEveryCell) {
   slamsweep::testing::TempDir dir;
   const RunPaths paths{dir.path()};
-  const cv::Mat stage = Stage(300, 400, 7);
+  const cv::Mat stage = Stage(200, 250, 7);
   WriteRunOutputs(paths, Collected({stage}), nullptr);
   const std::vector<cv::Mat> frames = ev::DecodeAnimatedGreyPng(ev::ReadTextFile(paths.StageAnimation()), "stages.png");
   ASSERT_EQ(frames.size(), 1u);
