@@ -106,9 +106,14 @@ int Run(const RunOptions& options, const Streams& streams, const std::string& co
                              settings.output_dir.string());
   streams.err << orchestrator::OdometryIsReferenceWarnings(sweep.runs);
   // Once per sequence, before any run starts: scans too far apart for scan matching judge the data, not the programs.
-  // Read through the sweep's prepared inputs: the runs then find each sequence prepared.
-  streams.err << orchestrator::SparseSequenceWarnings(sweep.runs,
-                                                      orchestrator::SweepPreparedInputsDir(settings.output_dir));
+  // Read through the sweep's prepared inputs when this program is the workers' (the cache keys an entry by the
+  // executable that prepared it): the runs then find each sequence prepared.
+  std::error_code not_same;
+  const bool worker_is_this_program =
+      std::filesystem::equivalent(orchestrator::WorkerProgram(), "/proc/self/exe", not_same) && !not_same;
+  streams.err << orchestrator::SparseSequenceWarnings(
+      sweep.runs,
+      worker_is_this_program ? orchestrator::SweepPreparedInputsDir(settings.output_dir) : std::filesystem::path());
   const orchestrator::SweepOutcome outcome = RunSweep(sweep.runs, settings, *executor, *status);
   streams.out << fmt::format("{} ok, {} failed, {} done earlier, {} not started{}\n", outcome.ok, outcome.failed,
                              outcome.already_done, outcome.not_started, outcome.interrupted ? " (interrupted)" : "");
