@@ -12,11 +12,11 @@
 #include <string_view>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/formats/map/png_signature.h"
 
 namespace slamsweep::evaluator::inline formats::inline map {
 namespace {
 
-constexpr std::string_view kSignature = "\x89PNG\r\n\x1a\n";
 // libdeflate level 6: a third of level 9's time for maps and stage animations 8-12 % larger (bench/scale).
 constexpr int kDeflateLevel = 6;
 
@@ -171,7 +171,7 @@ cv::Rect ChangedRect(const cv::Mat& before, const cv::Mat& after) {
 
 std::string EncodeCompactGreyPng(const cv::Mat& grey) {
   CheckGrey(grey, "image");
-  std::string png(kSignature);
+  std::string png(kPngSignature);
   PutChunk(png, "IHDR", Header(grey.cols, grey.rows, 8, 0));
   PutChunk(png, "IDAT", Zlib(NewCompressor().get(), GreyRows(grey)));
   PutChunk(png, "IEND", "");
@@ -213,7 +213,7 @@ std::optional<std::string> EncodePalettePng(const cv::Mat& bgr) {
   std::array<std::uint8_t, 256> identity{};
   for (int level = 0; level < 256; ++level)
     identity[static_cast<std::size_t>(level)] = static_cast<std::uint8_t>(level);
-  std::string png(kSignature);
+  std::string png(kPngSignature);
   PutChunk(png, "IHDR", Header(bgr.cols, bgr.rows, bit_depth, 3));
   PutChunk(png, "PLTE", palette);
   PutChunk(png, "IDAT",
@@ -263,7 +263,7 @@ std::string EncodeAnimatedGreyPng(const std::vector<cv::Mat>& frames, const Anim
   }
   const int bit_depth = levels <= 2 ? 1 : levels <= 4 ? 2 : levels <= 16 ? 4 : 8;
 
-  std::string png(kSignature);
+  std::string png(kPngSignature);
   PutChunk(png, "IHDR", Header(size.width, size.height, bit_depth, 3));
   std::string actl;
   PutU32(actl, static_cast<std::uint32_t>(frames.size()));
