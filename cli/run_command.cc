@@ -13,6 +13,7 @@
 #include "cli/data_sources.h"
 #include "cli/sweep_loading.h"
 #include "orchestrator/adapters/sparse_sequences.h"
+#include "orchestrator/input_cache/prepared_sequence_cache.h"
 #include "orchestrator/matrix/plan_listing.h"
 #include "orchestrator/matrix/shard.h"
 #include "orchestrator/phase_times/phase_times.h"
@@ -105,7 +106,14 @@ int Run(const RunOptions& options, const Streams& streams, const std::string& co
                              settings.output_dir.string());
   streams.err << orchestrator::OdometryIsReferenceWarnings(sweep.runs);
   // Once per sequence, before any run starts: scans too far apart for scan matching judge the data, not the programs.
-  streams.err << orchestrator::SparseSequenceWarnings(sweep.runs);
+  // Read through the sweep's prepared inputs when this program is the workers' (the cache keys an entry by the
+  // executable that prepared it): the runs then find each sequence prepared.
+  std::error_code not_same;
+  const bool worker_is_this_program =
+      std::filesystem::equivalent(orchestrator::WorkerProgram(), "/proc/self/exe", not_same) && !not_same;
+  streams.err << orchestrator::SparseSequenceWarnings(
+      sweep.runs,
+      worker_is_this_program ? orchestrator::SweepPreparedInputsDir(settings.output_dir) : std::filesystem::path());
   const orchestrator::SweepOutcome outcome = RunSweep(sweep.runs, settings, *executor, *status);
   streams.out << fmt::format("{} ok, {} failed, {} done earlier, {} not started{}\n", outcome.ok, outcome.failed,
                              outcome.already_done, outcome.not_started, outcome.interrupted ? " (interrupted)" : "");

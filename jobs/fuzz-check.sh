@@ -8,24 +8,38 @@
 # The rawlog and rosbag targets run MRPT and librosbag in process, where their allocations and slowness are
 # seen; slamsweep runs them in a child process under memory and time limits (evaluator/sequence_io/
 # contained_read.h), so out-of-memory and timeout files of those two are counted as contained, not as findings.
-# Usage: jobs/fuzz-check.sh [OUTPUT_DIR]   (default out/fuzz)
-# Environment: FUZZ_SECONDS (per target, default 600), FUZZ_TARGETS (names, default every target),
-# SLAMSWEEP_FUZZ_BUILD_DIR (default <repo>/build-fuzz), SKIP_DEPS=1 (do not install clang).
+# Each target runs alone (one libFuzzer process at a time, at nice FUZZ_NICE), -timeout=10 (an input taking
+# longer is a finding), -rss_limit_mb=2048, -malloc_limit_mb=256 (one allocation beyond it is a finding).
+# Usage: jobs/fuzz-check.sh [--seconds N] [OUTPUT_DIR]   (default out/fuzz)
+# --seconds: wall-clock seconds per target (default FUZZ_SECONDS, or 600). The table gives the CPU seconds
+# each target got.
+# Environment: FUZZ_SECONDS, FUZZ_TARGETS (names, default every target), FUZZ_NICE (default 5),
+# SLAMSWEEP_FUZZ_BUILD_DIR (default <repo>/build-fuzz), SKIP_DEPS=1 (do not install clang), SKIP_BUILD=1 (fuzz
+# the programs the build folder holds, as they are).
 # Exit code: 0 no finding; 3 a finding (see summary.md); 4 a target wrote no log; otherwise the failing step's code.
 set -euo pipefail
 # shellcheck source=jobs/lib.sh
 source "$(dirname "$0")/lib.sh"
 
-(($# <= 1)) || jobs_die "$JOBS_EXIT_USAGE" "usage: jobs/fuzz-check.sh [OUTPUT_DIR]"
+usage="usage: jobs/fuzz-check.sh [--seconds N] [OUTPUT_DIR]"
+seconds=${FUZZ_SECONDS:-600}
+if [[ "${1:-}" == --seconds ]]; then
+  (($# >= 2)) || jobs_die "$JOBS_EXIT_USAGE" "$usage"
+  seconds=$2
+  shift 2
+fi
+(($# <= 1)) || jobs_die "$JOBS_EXIT_USAGE" "$usage"
 output=$(realpath -m -- "${1:-out/fuzz}")
 build_dir=${SLAMSWEEP_FUZZ_BUILD_DIR:-$SLAMSWEEP_ROOT/build-fuzz}
-seconds=${FUZZ_SECONDS:-600}
+nice_level=${FUZZ_NICE:-5}
 [[ "$seconds" =~ ^[1-9][0-9]*$ ]] || jobs_die "$JOBS_EXIT_USAGE" "FUZZ_SECONDS must be a positive integer, got '$seconds'"
 contained=" rawlog rosbag "
 
 [[ "${SKIP_DEPS:-0}" == 1 ]] || jobs_run "$SLAMSWEEP_ROOT/scripts/install-fuzz-deps.sh"
-CXX=clang++-14 SLAMSWEEP_BUILD_DIR=$build_dir SLAMSWEEP_BUILD_TARGETS=fuzz_targets \
-  jobs_run "$SLAMSWEEP_ROOT/scripts/build.sh" -DSLAMSWEEP_FUZZ=ON -DSLAMSWEEP_BUILD_BENCHMARKS=OFF
+if [[ "${SKIP_BUILD:-0}" != 1 ]]; then
+  CXX=clang++-14 SLAMSWEEP_BUILD_DIR=$build_dir SLAMSWEEP_BUILD_TARGETS=fuzz_targets \
+    jobs_run "$SLAMSWEEP_ROOT/scripts/build.sh" -DSLAMSWEEP_FUZZ=ON -DSLAMSWEEP_BUILD_BENCHMARKS=OFF
+fi
 targets=()
 if [[ -n "${FUZZ_TARGETS:-}" ]]; then
   read -r -a targets <<<"$FUZZ_TARGETS"
@@ -37,7 +51,7 @@ rm -rf -- "$output"
 mkdir -p "$output"
 findings=0
 {
-  echo "| target | seconds | executions | CPU min | edges | corpus | crash | leak | timeout | oom | verdict |"
+  echo "| target | seconds | executions | CPU s | edges | corpus | crash | leak | timeout | oom | verdict |"
   echo "|---|---|---|---|---|---|---|---|---|---|---|"
 } >"$output/summary.md"
 for name in "${targets[@]}"; do
@@ -49,15 +63,15 @@ for name in "${targets[@]}"; do
   cp -- "$SLAMSWEEP_ROOT/tests/fuzz/corpus/$name"/* "$corpus"/ 2>/dev/null || true
   jobs_log "fuzzing $name for $seconds s"
   # Fork mode goes on after a finding, so one night finds more than the first; every finding is a file.
-  /usr/bin/time -f '%U %S' -o "$output/$name.cpu" nice -n 10 "$program" -fork=1 -ignore_crashes=1 \
-    -ignore_ooms=1 -ignore_timeouts=1 -max_total_time="$seconds" -timeout=25 -rss_limit_mb=2048 \
+  /usr/bin/time -f '%U %S' -o "$output/$name.cpu" nice -n "$nice_level" "$program" -fork=1 -ignore_crashes=1 \
+    -ignore_ooms=1 -ignore_timeouts=1 -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
     -malloc_limit_mb=256 -artifact_prefix="$output/$name/" -print_final_stats=1 "$corpus" \
     >"$output/$name.log" 2>&1 || true
   jobs_require_files "$output/$name.log"
   last=$(grep -E '^#[0-9]+' "$output/$name.log" | grep -E 'cov: [0-9]+' | tail -n 1 || true)
   executions=$(sed -E 's/^#([0-9]+).*/\1/' <<<"$last")
   edges=$(sed -nE 's/.*cov: ([0-9]+).*/\1/p' <<<"$last")
-  cpu_min=$(awk '{printf "%.1f", ($1 + $2) / 60}' "$output/$name.cpu")
+  cpu_s=$(awk 'END {printf "%.0f", $1 + $2}' "$output/$name.cpu")  # the last line: time may first say the exit status
   count() { find "$output/$name" -maxdepth 1 -name "$1-*" | wc -l; }
   crash=$(count crash) leak=$(count leak) timeout=$(count timeout) oom=$(count oom)
   verdict=ok
@@ -67,7 +81,7 @@ for name in "${targets[@]}"; do
   elif ((timeout + oom > 0)); then
     verdict="ok (oom/timeout contained)"
   fi
-  echo "| $name | $seconds | ${executions:-?} | $cpu_min | ${edges:-?} | $(find "$corpus" -type f | wc -l) | $crash | $leak | $timeout | $oom | $verdict |" \
+  echo "| $name | $seconds | ${executions:-?} | $cpu_s | ${edges:-?} | $(find "$corpus" -type f | wc -l) | $crash | $leak | $timeout | $oom | $verdict |" \
     >>"$output/summary.md"
 done
 echo "built from $(git -C "$SLAMSWEEP_ROOT" rev-parse --short HEAD 2>/dev/null || echo unknown); $(date -u +%F)" >>"$output/summary.md"

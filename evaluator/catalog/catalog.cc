@@ -317,7 +317,9 @@ void AddRelationsOnScans(Sequence& sequence, const std::filesystem::path& relati
   Relations relations = ReadRelations(relations_path);
   const std::size_t read = relations.size();
   if (entry.relations_window_s) {
-    const auto [from_s, to_s] = *entry.relations_window_s;
+    // Named values, not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+    const double from_s = (*entry.relations_window_s)[0];
+    const double to_s = (*entry.relations_window_s)[1];
     std::erase_if(relations, [&](const Relation& relation) {
       return std::min(relation.t1_s, relation.t2_s) < from_s || std::max(relation.t1_s, relation.t2_s) > to_s;
     });
@@ -329,7 +331,9 @@ void AddRelationsOnScans(Sequence& sequence, const std::filesystem::path& relati
   std::vector<double> stamps_s;
   for (const LaserScan& scan : sequence.scans) stamps_s.push_back(scan.stamp_s);
   if (!stamps_s.empty()) {
-    const auto [low, high] = std::minmax_element(stamps_s.begin(), stamps_s.end());
+    const auto extremes = std::minmax_element(stamps_s.begin(), stamps_s.end());
+    const auto low = extremes.first;
+    const auto high = extremes.second;
     std::erase_if(relations, [&](const Relation& relation) {
       return std::min(relation.t1_s, relation.t2_s) < *low || std::max(relation.t1_s, relation.t2_s) > *high;
     });

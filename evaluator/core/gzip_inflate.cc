@@ -29,8 +29,13 @@ std::size_t GzipInflateCap(std::size_t compressed_bytes) {
 }
 
 std::string GzipInflateCapMessage(std::size_t compressed_bytes) {
-  return fmt::format("gzip data inflates to more than {}, the cap for a file of {} ({} times its size, at least {})",
-                     Size(GzipInflateCap(compressed_bytes)), Size(compressed_bytes), kCapRatio, Size(kMinimumCap));
+  return InflateCapMessage("gzip", "a file", compressed_bytes);
+}
+
+std::string InflateCapMessage(std::string_view format, std::string_view what, std::size_t compressed_bytes) {
+  return fmt::format("{} data inflates to more than {}, the cap for {} of {} ({} times its size, at least {})", format,
+                     Size(GzipInflateCap(compressed_bytes)), what, Size(compressed_bytes), kCapRatio,
+                     Size(kMinimumCap));
 }
 
 bool HasGzipMagic(std::string_view bytes) {

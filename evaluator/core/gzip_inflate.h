@@ -16,6 +16,11 @@ std::size_t GzipInflateCap(std::size_t compressed_bytes);
 /// file of 12.3 KiB (100 times its size, at least 16 MiB)".
 std::string GzipInflateCapMessage(std::size_t compressed_bytes);
 
+/// The same rule worded for other compressed data: "`format` data inflates to more than 16.0 MiB, the cap for
+/// `what` of 12.3 KiB (100 times its size, at least 16 MiB)" (e.g. "zstd", "a chunk"). The zstd and lz4 chunks of
+/// ROS 2 bags are capped by GzipInflateCap too.
+std::string InflateCapMessage(std::string_view format, std::string_view what, std::size_t compressed_bytes);
+
 /// True when `bytes` starts with the gzip magic number.
 bool HasGzipMagic(std::string_view bytes);
 

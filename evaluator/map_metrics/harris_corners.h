@@ -30,12 +30,12 @@ struct CornerCell {
 /// Why not call it: on a 2000 x 2000 grid it holds about seven float images at once (Dx, Dy,
 /// the 3-channel covariance, the response and its dilation, ~110 MB) and computes the Harris
 /// response everywhere, although the cleaned structure image the corner count feeds it is zero
-/// on most of the map. Here the response comes from ForEachHarrisResponseBand (computed near
-/// the structure only, a band of rows at a time; see its caveat on exactness) and
-/// goodFeaturesToTrack's selection is replayed on the bands as they come: threshold quality_level * max response, local
-/// maxima of the 3 x 3 dilation away from the outermost rows and columns, sort by decreasing response with ties broken
-/// by decreasing address, and the min-distance grid. Tests check the corner lists against the direct call on the
-/// reference maps and on random images.
+/// on most of the map. Here the response comes from HarrisResponseBands (computed near the
+/// structure only, a band of rows at a time, on two threads where two cores are free; see its
+/// caveat on exactness) and goodFeaturesToTrack's selection is replayed on the bands: threshold quality_level * max
+/// response, local maxima of the 3 x 3 dilation away from the outermost rows and columns, sort by decreasing response
+/// with ties broken by decreasing address, and the min-distance grid. Tests check the corner lists against the direct
+/// call on the reference maps and on random images.
 ///
 /// `nonzero`, when given, holds runs covering every non-zero pixel of the image (it may cover
 /// zeros too); it saves a scan of the image to find where the structure is.

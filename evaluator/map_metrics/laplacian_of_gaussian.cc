@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <opencv2/imgproc.hpp>
 
+#include "evaluator/core/huge_pages.h"
 #include "evaluator/map_metrics/zero_scan.h"
 
 namespace slamsweep::evaluator::inline map_metrics {
@@ -79,6 +80,7 @@ float FilterInBands(const OccupancyGrid& grid, const LaplacianOfGaussianOptions&
 LaplacianOfGaussianImage LaplacianOfGaussian(const OccupancyGrid& grid, const LaplacianOfGaussianOptions& options) {
   LaplacianOfGaussianImage result;
   result.image.create(grid.height, grid.width, CV_32FC1);
+  AdviseHugePages(result.image.data, result.image.total() * sizeof(float));  // before its first write
   result.max_abs = FilterInBands(
       grid, options, [&](int first_row, int rows) { return result.image.rowRange(first_row, first_row + rows); },
       [](int, const cv::Mat&) {});

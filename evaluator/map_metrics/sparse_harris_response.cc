@@ -5,9 +5,11 @@
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
+#include "evaluator/map_metrics/harris_area.h"
 #include "evaluator/map_metrics/zero_scan.h"
 
 namespace slamsweep::evaluator::inline map_metrics {
+
 namespace {
 
 constexpr int kTileCells = 64;
@@ -17,6 +19,8 @@ constexpr int kTileCells = 64;
 int ResponseReach(const HarrisResponseOptions& options) {
   return std::max(1, options.aperture_cells / 2) + options.block_size_cells;
 }
+
+}  // namespace
 
 // Bounding box of the non-zero pixels of one tile (empty when max_row < 0).
 struct TileExtent {
@@ -110,6 +114,8 @@ class TileGrid {
   std::vector<TileExtent> extents_;
 };
 
+namespace {
+
 // Computes the response of `area` (image coordinates) into the band that starts at image row
 // `band_first_row`, running cv::cornerHarris on that area widened by `margin` (clipped to the
 // image). cornerHarris reads the real pixels around a sub-image for its derivatives, but its
@@ -120,65 +126,100 @@ void HarrisOnArea(const cv::Mat& image, cv::Rect area, int margin, const HarrisR
   const cv::Rect widened =
       cv::Rect(area.x - margin, area.y - margin, area.width + 2 * margin, area.height + 2 * margin) &
       cv::Rect(0, 0, image.cols, image.rows);
+  cv::Mat out = band(cv::Rect(area.x, area.y - band_first_row, area.width, area.height));
+  if (HarrisAreaSupported(options.block_size_cells, widened.size())) {
+    HarrisResponseOfArea(image, widened, area, options.aperture_cells, options.harris_k, out);
+    return;
+  }
   cv::Mat area_response;  // fresh, hence continuous like the whole-image call's (see below)
   cv::cornerHarris(image(widened), area_response, options.block_size_cells, options.aperture_cells, options.harris_k,
                    cv::BORDER_DEFAULT);
-  area_response(cv::Rect(area.x - widened.x, area.y - widened.y, area.width, area.height))
-      .copyTo(band(cv::Rect(area.x, area.y - band_first_row, area.width, area.height)));
+  area_response(cv::Rect(area.x - widened.x, area.y - widened.y, area.width, area.height)).copyTo(out);
+}
+
+// Zero outside `computed` (disjoint column spans covering whole rows of the band, left to right):
+// only where nothing was computed is the fresh band written twice.
+void ZeroOutside(const std::vector<cv::Rect>& computed, cv::Mat& band) {
+  for (int row = 0; row < band.rows; ++row) {
+    float* pixels = band.ptr<float>(row);
+    int col = 0;
+    for (const cv::Rect& span : computed) {
+      std::fill(pixels + col, pixels + span.x, 0.0f);
+      col = span.x + span.width;
+    }
+    std::fill(pixels + col, pixels + band.cols, 0.0f);
+  }
+}
+
+// The band of tile row `tr`. cornerHarris's last step treats a continuous image as one long row
+// and leaves a scalar remainder of fewer than 64 pixels at its end. A tile's sub-image ends with
+// margin rows at least 64 wide, so its remainder is thrown away; the last tile row is computed as
+// one full-width band starting at a multiple of 64 rows, so that its remainder is the same pixels
+// as the whole-image call's. Consecutive active tiles of a tile row share one call (fewer calls,
+// shared margins).
+HarrisResponseBand ComputeBand(const cv::Mat& image, const TileGrid& tiles, int tr,
+                               const HarrisResponseOptions& options) {
+  const int reach = ResponseReach(options);
+  const int margin = options.block_size_cells + 1;
+  const int last_tile_row = tiles.rows() - 1;
+  const cv::Range rows = tiles.RowRange(tr);
+  HarrisResponseBand band;
+  band.first_row = rows.start;
+  band.response.create(rows.size(), image.cols, CV_32FC1);
+  bool active = false;
+  for (int tc = 0; tc < tiles.cols();) {
+    if (!tiles.Active(tr, tc, reach)) {
+      ++tc;
+      continue;
+    }
+    const int first_tile = tc;
+    while (tc < tiles.cols() && tiles.Active(tr, tc, reach)) ++tc;
+    active = true;
+    if (tr == last_tile_row) break;  // computed below, whole
+    const cv::Rect span = tiles.Tile(tr, first_tile) | tiles.Tile(tr, tc - 1);
+    band.computed_areas.push_back(span);
+    HarrisOnArea(image, span, margin, options, band.first_row, band.response);
+  }
+  if (tr == last_tile_row && active) {
+    const int band_row = std::max(0, (rows.start - margin) / 64 * 64);
+    const cv::Rect call_area(0, band_row, image.cols, image.rows - band_row);
+    const cv::Rect kept(0, rows.start, image.cols, rows.size());
+    if (HarrisAreaSupported(options.block_size_cells, call_area.size())) {
+      HarrisResponseOfArea(image, call_area, kept, options.aperture_cells, options.harris_k, band.response);
+    } else {
+      cv::Mat band_response;
+      cv::cornerHarris(image(call_area), band_response, options.block_size_cells, options.aperture_cells,
+                       options.harris_k, cv::BORDER_DEFAULT);
+      band_response.rowRange(rows.start - band_row, band_response.rows).copyTo(band.response);
+    }
+    band.computed_areas.push_back(kept);
+  }
+  ZeroOutside(band.computed_areas, band.response);
+  return band;
 }
 
 }  // namespace
 
-void ForEachHarrisResponseBand(const cv::Mat& image, const HarrisResponseOptions& options, const RowRuns* nonzero,
-                               const std::function<void(const HarrisResponseBand&)>& visit) {
-  const int reach = ResponseReach(options);
-  const int margin = options.block_size_cells + 1;
+HarrisResponseBands::HarrisResponseBands(const cv::Mat& image, const HarrisResponseOptions& options,
+                                         const RowRuns* nonzero)
+    : image_(image), options_(options) {
   if (image.empty()) return;
-  if (image.rows < 2 * kTileCells || image.cols < 2 * kTileCells || reach > kTileCells) {
-    HarrisResponseBand whole;
-    cv::cornerHarris(image, whole.response, options.block_size_cells, options.aperture_cells, options.harris_k,
-                     cv::BORDER_DEFAULT);
-    whole.computed_areas.push_back(cv::Rect(0, 0, image.cols, image.rows));
-    visit(whole);
-    return;
-  }
-  const TileGrid tiles(image, nonzero);
-  // cornerHarris's last step treats a continuous image as one long row and leaves a scalar
-  // remainder of fewer than 64 pixels at its end. A tile's sub-image ends with margin rows at
-  // least 64 wide, so its remainder is thrown away; the last tile row is computed as one
-  // full-width band starting at a multiple of 64 rows, so that its remainder is the same
-  // pixels as the whole-image call's.
-  // Consecutive active tiles of a tile row share one call (fewer calls, shared margins).
-  const int last_tile_row = tiles.rows() - 1;
-  for (int tr = 0; tr < tiles.rows(); ++tr) {
-    const cv::Range rows = tiles.RowRange(tr);
-    HarrisResponseBand band;
-    band.first_row = rows.start;
-    band.response = cv::Mat::zeros(rows.size(), image.cols, CV_32FC1);
-    bool active = false;
-    for (int tc = 0; tc < tiles.cols();) {
-      if (!tiles.Active(tr, tc, reach)) {
-        ++tc;
-        continue;
-      }
-      const int first_tile = tc;
-      while (tc < tiles.cols() && tiles.Active(tr, tc, reach)) ++tc;
-      active = true;
-      if (tr == last_tile_row) break;  // computed below, whole
-      const cv::Rect span = tiles.Tile(tr, first_tile) | tiles.Tile(tr, tc - 1);
-      band.computed_areas.push_back(span);
-      HarrisOnArea(image, span, margin, options, band.first_row, band.response);
-    }
-    if (tr == last_tile_row && active) {
-      const int band_row = std::max(0, (rows.start - margin) / 64 * 64);
-      cv::Mat band_response;
-      cv::cornerHarris(image.rowRange(band_row, image.rows), band_response, options.block_size_cells,
-                       options.aperture_cells, options.harris_k, cv::BORDER_DEFAULT);
-      band_response.rowRange(rows.start - band_row, band_response.rows).copyTo(band.response);
-      band.computed_areas.push_back(cv::Rect(0, rows.start, image.cols, rows.size()));
-    }
-    visit(band);
-  }
+  whole_ = image.rows < 2 * kTileCells || image.cols < 2 * kTileCells || ResponseReach(options) > kTileCells;
+  if (!whole_) tiles_ = std::make_shared<const TileGrid>(image, nonzero);
+}
+
+int HarrisResponseBands::count() const {
+  if (image_.empty()) return 0;
+  return whole_ ? 1 : tiles_->rows();
+}
+
+HarrisResponseBand HarrisResponseBands::Compute(int index) const {
+  if (!whole_) return ComputeBand(image_, *tiles_, index, options_);
+  HarrisResponseBand whole;
+  cv::cornerHarris(image_, whole.response, options_.block_size_cells, options_.aperture_cells, options_.harris_k,
+                   cv::BORDER_DEFAULT);
+  whole.computed_areas.push_back(cv::Rect(0, 0, image_.cols, image_.rows));
+  return whole;
 }
 
 }  // namespace slamsweep::evaluator::inline map_metrics

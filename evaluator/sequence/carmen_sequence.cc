@@ -411,7 +411,9 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
   if (options.relations_path) {
     Relations relations = ReadRelations(*options.relations_path);
     if (options.relations_window_s) {
-      const auto [from_s, to_s] = *options.relations_window_s;
+      // Named values, not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+      const double from_s = (*options.relations_window_s)[0];
+      const double to_s = (*options.relations_window_s)[1];
       const std::size_t before = relations.size();
       std::erase_if(relations, [&](const Relation& relation) {
         return std::min(relation.t1_s, relation.t2_s) < from_s || std::max(relation.t1_s, relation.t2_s) > to_s;
@@ -436,7 +438,9 @@ Sequence CarmenLogToSequence(const CarmenLog& log, const std::filesystem::path& 
     } else if (!logged_pose_is_reference) {
       // A raw log: relation stamps name its scans by their recorded stamps, and follow any re-timed scan.
       // A relation with a stamp beyond the recorded ones names no scan of this log: it is outside it.
-      const auto [low, high] = std::minmax_element(recorded_stamps_s.begin(), recorded_stamps_s.end());
+      const auto extremes = std::minmax_element(recorded_stamps_s.begin(), recorded_stamps_s.end());
+      const auto low = extremes.first;
+      const auto high = extremes.second;
       const std::size_t before = sequence.relations->size();
       std::erase_if(*sequence.relations, [&](const Relation& relation) {
         return std::min(relation.t1_s, relation.t2_s) < *low || std::max(relation.t1_s, relation.t2_s) > *high;

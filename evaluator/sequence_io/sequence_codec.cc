@@ -2,21 +2,25 @@
 
 #include <cstdint>
 #include <cstring>
-#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
 namespace slamsweep::evaluator::inline sequence_io {
 namespace {
 
+constexpr std::size_t kPoseBytes = 7 * sizeof(double);
+
 class Writer {
  public:
+  explicit Writer(std::size_t expected_bytes) { out_.reserve(expected_bytes); }
+
   template <typename T>
   void Plain(const T& value) {
     static_assert(std::is_trivially_copyable_v<T>);
     out_.append(reinterpret_cast<const char*>(&value), sizeof(T));
   }
   void Count(std::size_t count) { Plain(static_cast<std::uint64_t>(count)); }
+  void Flag(bool set) { Plain(static_cast<std::uint8_t>(set ? 1 : 0)); }
   void Text(const std::string& text) {
     Count(text.size());
     out_ += text;
@@ -28,13 +32,9 @@ class Writer {
     if (!values.empty()) out_.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
   }
   void Pose(const evaluator::Pose& pose) {
-    Plain(pose.position.x());
-    Plain(pose.position.y());
-    Plain(pose.position.z());
-    Plain(pose.orientation.w());
-    Plain(pose.orientation.x());
-    Plain(pose.orientation.y());
-    Plain(pose.orientation.z());
+    const double fields[7] = {pose.position.x(),    pose.position.y(),    pose.position.z(),   pose.orientation.w(),
+                              pose.orientation.x(), pose.orientation.y(), pose.orientation.z()};
+    out_.append(reinterpret_cast<const char*>(fields), sizeof fields);
   }
   void Trajectory(const evaluator::Trajectory& trajectory) {
     Array(trajectory.stamps_s());
@@ -57,6 +57,11 @@ class Reader {
     std::memcpy(&value, Take(sizeof(T)), sizeof(T));
     return value;
   }
+  bool Flag() {
+    const auto flag = Plain<std::uint8_t>();
+    if (flag > 1) Fail();
+    return flag == 1;
+  }
   /// A count of items of `item_bytes` each, checked against the bytes left before anything is allocated.
   std::size_t Count(std::size_t item_bytes) {
     const auto count = Plain<std::uint64_t>();
@@ -76,19 +81,19 @@ class Reader {
     return values;
   }
   evaluator::Pose Pose() {
+    double fields[7];
+    std::memcpy(fields, Take(sizeof fields), sizeof fields);
     evaluator::Pose pose;
-    pose.position.x() = Plain<double>();
-    pose.position.y() = Plain<double>();
-    pose.position.z() = Plain<double>();
-    pose.orientation.w() = Plain<double>();
-    pose.orientation.x() = Plain<double>();
-    pose.orientation.y() = Plain<double>();
-    pose.orientation.z() = Plain<double>();
+    pose.position = Eigen::Vector3d(fields[0], fields[1], fields[2]);
+    pose.orientation.w() = fields[3];
+    pose.orientation.x() = fields[4];
+    pose.orientation.y() = fields[5];
+    pose.orientation.z() = fields[6];
     return pose;
   }
   evaluator::Trajectory Trajectory() {
     std::vector<double> stamps = Array<double>();
-    if (stamps.size() > (bytes_.size() - at_) / (7 * sizeof(double))) Fail();
+    if (stamps.size() > (bytes_.size() - at_) / kPoseBytes) Fail();
     std::vector<evaluator::Pose> poses;
     poses.reserve(stamps.size());
     for (std::size_t i = 0; i < stamps.size(); ++i) poses.push_back(Pose());
@@ -96,6 +101,9 @@ class Reader {
   }
   void ExpectEnd() const {
     if (at_ != bytes_.size()) Fail();
+  }
+  [[noreturn]] static void Fail() {
+    throw DamagedSequenceBytes("sequence bytes are damaged (their sizes do not add up)");
   }
 
  private:
@@ -105,16 +113,70 @@ class Reader {
     at_ += size;
     return start;
   }
-  [[noreturn]] static void Fail() { throw std::runtime_error("a sequence handed over by a reader process is damaged"); }
 
   std::string_view bytes_;
   std::size_t at_ = 0;
 };
 
+/// Field by field: a struct's padding would make equal facts differ in bytes.
+void PutStampFacts(Writer& out, const StampFacts& facts) {
+  out.Plain(static_cast<std::int32_t>(facts.outcome));
+  out.Count(facts.records);
+  out.Count(facts.steps_back);
+  out.Count(facts.duplicates);
+  out.Plain(facts.largest_step_back_s);
+  out.Count(facts.changed);
+  out.Plain(facts.largest_change_s);
+  out.Flag(facts.order_check.has_value());
+  if (facts.order_check) {
+    const RecordOrderCheck& check = *facts.order_check;
+    for (const std::size_t count : {check.steps, check.scans_closer_in_file_order, check.scans_closer_in_stamp_order,
+                                    check.odometry_shorter_in_file_order, check.odometry_shorter_in_stamp_order}) {
+      out.Count(count);
+    }
+  }
+}
+
+StampFacts GetStampFacts(Reader& in) {
+  StampFacts facts;
+  const auto outcome = in.Plain<std::int32_t>();
+  if (outcome < static_cast<std::int32_t>(StampOutcome::kRecorded) ||
+      outcome > static_cast<std::int32_t>(StampOutcome::kRecordOrder)) {
+    Reader::Fail();
+  }
+  facts.outcome = static_cast<StampOutcome>(outcome);
+  facts.records = in.Count(0);
+  facts.steps_back = in.Count(0);
+  facts.duplicates = in.Count(0);
+  facts.largest_step_back_s = in.Plain<double>();
+  facts.changed = in.Count(0);
+  facts.largest_change_s = in.Plain<double>();
+  if (in.Flag()) {
+    RecordOrderCheck check;
+    for (std::size_t* count : {&check.steps, &check.scans_closer_in_file_order, &check.scans_closer_in_stamp_order,
+                               &check.odometry_shorter_in_file_order, &check.odometry_shorter_in_stamp_order}) {
+      *count = in.Count(0);
+    }
+    facts.order_check = check;
+  }
+  return facts;
+}
+
+/// Roughly the bytes EncodeSequence writes, so that the output is allocated once.
+std::size_t ExpectedBytes(const Sequence& sequence) {
+  std::size_t bytes = 4096;
+  for (const LaserScan& scan : sequence.scans) bytes += 13 * sizeof(double) + scan.ranges_m.size() * sizeof(float);
+  bytes += (sequence.odometry.size() + sequence.odometry_readings.size()) * 8 * sizeof(double);
+  if (sequence.reference) bytes += sequence.reference->size() * 8 * sizeof(double);
+  if (sequence.relations) bytes += sequence.relations->size() * 9 * sizeof(double);
+  if (sequence.reference_map) bytes += sequence.reference_map->cells.size() * sizeof(float);
+  return bytes;
+}
+
 }  // namespace
 
 std::string EncodeSequence(const Sequence& sequence) {
-  Writer out;
+  Writer out(ExpectedBytes(sequence));
   out.Text(sequence.name);
   out.Count(sequence.scans.size());
   for (const LaserScan& scan : sequence.scans) {
@@ -128,9 +190,9 @@ std::string EncodeSequence(const Sequence& sequence) {
   }
   out.Trajectory(sequence.odometry);
   out.Trajectory(sequence.odometry_readings);
-  out.Plain(static_cast<std::uint8_t>(sequence.reference.has_value()));
+  out.Flag(sequence.reference.has_value());
   if (sequence.reference) out.Trajectory(*sequence.reference);
-  out.Plain(static_cast<std::uint8_t>(sequence.relations.has_value()));
+  out.Flag(sequence.relations.has_value());
   if (sequence.relations) {
     out.Count(sequence.relations->size());
     for (const Relation& relation : *sequence.relations) {
@@ -139,13 +201,16 @@ std::string EncodeSequence(const Sequence& sequence) {
       out.Pose(relation.delta);
     }
   }
-  out.Plain(static_cast<std::uint8_t>(sequence.reference_map.has_value()));
+  out.Count(sequence.relations_outside_log);
+  out.Flag(sequence.reference_map.has_value());
   if (sequence.reference_map) {
     const OccupancyGrid& map = *sequence.reference_map;
     out.Plain(map.width);
     out.Plain(map.height);
     out.Plain(map.resolution_m);
-    out.Plain(map.origin);
+    out.Plain(map.origin.x_m);
+    out.Plain(map.origin.y_m);
+    out.Plain(map.origin.yaw_rad);
     out.Array(map.cells);
   }
   for (const std::string* text : {&sequence.provenance.source, &sequence.provenance.citation,
@@ -154,6 +219,8 @@ std::string EncodeSequence(const Sequence& sequence) {
   }
   out.Count(sequence.warnings.size());
   for (const std::string& warning : sequence.warnings) out.Text(warning);
+  out.Flag(sequence.stamp_facts.has_value());
+  if (sequence.stamp_facts) PutStampFacts(out, *sequence.stamp_facts);
   return out.Take();
 }
 
@@ -162,7 +229,7 @@ Sequence DecodeSequence(std::string_view bytes) {
   Sequence sequence;
   sequence.name = in.Text();
   // A scan takes at least its fixed fields.
-  sequence.scans.resize(in.Count(5 * sizeof(double) + sizeof(std::uint64_t)));
+  sequence.scans.resize(in.Count(5 * sizeof(double) + sizeof(std::uint64_t) + kPoseBytes));
   for (LaserScan& scan : sequence.scans) {
     scan.stamp_s = in.Plain<double>();
     scan.ranges_m = in.Array<float>();
@@ -174,9 +241,9 @@ Sequence DecodeSequence(std::string_view bytes) {
   }
   sequence.odometry = in.Trajectory();
   sequence.odometry_readings = in.Trajectory();
-  if (in.Plain<std::uint8_t>() != 0) sequence.reference = in.Trajectory();
-  if (in.Plain<std::uint8_t>() != 0) {
-    Relations relations(in.Count(9 * sizeof(double)));
+  if (in.Flag()) sequence.reference = in.Trajectory();
+  if (in.Flag()) {
+    Relations relations(in.Count(2 * sizeof(double) + kPoseBytes));
     for (Relation& relation : relations) {
       relation.t1_s = in.Plain<double>();
       relation.t2_s = in.Plain<double>();
@@ -184,12 +251,15 @@ Sequence DecodeSequence(std::string_view bytes) {
     }
     sequence.relations = std::move(relations);
   }
-  if (in.Plain<std::uint8_t>() != 0) {
+  sequence.relations_outside_log = in.Count(0);
+  if (in.Flag()) {
     OccupancyGrid map;
     map.width = in.Plain<int>();
     map.height = in.Plain<int>();
     map.resolution_m = in.Plain<double>();
-    map.origin = in.Plain<GridOrigin>();
+    map.origin.x_m = in.Plain<double>();
+    map.origin.y_m = in.Plain<double>();
+    map.origin.yaw_rad = in.Plain<double>();
     map.cells = in.Array<float>();
     sequence.reference_map = std::move(map);
   }
@@ -199,6 +269,7 @@ Sequence DecodeSequence(std::string_view bytes) {
   }
   sequence.warnings.resize(in.Count(sizeof(std::uint64_t)));
   for (std::string& warning : sequence.warnings) warning = in.Text();
+  if (in.Flag()) sequence.stamp_facts = GetStampFacts(in);
   in.ExpectEnd();
   return sequence;
 }

@@ -20,7 +20,8 @@ namespace {
 
 }  // namespace
 
-void WriteFileAtomically(const std::filesystem::path& file, std::string_view content) {
+void WriteFileAtomically(const std::filesystem::path& file, std::string_view content, Durability durability) {
+  const bool durable = durability == Durability::kMachineCrash;
   // The pid keeps two processes writing the same file (two merges) from sharing one temporary.
   const std::filesystem::path temporary = file.string() + fmt::format(".tmp.{}", ::getpid());
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
@@ -37,7 +38,7 @@ void WriteFileAtomically(const std::filesystem::path& file, std::string_view con
     }
     written += static_cast<std::size_t>(n);
   }
-  const int sync_error = ::fsync(fd) != 0 ? errno : 0;
+  const int sync_error = durable && ::fsync(fd) != 0 ? errno : 0;
   const int close_error = ::close(fd) != 0 ? errno : 0;
   if (sync_error != 0 || close_error != 0) {
     const int error = sync_error != 0 ? sync_error : close_error;
@@ -50,6 +51,7 @@ void WriteFileAtomically(const std::filesystem::path& file, std::string_view con
     Fail(file, "replace", error);
   }
   // The rename itself is durable only once the folder holding it is synced.
+  if (!durable) return;
   const std::filesystem::path folder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
   const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir >= 0) {

@@ -13,9 +13,9 @@
 #include <fmt/format.h>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/sequence_io/sequence_codec.h"
 #include "orchestrator/build_identity/revision.h"
 #include "orchestrator/input_cache/digest_memo.h"
-#include "orchestrator/input_cache/sequence_blob.h"
 #include "orchestrator/run/run_json.h"
 #include "orchestrator/run/stable_hash.h"
 
@@ -26,8 +26,8 @@ namespace fs = std::filesystem;
 namespace ev = slamsweep::evaluator;
 using nlohmann::json;
 
-/// Raised whenever EncodeSequence's layout or what the key holds changes.
-constexpr int kFormat = 2;
+/// Raised whenever the entry's layout (evaluator::EncodeSequence's included) or what the key holds changes.
+constexpr int kFormat = 3;
 constexpr std::string_view kMagic = "SLSWPSQ2";
 
 /// The worker's executable: the code that reads, repairs and cuts the sequence.
@@ -101,12 +101,24 @@ std::string ReadWhole(const fs::path& file) {
 
 }  // namespace
 
+std::string EncodePreparedSequence(const ev::Sequence& sequence) { return ev::EncodeSequence(sequence); }
+
+ev::Sequence DecodePreparedSequence(std::string_view bytes) {
+  try {
+    return ev::DecodeSequence(bytes);
+  } catch (const ev::DamagedSequenceBytes& error) {
+    throw ev::InputError(std::string("prepared sequence: ") + error.what());
+  }
+}
+
 fs::path PreparedInputCacheDir(const fs::path& run_dir) {
   fs::path dir = run_dir.lexically_normal();
   if (dir.filename().empty()) dir = dir.parent_path();  // "runs/r1/" -> "runs/r1"
   if (dir.parent_path().filename() != "runs") return {};
-  return dir.parent_path().parent_path() / "prepared_inputs";
+  return SweepPreparedInputsDir(dir.parent_path().parent_path());
 }
+
+fs::path SweepPreparedInputsDir(const fs::path& output_dir) { return output_dir / "prepared_inputs"; }
 
 json PreparedSequenceKey(const RunSpec& spec, const fs::path& cache_dir) {
   const ev::CatalogEntry& entry = spec.sequence.entry;
@@ -144,14 +156,14 @@ PreparedSequence LoadOrPrepareSequence(const RunSpec& spec, const fs::path& cach
   const std::string stored = ReadWhole(entry);
   if (const std::optional<std::string_view> body = EntryBody(stored, key)) {
     try {
-      prepared.sequence = DecodeSequence(*body);
+      prepared.sequence = DecodePreparedSequence(*body);
       prepared.from_cache = true;
       return prepared;
     } catch (const ev::InputError&) {
       // Made again below.
     }
   }
-  const std::string body = EncodeSequence(prepare());
+  const std::string body = EncodePreparedSequence(prepare());
   try {
     std::error_code error;
     fs::create_directories(cache_dir, error);
@@ -160,7 +172,7 @@ PreparedSequence LoadOrPrepareSequence(const RunSpec& spec, const fs::path& cach
   } catch (const ev::InputError& error) {
     prepared.cache_problem = error.what();
   }
-  prepared.sequence = DecodeSequence(body);
+  prepared.sequence = DecodePreparedSequence(body);
   return prepared;
 }
 

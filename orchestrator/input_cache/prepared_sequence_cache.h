@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -16,6 +17,9 @@ namespace slamsweep::orchestrator::inline input_cache {
 /// cached then: the cache holds the truth, and only a sweep's output folder is hidden from SLAM programs).
 std::filesystem::path PreparedInputCacheDir(const std::filesystem::path& run_dir);
 
+/// The same folder from the sweep's output folder: OUT/prepared_inputs.
+std::filesystem::path SweepPreparedInputsDir(const std::filesystem::path& output_dir);
+
 /// What a prepared sequence depends on, as JSON: the cache format, this slamsweep's revision and the SHA-256
 /// of its executable, the sequence entry (format, paths, reading options, simulation; not what is said about
 /// the data: citation, licence, download), max_scans, and the SHA-256 of every file the entry reads (log,
@@ -23,6 +27,13 @@ std::filesystem::path PreparedInputCacheDir(const std::filesystem::path& run_dir
 /// in it: every run of the sequence and cut shares one entry. Throws InputError naming a file that cannot
 /// be read.
 nlohmann::json PreparedSequenceKey(const RunSpec& spec, const std::filesystem::path& cache_dir);
+
+/// A prepared sequence as an entry's body: every field, every number bit for bit (evaluator::EncodeSequence).
+std::string EncodePreparedSequence(const evaluator::Sequence& sequence);
+
+/// The sequence EncodePreparedSequence wrote. Throws InputError for bytes it did not write (too short, counts
+/// past the end, trailing bytes).
+evaluator::Sequence DecodePreparedSequence(std::string_view bytes);
 
 struct PreparedSequence {
   evaluator::Sequence sequence;

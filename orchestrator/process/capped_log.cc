@@ -109,4 +109,50 @@ void CappedLog::Finish() {
   fd_ = -1;
 }
 
+namespace {
+
+/// `size` bytes of `fd` from `offset`; fewer when the file ends early or a read fails.
+std::string ReadAt(int fd, std::uint64_t offset, std::uint64_t size) {
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  std::size_t got = 0;
+  while (got < bytes.size()) {
+    const ssize_t n = ::pread(fd, bytes.data() + got, bytes.size() - got, static_cast<off_t>(offset + got));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  bytes.resize(got);
+  return bytes;
+}
+
+}  // namespace
+
+bool CapLogFile(const std::filesystem::path& path, std::uint64_t cap_bytes) {
+  std::error_code error;
+  const std::uint64_t size = std::filesystem::file_size(path, error);
+  if (error || cap_bytes == 0 || size <= std::max(cap_bytes, CappedLog::kMinCapBytes)) return false;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const std::uint64_t cap = std::max(cap_bytes, CappedLog::kMinCapBytes);
+  const std::uint64_t head_cap = cap / 2;
+  const std::uint64_t tail_cap = cap - head_cap - CappedLog::kMarkerReserveBytes;
+  const std::string head = ReadAt(fd, 0, head_cap);
+  const std::string tail = ReadAt(fd, size - tail_cap, tail_cap);
+  ::close(fd);
+  if (head.size() != head_cap || tail.size() != tail_cap) return false;
+  const std::filesystem::path temporary = path.string() + ".capping";
+  {
+    CappedLog log(0);
+    if (!log.Open(temporary).empty()) return false;
+    log.Append(head);
+    // CappedLog's marker line for what lies between, which is counted, never read.
+    log.Append(fmt::format("\n... {} bytes omitted ...\n", size - head_cap - tail_cap));
+    log.Append(tail);
+    log.Finish();
+  }
+  std::filesystem::rename(temporary, path, error);
+  if (error) std::filesystem::remove(temporary, error);
+  return !error;
+}
+
 }  // namespace slamsweep::orchestrator::inline process

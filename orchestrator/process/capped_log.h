@@ -56,4 +56,9 @@ class CappedLog {
   std::uint64_t tail_seen_ = 0;
 };
 
+/// Cuts a finished log file down to `cap_bytes` as CappedLog would have written it: its first half of the cap,
+/// the marker line "... N bytes omitted ...", its last part (0 = no cap). Only the kept bytes are read.
+/// Returns whether anything was left out; a file that cannot be read or replaced is left as it is.
+bool CapLogFile(const std::filesystem::path& path, std::uint64_t cap_bytes);
+
 }  // namespace slamsweep::orchestrator::inline process

@@ -42,8 +42,8 @@ std::filesystem::path RunFolder(const std::filesystem::path& output_dir, std::st
   return output_dir / "runs" / std::string(run_id);
 }
 
-void WriteJsonAtomically(const std::filesystem::path& file, const nlohmann::json& value) {
-  WriteFileAtomically(file, value.dump(2) + "\n");
+void WriteJsonAtomically(const std::filesystem::path& file, const nlohmann::json& value, Durability durability) {
+  WriteFileAtomically(file, value.dump(2) + "\n", durability);
 }
 
 StoredResult ReadRunResult(const std::filesystem::path& run_dir) {

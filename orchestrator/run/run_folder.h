@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "orchestrator/files/atomic_file.h"
 #include "orchestrator/run/run_spec.h"
 
 namespace slamsweep::orchestrator::inline run {
@@ -26,7 +27,9 @@ std::filesystem::path RunFolder(const std::filesystem::path& output_dir, std::st
 
 /// Writes `value` to `file` through a temporary file, fsync and rename: a reader (or a sweep
 /// started after a SIGKILL) sees the old file or the whole new one, never half of it.
-void WriteJsonAtomically(const std::filesystem::path& file, const nlohmann::json& value);
+/// With Durability::kProcessCrash, without the fsyncs (a run folder's run.json, written again when lost).
+void WriteJsonAtomically(const std::filesystem::path& file, const nlohmann::json& value,
+                         Durability durability = Durability::kMachineCrash);
 
 /// What a run folder holds after its worker ended.
 struct StoredResult {

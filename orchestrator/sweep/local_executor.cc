@@ -5,6 +5,7 @@
 
 #include "orchestrator/phase_times/phase_times.h"
 #include "orchestrator/sweep/worker_environment.h"
+#include "orchestrator/worker/worker.h"
 
 namespace slamsweep::orchestrator::inline sweep {
 
@@ -15,7 +16,7 @@ void LocalExecutor::Start(const RunSpec& run, const std::filesystem::path& run_d
   spec.argv = {worker_program_.string(), "worker", run_dir.string()};
   spec.extra_env = WorkerEnvironment();
   spec.log_path = run_dir / "worker.log";
-  spec.log_cap_bytes = 1 << 20;
+  spec.log_cap_bytes = kWorkerLogCapBytes;
   spec.timeout_s = run.algorithm.timeout_s + kWorkerOverheadS;
   // The worker forwards SIGTERM to its program and removes partial outputs: give it time to.
   spec.grace_s = 10.0;

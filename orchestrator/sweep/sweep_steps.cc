@@ -76,7 +76,9 @@ std::filesystem::path PrepareRunFolder(const std::filesystem::path& output_dir, 
   const std::filesystem::path run_dir = RunFolder(output_dir, run.run_id);
   RemovePartialRun(run_dir);
   std::filesystem::create_directories(run_dir);
-  WriteJsonAtomically(run_dir / "run.json", ToJson(run));
+  // Not synced to disk: the supervisor hands out runs one after another, and a run.json lost to a crash of
+  // the machine only makes its run start again (a run without result.json is never taken for done).
+  WriteJsonAtomically(run_dir / "run.json", ToJson(run), Durability::kProcessCrash);
   return run_dir;
 }
 

@@ -16,7 +16,6 @@
 #include <system_error>
 
 #include "evaluator/core/input_error.h"
-#include "evaluator/formats/map/map_file.h"
 #include "orchestrator/adapters/adapter.h"
 #include "orchestrator/run/run_failure.h"
 #include "orchestrator/adapters/run_inputs.h"
@@ -269,20 +268,13 @@ void ExecuteRun(const RunSpec& spec, const RunPaths& paths, RunResult& result) {
     result.warnings.push_back("map rendered from the trajectory and the scans (the program writes no map)");
   }
   const ev::Trajectory* reference = inputs.truth.reference ? &*inputs.truth.reference : nullptr;
+  // The map-versus-reference scores count the cells of the map file the run folder keeps (as it reads back).
   phase.emplace("outputs");
+  std::optional<ev::OccupancyGrid> written_map(std::in_place);
   try {
-    result.outputs = WriteRunOutputs(paths, collected, reference);
+    result.outputs = WriteRunOutputs(paths, collected, reference, &*written_map);
   } catch (const ev::InputError& error) {
     throw RunFailure(FailureKind::kCorruptOutput, std::string("cannot convert the outputs: ") + error.what());
-  }
-
-  // The map-versus-reference scores count the cells of the map file the run folder keeps.
-  phase.emplace("read_map");
-  std::optional<ev::OccupancyGrid> written_map;
-  try {
-    written_map = ev::ReadMap(paths.MapYaml());
-  } catch (const ev::InputError& error) {
-    throw RunFailure(FailureKind::kCorruptOutput, std::string("cannot read back the written map: ") + error.what());
   }
 
   MetricInputs metric_inputs;

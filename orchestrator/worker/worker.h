@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstdint>
+
 #include <filesystem>
 
 namespace slamsweep::orchestrator::inline worker {
@@ -8,6 +10,8 @@ namespace slamsweep::orchestrator::inline worker {
 inline constexpr int kWorkerWroteResult = 0;
 inline constexpr int kWorkerBadRunJson = 2;
 inline constexpr int kWorkerInterrupted = 130;
+/// The cap of a worker's own output, RUN_DIR/worker.log (head and tail kept, as for a program's log.txt).
+inline constexpr std::uint64_t kWorkerLogCapBytes = 1 << 20;
 
 /// One run, start to finish, inside `slamsweep worker RUN_DIR`: reads RUN_DIR/run.json, removes
 /// what an earlier interrupted attempt left (everything but run.json), prepares the inputs, writes

@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "orchestrator/process/capped_log.h"
 #include "orchestrator/process/socket_send.h"
 #include "orchestrator/worker/worker.h"
 
@@ -59,19 +60,38 @@ void LogInto(const std::filesystem::path& log) {
   ::close(fd);
 }
 
+/// Stops writing to the run's worker.log and leaves it as a worker started for the run alone would have:
+/// capped like its log (head and tail), and gone when the worker had nothing to say (one file fewer a run).
+void CloseLog(const std::filesystem::path& log) {
+  const int fd = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+  if (fd >= 0) {
+    ::dup2(fd, STDOUT_FILENO);
+    ::dup2(fd, STDERR_FILENO);
+    ::close(fd);
+  }
+  std::error_code error;
+  if (std::filesystem::file_size(log, error) == 0 && !error) {
+    std::filesystem::remove(log, error);
+    return;
+  }
+  CapLogFile(log, kWorkerLogCapBytes);
+}
+
 }  // namespace
 
 int ServeWorkerRuns(int channel) {
   std::string buffer;
   while (const std::optional<std::string> run_dir = ReadLine(channel, buffer)) {
     if (run_dir->empty()) continue;
-    LogInto(std::filesystem::path(*run_dir) / "worker.log");
+    const std::filesystem::path log = std::filesystem::path(*run_dir) / "worker.log";
+    LogInto(log);
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = CpuSeconds();
     const int code = RunWorker(*run_dir);
     std::cout.flush();
     std::fflush(stdout);
     std::fflush(stderr);
+    CloseLog(log);
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!SendAll(channel, fmt::format("{} {:.6f} {:.6f}\n", code, wall_s, CpuSeconds() - cpu_start))) return 1;
     if (code == kWorkerInterrupted) return kWorkerInterrupted;

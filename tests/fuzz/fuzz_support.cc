@@ -53,9 +53,13 @@ bool show_rejections = false;
 
 }  // namespace
 
-std::filesystem::path WriteInput(std::string_view name, std::string_view bytes) {
+std::filesystem::path ScratchPath(std::string_view name) {
   static const ScratchFolder scratch;
-  const std::filesystem::path path = scratch.path() / name;
+  return scratch.path() / name;
+}
+
+std::filesystem::path WriteInput(std::string_view name, std::string_view bytes) {
+  const std::filesystem::path path = ScratchPath(name);
   WriteBytes(path, bytes);
   return path;
 }

@@ -25,6 +25,9 @@ inline std::string_view Bytes(const std::uint8_t* data, std::size_t size) {
 /// at exit) and returns its path. The same name is overwritten by the next input.
 std::filesystem::path WriteInput(std::string_view name, std::string_view bytes);
 
+/// `name` in that scratch folder (for inputs that are folders, or files a target writes once).
+std::filesystem::path ScratchPath(std::string_view name);
+
 /// Inputs made of several files (a map's YAML and image) hold the files one after the other, separated by
 /// kPartSeparator. SplitParts returns `count` parts; the last takes the rest, missing ones are empty.
 inline constexpr std::string_view kPartSeparator = "\n--- slamsweep-fuzz-part ---\n";

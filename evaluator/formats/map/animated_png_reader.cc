@@ -12,11 +12,11 @@
 #include <utility>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/formats/map/png_signature.h"
 
 namespace slamsweep::evaluator::inline formats::inline map {
 namespace {
 
-constexpr std::string_view kSignature = "\x89PNG\r\n\x1a\n";
 /// A canvas or frame is at most this many pixels: a header can claim any size.
 constexpr double kMaxPixels = 16384.0 * 16384.0;
 
@@ -51,7 +51,7 @@ AnimatedGreyPngReader::AnimatedGreyPngReader(std::string bytes, std::string sour
     : bytes_(std::move(bytes)), source_(std::move(source)) {
   const auto fail = [&](const std::string& message) { throw InputError(source_ + ": " + message); };
   const std::string_view data(bytes_);
-  if (!data.starts_with(kSignature)) fail("not a PNG file (no PNG signature)");
+  if (!data.starts_with(kPngSignature)) fail("not a PNG file (no PNG signature)");
   bool header_seen = false;
   bool animated = false;
   bool frames_begun = false;  // an fcTL came: IDAT belongs to the animation only after one
@@ -61,7 +61,7 @@ AnimatedGreyPngReader::AnimatedGreyPngReader(std::string bytes, std::string sour
   std::string_view transparency;
   std::vector<std::string_view> still_image;
   bool ended = false;
-  for (std::size_t at = kSignature.size(); !ended;) {
+  for (std::size_t at = kPngSignature.size(); !ended;) {
     if (at + 12 > data.size()) fail("truncated (the PNG ends without IEND)");
     const std::uint32_t length = U32(data, at);
     if (length > data.size() - at - 12) fail("truncated chunk at byte " + std::to_string(at));

@@ -12,11 +12,11 @@
 #include <string_view>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/formats/map/png_signature.h"
 
 namespace slamsweep::evaluator::inline formats::inline map {
 namespace {
 
-constexpr std::string_view kSignature = "\x89PNG\r\n\x1a\n";
 // libdeflate level 6: a third of level 9's time for maps and stage animations 8-12 % larger (bench/scale).
 constexpr int kDeflateLevel = 6;
 
@@ -72,6 +72,16 @@ std::string Header(int width, int height, int bit_depth, int colour_type) {
 // Scanlines of `rect` of a grey image, each with filter byte 0 (None), as `index_of` maps its grey levels,
 // packed at BitDepth bits per pixel (PNG's order: the first pixel in the high bits). With `before`, a pixel
 // equal to before's is `unchanged` (the transparent index) instead.
+// Scanlines of a whole 8-bit grey image as they are, each with filter byte 0 (None).
+std::string GreyRows(const cv::Mat& grey) {
+  const auto width = static_cast<std::size_t>(grey.cols);
+  std::string raw(static_cast<std::size_t>(grey.rows) * (width + 1), '\0');
+  for (int row = 0; row < grey.rows; ++row) {
+    std::memcpy(raw.data() + static_cast<std::size_t>(row) * (width + 1) + 1, grey.ptr<std::uint8_t>(row), width);
+  }
+  return raw;
+}
+
 template <int BitDepth>
 std::string PackedRows(const cv::Mat& grey, const cv::Rect& rect, const std::array<std::uint8_t, 256>& index_of,
                        const cv::Mat* before, std::uint8_t unchanged) {
@@ -134,7 +144,8 @@ std::string FrameControl(std::uint32_t sequence, const cv::Rect& rect, int delay
   return fctl;
 }
 
-// The rectangle of pixels that differ between two images of one size; empty when none do.
+}  // namespace
+
 cv::Rect ChangedRect(const cv::Mat& before, const cv::Mat& after) {
   int top = after.rows;
   int bottom = -1;
@@ -158,17 +169,11 @@ cv::Rect ChangedRect(const cv::Mat& before, const cv::Mat& after) {
   return {left, top, right - left + 1, bottom - top + 1};
 }
 
-}  // namespace
-
 std::string EncodeCompactGreyPng(const cv::Mat& grey) {
   CheckGrey(grey, "image");
-  std::array<std::uint8_t, 256> identity{};
-  for (int level = 0; level < 256; ++level)
-    identity[static_cast<std::size_t>(level)] = static_cast<std::uint8_t>(level);
-  std::string png(kSignature);
+  std::string png(kPngSignature);
   PutChunk(png, "IHDR", Header(grey.cols, grey.rows, 8, 0));
-  PutChunk(png, "IDAT",
-           Zlib(NewCompressor().get(), PackedRows(8, grey, cv::Rect(0, 0, grey.cols, grey.rows), identity)));
+  PutChunk(png, "IDAT", Zlib(NewCompressor().get(), GreyRows(grey)));
   PutChunk(png, "IEND", "");
   return png;
 }
@@ -208,7 +213,7 @@ std::optional<std::string> EncodePalettePng(const cv::Mat& bgr) {
   std::array<std::uint8_t, 256> identity{};
   for (int level = 0; level < 256; ++level)
     identity[static_cast<std::size_t>(level)] = static_cast<std::uint8_t>(level);
-  std::string png(kSignature);
+  std::string png(kPngSignature);
   PutChunk(png, "IHDR", Header(bgr.cols, bgr.rows, bit_depth, 3));
   PutChunk(png, "PLTE", palette);
   PutChunk(png, "IDAT",
@@ -258,7 +263,7 @@ std::string EncodeAnimatedGreyPng(const std::vector<cv::Mat>& frames, const Anim
   }
   const int bit_depth = levels <= 2 ? 1 : levels <= 4 ? 2 : levels <= 16 ? 4 : 8;
 
-  std::string png(kSignature);
+  std::string png(kPngSignature);
   PutChunk(png, "IHDR", Header(size.width, size.height, bit_depth, 3));
   std::string actl;
   PutU32(actl, static_cast<std::uint32_t>(frames.size()));

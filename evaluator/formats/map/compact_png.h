@@ -20,6 +20,9 @@ std::string EncodeCompactGreyPng(const cv::Mat& grey);
 /// Throws InputError for another image type.
 std::optional<std::string> EncodePalettePng(const cv::Mat& bgr);
 
+/// The rectangle of pixels that differ between two 8-bit grey images of one size; empty when none do.
+cv::Rect ChangedRect(const cv::Mat& before, const cv::Mat& after);
+
 /// Frame timing of EncodeAnimatedGreyPng, in 1/100 s (the GIF unit, as the report's animations use).
 struct AnimatedPngTiming {
   int frame_delay_cs = 15;

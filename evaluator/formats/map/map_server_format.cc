@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <opencv2/core.hpp>
 #include <string>
+#include <utility>
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
@@ -112,7 +113,11 @@ OccupancyGrid ReadMapServer(const std::filesystem::path& yaml_path) {
   return grid;
 }
 
-void WriteMapServer(const OccupancyGrid& grid, const std::filesystem::path& yaml_path, const MapWriteOptions& options) {
+namespace {
+
+/// Writes the files of WriteMapServer; returns the trinary image it wrote (empty in scale mode) and the YAML.
+std::pair<cv::Mat, std::string> WriteMapServerFiles(const OccupancyGrid& grid, const std::filesystem::path& yaml_path,
+                                                    const MapWriteOptions& options) {
   CheckOptions(options);
   CheckGeometry(grid, yaml_path);
   if (!yaml_path.has_filename()) throw InputError(Located(yaml_path, 0, "expected a YAML file name, got a folder"));
@@ -121,14 +126,16 @@ void WriteMapServer(const OccupancyGrid& grid, const std::filesystem::path& yaml
   const std::filesystem::path image_path = yaml_path.parent_path() / image_name;
 
   // The image first, so that a YAML never names an image that is not there.
+  cv::Mat trinary;
   if (scale) {
     WriteBinaryFile(image_path, EncodePng(ScaleImage(grid)));
   } else if (options.trinary_png) {
-    WriteBinaryFile(image_path, EncodeCompactGreyPng(TrinaryImage(grid, options)));
+    trinary = TrinaryImage(grid, options);
+    WriteBinaryFile(image_path, EncodeCompactGreyPng(trinary));
   } else {
-    WriteBinaryFile(image_path,
-                    EncodePgm(TrinaryImage(grid, options),
-                              fmt::format("CREATOR: slamsweep (map_saver layout) {:.3f} m/pix", grid.resolution_m)));
+    trinary = TrinaryImage(grid, options);
+    WriteBinaryFile(image_path, EncodePgm(trinary, fmt::format("CREATOR: slamsweep (map_saver layout) {:.3f} m/pix",
+                                                               grid.resolution_m)));
   }
 
   // "{}" prints the shortest text that reads back as the same double.
@@ -142,6 +149,21 @@ void WriteMapServer(const OccupancyGrid& grid, const std::filesystem::path& yaml
     yaml += "\n";
   }
   WriteBinaryFile(yaml_path, yaml);
+  return {trinary, yaml};
+}
+
+}  // namespace
+
+void WriteMapServer(const OccupancyGrid& grid, const std::filesystem::path& yaml_path, const MapWriteOptions& options) {
+  WriteMapServerFiles(grid, yaml_path, options);
+}
+
+OccupancyGrid WriteMapServerAndReadBack(const OccupancyGrid& grid, const std::filesystem::path& yaml_path,
+                                        const MapWriteOptions& options) {
+  const auto [trinary, yaml] = WriteMapServerFiles(grid, yaml_path, options);
+  if (trinary.empty()) return ReadMapServer(yaml_path);
+  // A PGM or PNG holds the image's bytes exactly: decoding the file would give this image back.
+  return MapServerGridFromImage(trinary, ParseMapServerYaml(yaml, yaml_path));
 }
 
 }  // namespace slamsweep::evaluator::inline formats::inline map

@@ -26,4 +26,10 @@ OccupancyGrid ReadMapServer(const std::filesystem::path& yaml_path);
 void WriteMapServer(const OccupancyGrid& grid, const std::filesystem::path& yaml_path,
                     const MapWriteOptions& options = {});
 
+/// WriteMapServer, returning the grid ReadMapServer reads back from what it wrote. In trinary mode it is
+/// computed from the image and YAML still in memory (an image file holds the image's bytes exactly), so
+/// the image is not decoded again; in scale mode the files are read back.
+OccupancyGrid WriteMapServerAndReadBack(const OccupancyGrid& grid, const std::filesystem::path& yaml_path,
+                                        const MapWriteOptions& options = {});
+
 }  // namespace slamsweep::evaluator::inline formats::inline map

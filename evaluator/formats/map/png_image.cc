@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "evaluator/core/input_error.h"
+#include "evaluator/formats/map/png_signature.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -20,8 +21,6 @@
 
 namespace slamsweep::evaluator::inline formats::inline map {
 namespace {
-
-constexpr std::string_view kPngSignature = "\x89PNG\r\n\x1a\n";
 
 /// libpng reports errors through a callback that must not return: it records the reason here and
 /// jumps back to the setjmp of the call in progress (libpng's documented error protocol).

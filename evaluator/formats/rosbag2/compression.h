@@ -10,6 +10,9 @@ namespace slamsweep::evaluator::inline formats::inline rosbag2 {
 
 /// Inflates one or more zstd frames (libzstd). `expected_size`, when known (an MCAP chunk states it),
 /// must match. Throws InputError "`where`: ..." naming libzstd's reason for damaged or truncated data.
+/// The output is capped as gzip input is (GzipInflateCap: 100 times `compressed`, at least 16 MiB): a stated
+/// size (`expected_size`, the first frame header's content size) beyond the cap is an error before anything is
+/// allocated, output beyond it stops inflating, and a frame may not ask for a window beyond the cap.
 std::vector<std::uint8_t> ZstdDecompress(std::span<const std::uint8_t> compressed, const std::string& where,
                                          std::optional<std::uint64_t> expected_size = std::nullopt);
 

@@ -123,7 +123,10 @@ void McapWriter::FlushChunk() {
   const std::uint64_t chunk_length = offset_ - chunk_start;
   const std::uint64_t index_start = offset_;
   std::map<std::uint16_t, std::uint64_t> index_offsets;
-  for (const auto& [channel, entries] : chunk_index_) {
+  for (const auto& channel_entries : chunk_index_) {
+    // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+    const std::uint16_t channel = channel_entries.first;
+    const auto& entries = channel_entries.second;
     index_offsets[channel] = offset_;
     Body index;
     index.Number(channel).Entries([&](Body& pairs) {

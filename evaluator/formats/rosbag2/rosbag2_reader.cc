@@ -60,6 +60,15 @@ Rosbag2Metadata ReadMetadata(const std::filesystem::path& folder) {
 
 /// The split file a metadata entry names, which must be there.
 std::filesystem::path SplitFile(const std::filesystem::path& folder, const std::string& relative) {
+  // A bag's files lie in its folder: a metadata.yaml naming another place (an absolute path, "..") would make
+  // slamsweep read, and report on, files a bag has no business with.
+  const std::filesystem::path named(relative);
+  const bool escapes =
+      named.has_root_path() || std::any_of(named.begin(), named.end(), [](const auto& part) { return part == ".."; });
+  if (relative.empty() || escapes) {
+    throw InputError(fmt::format("{}: split file '{}' named by {} is not a file inside the bag folder", folder.string(),
+                                 relative, kMetadataFile));
+  }
   // Bags written before rosbag2 stored relative names (Foxy and older) hold "folder/file".
   std::filesystem::path file = folder / relative;
   if (!IsFile(file) && !std::filesystem::path(relative).parent_path().empty()) {

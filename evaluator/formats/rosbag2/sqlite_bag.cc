@@ -4,6 +4,7 @@
 #include <sqlite3.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <system_error>
 #include <utility>
 
@@ -72,6 +73,23 @@ void RequireColumns(sqlite3* db, const std::string& name, const std::string& tab
   }
 }
 
+/// A bag is untrusted input: its schema is SQL that SQLite would run. Views and triggers are off (a "messages"
+/// view of a recursive query would never end, or make blobs of any size), functions in the schema may not reach
+/// beyond it, and no value may be longer than the file: a blob stored in the file cannot be, so a longer one was
+/// computed (zeroblob in a generated column) and would cost memory the file does not hold.
+void DistrustSchema(sqlite3* db, const std::string& name, std::uintmax_t file_bytes) {
+  constexpr int kMinimumLength = 1 << 20;
+  for (const auto& [option, value] : {std::pair{SQLITE_DBCONFIG_ENABLE_VIEW, 0},
+                                      {SQLITE_DBCONFIG_ENABLE_TRIGGER, 0},
+                                      {SQLITE_DBCONFIG_TRUSTED_SCHEMA, 0},
+                                      {SQLITE_DBCONFIG_DEFENSIVE, 1}}) {
+    if (sqlite3_db_config(db, option, value, static_cast<int*>(nullptr)) != SQLITE_OK)
+      Fail(name, db, "cannot configure SQLite");
+  }
+  const auto limit = static_cast<int>(std::clamp<std::uintmax_t>(file_bytes, kMinimumLength, INT32_MAX));
+  sqlite3_limit(db, SQLITE_LIMIT_LENGTH, limit);
+}
+
 }  // namespace
 
 SqliteBag::SqliteBag(sqlite3* db, std::string name, std::unique_ptr<std::vector<std::uint8_t>> bytes)
@@ -109,6 +127,7 @@ SqliteBag SqliteBag::Open(const std::filesystem::path& path) {
   const int opened = sqlite3_open_v2(FileUri(path).c_str(), &db, SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, nullptr);
   SqliteBag bag(db, path.string(), nullptr);
   if (opened != SQLITE_OK) Fail(bag.name_, db, "cannot open as an SQLite database");
+  DistrustSchema(db, bag.name_, std::filesystem::file_size(path, error));
   bag.Load();
   return bag;
 }
@@ -119,6 +138,7 @@ SqliteBag SqliteBag::FromBytes(std::vector<std::uint8_t> bytes, std::string name
   auto owned = std::make_unique<std::vector<std::uint8_t>>(std::move(bytes));
   SqliteBag bag(db, std::move(name), std::move(owned));
   if (opened != SQLITE_OK) Fail(bag.name_, db, "cannot open an in-memory SQLite database");
+  DistrustSchema(db, bag.name_, bag.bytes_->size());
   const auto size = static_cast<sqlite3_int64>(bag.bytes_->size());
   if (sqlite3_deserialize(db, "main", bag.bytes_->data(), size, size, SQLITE_DESERIALIZE_READONLY) != SQLITE_OK) {
     Fail(bag.name_, db, "cannot read as an SQLite database");

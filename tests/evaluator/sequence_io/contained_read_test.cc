@@ -4,6 +4,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include <chrono>
@@ -37,10 +38,21 @@ Sequence EveryFieldSet() {
   sequence.odometry_readings.Add(2.0, Pose::Planar(1.2, 2, 0.35));
   sequence.reference = sequence.odometry;
   sequence.relations = Relations{{1.5, 2.5, Pose::Planar(0.5, 0, 0.1)}};
+  sequence.relations_outside_log = 7;
   sequence.reference_map = OccupancyGrid(3, 2, 0.1, {1.0, 2.0, 0.5}, 0.25f);
   sequence.reference_map->at(1, 2) = OccupancyGrid::kUnknown;
   sequence.provenance = {"source", "citation", "licence", "notes"};
   sequence.warnings = {"first warning", "second"};
+  StampFacts facts;
+  facts.outcome = StampOutcome::kRetimed;
+  facts.records = 40;
+  facts.steps_back = 3;
+  facts.duplicates = 1;
+  facts.largest_step_back_s = 0.25;
+  facts.changed = 4;
+  facts.largest_change_s = 0.125;
+  facts.order_check = RecordOrderCheck{5, 4, 1, 3, 2};
+  sequence.stamp_facts = facts;
   return sequence;
 }
 
@@ -59,6 +71,9 @@ void ExpectSame(const Sequence& a, const Sequence& b) {
   EXPECT_EQ(a.reference_map->origin.yaw_rad, b.reference_map->origin.yaw_rad);
   EXPECT_EQ(a.provenance.notes, b.provenance.notes);
   EXPECT_EQ(a.warnings, b.warnings);
+  EXPECT_EQ(a.relations_outside_log, b.relations_outside_log);
+  ASSERT_TRUE(b.stamp_facts.has_value());
+  EXPECT_EQ(StampFactsJson(*a.stamp_facts), StampFactsJson(*b.stamp_facts));
 }
 
 TEST(SequenceCodecTest, EveryFieldSurvivesTheRoundTrip) {
@@ -66,7 +81,8 @@ TEST(SequenceCodecTest, EveryFieldSurvivesTheRoundTrip) {
   ExpectSame(sequence, DecodeSequence(EncodeSequence(sequence)));
   const Sequence empty;
   const Sequence decoded = DecodeSequence(EncodeSequence(empty));
-  EXPECT_FALSE(decoded.reference || decoded.relations || decoded.reference_map);
+  EXPECT_FALSE(decoded.reference || decoded.relations || decoded.reference_map || decoded.stamp_facts);
+  EXPECT_EQ(decoded.relations_outside_log, 0u);
 }
 
 TEST(SequenceCodecTest, DamagedBytesAreAnInternalErrorNotACrash) {

@@ -15,7 +15,6 @@
 #include "orchestrator/adapters/run_inputs.h"
 #include "orchestrator/build_identity/file_digest.h"
 #include "orchestrator/input_cache/digest_memo.h"
-#include "orchestrator/input_cache/sequence_blob.h"
 #include "tests/orchestrator/worker/run_spec_fixture.h"
 #include "tests/support/shared_data.h"
 
@@ -102,7 +101,7 @@ ev::Sequence PrepareDirectly(const RunSpec& spec) {
   return sequence;
 }
 
-TEST(SequenceBlobTest, ACorrectedLogWithRelationsAndWarningsComesBackBitForBit) {
+TEST(PreparedSequenceBytesTest, ACorrectedLogWithRelationsAndWarningsComesBackBitForBit) {
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-corrected.log.gz");
   SLAMSWEEP_REQUIRE_SHARED(relations, "datasets/intel/intel.relations");
   ev::Sequence sequence = PrepareDirectly(CatalogRun("intel", 80));
@@ -111,10 +110,10 @@ TEST(SequenceBlobTest, ACorrectedLogWithRelationsAndWarningsComesBackBitForBit) 
   ASSERT_FALSE(sequence.relations->empty());
   // The recorded odometry stream: its readings between the scans.
   ASSERT_GT(sequence.odometry_readings.size(), sequence.scans.size());
-  ExpectSameForRuns(DecodeSequence(EncodeSequence(sequence)), sequence);
+  ExpectSameForRuns(DecodePreparedSequence(EncodePreparedSequence(sequence)), sequence);
 }
 
-TEST(SequenceBlobTest, ARawLogWithoutReferenceComesBackBitForBit) {
+TEST(PreparedSequenceBytesTest, ARawLogWithoutReferenceComesBackBitForBit) {
   SLAMSWEEP_REQUIRE_SHARED(log, "datasets/intel/intel-raw-scans-0-5504.clf.gz");
   ev::SequenceReadOptions options;
   options.name = "raw";
@@ -124,18 +123,30 @@ TEST(SequenceBlobTest, ARawLogWithoutReferenceComesBackBitForBit) {
   ASSERT_FALSE(sequence.reference.has_value());
   // The raw log's late stamps are re-timed and their order weighed: facts every run records.
   ASSERT_TRUE(sequence.stamp_facts.has_value());
-  ExpectSameForRuns(DecodeSequence(EncodeSequence(sequence)), sequence);
+  ExpectSameForRuns(DecodePreparedSequence(EncodePreparedSequence(sequence)), sequence);
 }
 
-TEST(SequenceBlobTest, DamagedBytesAreAnInputError) {
+TEST(PreparedSequenceBytesTest, ASimulatedFloorKeepsItsReferenceMapAndProvenance) {
   const ev::Sequence sequence = PrepareDirectly(testing::SimulatedRun("odometry", 10));
-  const std::string bytes = EncodeSequence(sequence);
-  EXPECT_THROW(DecodeSequence(bytes.substr(0, bytes.size() / 2)), ev::InputError);
-  EXPECT_THROW(DecodeSequence(bytes + "x"), ev::InputError);
+  ASSERT_TRUE(sequence.reference_map.has_value());
+  const ev::Sequence decoded = DecodePreparedSequence(EncodePreparedSequence(sequence));
+  ExpectSameForRuns(decoded, sequence);
+  ASSERT_TRUE(decoded.reference_map.has_value());
+  EXPECT_EQ(decoded.reference_map->width, sequence.reference_map->width);
+  EXPECT_EQ(decoded.reference_map->cells, sequence.reference_map->cells);
+  EXPECT_EQ(decoded.provenance.citation, sequence.provenance.citation);
+  EXPECT_EQ(decoded.provenance.source, sequence.provenance.source);
+}
+
+TEST(PreparedSequenceBytesTest, DamagedBytesAreAnInputError) {
+  const ev::Sequence sequence = PrepareDirectly(testing::SimulatedRun("odometry", 10));
+  const std::string bytes = EncodePreparedSequence(sequence);
+  EXPECT_THROW(DecodePreparedSequence(bytes.substr(0, bytes.size() / 2)), ev::InputError);
+  EXPECT_THROW(DecodePreparedSequence(bytes + "x"), ev::InputError);
   std::string huge_count = bytes;
-  // The warnings' count, after the name (its length, then its bytes).
+  // The scans' count, after the name (its length, then its bytes).
   std::memset(huge_count.data() + 8 + sequence.name.size(), 0xff, 8);
-  EXPECT_THROW(DecodeSequence(huge_count), ev::InputError);
+  EXPECT_THROW(DecodePreparedSequence(huge_count), ev::InputError);
 }
 
 TEST(PreparedInputCacheDirTest, BesideRunsOfASweepAndNowhereElse) {

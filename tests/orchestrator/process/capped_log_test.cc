@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <utility>
 
 #include "tests/orchestrator/process/process_test_util.h"
 #include "tests/support/shared_data.h"
@@ -98,6 +101,37 @@ TEST(CappedLogTest, UnwritablePathIsReportedWithThePath) {
   CappedLog log(1000);
   const std::string error = log.Open("/nonexistent-dir/log.txt");
   EXPECT_NE(error.find("/nonexistent-dir/log.txt"), std::string::npos) << error;
+}
+
+// A finished file cut afterwards holds exactly what CappedLog writes of the same output as it arrives.
+TEST(CapLogFileTest, AFileOverTheCapBecomesWhatCappedLogWouldHaveWritten) {
+  TempDir dir;
+  const std::string input = Pattern(100000);
+  CappedLog streamed(1000);
+  ASSERT_EQ(streamed.Open(dir / "streamed.txt"), "");
+  streamed.Append(input);
+  streamed.Finish();
+  {
+    std::ofstream out(dir / "worker.log", std::ios::binary);
+    out << input;
+  }
+  EXPECT_TRUE(CapLogFile(dir / "worker.log", 1000));
+  EXPECT_EQ(ReadAll(dir / "worker.log"), ReadAll(dir / "streamed.txt"));
+  EXPECT_LE(ReadAll(dir / "worker.log").size(), 1000u);
+  EXPECT_FALSE(std::filesystem::exists(dir / "worker.log.capping"));
+}
+
+TEST(CapLogFileTest, AFileWithinTheCapOrWithoutACapIsLeftAlone) {
+  TempDir dir;
+  for (const auto& [size, cap] : {std::pair<std::size_t, std::uint64_t>{1000, 1000}, {5000, 0}}) {
+    {
+      std::ofstream out(dir / "worker.log", std::ios::binary | std::ios::trunc);
+      out << Pattern(size);
+    }
+    EXPECT_FALSE(CapLogFile(dir / "worker.log", cap)) << size;
+    EXPECT_EQ(ReadAll(dir / "worker.log"), Pattern(size)) << size;
+  }
+  EXPECT_FALSE(CapLogFile(dir / "missing.log", 1000));
 }
 
 }  // namespace

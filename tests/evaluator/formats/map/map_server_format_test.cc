@@ -206,6 +206,31 @@ TEST(MapServerFormatTest, TrinaryRoundTripKeepsCellsAndGeometry) {
   EXPECT_EQ(back.origin.yaw_rad, grid.origin.yaw_rad);
 }
 
+// What the worker scores instead of reading map.yaml again: exactly what ReadMapServer reads, every mode.
+TEST(MapServerFormatTest, WriteAndReadBackGivesWhatReadMapServerReads) {
+  testing::TempDir dir;
+  OccupancyGrid grid(7, 5, 0.05, GridOrigin{-1.25, 3.5, 0.0});
+  for (std::size_t i = 0; i < grid.cells.size(); ++i) {
+    grid.cells[i] = i % 5 == 0 ? OccupancyGrid::kUnknown : static_cast<float>(i % 11) / 10.0f;
+  }
+  MapWriteOptions png;
+  png.trinary_png = true;
+  MapWriteOptions scale;
+  scale.mode = MapWriteOptions::Mode::kScale;
+  int written = 0;
+  for (const MapWriteOptions& options : {MapWriteOptions{}, png, scale}) {
+    const std::string yaml = "map" + std::to_string(written++) + ".yaml";
+    const OccupancyGrid back = WriteMapServerAndReadBack(grid, dir / yaml, options);
+    const OccupancyGrid read = ReadMapServer(dir / yaml);
+    EXPECT_EQ(back.width, read.width) << yaml;
+    EXPECT_EQ(back.height, read.height) << yaml;
+    EXPECT_EQ(back.cells, read.cells) << yaml;
+    EXPECT_EQ(back.resolution_m, read.resolution_m) << yaml;
+    EXPECT_EQ(back.origin.x_m, read.origin.x_m) << yaml;
+    EXPECT_EQ(back.origin.y_m, read.origin.y_m) << yaml;
+  }
+}
+
 TEST(MapServerFormatTest, TrinaryThresholdOptionsAreMapSaverOccAndFree) {
   testing::TempDir dir;
   OccupancyGrid grid(3, 1, 0.05, {}, 0.5f);
