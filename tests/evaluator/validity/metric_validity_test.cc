@@ -63,8 +63,8 @@ TEST(MetricValidityTest, BelowEightRunsThereIsNoNumber) {
 TEST(MetricValidityTest, AMetricFallingWithTheErrorIsOpposite) {
   std::vector<ValidityRun> runs;
   for (int i = 0; i < 12; ++i) runs.push_back(MakeRun("floor", "n1", i, 0.1 * (i + 1), 100.0 - 3 * i));
-  const ValidityCorrelation& c =
-      Get(ComputeValidityStudy(runs), "corners.value", "floor", ValidityPooling::kAcrossNoise);
+  const ValidityStudy study = ComputeValidityStudy(runs);  // kept: Get returns a reference into it
+  const ValidityCorrelation& c = Get(study, "corners.value", "floor", ValidityPooling::kAcrossNoise);
   EXPECT_DOUBLE_EQ(*c.rho, -1.0);
   EXPECT_EQ(c.verdict, ValidityVerdict::kOpposite);
 }
