@@ -19,7 +19,8 @@ std::map<std::string, std::string> CommandsOf(RegisterCommands register_commands
   std::ostringstream out;
   std::ostringstream err;
   int exit_code = 0;
-  CommandLine line(app, Streams{out, err}, exit_code);
+  const Streams streams{out, err};  // CommandLine keeps a reference: a temporary here would dangle
+  CommandLine line(app, streams, exit_code);
   register_commands(line);
   std::map<std::string, std::string> commands;
   for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
