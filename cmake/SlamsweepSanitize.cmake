@@ -42,7 +42,7 @@ if(SLAMSWEEP_SANITIZE)
   add_library(slamsweep_sanitizer_defaults STATIC ${CMAKE_CURRENT_LIST_DIR}/sanitizer_defaults.cc)
   link_libraries(slamsweep_sanitizer_defaults)
   add_link_options(-Wl,--undefined=__asan_default_options -Wl,--undefined=__lsan_default_suppressions
-                   -Wl,--undefined=__ubsan_default_options)
+                   -Wl,--undefined=__asan_default_suppressions -Wl,--undefined=__ubsan_default_options)
   # Tests that cannot run instrumented are labelled (slamsweep_not_instrumented); the list is written here.
   set(SLAMSWEEP_NOT_INSTRUMENTED_FILE "${PROJECT_BINARY_DIR}/not-instrumented-tests.txt")
   file(WRITE "${SLAMSWEEP_NOT_INSTRUMENTED_FILE}" "")
