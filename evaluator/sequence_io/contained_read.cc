@@ -22,6 +22,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "evaluator/core/gzip_inflate.h"
@@ -44,7 +45,14 @@ namespace slamsweep::evaluator::inline sequence_io {
 namespace {
 
 /// How the child's read ended: the first byte of what it sends.
-enum class ChildStatus : char { kOk = 'O', kInputError = 'I', kInternalError = 'E', kOutOfMemory = 'M' };
+/// kCrashed (AddressSanitizer builds): a deadly signal the sanitizer caught, with its kind of fault.
+enum class ChildStatus : char {
+  kOk = 'O',
+  kInputError = 'I',
+  kInternalError = 'E',
+  kOutOfMemory = 'M',
+  kCrashed = 'C'
+};
 
 std::string MiB(std::uintmax_t bytes) {
   return fmt::format("{:.0f} MiB", std::ceil(static_cast<double>(bytes) / (1024.0 * 1024.0)));
@@ -75,8 +83,10 @@ bool WriteAll(int fd, std::string_view bytes) {
 int child_pipe = -1;
 
 /// AddressSanitizer ends the process when an allocation fails (where std::bad_alloc would be thrown): a
-/// refused allocation is then reported as the memory limit, like std::bad_alloc without the sanitizer. Any
-/// other report goes on to end the process, which the parent reports as a failure of ours.
+/// refused allocation is then reported as the memory limit, like std::bad_alloc without the sanitizer. It
+/// also catches deadly signals (SIGSEGV...) and exits instead of dying by them: such a report is a crash of the
+/// library, as the signal is without the sanitizer. Any other report (a memory error the instrumentation saw)
+/// goes on to end the process, which the parent reports as a failure of ours.
 /// When the runtime's own mmap fails while it reports, it dies without a description ("ERROR: Failed to mmap");
 /// then the data segment at its limit says it was the memory limit. Raw reads into the stack: the heap is full.
 bool DataSegmentAtItsLimit() {
@@ -101,6 +111,16 @@ void ReportMemoryLimitOnDeath() {
       (report.empty() && DataSegmentAtItsLimit())) {
     const char status = static_cast<char>(ChildStatus::kOutOfMemory);
     if (::write(child_pipe, &status, 1) == 1) ::_exit(0);
+  }
+  // The kinds of AddressSanitizer's deadly-signal reports. No allocation here: the heap may be what broke.
+  constexpr std::array<std::string_view, 7> kDeadlySignal = {
+      "signal", "stack-overflow", "null-deref", "wild-jump", "wild-addr-write", "wild-addr-read", "wild-addr"};
+  if (std::find(kDeadlySignal.begin(), kDeadlySignal.end(), report) != kDeadlySignal.end()) {
+    std::array<char, 64> message{};
+    message[0] = static_cast<char>(ChildStatus::kCrashed);
+    const std::size_t size = std::min(report.size(), message.size() - 1);
+    std::copy_n(report.begin(), size, message.begin() + 1);
+    if (WriteAll(child_pipe, std::string_view(message.data(), size + 1))) ::_exit(0);
   }
 }
 #endif
@@ -167,6 +187,10 @@ std::optional<std::string> ReadUntilClosed(int fd, std::chrono::steady_clock::ti
     if (got == 0) return received;
     received.append(buffer.data(), static_cast<std::size_t>(got));
   }
+}
+
+std::string CrashMessage(std::string_view library, std::string_view how) {
+  return fmt::format("{} crashed reading it ({}): the file is damaged or not what its name says", library, how);
 }
 
 /// The child's wait status and the CPU time it used.
@@ -259,10 +283,8 @@ Sequence ReadContained(const std::filesystem::path& file, std::string_view libra
                                            "a file of this size): the file is damaged or hostile",
                                            library, std::ceil(limits.cpu_s))));
     }
-    throw InputError(Located(file, 0,
-                             fmt::format("{} crashed reading it (signal {}: {}): the file is damaged or "
-                                         "not what its name says",
-                                         library, signal_number, ::strsignal(signal_number))));
+    throw InputError(Located(
+        file, 0, CrashMessage(library, fmt::format("signal {}: {}", signal_number, ::strsignal(signal_number)))));
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || received->empty()) {
     throw std::runtime_error(fmt::format("{}: the process reading it with {} ended (status {}) without a result",
@@ -280,6 +302,9 @@ Sequence ReadContained(const std::filesystem::path& file, std::string_view libra
                                            "of this size: the file is damaged or declares more data than it "
                                            "holds",
                                            library, MiB(limits.memory_bytes))));
+    case ChildStatus::kCrashed:
+      throw InputError(
+          Located(file, 0, CrashMessage(library, fmt::format("a deadly signal, AddressSanitizer: {}", text))));
     case ChildStatus::kInternalError:
       break;
   }

@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -161,6 +162,18 @@ TEST(ContainedReadTest, AReaderThatWaitsForeverIsStoppedByItsWallClockLimit) {
 TEST(ContainedReadTest, ACrashOfTheLibraryIsAnInputErrorNamingTheSignal) {
   const std::string message = InputErrorOf([](Sequence&) -> ModuleOutcome { std::abort(); });
   EXPECT_THAT(message, HasSubstr("the test reader crashed reading it (signal 6"));
+}
+
+// A read of memory that is not there (as a library reading past its buffer into an unmapped page): a crash
+// of the library, named as such, in every build. AddressSanitizer catches the signal and exits instead of
+// dying by it; the child reports that as the crash it is, not as an error of ours.
+TEST(ContainedReadTest, AWildReadIsAnInputErrorNamingTheCrash) {
+  const std::string message = InputErrorOf([](Sequence&) -> ModuleOutcome {
+    void* page = ::mmap(nullptr, 4096, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    return ModuleOutcome{ModuleOutcome::Kind::kOk, std::string(1, *static_cast<volatile char*>(page))};
+  });
+  EXPECT_THAT(message, HasSubstr("/data/run.rawlog"));
+  EXPECT_THAT(message, HasSubstr("the test reader crashed reading it ("));
 }
 
 TEST(ContainedReadTest, AnInternalErrorOfTheReaderStaysAnInternalError) {
