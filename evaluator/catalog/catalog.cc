@@ -9,6 +9,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
+#include "evaluator/core/utf8_text.h"
 #include "evaluator/formats/trajectory/relations_format.h"
 #include "evaluator/sequence/corrected_log_clock.h"
 #include "evaluator/sequence/relation_stamps.h"
@@ -411,6 +412,7 @@ GroundTruthKind ParseGroundTruthKind(std::string_view text, std::string_view opt
 }
 
 Catalog ParseCatalog(std::string_view yaml_text, const std::filesystem::path& source) {
+  RequireUtf8(yaml_text, source, "a dataset catalog is UTF-8");
   YAML::Node root;
   try {
     root = YAML::Load(std::string(yaml_text));

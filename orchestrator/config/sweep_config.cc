@@ -8,6 +8,7 @@
 
 #include "evaluator/core/input_error.h"
 #include "evaluator/core/text_file.h"
+#include "evaluator/core/utf8_text.h"
 #include "orchestrator/config/algorithm_config.h"
 #include "orchestrator/config/cell_filter.h"
 #include "orchestrator/config/sequence_config.h"
@@ -211,6 +212,8 @@ RegressionConfig ParseRegression(const std::filesystem::path& file, const YAML::
 
 SweepConfig ParseSweepConfig(std::string_view yaml_text, const std::filesystem::path& file,
                              const SweepConfigContext& context) {
+  // yaml-cpp passes bytes through as they are; names and values end up in JSON, which takes only UTF-8.
+  evaluator::RequireUtf8(yaml_text, file, "a sweep file is UTF-8");
   YAML::Node root;
   try {
     root = YAML::Load(std::string(yaml_text));

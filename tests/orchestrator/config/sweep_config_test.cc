@@ -249,6 +249,16 @@ sequences:
               HasSubstr(Located(4, 20) + "sequences[0].rename: unknown key"));
 }
 
+// Found by fuzzing: a byte that is not UTF-8 in an option's value reached JSON, whose type_error 316 left
+// the parser instead of an InputError. A sweep file must be UTF-8; the error says where it is not.
+TEST_F(SweepConfigTest, TextThatIsNotUtf8IsAnErrorAtItsLineAndColumn) {
+  EXPECT_THAT(ErrorOf(std::string(kMinimal) + "noise:\n  - name: n\n    odometry: {alpha1: 0.0\xFE"
+                                              "5}\n"),
+              HasSubstr(Located(8, 27) + "not UTF-8 text (byte 0xFE): a sweep file is UTF-8"));
+  EXPECT_THAT(ErrorOf("name: x\nalgorithms:\n  - {name: \"\xC3\x28\", adapter: odometry}\n"),
+              HasSubstr(Located(3, 13) + "not UTF-8 text (byte 0xC3)"));
+}
+
 TEST_F(SweepConfigTest, WrongTypesNameTheFieldAndWhatWasExpected) {
   EXPECT_THAT(ErrorOf(std::string(kMinimal) + "iterations: many\n"),
               HasSubstr(Located(6, 13) + "iterations: expected a whole number >= 0, got 'many'"));
