@@ -30,6 +30,12 @@ std::size_t LineOf(const YAML::Node& node) { return static_cast<std::size_t>(nod
   throw InputError(Located(source, LineOf(node), message));
 }
 
+/// A map's key as text: a key that is itself a map or a list (`{a: 1}: 2`) is an error at it.
+std::string KeyText(const std::filesystem::path& source, const YAML::Node& key) {
+  if (!key.IsScalar()) Fail(source, key, "expected a key of plain text, got a map or a list");
+  return key.Scalar();
+}
+
 std::string Scalar(const std::filesystem::path& source, const YAML::Node& node, std::string_view key) {
   if (!node.IsScalar()) Fail(source, node, fmt::format("{}: expected a text value", key));
   return node.Scalar();
@@ -50,7 +56,7 @@ double Number(const std::filesystem::path& source, const YAML::Node& node, std::
 nlohmann::json ToJson(const std::filesystem::path& source, const YAML::Node& node) {
   if (node.IsMap()) {
     nlohmann::json object = nlohmann::json::object();
-    for (const auto& item : node) object[item.first.as<std::string>()] = ToJson(source, item.second);
+    for (const auto& item : node) object[KeyText(source, item.first)] = ToJson(source, item.second);
     return object;
   }
   if (node.IsSequence()) {
@@ -102,7 +108,7 @@ CorrectedLogLink ParseCorrectedLog(const std::filesystem::path& source, const YA
   if (!node.IsMap()) Fail(source, node, "corrected_log: expected a map with path, first_reading and every");
   CorrectedLogLink link;
   for (const auto& item : node) {
-    const std::string key = item.first.as<std::string>();
+    const std::string key = KeyText(source, item.first);
     if (key == "path") {
       link.path = Scalar(source, item.second, "corrected_log.path");
     } else if (key == "first_scan") {
@@ -179,7 +185,7 @@ CatalogEntry ParseEntry(const std::filesystem::path& source, const YAML::Node& n
   YAML::Node ground_truth_node;
   YAML::Node bag_node;
   for (const auto& item : node) {
-    const std::string key = item.first.as<std::string>();
+    const std::string key = KeyText(source, item.first);
     const YAML::Node& value = item.second;
     if (key == "name") {
       entry.name = Scalar(source, value, key);
@@ -425,7 +431,7 @@ Catalog ParseCatalog(std::string_view yaml_text, const std::filesystem::path& so
   std::set<std::string, std::less<>> names;
   bool has_sequences = false;
   for (const auto& item : root) {
-    const std::string key = item.first.as<std::string>();
+    const std::string key = KeyText(source, item.first);
     // "x-..." keys hold YAML anchors that entries share (citations, licences), as in Compose files.
     if (key.starts_with("x-")) continue;
     if (key != "sequences") {

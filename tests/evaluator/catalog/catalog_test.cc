@@ -189,6 +189,24 @@ constexpr const char* kMinimal =
     "    ground_truth: none\n"
     "    download: example.org/a\n";
 
+// Found by fuzzing service_submission: a map as the key of an entry (`- {catalog: intel, ...}: 1`) made
+// yaml-cpp's BadConversion leave the parser instead of an InputError; so at every level of a catalog.
+TEST(CatalogTest, AKeyThatIsAMapOrAListIsAnErrorAtItsLine) {
+  const std::string expected = "expected a key of plain text, got a map or a list";
+  EXPECT_THAT(ErrorOf([] { ParseCatalog("{a: 1}: x\n", "c.yaml"); }), HasSubstr("c.yaml:1: " + expected));
+  EXPECT_THAT(ErrorOf([] { ParseCatalog("sequences:\n  - {name: a}: 1\n", "c.yaml"); }),
+              HasSubstr("c.yaml:2: " + expected));
+  EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    [x]: 1\n", "c.yaml"); }),
+              HasSubstr("c.yaml:7: " + expected));
+  EXPECT_THAT(ErrorOf([] {
+                ParseCatalog(
+                    "sequences:\n  - name: s\n    format: simulated\n    ground_truth: exact\n"
+                    "    simulation: {{seed: 3}: 1}\n",
+                    "c.yaml");
+              }),
+              HasSubstr("c.yaml:5: " + expected));
+}
+
 TEST(CatalogTest, UnknownKeysAndBadValuesNameFileAndLine) {
   EXPECT_THAT(ErrorOf([] { ParseCatalog(std::string(kMinimal) + "    max_rang_m: 30\n", "c.yaml"); }),
               HasSubstr("c.yaml:7: unknown key 'max_rang_m'"));
