@@ -45,13 +45,20 @@ std::optional<std::size_t> FirstInvalidUtf8(std::string_view text) {
 }
 
 void RequireUtf8(std::string_view text, const std::filesystem::path& file, std::string_view what) {
-  const std::optional<std::size_t> bad = FirstInvalidUtf8(text);
-  if (!bad) return;
-  const std::string_view before = text.substr(0, *bad);
+  const auto control = std::find_if(text.begin(), text.end(), [](char c) {
+    const auto byte = static_cast<unsigned char>(c);
+    return (byte < 0x20 && byte != '\t' && byte != '\n' && byte != '\r') || byte == 0x7F;
+  });
+  const std::optional<std::size_t> invalid = FirstInvalidUtf8(text);
+  const auto control_at = static_cast<std::size_t>(control - text.begin());
+  if (!invalid && control == text.end()) return;
+  const std::size_t bad = invalid ? std::min(*invalid, control_at) : control_at;
+  const std::string_view before = text.substr(0, bad);
   const std::size_t line = 1 + static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n'));
   const std::size_t line_start = before.rfind('\n') == std::string_view::npos ? 0 : before.rfind('\n') + 1;
-  throw InputError(fmt::format("{}:{}:{}: not UTF-8 text (byte 0x{:02X}): {}", file.string(), line,
-                               *bad - line_start + 1, static_cast<unsigned char>(text[*bad]), what));
+  throw InputError(fmt::format("{}:{}:{}: {} (byte 0x{:02X}): {}", file.string(), line, bad - line_start + 1,
+                               bad == control_at ? "a control character" : "not UTF-8 text",
+                               static_cast<unsigned char>(text[bad]), what));
 }
 
 }  // namespace slamsweep::evaluator::inline core

@@ -37,7 +37,18 @@ TEST(Utf8TextTest, RequireUtf8NamesFileLineAndColumn) {
   } catch (const InputError& error) {
     EXPECT_STREQ(error.what(), "/data/sweep.yaml:2:5: not UTF-8 text (byte 0xFF): a sweep file is UTF-8");
   }
-  EXPECT_NO_THROW(RequireUtf8("a: caf\xC3\xA9\n", "/data/sweep.yaml", "a sweep file is UTF-8"));
+  EXPECT_NO_THROW(RequireUtf8("a: caf\xC3\xA9\tb\r\n", "/data/sweep.yaml", "a sweep file is UTF-8"));
+}
+
+TEST(Utf8TextTest, RequireUtf8RefusesControlCharactersYamlDoesNotAllow) {
+  for (const std::string& text : {std::string("a: \0N\n", 6), std::string("a: \x08\n"), std::string("a: \x7F\n")}) {
+    try {
+      RequireUtf8(text, "/data/sweep.yaml", "a sweep file is UTF-8");
+      FAIL() << "expected an InputError";
+    } catch (const InputError& error) {
+      EXPECT_THAT(error.what(), ::testing::HasSubstr("/data/sweep.yaml:1:4: a control character (byte 0x"));
+    }
+  }
 }
 
 }  // namespace

@@ -257,6 +257,9 @@ TEST_F(SweepConfigTest, TextThatIsNotUtf8IsAnErrorAtItsLineAndColumn) {
               HasSubstr(Located(8, 27) + "not UTF-8 text (byte 0xFE): a sweep file is UTF-8"));
   EXPECT_THAT(ErrorOf("name: x\nalgorithms:\n  - {name: \"\xC3\x28\", adapter: odometry}\n"),
               HasSubstr(Located(3, 13) + "not UTF-8 text (byte 0xC3)"));
+  // yaml-cpp read a NUL and the letter after it as an escape: "\0N" became the lone byte 0x85 (also fuzzing's).
+  EXPECT_THAT(ErrorOf(std::string(kMinimal) + "noise:\n  - name: " + std::string("\0N", 2) + "\n"),
+              HasSubstr(Located(7, 11) + "a control character (byte 0x00)"));
 }
 
 TEST_F(SweepConfigTest, WrongTypesNameTheFieldAndWhatWasExpected) {
