@@ -14,8 +14,9 @@ import json
 import re
 import sys
 
+# inputs_sha256 (summary.json's "validity"): the digest of the study's inputs, resources and build included.
 VOLATILE_KEYS = {"generated_at", "started_at", "finished_at", "wall_s", "cpu_s", "peak_rss_kb", "run_dir",
-                 "reference_map"}
+                 "reference_map", "inputs_sha256"}
 # The names of the files a run folder holds (map.pgm or map.png, stages/ or stages.png) are layout, not results.
 LAYOUT_KEYS = {"outputs"}
 RESOURCES = ("wall_s", "cpu_s", "peak_rss_kb")

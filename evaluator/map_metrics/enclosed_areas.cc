@@ -50,7 +50,11 @@ EnclosedAreas ComputeEnclosedAreas(const OccupancyGrid& grid, const EnclosedArea
 
 EnclosedAreas ComputeEnclosedAreas(const ScorableGrid& scorable, const EnclosedAreasOptions& options) {
   Validate(options);
-  const LevelRuns levels = BuildLevelRuns(scorable.grid());
+  return ComputeEnclosedAreas(BuildLevelRuns(scorable.grid()), options);
+}
+
+EnclosedAreas ComputeEnclosedAreas(const LevelRuns& levels, const EnclosedAreasOptions& options) {
+  Validate(options);
 
   // Otsu's threshold for every u, from the histogram alone: the unknown cells all move to u.
   // Unknown cells are free when u is above the threshold.

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "evaluator/core/occupancy_grid.h"
+#include "evaluator/map_metrics/level_runs.h"
 #include "evaluator/map_metrics/scorable_grid.h"
 
 namespace slamsweep::evaluator::inline map_metrics {
@@ -51,6 +52,8 @@ struct EnclosedAreas {
 /// Throws InputError for bad options or a map that cannot be scored.
 EnclosedAreas ComputeEnclosedAreas(const OccupancyGrid& grid, const EnclosedAreasOptions& options = {});
 EnclosedAreas ComputeEnclosedAreas(const ScorableGrid& grid, const EnclosedAreasOptions& options = {});
+/// The same from the runs of a checked grid (BuildLevelRuns): the grid itself is no longer read.
+EnclosedAreas ComputeEnclosedAreas(const LevelRuns& levels, const EnclosedAreasOptions& options = {});
 
 void to_json(nlohmann::json& out, const EnclosedAreasOptions& options);
 /// The count with its details, including the whole sweep.

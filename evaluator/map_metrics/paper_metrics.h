@@ -58,7 +58,8 @@ struct PaperMetrics {
 /// or inconsistent grid, a cell that is not a probability, or a map with no known cell ("map has no known cell: nothing
 /// to score").
 PaperMetrics ComputePaperMetrics(const OccupancyGrid& grid, const PaperMetricsOptions& options = {});
-/// The same for a grid the caller gives up: it is cropped in place instead of copied.
+/// The same for a grid the caller gives up: it is cropped in place instead of copied, and its cells then hold the
+/// corner count's structure image (about a third less peak memory: no second full-size float image).
 PaperMetrics ComputePaperMetrics(OccupancyGrid&& grid, const PaperMetricsOptions& options = {});
 
 }  // namespace slamsweep::evaluator::inline map_metrics

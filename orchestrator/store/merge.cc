@@ -53,7 +53,8 @@ void LinkOrCopyTree(const fs::path& from, const fs::path& to) {
   Check(error, fmt::format("{}: cannot create folder", to.string()));
   for (fs::recursive_directory_iterator it(from, error), end; it != end; it.increment(error)) {
     Check(error, fmt::format("{}: cannot list folder", from.string()));
-    const fs::path target = to / fs::relative(it->path(), from);
+    // The iterator names every entry as `from` / its relative path: no need to resolve either on disk.
+    const fs::path target = to / it->path().lexically_relative(from);
     if (it->is_symlink()) {
       fs::copy_symlink(it->path(), target, error);
     } else if (it->is_directory()) {

@@ -3,6 +3,7 @@
 #include "orchestrator/files/atomic_file.h"
 #include "orchestrator/store/group_summary.h"
 #include "orchestrator/store/json_lookup.h"
+#include "orchestrator/store/validity_table.h"
 
 namespace slamsweep::orchestrator::inline store {
 namespace {
@@ -97,7 +98,10 @@ json BuildSummaryJson(const std::vector<RunRecord>& runs, const evaluator::Valid
                  {RunStatusName(RunStatus::kOk), ok},
                  {RunStatusName(RunStatus::kFailed), runs.size() - ok}}}};
   // Which ground-truth-free metrics track real error (evaluator/validity); only with reference data.
-  if (!study.empty()) summary["validity"] = ToJson(study);
+  if (!study.empty()) {
+    summary["validity"] = ToJson(study);
+    summary["validity"]["inputs_sha256"] = ValidityInputsDigest(ToValidityRuns(runs));
+  }
   return summary;
 }
 

@@ -17,7 +17,8 @@ nlohmann::json SummarizeRun(const RunRecord& run);
 
 /// The whole summary.json document: {"generated_at", "groups": [ToJson(GroupSummary)...] (one per
 /// comparison group: sequence x algorithm x parameters x noise), "runs": [...], "counts": {"total", "ok", "failed"},
-/// and "validity": `study` (ValidityStudyOf(runs)) unless it is empty}.
+/// and "validity": `study` (ValidityStudyOf(runs)) with its "inputs_sha256" (ValidityInputsDigest) unless it is
+/// empty}.
 nlohmann::json BuildSummaryJson(const std::vector<RunRecord>& runs, const evaluator::ValidityStudy& study,
                                 const std::string& generated_at);
 

@@ -1,6 +1,10 @@
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "evaluator/validity/metric_validity.h"
 #include "orchestrator/store/results_store.h"
@@ -17,5 +21,17 @@ std::vector<evaluator::ValidityRun> ToValidityRuns(const std::vector<RunRecord>&
 /// The study of `runs` (evaluator::ComputeValidityStudy): the one computation behind summary.json's
 /// "validity" and validity.csv.
 evaluator::ValidityStudy ValidityStudyOf(const std::vector<RunRecord>& runs);
+
+/// SHA-256 (64 hex digits) of everything ValidityStudyOf's result depends on: every run as the study reads
+/// it (in run id order, values bit for bit), the study's options, this slamsweep's revision and the digest of
+/// the running program. summary.json keeps it beside the study ("validity"."inputs_sha256"), so that a
+/// reader with the same runs and the same build may take the study from there instead of drawing its
+/// bootstrap again, and any other reader computes it anew.
+std::string ValidityInputsDigest(const std::vector<evaluator::ValidityRun>& runs);
+
+/// The study summary.json's `validity` object holds, when its inputs_sha256 is ValidityInputsDigest(runs);
+/// otherwise (another build, other runs, no digest) nullopt.
+std::optional<evaluator::ValidityStudy> StoredValidityStudyFor(const nlohmann::json& validity,
+                                                               const std::vector<evaluator::ValidityRun>& runs);
 
 }  // namespace slamsweep::orchestrator::inline store

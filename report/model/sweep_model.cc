@@ -373,7 +373,12 @@ SweepModel BuildSweepModel(std::vector<RunRecord> runs, const SweepModelOptions&
   SweepModel model;
   std::sort(runs.begin(), runs.end(), [](const RunRecord& a, const RunRecord& b) { return a.run_id < b.run_id; });
   model.runs = std::move(runs);
-  model.validity = evaluator::ComputeValidityStudy(orchestrator::ToValidityRuns(model.runs));
+  {
+    std::vector<evaluator::ValidityRun> validity_runs = orchestrator::ToValidityRuns(model.runs);
+    std::optional<evaluator::ValidityStudy> stored;
+    if (options.stored_validity) stored = orchestrator::StoredValidityStudyFor(*options.stored_validity, validity_runs);
+    model.validity = stored ? std::move(*stored) : evaluator::ComputeValidityStudy(std::move(validity_runs));
+  }
   // Table (sequence, noise) -> row (algorithm name, parameters) -> runs.
   using RowKey =
       std::tuple<std::string, std::string, std::string, std::string>;  // algorithm, parameters, odometry, build

@@ -136,6 +136,10 @@ struct SweepModelOptions {
   /// Published relations errors (configs/published.yaml) drawn as rows beside a table whose runs score a whole
   /// log against that log's relations file; never ranked.
   std::vector<PublishedFigure> published;
+  /// summary.json's "validity" (with its inputs_sha256), when the result directory has one: the model takes
+  /// the study from it when it was computed from these very runs by this very build, and computes it
+  /// otherwise (orchestrator::StoredValidityStudyFor).
+  std::optional<nlohmann::json> stored_validity;
 };
 
 /// The whole sweep, ready to render.

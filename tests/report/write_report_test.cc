@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include "evaluator/core/input_error.h"
+#include "orchestrator/store/validity_table.h"
+#include "report/model/load_runs.h"
 #include "report/plots/algorithm_palette.h"
 #include "report/plots/scatter_plot.h"
 #include "tests/report/fake_artwork.h"
@@ -321,6 +323,38 @@ TEST_F(WriteReportTest, FewRunsGiveNoCorrelation) {
   EXPECT_NE(page.find("too few runs"), std::string::npos);
   EXPECT_EQ(page.find("ρ ="), std::string::npos);
   EXPECT_NE(ReadAll(dir_ / "report/index.html").find("href=\"validity.html\""), std::string::npos);
+}
+
+// The study summary.json carries is the report's when it was drawn from the same runs by the same program
+// (its inputs_sha256); a stored study that does not match is never shown. A planted verdict tells which
+// one the page shows.
+TEST_F(WriteReportTest, TheSweepsStoredValidityStudyIsTakenOnlyForTheSameInputs) {
+  fs::remove_all(dir_ / "sweep");
+  testing::WriteFixtureSweep(dir_ / "sweep", testing::ValidityFixtureRuns());
+  const std::vector<evaluator::ValidityRun> inputs = orchestrator::ToValidityRuns(LoadRuns(dir_ / "sweep"));
+  nlohmann::json validity = evaluator::ToJson(evaluator::ComputeValidityStudy(inputs));
+  for (nlohmann::json& c : validity.at("correlations")) {
+    if (c.at("verdict") == "tracks error") c["verdict"] = "opposite";  // planted: the computed study says otherwise
+  }
+  const auto write_summary = [&](const std::string& digest) {
+    nlohmann::json summary = nlohmann::json::parse(ReadAll(dir_ / "sweep/summary.json"));
+    summary["validity"] = validity;
+    summary["validity"]["inputs_sha256"] = digest;
+    slamsweep::testing::WriteFile(dir_ / "sweep/summary.json", summary.dump());
+  };
+
+  write_summary(orchestrator::ValidityInputsDigest(inputs));
+  Write();
+  const std::string planted = ReadAll(dir_ / "report/validity.html");
+  EXPECT_EQ(planted.find("n=9, tracks error"), std::string::npos);
+  EXPECT_NE(planted.find("n=9, opposite"), std::string::npos);
+
+  std::vector<evaluator::ValidityRun> other = inputs;
+  other.pop_back();
+  write_summary(orchestrator::ValidityInputsDigest(other));
+  Write();
+  const std::string computed = ReadAll(dir_ / "report/validity.html");
+  EXPECT_NE(computed.find("n=9, tracks error"), std::string::npos);
 }
 
 TEST_F(WriteReportTest, TheValidityPageShowsCorrelationsIntervalsAndPlots) {

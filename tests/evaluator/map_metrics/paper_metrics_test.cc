@@ -1,6 +1,7 @@
 #include "evaluator/map_metrics/paper_metrics.h"
 
 #include <gtest/gtest.h>
+#include <sched.h>
 
 #include <array>
 #include <vector>
@@ -15,6 +16,22 @@
 
 namespace slamsweep::evaluator {
 namespace {
+
+/// `score()` with this thread allowed one core (the metrics then use no helper thread).
+template <typename Score>
+nlohmann::json OnOneCore(Score&& score) {
+  cpu_set_t before;
+  EXPECT_EQ(sched_getaffinity(0, sizeof before, &before), 0);
+  int first = 0;
+  while (first < CPU_SETSIZE && !CPU_ISSET(first, &before)) ++first;
+  cpu_set_t one;
+  CPU_ZERO(&one);
+  CPU_SET(first, &one);
+  EXPECT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+  nlohmann::json j = score();
+  EXPECT_EQ(sched_setaffinity(0, sizeof before, &before), 0);
+  return j;
+}
 
 using testing::GridFromText;
 
@@ -94,8 +111,10 @@ void ExpectReferenceValues(const std::filesystem::path& json, const PaperMetrics
     ASSERT_EQ(grid.width, expected.at("width").get<int>());
     ASSERT_EQ(grid.height, expected.at("height").get<int>());
     const nlohmann::json j = ComputePaperMetrics(grid, options).ToJson();
-    // The overload that crops the grid in place and reuses its cells gives the same JSON.
+    // The overload that crops the grid in place and reuses its cells gives the same JSON, on two
+    // cores (the enclosed areas on a helper thread) and on one.
     EXPECT_EQ(ComputePaperMetrics(OccupancyGrid(grid), options).ToJson(), j);
+    EXPECT_EQ(OnOneCore([&] { return ComputePaperMetrics(OccupancyGrid(grid), options).ToJson(); }), j);
     EXPECT_EQ(j.at("corners"), expected.at("corners"));
     EXPECT_EQ(j.at("enclosed_areas"), expected.at("enclosed_areas"));
     EXPECT_EQ(j.at("details").at("enclosed").at("at_unknown_value"), expected.at("at_unknown_value"));

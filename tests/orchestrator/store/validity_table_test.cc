@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -114,6 +115,38 @@ TEST(ValidityTableTest, WithoutReferenceDataThereIsNoTable) {
   WriteResultFiles(runs, dir.path());
   EXPECT_FALSE(json::parse(ReadWholeFile(dir / "summary.json")).contains("validity"));
   EXPECT_FALSE(std::filesystem::exists(dir / "validity.csv"));
+}
+
+TEST(ValidityTableTest, SummaryJsonKeepsTheDigestOfTheStudysInputs) {
+  slamsweep::testing::TempDir dir;
+  const std::vector<RunRecord> runs = Runs(true);
+  WriteResultFiles(runs, dir.path());
+  const json validity = json::parse(ReadWholeFile(dir / "summary.json")).at("validity");
+  const std::vector<evaluator::ValidityRun> read = ToValidityRuns(runs);
+  EXPECT_EQ(validity.at("inputs_sha256"), ValidityInputsDigest(read));
+  EXPECT_EQ(validity.at("inputs_sha256").get<std::string>().size(), 64u);
+
+  // The same runs in another order: the same digest, and the stored study is the one computed.
+  std::vector<evaluator::ValidityRun> reversed(read.rbegin(), read.rend());
+  EXPECT_EQ(ValidityInputsDigest(reversed), ValidityInputsDigest(read));
+  const std::optional<evaluator::ValidityStudy> stored = StoredValidityStudyFor(validity, reversed);
+  ASSERT_TRUE(stored.has_value());
+  EXPECT_EQ(evaluator::ToJson(*stored), evaluator::ToJson(ValidityStudyOf(runs)));
+
+  // Any value of any run, a run less, or a run left out by its status: another digest, no stored study.
+  std::vector<evaluator::ValidityRun> changed = read;
+  changed[4].values.at("corners.value") = std::nextafter(changed[4].values.at("corners.value"), 100.0);
+  EXPECT_NE(ValidityInputsDigest(changed), ValidityInputsDigest(read));
+  EXPECT_FALSE(StoredValidityStudyFor(validity, changed).has_value());
+  std::vector<evaluator::ValidityRun> fewer(read.begin(), read.end() - 1);
+  EXPECT_FALSE(StoredValidityStudyFor(validity, fewer).has_value());
+  std::vector<evaluator::ValidityRun> failed = read;
+  failed[0].ok = false;
+  EXPECT_FALSE(StoredValidityStudyFor(validity, failed).has_value());
+  // A study without a digest (an older slamsweep wrote it) is never taken.
+  json without = validity;
+  without.erase("inputs_sha256");
+  EXPECT_FALSE(StoredValidityStudyFor(without, read).has_value());
 }
 
 }  // namespace
