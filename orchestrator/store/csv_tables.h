@@ -29,7 +29,7 @@ std::string RunsCsv(const std::vector<RunRecord>& runs);
 /// resamples_defined, verdict (empty numbers where the verdict is "too few runs" or "no variation").
 std::string ValidityCsv(const evaluator::ValidityStudy& study);
 
-/// Writes OUTPUT_DIR/summary.csv, OUTPUT_DIR/runs.csv and, unless `study` (ValidityStudyOf(runs)) is
+/// Writes OUTPUT_DIR/summary.csv, OUTPUT_DIR/runs.csv and, unless `study` (ValidityStudyOf(runs).study) is
 /// empty, OUTPUT_DIR/validity.csv atomically.
 void WriteCsvTables(const std::vector<RunRecord>& runs, const evaluator::ValidityStudy& study,
                     const std::filesystem::path& output_dir);

@@ -12,11 +12,11 @@ namespace slamsweep::orchestrator::inline store {
 
 void WriteResultFiles(const std::vector<RunRecord>& runs, const std::filesystem::path& output_dir) {
   std::optional<PhaseTimer> phase(std::in_place, "validity");
-  const evaluator::ValidityStudy study = ValidityStudyOf(runs);
+  const DigestedValidityStudy study = ValidityStudyOf(runs);
   phase.emplace("summary_json");
   WriteSummaryJson(runs, study, output_dir / "summary.json");
   phase.emplace("csv");
-  WriteCsvTables(runs, study, output_dir);
+  WriteCsvTables(runs, study.study, output_dir);
   phase.emplace("junit");
   WriteJUnit(runs, output_dir / "junit.xml");
 }

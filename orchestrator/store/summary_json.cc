@@ -80,7 +80,7 @@ json SummarizeRun(const RunRecord& run) {
   };
 }
 
-json BuildSummaryJson(const std::vector<RunRecord>& runs, const evaluator::ValidityStudy& study,
+json BuildSummaryJson(const std::vector<RunRecord>& runs, const DigestedValidityStudy& study,
                       const std::string& generated_at) {
   json listed = json::array();
   std::size_t ok = 0;
@@ -98,14 +98,14 @@ json BuildSummaryJson(const std::vector<RunRecord>& runs, const evaluator::Valid
                  {RunStatusName(RunStatus::kOk), ok},
                  {RunStatusName(RunStatus::kFailed), runs.size() - ok}}}};
   // Which ground-truth-free metrics track real error (evaluator/validity); only with reference data.
-  if (!study.empty()) {
-    summary["validity"] = ToJson(study);
-    summary["validity"]["inputs_sha256"] = ValidityInputsDigest(ToValidityRuns(runs));
+  if (!study.study.empty()) {
+    summary["validity"] = ToJson(study.study);
+    summary["validity"]["inputs_sha256"] = study.inputs_sha256;
   }
   return summary;
 }
 
-void WriteSummaryJson(const std::vector<RunRecord>& runs, const evaluator::ValidityStudy& study,
+void WriteSummaryJson(const std::vector<RunRecord>& runs, const DigestedValidityStudy& study,
                       const std::filesystem::path& file) {
   // Replacement of invalid UTF-8 (a reason quoting a program's garbled output) keeps the file writable.
   // Compact: indentation was 40 % of a large sweep's file (jq or a browser shows it indented).

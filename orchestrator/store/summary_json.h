@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evaluator/validity/metric_validity.h"
+#include "orchestrator/store/validity_table.h"
 #include "orchestrator/store/results_store.h"
 
 namespace slamsweep::orchestrator::inline store {
@@ -17,13 +18,12 @@ nlohmann::json SummarizeRun(const RunRecord& run);
 
 /// The whole summary.json document: {"generated_at", "groups": [ToJson(GroupSummary)...] (one per
 /// comparison group: sequence x algorithm x parameters x noise), "runs": [...], "counts": {"total", "ok", "failed"},
-/// and "validity": `study` (ValidityStudyOf(runs)) with its "inputs_sha256" (ValidityInputsDigest) unless it is
-/// empty}.
-nlohmann::json BuildSummaryJson(const std::vector<RunRecord>& runs, const evaluator::ValidityStudy& study,
+/// and "validity": `study` (ValidityStudyOf(runs)) with its "inputs_sha256" unless the study is empty}.
+nlohmann::json BuildSummaryJson(const std::vector<RunRecord>& runs, const DigestedValidityStudy& study,
                                 const std::string& generated_at);
 
 /// Writes BuildSummaryJson(runs, study, now) to `file` atomically (readers never see a half-written file).
-void WriteSummaryJson(const std::vector<RunRecord>& runs, const evaluator::ValidityStudy& study,
+void WriteSummaryJson(const std::vector<RunRecord>& runs, const DigestedValidityStudy& study,
                       const std::filesystem::path& file);
 
 }  // namespace slamsweep::orchestrator::inline store

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <exception>
 #include <iterator>
+#include <utility>
 
 #include "orchestrator/build_identity/file_digest.h"
 #include "orchestrator/build_identity/revision.h"
@@ -38,8 +39,12 @@ std::vector<evaluator::ValidityRun> ToValidityRuns(const std::vector<RunRecord>&
   return converted;
 }
 
-evaluator::ValidityStudy ValidityStudyOf(const std::vector<RunRecord>& runs) {
-  return evaluator::ComputeValidityStudy(ToValidityRuns(runs));
+DigestedValidityStudy ValidityStudyOf(const std::vector<RunRecord>& runs) {
+  std::vector<evaluator::ValidityRun> inputs = ToValidityRuns(runs);
+  DigestedValidityStudy out;
+  out.inputs_sha256 = ValidityInputsDigest(inputs);
+  out.study = evaluator::ComputeValidityStudy(std::move(inputs));
+  return out;
 }
 
 namespace {

@@ -18,9 +18,15 @@ namespace slamsweep::orchestrator::inline store {
 evaluator::ValidityRun ToValidityRun(const RunRecord& run);
 std::vector<evaluator::ValidityRun> ToValidityRuns(const std::vector<RunRecord>& runs);
 
-/// The study of `runs` (evaluator::ComputeValidityStudy): the one computation behind summary.json's
-/// "validity" and validity.csv.
-evaluator::ValidityStudy ValidityStudyOf(const std::vector<RunRecord>& runs);
+/// A study with the digest of the inputs it was drawn from (ValidityInputsDigest, below).
+struct DigestedValidityStudy {
+  evaluator::ValidityStudy study;
+  std::string inputs_sha256;
+};
+
+/// The study of `runs` (evaluator::ComputeValidityStudy) and its inputs' digest, from one conversion of the
+/// runs: the one computation behind summary.json's "validity" and validity.csv.
+DigestedValidityStudy ValidityStudyOf(const std::vector<RunRecord>& runs);
 
 /// SHA-256 (64 hex digits) of everything ValidityStudyOf's result depends on: every run as the study reads
 /// it (in run id order, values bit for bit), the study's options, this slamsweep's revision and the digest of

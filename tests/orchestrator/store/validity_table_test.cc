@@ -131,7 +131,7 @@ TEST(ValidityTableTest, SummaryJsonKeepsTheDigestOfTheStudysInputs) {
   EXPECT_EQ(ValidityInputsDigest(reversed), ValidityInputsDigest(read));
   const std::optional<evaluator::ValidityStudy> stored = StoredValidityStudyFor(validity, reversed);
   ASSERT_TRUE(stored.has_value());
-  EXPECT_EQ(evaluator::ToJson(*stored), evaluator::ToJson(ValidityStudyOf(runs)));
+  EXPECT_EQ(evaluator::ToJson(*stored), evaluator::ToJson(ValidityStudyOf(runs).study));
 
   // Any value of any run, a run less, or a run left out by its status: another digest, no stored study.
   std::vector<evaluator::ValidityRun> changed = read;
