@@ -13,6 +13,8 @@ set -euo pipefail
 build_packages=(
   # toolchain
   g++ cmake ninja-build pkg-config
+  # the linker: lld drops a batched object's unused code and the libraries only that code needed
+  lld
   # libraries (docs/development.md says why each is there)
   libeigen3-dev libopencv-dev nlohmann-json3-dev libyaml-cpp-dev libspdlog-dev libfmt-dev
   libcli11-dev zlib1g-dev libdeflate-dev libsqlite3-dev libboost-dev libboost-filesystem-dev libssl-dev
