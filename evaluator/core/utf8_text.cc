@@ -55,7 +55,8 @@ void RequireUtf8(std::string_view text, const std::filesystem::path& file, std::
   const std::size_t bad = invalid ? std::min(*invalid, control_at) : control_at;
   const std::string_view before = text.substr(0, bad);
   const std::size_t line = 1 + static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n'));
-  const std::size_t line_start = before.rfind('\n') == std::string_view::npos ? 0 : before.rfind('\n') + 1;
+  const std::size_t last_newline = before.rfind('\n');
+  const std::size_t line_start = last_newline == std::string_view::npos ? 0 : last_newline + 1;
   throw InputError(fmt::format("{}:{}:{}: {} (byte 0x{:02X}): {}", file.string(), line, bad - line_start + 1,
                                bad == control_at ? "a control character" : "not UTF-8 text",
                                static_cast<unsigned char>(text[bad]), what));
